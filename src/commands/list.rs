@@ -1,0 +1,47 @@
+//! `contact-lab list`, and the greeting of a bare `contact-lab`.
+
+use std::io::Write;
+
+use super::io;
+use crate::error::AppError;
+use crate::lesson::{embedded, Lesson};
+
+fn table(out: &mut dyn Write) -> Result<(), AppError> {
+    let lessons: Vec<Lesson> = embedded::ids()
+        .into_iter()
+        .map(Lesson::load)
+        .collect::<Result<_, _>>()
+        .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
+    let w = lessons.iter().map(|l| l.id.len()).max().unwrap_or(2).max(2);
+    writeln!(out, "{:w$}  {:>8}  title — source", "id", "contacts").map_err(io)?;
+    for l in &lessons {
+        writeln!(
+            out,
+            "{:w$}  {:>8}  {} — {}",
+            l.id,
+            l.contacts.len(),
+            l.title,
+            l.source
+        )
+        .map_err(io)?;
+    }
+    Ok(())
+}
+
+pub fn list(out: &mut dyn Write) -> Result<(), AppError> {
+    table(out)
+}
+
+pub fn welcome(out: &mut dyn Write) -> Result<(), AppError> {
+    writeln!(
+        out,
+        "contact-lab — step through rigid-body contact resolution, stage by stage.\n"
+    )
+    .map_err(io)?;
+    table(out)?;
+    writeln!(
+        out,
+        "\nStart with:  contact-lab solve lecture-2      (the lecture's second worked example)\n             contact-lab solve LESSON --format json\n             contact-lab --help"
+    )
+    .map_err(io)
+}

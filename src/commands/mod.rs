@@ -1,0 +1,74 @@
+//! What each subcommand does: load, solve, render, write.
+
+mod list;
+mod solve;
+
+use std::io::Write;
+
+use crate::cli::{Cli, Command, FrictionModelArg, ModelArgs, ProjectionArg};
+use crate::error::AppError;
+use crate::lesson::{validate::rules, Lesson, Overrides};
+use crate::physics::{FrictionModel, ProjectionMethod};
+
+/// Runs the parsed command line, writing results to `out` and warnings to `err`.
+pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
+    match cli.command {
+        None => list::welcome(out),
+        Some(Command::List) => list::list(out),
+        Some(Command::Solve(args)) => solve::solve(&args, out, err),
+    }
+}
+
+pub(crate) fn io(e: std::io::Error) -> AppError {
+    AppError::Runtime(format!("cannot write output: {e}"))
+}
+
+/// Loads a lesson, applies the command-line overrides and checks the contact index.
+pub(crate) fn load(
+    name: &str,
+    model: &ModelArgs,
+    contact: Option<usize>,
+) -> Result<Lesson, AppError> {
+    let overrides = overrides(model)?;
+    let mut lesson = Lesson::load(name)?;
+    lesson.apply(&overrides);
+    if let Some(k) = contact {
+        if k >= lesson.contacts.len() {
+            return Err(AppError::Usage(format!(
+                "--contact {k}: lesson '{}' has {} contact(s), numbered from 0",
+                lesson.id,
+                lesson.contacts.len()
+            )));
+        }
+    }
+    Ok(lesson)
+}
+
+pub(crate) fn overrides(m: &ModelArgs) -> Result<Overrides, AppError> {
+    if let Some(r) = m.relaxation {
+        rules::relaxation(r).map_err(|e| AppError::Usage(format!("--relaxation: {e}")))?;
+    }
+    if let Some(a) = m.angular_limit {
+        rules::angular_limit(a).map_err(|e| AppError::Usage(format!("--angular-limit: {e}")))?;
+    }
+    Ok(Overrides {
+        friction_model: m.friction_model.map(|f| match f {
+            FrictionModelArg::Millington => FrictionModel::Millington,
+            FrictionModelArg::KineticDirection => FrictionModel::KineticDirection,
+            FrictionModelArg::VelocityScaling => FrictionModel::VelocityScaling,
+        }),
+        projection: m.projection.map(|p| match p {
+            ProjectionArg::Linear => ProjectionMethod::Linear,
+            ProjectionArg::Nonlinear => ProjectionMethod::Nonlinear,
+        }),
+        relaxation: m.relaxation,
+        angular_limit: m.angular_limit,
+    })
+}
+
+/// Lesson warnings go to stderr, once each.
+pub(crate) fn warn(lesson: &Lesson, err: &mut dyn Write) {
+    for w in &lesson.warnings {
+        let _ = writeln!(err, "warning: {w}");
+    }
+}

@@ -1,0 +1,47 @@
+//! Application errors and their exit codes (GUIDE §5).
+
+use crate::lesson::LessonError;
+
+#[derive(Debug, thiserror::Error)]
+pub enum AppError {
+    #[error(transparent)]
+    Lesson(#[from] LessonError),
+    /// Bad command-line use that clap cannot see (exit 2).
+    #[error("{0}")]
+    Usage(String),
+    /// Anything else that went wrong at run time (exit 1).
+    #[error("{0}")]
+    Runtime(String),
+}
+
+impl AppError {
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            AppError::Lesson(LessonError::Missing { .. }) => 66,
+            AppError::Lesson(LessonError::Invalid { .. }) => 65,
+            AppError::Usage(_) => 2,
+            AppError::Runtime(_) => 1,
+        }
+    }
+
+    /// The message for stderr: invalid lessons get a snippet per error.
+    pub fn report(&self, color: bool) -> String {
+        match self {
+            AppError::Lesson(LessonError::Invalid { diagnostics, .. }) => {
+                let theme = if color {
+                    miette::GraphicalTheme::unicode()
+                } else {
+                    miette::GraphicalTheme::unicode_nocolor()
+                };
+                let handler = miette::GraphicalReportHandler::new_themed(theme).with_width(100);
+                let mut out = String::new();
+                for d in diagnostics {
+                    out.push_str(&format!("error: {d}\n"));
+                    let _ = handler.render_report(&mut out, d);
+                }
+                out
+            }
+            other => format!("error: {other}\n"),
+        }
+    }
+}

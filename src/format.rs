@@ -1,0 +1,206 @@
+//! The one number formatter: significant digits, trailing zeros trimmed,
+//! `-0` shown as `0`, scientific notation outside [1e-4, 10^digits).
+
+use crate::trace::{Step, Value};
+
+/// Human number formatting (JSON carries full f64 and does not use this).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Fmt {
+    /// Significant digits, 1..=17.
+    pub digits: usize,
+}
+
+impl Default for Fmt {
+    fn default() -> Self {
+        Fmt { digits: 6 }
+    }
+}
+
+impl Fmt {
+    pub fn new(digits: usize) -> Self {
+        Fmt {
+            digits: digits.clamp(1, 17),
+        }
+    }
+
+    /// `(mantissa text, exponent)` when scientific, else plain text.
+    fn parts(&self, x: f64) -> (String, Option<i32>) {
+        if x.is_nan() {
+            return ("NaN".into(), None);
+        }
+        if x.is_infinite() {
+            return (if x > 0.0 { "inf" } else { "-inf" }.into(), None);
+        }
+        if x == 0.0 {
+            return ("0".into(), None);
+        }
+        let d = self.digits;
+        let sci = format!("{:.*e}", d - 1, x);
+        let (mantissa, exp) = sci.split_once('e').expect("{:e} has an exponent");
+        let exp: i32 = exp.parse().expect("exponent");
+        if exp < -4 || exp >= d as i32 {
+            (trim(mantissa), Some(exp))
+        } else {
+            let decimals = (d as i32 - 1 - exp).max(0) as usize;
+            let s = trim(&format!("{:.*}", decimals, x));
+            (if s == "-0" { "0".into() } else { s }, None)
+        }
+    }
+
+    pub fn num(&self, x: f64) -> String {
+        match self.parts(x) {
+            (m, Some(e)) => format!("{m}e{e}"),
+            (m, None) => m,
+        }
+    }
+
+    pub fn num_latex(&self, x: f64) -> String {
+        match self.parts(x) {
+            (m, Some(e)) => format!("{m} \\times 10^{{{e}}}"),
+            (m, None) if m == "inf" => "\\infty".into(),
+            (m, None) if m == "-inf" => "-\\infty".into(),
+            (m, None) => m,
+        }
+    }
+
+    pub fn list(&self, xs: &[f64]) -> String {
+        xs.iter()
+            .map(|x| self.num(*x))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// Plain-text form of a value.
+    pub fn value(&self, v: &Value) -> String {
+        match v {
+            Value::Scalar(x) => self.num(*x),
+            Value::Vector(a) => format!("({})", self.list(a)),
+            Value::Quaternion(q) => format!("[{}]", self.list(q)),
+            Value::Matrix(m) => format!(
+                "[{}]",
+                m.iter()
+                    .map(|r| format!("[{}]", self.list(r)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            Value::Text(s) => s.clone(),
+        }
+    }
+
+    /// LaTeX form of a value.
+    pub fn value_latex(&self, v: &Value) -> String {
+        let list = |xs: &[f64]| {
+            xs.iter()
+                .map(|x| self.num_latex(*x))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        match v {
+            Value::Scalar(x) => self.num_latex(*x),
+            Value::Vector(a) => format!("({})", list(a)),
+            Value::Quaternion(q) => format!("[{}]", list(q)),
+            Value::Matrix(m) => format!(
+                "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
+                m.iter()
+                    .map(|r| r
+                        .iter()
+                        .map(|x| self.num_latex(*x))
+                        .collect::<Vec<_>>()
+                        .join(" & "))
+                    .collect::<Vec<_>>()
+                    .join(" \\\\ ")
+            ),
+            Value::Text(s) => format!("\\text{{{s}}}"),
+        }
+    }
+
+    /// Replaces each `{name}` of `template` with the step's value `name`.
+    /// An unknown name is left as written.
+    pub fn fill(&self, template: &str, step: &Step, latex: bool) -> String {
+        let mut out = String::new();
+        let mut rest = template;
+        while let Some(open) = rest.find('{') {
+            out.push_str(&rest[..open]);
+            let after = &rest[open + 1..];
+            match after.find('}') {
+                Some(close) if is_name(&after[..close]) => {
+                    let name = &after[..close];
+                    match step.lookup(name) {
+                        Some(v) if latex => out.push_str(&self.value_latex(v)),
+                        Some(v) => out.push_str(&self.value(v)),
+                        None => out.push_str(&rest[open..open + close + 2]),
+                    }
+                    rest = &after[close + 1..];
+                }
+                _ => {
+                    out.push('{');
+                    rest = after;
+                }
+            }
+        }
+        out.push_str(rest);
+        out
+    }
+}
+
+fn is_name(s: &str) -> bool {
+    !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// Placeholder names used in a template.
+pub fn placeholders(template: &str) -> Vec<&str> {
+    let mut names = Vec::new();
+    let mut rest = template;
+    while let Some(open) = rest.find('{') {
+        let after = &rest[open + 1..];
+        match after.find('}') {
+            Some(close) if is_name(&after[..close]) => {
+                names.push(&after[..close]);
+                rest = &after[close + 1..];
+            }
+            _ => rest = after,
+        }
+    }
+    names
+}
+
+fn trim(s: &str) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Fmt;
+
+    #[test]
+    fn significant_digits_trimmed() {
+        let f = Fmt::new(6);
+        assert_eq!(f.num(18.733766), "18.7338");
+        assert_eq!(f.num(2.25), "2.25");
+        assert_eq!(f.num(0.0091525), "0.0091525");
+        assert_eq!(f.num(240.0), "240");
+        assert_eq!(f.num(-0.0), "0");
+        assert_eq!(f.num(-1e-30), "-1e-30");
+        assert_eq!(f.num(1.5e-7), "1.5e-7");
+        assert_eq!(f.num(123456789.0), "1.23457e8");
+        assert_eq!(Fmt::new(4).num(0.120104), "0.1201");
+        assert_eq!(f.num(-0.0000001), "-1e-7");
+    }
+
+    #[test]
+    fn rounding_to_zero_shows_zero() {
+        assert_eq!(Fmt::new(3).num(-0.0004), "-0.0004");
+        assert_eq!(Fmt::new(1).num(-0.04), "-0.04");
+    }
+
+    #[test]
+    fn latex_numbers() {
+        let f = Fmt::new(3);
+        assert_eq!(f.num_latex(1.5e-7), "1.5 \\times 10^{-7}");
+        assert_eq!(f.num_latex(f64::INFINITY), "\\infty");
+    }
+}

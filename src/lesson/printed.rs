@@ -1,0 +1,135 @@
+//! `[[printed]]` entries: numbers a lecture prints, kept with their precision.
+
+use super::raw::{PrintedNumber, PrintedValue, RawPrinted};
+use super::source::Note;
+use crate::physics::solve::STAGE_IDS;
+
+/// One printed number and how many decimals it was printed with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrintedNum {
+    pub value: f64,
+    pub decimals: u32,
+}
+
+impl PrintedNum {
+    /// The lecture-check tolerance: 2 units in the last printed digit plus
+    /// 0.1 % of the number's size.
+    pub fn tolerance(&self) -> f64 {
+        2.0 * 10f64.powi(-(self.decimals as i32)) + 1e-3 * self.value.abs()
+    }
+
+    pub fn agrees(&self, computed: f64) -> bool {
+        (computed - self.value).abs() <= self.tolerance()
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum PrintedShape {
+    Scalar(PrintedNum),
+    Vector(Vec<PrintedNum>),
+    Matrix(Vec<Vec<PrintedNum>>),
+}
+
+impl PrintedShape {
+    pub fn numbers(&self) -> Vec<PrintedNum> {
+        match self {
+            PrintedShape::Scalar(n) => vec![*n],
+            PrintedShape::Vector(v) => v.clone(),
+            PrintedShape::Matrix(m) => m.iter().flatten().copied().collect(),
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Printed {
+    pub contact: usize,
+    pub stage: String,
+    pub value: String,
+    /// Only this component of a vector value is printed.
+    pub component: Option<usize>,
+    pub printed: PrintedShape,
+    pub location: String,
+    pub erratum: Option<String>,
+}
+
+fn decimals_of(text: &str) -> u32 {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or(text);
+    let exponent: i32 = text
+        .split(['e', 'E'])
+        .nth(1)
+        .and_then(|e| e.parse().ok())
+        .unwrap_or(0);
+    let frac = mantissa.split('.').nth(1).map_or(0, |f| f.len() as i32);
+    (frac - exponent).max(0) as u32
+}
+
+fn number(n: &PrintedNumber) -> Result<PrintedNum, String> {
+    match n {
+        PrintedNumber::Number(x) if x.is_finite() => Ok(PrintedNum {
+            value: *x,
+            decimals: decimals_of(&format!("{x}")),
+        }),
+        PrintedNumber::Number(x) => Err(format!("printed numbers must be finite, got {x}")),
+        PrintedNumber::Text(t) => match t.trim().parse::<f64>() {
+            Ok(x) if x.is_finite() => Ok(PrintedNum {
+                value: x,
+                decimals: decimals_of(t.trim()),
+            }),
+            _ => Err(format!("\"{t}\" is not a number")),
+        },
+    }
+}
+
+impl Printed {
+    pub fn from_raw(raw: &RawPrinted) -> Result<Printed, Note> {
+        let stage = raw.stage.get_ref();
+        if !STAGE_IDS.contains(&stage.as_str()) {
+            return Err(Note::new(
+                format!(
+                    "unknown stage \"{stage}\" (stages: {})",
+                    STAGE_IDS.join(", ")
+                ),
+                raw.stage.span(),
+            ));
+        }
+        let bad = |e: String| Note::new(e, raw.printed.span());
+        let printed = match raw.printed.get_ref() {
+            PrintedValue::Scalar(n) => PrintedShape::Scalar(number(n).map_err(bad)?),
+            PrintedValue::Vector(v) => PrintedShape::Vector(
+                v.iter()
+                    .map(number)
+                    .collect::<Result<_, _>>()
+                    .map_err(bad)?,
+            ),
+            PrintedValue::Matrix(m) => PrintedShape::Matrix(
+                m.iter()
+                    .map(|row| row.iter().map(number).collect::<Result<Vec<_>, _>>())
+                    .collect::<Result<_, _>>()
+                    .map_err(bad)?,
+            ),
+        };
+        Ok(Printed {
+            contact: raw.contact,
+            stage: stage.clone(),
+            value: raw.value.get_ref().clone(),
+            component: raw.component,
+            printed,
+            location: raw.location.clone(),
+            erratum: raw.erratum.clone(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::decimals_of;
+
+    #[test]
+    fn decimals_follow_the_printed_text() {
+        assert_eq!(decimals_of("18.7337"), 4);
+        assert_eq!(decimals_of("240"), 0);
+        assert_eq!(decimals_of("0.10"), 2);
+        assert_eq!(decimals_of("1.5e-3"), 4);
+        assert_eq!(decimals_of("2e3"), 0);
+    }
+}

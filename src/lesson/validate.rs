@@ -1,0 +1,588 @@
+//! From TOML text to a validated [`Lesson`]. Every error names the span of the
+//! offending value; all errors of a file are reported together.
+
+use nalgebra::{Matrix3, Quaternion, Vector3};
+
+use super::printed::Printed;
+use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
+use super::source::{LessonDiagnostic, LessonError, Note};
+use super::{BodyDef, ContactDef, Lesson, Shape};
+use crate::physics::{FrictionModel, ProjectionMethod, Settings};
+
+/// Rules shared by the file validator and the TUI's edit form: each returns
+/// the reason a value is refused.
+pub mod rules {
+    pub fn finite(x: f64) -> Result<(), String> {
+        if x.is_finite() {
+            Ok(())
+        } else {
+            Err(format!("must be a finite number, got {x}"))
+        }
+    }
+    pub fn mass(m: f64) -> Result<(), String> {
+        if m.is_nan() || m <= 0.0 {
+            Err(format!(
+                "mass must be > 0 (or inf for an immovable body), got {m}"
+            ))
+        } else {
+            Ok(())
+        }
+    }
+    pub fn restitution(c: f64) -> Result<(), String> {
+        if (0.0..=1.0).contains(&c) {
+            Ok(())
+        } else {
+            Err(format!("restitution must be in [0, 1], got {c}"))
+        }
+    }
+    pub fn friction(mu: f64) -> Result<(), String> {
+        if mu.is_finite() && mu >= 0.0 {
+            Ok(())
+        } else {
+            Err(format!(
+                "friction coefficient must be a finite number ≥ 0, got {mu}"
+            ))
+        }
+    }
+    pub fn non_negative(x: f64) -> Result<(), String> {
+        if x.is_finite() && x >= 0.0 {
+            Ok(())
+        } else {
+            Err(format!("must be a finite number ≥ 0, got {x}"))
+        }
+    }
+    pub fn angular_limit(x: f64) -> Result<(), String> {
+        if x.is_nan() || x < 0.0 {
+            Err(format!(
+                "angular_limit must be ≥ 0 (inf = no limit), got {x}"
+            ))
+        } else {
+            Ok(())
+        }
+    }
+    pub fn relaxation(x: f64) -> Result<(), String> {
+        if x > 0.0 && x <= 1.0 {
+            Ok(())
+        } else {
+            Err(format!("relaxation must be in (0, 1], got {x}"))
+        }
+    }
+    pub fn duration(x: f64) -> Result<(), String> {
+        if x.is_finite() && x > 0.0 {
+            Ok(())
+        } else {
+            Err(format!("duration must be a finite number > 0, got {x}"))
+        }
+    }
+}
+
+/// Reads raw bytes (refusing non-UTF-8 with the position of the first bad byte).
+pub fn parse_bytes(origin: &str, bytes: &[u8]) -> Result<Lesson, LessonError> {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => parse(origin, text),
+        Err(e) => {
+            let valid = String::from_utf8_lossy(&bytes[..e.valid_up_to()]).into_owned();
+            let at = valid.len();
+            let mut text = valid;
+            text.push(' ');
+            let note = Note::new(
+                "the file is not UTF-8 text (a lesson is a TOML file)",
+                at..at + 1,
+            )
+            .help("save the lesson as UTF-8 TOML; see lessons/README.md");
+            Err(invalid(origin, &text, vec![note]))
+        }
+    }
+}
+
+fn invalid(origin: &str, text: &str, notes: Vec<Note>) -> LessonError {
+    LessonError::Invalid {
+        path: origin.to_string(),
+        diagnostics: notes
+            .into_iter()
+            .map(|n| LessonDiagnostic::new(origin, text, n))
+            .collect(),
+    }
+}
+
+pub fn parse(origin: &str, text: &str) -> Result<Lesson, LessonError> {
+    if text.trim().is_empty() {
+        let note = Note::new("the lesson file is empty", 0..0)
+            .help("a lesson needs at least `id`, `title`, one [[body]] and one [[contact]]; see lessons/README.md");
+        return Err(invalid(origin, text, vec![note]));
+    }
+    let raw: RawLesson = toml::from_str(text).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        let message = e.message().trim().to_string();
+        invalid(
+            origin,
+            text,
+            vec![Note::new(message, span).help("see lessons/README.md for every field")],
+        )
+    })?;
+    let mut v = Validator::default();
+    let lesson = v.lesson(raw, origin);
+    if v.errors.is_empty() {
+        let mut lesson = lesson;
+        lesson.warnings = v
+            .warnings
+            .into_iter()
+            .map(|n| LessonDiagnostic::new(origin, text, n))
+            .collect();
+        Ok(lesson)
+    } else {
+        Err(invalid(origin, text, v.errors))
+    }
+}
+
+#[derive(Default)]
+struct Validator {
+    errors: Vec<Note>,
+    warnings: Vec<Note>,
+}
+
+fn v3(a: [f64; 3]) -> Vector3<f64> {
+    Vector3::from(a)
+}
+
+fn mat(a: [[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|r, c| a[r][c])
+}
+
+impl Validator {
+    fn err(&mut self, span: std::ops::Range<usize>, message: impl Into<String>) {
+        self.errors.push(Note::new(message, span));
+    }
+
+    fn rule(&mut self, what: &str, value: &S<f64>, rule: fn(f64) -> Result<(), String>) -> f64 {
+        if let Err(e) = rule(*value.get_ref()) {
+            self.err(value.span(), format!("{what}: {e}"));
+        }
+        *value.get_ref()
+    }
+
+    fn finite<const N: usize>(&mut self, what: &str, value: &S<[f64; N]>) -> [f64; N] {
+        if let Some(x) = value.get_ref().iter().find(|x| !x.is_finite()) {
+            self.err(
+                value.span(),
+                format!("{what}: every component must be a finite number, got {x}"),
+            );
+        }
+        *value.get_ref()
+    }
+
+    fn opt_vec(&mut self, what: &str, value: &Option<S<[f64; 3]>>) -> Vector3<f64> {
+        value
+            .as_ref()
+            .map_or(Vector3::zeros(), |v| v3(self.finite(what, v)))
+    }
+
+    fn lesson(&mut self, raw: RawLesson, origin: &str) -> Lesson {
+        if raw.id.get_ref().trim().is_empty() {
+            self.err(raw.id.span(), "id must not be empty");
+        }
+        let bodies: Vec<BodyDef> = raw.bodies.iter().map(|b| self.body(b)).collect();
+        for (i, b) in raw.bodies.iter().enumerate() {
+            if raw.bodies[..i]
+                .iter()
+                .any(|o| o.name.get_ref() == b.name.get_ref())
+            {
+                self.err(
+                    b.name.span(),
+                    format!("body name '{}' is used twice", b.name.get_ref()),
+                );
+            }
+        }
+        if raw.bodies.is_empty() {
+            self.err(0..0, "the lesson has no [[body]]");
+        }
+        if raw.contacts.is_empty() {
+            self.err(0..0, "the lesson has no [[contact]]");
+        }
+        let defaults = self.settings(&raw.settings, Settings::default());
+        let contacts = raw
+            .contacts
+            .iter()
+            .map(|c| self.contact(c, &raw.bodies, &bodies, defaults))
+            .collect();
+        let printed = raw
+            .printed
+            .iter()
+            .filter_map(|p| self.printed(p, raw.contacts.len()))
+            .collect();
+        Lesson {
+            id: raw.id.into_inner(),
+            title: raw.title,
+            source: raw.source,
+            summary: raw.summary.trim().to_string(),
+            origin: origin.to_string(),
+            bodies,
+            contacts,
+            printed,
+            warnings: Vec::new(),
+        }
+    }
+
+    fn body(&mut self, raw: &RawBody) -> BodyDef {
+        let name = raw.name.get_ref().clone();
+        let mass = self.rule(
+            &format!("body '{name}'"),
+            &raw.mass,
+            super::validate::rules::mass,
+        );
+        let movable = mass.is_finite() && mass > 0.0;
+        let shape = raw.shape.as_ref().map(|s| *s.get_ref());
+        if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
+            if s.dimensions().iter().any(|x| !x.is_finite() || *x <= 0.0) {
+                self.err(
+                    span.clone(),
+                    format!("body '{name}': shape sizes must be finite and > 0"),
+                );
+            } else if s == Shape::HalfSpace && movable {
+                self.err(
+                    span,
+                    format!("body '{name}': a half-space must be immovable (mass = inf)"),
+                );
+            }
+        }
+        let shape_inertia = shape.filter(|_| movable).and_then(|s| s.inertia(mass));
+        let explicit = raw
+            .inertia
+            .as_ref()
+            .map(|t| (mat(self.finite_tensor(&name, t)), t.span()));
+        if let Some((tensor, span)) = &explicit {
+            if movable {
+                self.check_tensor(&name, tensor, span.clone());
+            }
+        }
+        let inertia = match (&explicit, shape_inertia) {
+            (Some((t, span)), Some(s)) => {
+                if (t - s).norm() > 1e-9 * s.norm() {
+                    self.warnings.push(
+                        Note::new(
+                            format!(
+                                "body '{name}': the inertia tensor given differs from the {}: given diag {}, shape gives diag {}; the given tensor is used",
+                                shape.map(|s| s.describe()).unwrap_or_default(),
+                                diag(t),
+                                diag(&s)
+                            ),
+                            span.clone(),
+                        )
+                        .help("either the tensor or the shape's size is off; `contact-lab check` compares them"),
+                    );
+                }
+                Some(*t)
+            }
+            (Some((t, _)), None) => Some(*t),
+            (None, Some(s)) => Some(s),
+            (None, None) => {
+                if movable {
+                    self.err(
+                        raw.name.span(),
+                        format!("body '{name}' needs an `inertia` tensor or a `shape`"),
+                    );
+                }
+                None
+            }
+        };
+        let position = v3(self.finite(&format!("body '{name}' position"), &raw.position));
+        let orientation = match &raw.orientation {
+            None => Quaternion::identity(),
+            Some(o) => {
+                let q = Quaternion::from(nalgebra::Vector4::new(
+                    o.get_ref()[1],
+                    o.get_ref()[2],
+                    o.get_ref()[3],
+                    o.get_ref()[0],
+                ));
+                self.finite(&format!("body '{name}' orientation"), o);
+                let n = q.norm();
+                if !n.is_finite() || n == 0.0 {
+                    self.err(
+                        o.span(),
+                        format!(
+                            "body '{name}': orientation must be a non-zero quaternion [w, x, y, z]"
+                        ),
+                    );
+                    Quaternion::identity()
+                } else {
+                    if (n - 1.0).abs() > 1e-6 {
+                        self.warnings.push(Note::new(
+                            format!("body '{name}': orientation has length {n}; it was normalised"),
+                            o.span(),
+                        ));
+                    }
+                    q / n
+                }
+            }
+        };
+        let velocity = self.opt_vec(&format!("body '{name}' velocity"), &raw.velocity);
+        let angular_velocity = self.opt_vec(
+            &format!("body '{name}' angular_velocity"),
+            &raw.angular_velocity,
+        );
+        let acceleration = self.opt_vec(&format!("body '{name}' acceleration"), &raw.acceleration);
+        if mass.is_infinite() {
+            for (field, value) in [
+                ("velocity", &raw.velocity),
+                ("angular_velocity", &raw.angular_velocity),
+            ] {
+                if let Some(v) = value {
+                    if v.get_ref().iter().any(|x| *x != 0.0) {
+                        self.err(
+                            v.span(),
+                            format!("body '{name}' is immovable (mass = inf): its {field} must be zero or absent"),
+                        );
+                    }
+                }
+            }
+        }
+        BodyDef {
+            name,
+            mass,
+            shape,
+            inertia: inertia.filter(|_| movable),
+            shape_inertia,
+            position,
+            orientation,
+            velocity,
+            angular_velocity,
+            acceleration,
+        }
+    }
+
+    fn finite_tensor(&mut self, name: &str, t: &S<[[f64; 3]; 3]>) -> [[f64; 3]; 3] {
+        if t.get_ref().iter().flatten().any(|x| !x.is_finite()) {
+            self.err(
+                t.span(),
+                format!("body '{name}': every inertia component must be a finite number"),
+            );
+        }
+        *t.get_ref()
+    }
+
+    fn check_tensor(&mut self, name: &str, t: &Matrix3<f64>, span: std::ops::Range<usize>) {
+        if !t.iter().all(|x| x.is_finite()) {
+            return;
+        }
+        let asym = (t - t.transpose()).norm();
+        if asym > 1e-9 * t.norm() {
+            self.err(
+                span,
+                format!("body '{name}': inertia tensor must be symmetric (|I − Iᵀ| = {asym})"),
+            );
+            return;
+        }
+        let eig = t.symmetric_eigenvalues();
+        if eig.min() <= 0.0 || t.cholesky().is_none() {
+            self.err(
+                span,
+                format!("body '{name}': inertia tensor must be positive-definite (eigenvalues {:.6e}, {:.6e}, {:.6e})", eig[0], eig[1], eig[2]),
+            );
+            return;
+        }
+        let mut e: Vec<f64> = eig.iter().copied().collect();
+        e.sort_by(|a, b| a.total_cmp(b));
+        if e[0] + e[1] < e[2] * (1.0 - 1e-9) {
+            self.warnings.push(Note::new(
+                format!("body '{name}': principal moments {:.6}, {:.6}, {:.6} break the triangle inequality: no real body has this tensor", e[0], e[1], e[2]),
+                span,
+            ));
+        }
+    }
+
+    fn settings(&mut self, raw: &RawSettings, base: Settings<f64>) -> Settings<f64> {
+        use super::validate::rules;
+        let mut s = base;
+        if let Some(x) = &raw.velocity_limit {
+            s.velocity_limit = self.rule("velocity_limit", x, rules::non_negative);
+        }
+        if let Some(x) = &raw.angular_limit {
+            s.angular_limit = self.rule("angular_limit", x, rules::angular_limit);
+        }
+        if let Some(x) = &raw.relaxation {
+            s.relaxation = self.rule("relaxation", x, rules::relaxation);
+        }
+        if let Some(x) = &raw.duration {
+            s.duration = self.rule("duration", x, rules::duration);
+        }
+        if let Some(p) = &raw.projection {
+            match ProjectionMethod::from_name(p.get_ref()) {
+                Some(m) => s.projection = m,
+                None => self.err(
+                    p.span(),
+                    format!(
+                        "projection must be \"linear\" or \"nonlinear\", got \"{}\"",
+                        p.get_ref()
+                    ),
+                ),
+            }
+        }
+        s
+    }
+
+    fn contact(
+        &mut self,
+        raw: &RawContact,
+        raw_bodies: &[RawBody],
+        bodies: &[BodyDef],
+        defaults: Settings<f64>,
+    ) -> ContactDef {
+        use super::validate::rules;
+        let names = raw.bodies.get_ref();
+        let mut index = Vec::new();
+        for n in names {
+            match raw_bodies
+                .iter()
+                .position(|b| b.name.get_ref() == n.get_ref())
+            {
+                Some(i) => index.push(i),
+                None => self.err(
+                    n.span(),
+                    format!(
+                        "unknown body '{}' (bodies: {})",
+                        n.get_ref(),
+                        body_list(raw_bodies)
+                    ),
+                ),
+            }
+        }
+        if names.is_empty() || names.len() > 2 {
+            self.err(
+                raw.bodies.span(),
+                format!("a contact names one or two bodies, got {}", names.len()),
+            );
+        }
+        if names.len() == 2 && names[0].get_ref() == names[1].get_ref() {
+            self.err(
+                names[1].span(),
+                format!(
+                    "a contact needs two different bodies, got '{}' twice",
+                    names[1].get_ref()
+                ),
+            );
+        }
+        if !index.is_empty()
+            && index.len() == names.len()
+            && index.iter().all(|&i| !bodies[i].movable())
+        {
+            self.err(
+                raw.bodies.span(),
+                "a contact needs at least one movable body (mass < inf)",
+            );
+        }
+        let point = v3(self.finite("contact point", &raw.point));
+        let given = v3(self.finite("contact normal", &raw.normal));
+        let normal_length = given.norm();
+        let normal = if !(normal_length > 1e-12 && normal_length.is_finite()) {
+            self.err(
+                raw.normal.span(),
+                format!("contact normal must be non-zero (its length is {normal_length})"),
+            );
+            Vector3::y()
+        } else {
+            if (normal_length - 1.0).abs() > 1e-4 {
+                self.warnings.push(Note::new(
+                    format!("contact normal has length {normal_length}; it was normalised to unit length"),
+                    raw.normal.span(),
+                ));
+            }
+            given / normal_length
+        };
+        let penetration = raw
+            .penetration
+            .as_ref()
+            .map_or(0.0, |p| self.rule("penetration", p, rules::finite));
+        let restitution = self.rule("contact", &raw.restitution, rules::restitution);
+        let friction = raw
+            .friction
+            .as_ref()
+            .map(|f| self.rule("friction", f, rules::friction));
+        let static_friction = raw
+            .static_friction
+            .as_ref()
+            .map(|f| self.rule("static_friction", f, rules::friction));
+        let dynamic_friction = raw
+            .dynamic_friction
+            .as_ref()
+            .map(|f| self.rule("dynamic_friction", f, rules::friction));
+        let mu_s = static_friction.or(friction).unwrap_or(0.0);
+        let mu_d = dynamic_friction
+            .or(friction)
+            .or(static_friction)
+            .unwrap_or(0.0);
+        if mu_d > mu_s {
+            if let Some(span) = raw.dynamic_friction.as_ref().map(|f| f.span()) {
+                self.warnings.push(Note::new(
+                    format!("dynamic friction {mu_d} exceeds static friction {mu_s}: sliding would grip harder than sticking"),
+                    span,
+                ));
+            }
+        }
+        let friction_model = match &raw.friction_model {
+            None => FrictionModel::default(),
+            Some(m) => FrictionModel::from_name(m.get_ref()).unwrap_or_else(|| {
+                self.err(
+                    m.span(),
+                    format!("friction_model must be one of millington, kinetic-direction, velocity-scaling; got \"{}\"", m.get_ref()),
+                );
+                FrictionModel::default()
+            }),
+        };
+        let settings = match &raw.settings {
+            Some(s) => self.settings(s, defaults),
+            None => defaults,
+        };
+        ContactDef {
+            name: raw.name.clone(),
+            bodies: (index.first().copied().unwrap_or(0), index.get(1).copied()),
+            point,
+            normal,
+            normal_length,
+            penetration,
+            restitution,
+            static_friction: mu_s,
+            dynamic_friction: mu_d,
+            friction_model,
+            settings,
+        }
+    }
+
+    fn printed(&mut self, raw: &super::raw::RawPrinted, contacts: usize) -> Option<Printed> {
+        if raw.contact >= contacts.max(1) {
+            self.err(
+                raw.stage.span(),
+                format!(
+                    "printed entry names contact {} but the lesson has {contacts}",
+                    raw.contact
+                ),
+            );
+            return None;
+        }
+        match Printed::from_raw(raw) {
+            Ok(p) => Some(p),
+            Err(note) => {
+                self.errors.push(note);
+                None
+            }
+        }
+    }
+}
+
+fn body_list(bodies: &[RawBody]) -> String {
+    bodies
+        .iter()
+        .map(|b| b.name.get_ref().as_str())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn diag(m: &Matrix3<f64>) -> String {
+    let f = crate::format::Fmt::default();
+    format!(
+        "({}, {}, {})",
+        f.num(m[(0, 0)]),
+        f.num(m[(1, 1)]),
+        f.num(m[(2, 2)])
+    )
+}

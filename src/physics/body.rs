@@ -1,0 +1,67 @@
+//! Rigid body state as the stages see it.
+
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+
+use super::Real;
+
+/// One movable body of a contact. Immovable bodies are not represented: a
+/// contact slot holding `None` contributes nothing and costs nothing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RigidBody<T: Real> {
+    pub mass: T,
+    pub inverse_mass: T,
+    /// Body-frame inertia tensor (needed for momentum and energy checks).
+    pub inertia_body: Matrix3<T>,
+    /// Body-frame inverse inertia tensor.
+    pub inverse_inertia_body: Matrix3<T>,
+    pub position: Vector3<T>,
+    /// Orientation `[w, x, y, z]`, unit length.
+    pub orientation: Quaternion<T>,
+    pub velocity: Vector3<T>,
+    pub angular_velocity: Vector3<T>,
+    /// Last frame's acceleration, for the micro-collision compensation.
+    pub acceleration: Vector3<T>,
+}
+
+impl<T: Real> RigidBody<T> {
+    /// Rotation matrix R of the body's orientation.
+    pub fn rotation(&self) -> Matrix3<T> {
+        UnitQuaternion::new_normalize(self.orientation)
+            .to_rotation_matrix()
+            .into_inner()
+    }
+
+    /// World inverse inertia `I_w⁻¹ = R I_b⁻¹ Rᵀ`.
+    pub fn inverse_inertia_world(&self) -> Matrix3<T> {
+        let r = self.rotation();
+        r * self.inverse_inertia_body * r.transpose()
+    }
+
+    /// World inertia `I_w = R I_b Rᵀ`.
+    pub fn inertia_world(&self) -> Matrix3<T> {
+        let r = self.rotation();
+        r * self.inertia_body * r.transpose()
+    }
+
+    /// Velocity of the material point at offset `r` from the centre: `ω × r + v` (lecture eq. A).
+    pub fn point_velocity(&self, r: &Vector3<T>) -> Vector3<T> {
+        self.angular_velocity.cross(r) + self.velocity
+    }
+
+    /// Kinetic energy `½ m v·v + ½ ωᵀ I ω`.
+    pub fn kinetic_energy(&self, velocity: &Vector3<T>, angular_velocity: &Vector3<T>) -> T {
+        let half = super::c::<T>(0.5);
+        half * self.mass * velocity.dot(velocity)
+            + half * angular_velocity.dot(&(self.inertia_world() * angular_velocity))
+    }
+
+    /// Angular momentum about the world point `q`: `I ω + (p − q) × m v`.
+    pub fn angular_momentum_about(
+        &self,
+        q: &Vector3<T>,
+        velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+    ) -> Vector3<T> {
+        self.inertia_world() * angular_velocity + (self.position - q).cross(&(velocity * self.mass))
+    }
+}

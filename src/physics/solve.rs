@@ -1,0 +1,146 @@
+//! Runs the stages of one contact in the lecture's order.
+
+use nalgebra::{Quaternion, Vector3};
+
+use super::checks::{run_checks, CheckInputs, Checks};
+use super::stages::*;
+use super::{Problem, Real};
+
+/// Every stage record of one resolved contact. A stage the contact does not
+/// need is `None`; [`Solution::skip`] says why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution<T: Real> {
+    pub frame: ContactFrame<T>,
+    pub unit: UnitImpulse<T>,
+    pub desired: DesiredVelocity<T>,
+    /// `None` when the contact is separating (Δv ≤ 0): no impulse is applied.
+    pub impulse: Option<Impulse<T>>,
+    /// `None` without friction or without an impulse.
+    pub friction: Option<FrictionClamp<T>>,
+    pub applied: Option<AppliedImpulse<T>>,
+    /// `None` without penetration.
+    pub projection: Option<Projection<T>>,
+    /// `None` when projection rotates nothing.
+    pub orientation: Option<OrientationUpdate<T>>,
+    pub checks: Checks<T>,
+}
+
+/// Why a stage was skipped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Skip {
+    Separating,
+    NoFriction,
+    NoPenetration,
+    NoRotation,
+}
+
+/// A body's state after the contact is resolved.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyAfter<T: Real> {
+    pub position: Vector3<T>,
+    pub orientation: Quaternion<T>,
+    pub velocity: Vector3<T>,
+    pub angular_velocity: Vector3<T>,
+}
+
+pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
+    let contact = &problem.contact;
+    let frame = contact_frame(problem);
+    let unit = unit_impulse(problem, &frame, contact.has_friction());
+    let desired = desired_delta_velocity(problem, &frame);
+    let closing = desired.desired > T::zero();
+    let impulse = closing.then(|| impulse(problem, &frame, &unit, &desired));
+    let friction = impulse
+        .as_ref()
+        .filter(|_| contact.has_friction())
+        .map(|g| friction_clamp(problem, &frame, &unit, &desired, g));
+    let final_impulse = friction
+        .as_ref()
+        .map(|f| f.impulse_world)
+        .or(impulse.as_ref().map(|g| g.impulse_world));
+    let applied = final_impulse.map(|g| apply_impulse(problem, &frame, &g));
+    let projection =
+        (contact.penetration > T::zero()).then(|| nonlinear_projection(problem, &frame));
+    let orientation = projection
+        .as_ref()
+        .map(|p| orientation_update(problem, p))
+        .filter(|o| o.bodies.iter().any(Option::is_some));
+    let checks = run_checks(&CheckInputs {
+        problem,
+        frame: &frame,
+        desired: &desired,
+        applied: applied.as_ref(),
+        friction: friction.as_ref(),
+        projection: projection.as_ref(),
+        orientation: orientation.as_ref(),
+    });
+    Solution {
+        frame,
+        unit,
+        desired,
+        impulse,
+        friction,
+        applied,
+        projection,
+        orientation,
+        checks,
+    }
+}
+
+impl<T: Real> Solution<T> {
+    /// The reason a stage was skipped, by stage id; `None` when it ran.
+    pub fn skip(&self, stage: &str) -> Option<Skip> {
+        match stage {
+            "impulse" | "apply_impulse" if self.impulse.is_none() => Some(Skip::Separating),
+            "friction_clamp" if self.friction.is_none() => Some(if self.impulse.is_none() {
+                Skip::Separating
+            } else {
+                Skip::NoFriction
+            }),
+            "nonlinear_projection" if self.projection.is_none() => Some(Skip::NoPenetration),
+            "orientation_update" if self.orientation.is_none() => {
+                Some(if self.projection.is_none() {
+                    Skip::NoPenetration
+                } else {
+                    Skip::NoRotation
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// The impulse actually applied (after the friction clamp), world space.
+    pub fn final_impulse_world(&self) -> Option<Vector3<T>> {
+        self.friction
+            .as_ref()
+            .map(|f| f.impulse_world)
+            .or(self.impulse.as_ref().map(|g| g.impulse_world))
+    }
+
+    /// State of body slot `i` after velocity and position resolution.
+    pub fn after(&self, problem: &Problem<T>, i: usize) -> Option<BodyAfter<T>> {
+        let body = problem.bodies[i].as_ref()?;
+        let applied = self.applied.as_ref().and_then(|a| a.bodies[i].as_ref());
+        let moved = self.projection.as_ref().and_then(|p| p.bodies[i].as_ref());
+        let turned = self.orientation.as_ref().and_then(|o| o.bodies[i].as_ref());
+        Some(BodyAfter {
+            position: moved.map_or(body.position, |m| m.position),
+            orientation: turned.map_or(body.orientation, |o| o.normalised),
+            velocity: applied.map_or(body.velocity, |a| a.v),
+            angular_velocity: applied.map_or(body.angular_velocity, |a| a.w),
+        })
+    }
+}
+
+/// The stage ids in order (GUIDE §4).
+pub const STAGE_IDS: [&str; 9] = [
+    "contact_frame",
+    "unit_impulse",
+    "desired_delta_velocity",
+    "impulse",
+    "friction_clamp",
+    "apply_impulse",
+    "nonlinear_projection",
+    "orientation_update",
+    "checks",
+];

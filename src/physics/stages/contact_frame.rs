@@ -1,0 +1,42 @@
+//! Stage 1: contact basis and relative contact positions `r_i = q − p_i`.
+
+use nalgebra::{Matrix3, Vector3};
+
+use crate::physics::frame::{contact_basis, GuessAxis};
+use crate::physics::{Problem, Real};
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactFrame<T: Real> {
+    /// Columns d, t0, t1: converts contact coordinates to world coordinates.
+    pub contact_to_world: Matrix3<T>,
+    pub guess: GuessAxis,
+    /// `r_i = q − p_i` for each movable body.
+    pub r: [Option<Vector3<T>>; 2],
+}
+
+impl<T: Real> ContactFrame<T> {
+    pub fn normal(&self) -> Vector3<T> {
+        self.contact_to_world.column(0).into_owned()
+    }
+
+    /// World vector into contact coordinates (`Cᵀ v`).
+    pub fn to_contact(&self, v: &Vector3<T>) -> Vector3<T> {
+        self.contact_to_world.transpose() * v
+    }
+
+    /// Contact vector into world coordinates (`C v`).
+    pub fn to_world(&self, v: &Vector3<T>) -> Vector3<T> {
+        self.contact_to_world * v
+    }
+}
+
+pub fn contact_frame<T: Real>(problem: &Problem<T>) -> ContactFrame<T> {
+    let (contact_to_world, guess) = contact_basis(&problem.contact.normal);
+    let q = problem.contact.point;
+    let r = [0, 1].map(|i| problem.bodies[i].as_ref().map(|b| q - b.position));
+    ContactFrame {
+        contact_to_world,
+        guess,
+        r,
+    }
+}

@@ -1,0 +1,125 @@
+//! Stage 5: the friction clamp.
+//!
+//! Millington (lecture procedure, reference engine): if `|g_planar| ≤ μ_s g_n`
+//! the contact sticks; otherwise it slides, the tangential impulse becomes
+//! `μ_d g_n` along the sticking impulse's direction and `g_n` is recomputed so
+//! the normal velocity target still holds. The seeds' other models live here too.
+
+use nalgebra::Vector3;
+
+use super::impulse::solve_matrix;
+use super::{ContactFrame, DesiredVelocity, Impulse, MatrixSolve, UnitImpulse};
+use crate::physics::{FrictionModel, Problem, Real};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FrictionRegime {
+    Static,
+    Dynamic,
+}
+
+/// Why the clamp could not do what its model asks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FrictionIssue {
+    /// Kinetic-direction model: no sliding, so the tangent `t` is undefined.
+    UndefinedDirection,
+    /// Millington dynamic case: `M₀₀ + μ_d(M₀₁u_y + M₀₂u_z) ≤ 0`, friction would
+    /// need a negative normal impulse (jamming); the frictionless impulse is used.
+    Jamming,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionClamp<T: Real> {
+    pub model: FrictionModel,
+    pub regime: FrictionRegime,
+    /// Millington: |g_planar| of the sticking impulse. Velocity-scaling: |v_planar|
+    /// (a velocity). Kinetic-direction: μ_k j.
+    pub planar: T,
+    /// The static limit the regime was decided against (μ_s g_n, or v_c μ_s).
+    pub limit: T,
+    /// Coefficient that sized the tangential impulse (μ_d when sliding).
+    pub sized_by: Option<T>,
+    pub impulse_contact: Vector3<T>,
+    pub impulse_world: Vector3<T>,
+    /// Present when the dynamic case re-solved the 3×3 system (velocity-scaling).
+    pub solve: Option<MatrixSolve<T>>,
+    pub issue: Option<FrictionIssue>,
+}
+
+pub fn friction_clamp<T: Real>(
+    problem: &Problem<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    impulse: &Impulse<T>,
+) -> FrictionClamp<T> {
+    let contact = &problem.contact;
+    let (mu_s, mu_d) = (contact.static_friction, contact.dynamic_friction);
+    let g = impulse.impulse_contact;
+    let v = desired.contact_velocity;
+    let mut out = FrictionClamp {
+        model: contact.friction_model,
+        regime: FrictionRegime::Static,
+        planar: T::zero(),
+        limit: T::zero(),
+        sized_by: None,
+        impulse_contact: g,
+        impulse_world: impulse.impulse_world,
+        solve: None,
+        issue: None,
+    };
+    match contact.friction_model {
+        FrictionModel::Millington => {
+            out.planar = (g.y * g.y + g.z * g.z).sqrt();
+            out.limit = mu_s * g.x;
+            if out.planar > out.limit {
+                out.regime = FrictionRegime::Dynamic;
+                out.sized_by = Some(mu_d);
+                let m = unit.matrix.unwrap_or_else(nalgebra::Matrix3::identity);
+                let (uy, uz) = (g.y / out.planar, g.z / out.planar);
+                let per_unit = m[(0, 0)] + mu_d * (m[(0, 1)] * uy + m[(0, 2)] * uz);
+                if per_unit > T::zero() {
+                    let gn = desired.desired / per_unit;
+                    out.impulse_contact = Vector3::new(gn, mu_d * gn * uy, mu_d * gn * uz);
+                } else {
+                    out.issue = Some(FrictionIssue::Jamming);
+                    out.impulse_contact =
+                        Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
+                }
+            }
+        }
+        FrictionModel::VelocityScaling => {
+            out.planar = (v.y * v.y + v.z * v.z).sqrt();
+            out.limit = -v.x * mu_s;
+            if out.planar > out.limit {
+                out.regime = FrictionRegime::Dynamic;
+                out.sized_by = Some(mu_d);
+                if let Some(m) = unit.matrix {
+                    let rhs = Vector3::new(desired.desired, -mu_d * v.y, -mu_d * v.z);
+                    let (solved, solve) = solve_matrix(&m, rhs);
+                    if let Some(solved) = solved {
+                        out.impulse_contact = solved;
+                    }
+                    out.solve = Some(solve);
+                }
+            }
+        }
+        FrictionModel::KineticDirection => {
+            let j = impulse.closed_form_j;
+            let slide = (v.y * v.y + v.z * v.z).sqrt();
+            out.limit = mu_d * j;
+            // t is undefined when nothing slides; ε-relative test against the normal speed.
+            if slide > T::default_epsilon() * (v.x.abs() + slide) && slide > T::zero() {
+                out.regime = FrictionRegime::Dynamic;
+                out.sized_by = Some(mu_d);
+                out.planar = mu_d * j;
+                out.impulse_contact =
+                    Vector3::new(j, -mu_d * j * v.y / slide, -mu_d * j * v.z / slide);
+            } else {
+                out.issue = Some(FrictionIssue::UndefinedDirection);
+                out.impulse_contact = Vector3::new(j, T::zero(), T::zero());
+            }
+        }
+    }
+    out.impulse_world = frame.to_world(&out.impulse_contact);
+    out
+}

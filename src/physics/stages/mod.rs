@@ -1,0 +1,20 @@
+//! One module per resolution stage, each a pure function returning a record.
+//! The order here is the order of the lecture (and of the trace).
+
+pub mod apply_impulse;
+pub mod contact_frame;
+pub mod desired_velocity;
+pub mod friction;
+pub mod impulse;
+pub mod orientation;
+pub mod projection;
+pub mod unit_impulse;
+
+pub use apply_impulse::{apply_impulse, AppliedImpulse, BodyVelocityChange};
+pub use contact_frame::{contact_frame, ContactFrame};
+pub use desired_velocity::{desired_delta_velocity, DesiredVelocity};
+pub use friction::{friction_clamp, FrictionClamp, FrictionRegime};
+pub use impulse::{impulse, Impulse, MatrixSolve};
+pub use orientation::{orientation_update, BodyOrientation, OrientationUpdate};
+pub use projection::{nonlinear_projection, BodyProjection, Projection};
+pub use unit_impulse::{unit_impulse, BodyUnitResponse, UnitImpulse};

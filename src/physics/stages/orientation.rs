@@ -1,0 +1,68 @@
+//! Stage 8: orientation update `θ' = θ + ½ [0, Δθ] θ`, then normalise.
+
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+
+use super::Projection;
+use crate::physics::{c, Problem, Real};
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyOrientation<T: Real> {
+    pub before: Quaternion<T>,
+    /// The rotation vector Δθ applied.
+    pub rotation: Vector3<T>,
+    pub unnormalised: Quaternion<T>,
+    pub normalised: Quaternion<T>,
+    /// Angle of the rotation from `before` to `normalised`, in degrees (≥ 0).
+    pub angle_degrees: T,
+    /// Unit axis of that rotation (zero when there is none).
+    pub axis: Vector3<T>,
+    /// `|Δθ|` in degrees: the small-angle estimate of the same angle.
+    pub rotation_vector_degrees: T,
+    /// Tait–Bryan angles of the new orientation, intrinsic z-y′-x″ (yaw, pitch, roll), degrees.
+    pub euler_zyx_degrees: Vector3<T>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct OrientationUpdate<T: Real> {
+    pub bodies: [Option<BodyOrientation<T>>; 2],
+}
+
+/// `θ + ½ [0, Δθ] θ` (lecture, "Nonlinear Projection"), not normalised.
+pub fn add_scaled_rotation<T: Real>(theta: &Quaternion<T>, rotation: &Vector3<T>) -> Quaternion<T> {
+    let spin = Quaternion::new(T::zero(), rotation.x, rotation.y, rotation.z);
+    theta + (spin * theta) * c::<T>(0.5)
+}
+
+pub fn orientation_update<T: Real>(
+    problem: &Problem<T>,
+    projection: &Projection<T>,
+) -> OrientationUpdate<T> {
+    let degrees = c::<T>(180.0) / T::pi();
+    let bodies = [0, 1].map(|i| {
+        let body = problem.bodies[i].as_ref()?;
+        let moved = projection.bodies[i].as_ref()?;
+        if moved.angular_change == Vector3::zeros() {
+            return None;
+        }
+        let before = body.orientation;
+        let unnormalised = add_scaled_rotation(&before, &moved.angular_change);
+        let unit = UnitQuaternion::new_normalize(unnormalised);
+        let delta = unit * UnitQuaternion::new_normalize(before).inverse();
+        let (axis, angle) = delta
+            .axis_angle()
+            .map(|(a, ang)| (a.into_inner(), ang))
+            .unwrap_or((Vector3::zeros(), T::zero()));
+        let (roll, pitch, yaw) = unit.euler_angles();
+        Some(BodyOrientation {
+            before,
+            rotation: moved.angular_change,
+            unnormalised,
+            normalised: unit.into_inner(),
+            angle_degrees: angle * degrees,
+            axis,
+            rotation_vector_degrees: moved.angular_change.norm() * degrees,
+            euler_zyx_degrees: Vector3::new(yaw, pitch, roll) * degrees,
+        })
+    });
+    OrientationUpdate { bodies }
+}

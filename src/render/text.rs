@@ -1,0 +1,108 @@
+//! Plain text, laid out like the lecture's worked examples: per stage the
+//! formula, the numbers put into it, the result.
+
+use std::fmt::Write;
+
+use crate::format::Fmt;
+use crate::trace::{Formula, Step, Trace};
+
+/// `lhs = rhs`, `= numbers`, `= result`, aligned under the `=`.
+pub fn formula_lines(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
+    let mut rhs = Vec::new();
+    if !f.rhs.is_empty() {
+        rhs.push(f.rhs.clone());
+    }
+    if let Some(s) = &f.substituted {
+        rhs.push(fmt.fill(s, step, false));
+    }
+    if let Some(r) = f.result.as_ref().and_then(|r| step.lookup(r)) {
+        let r = fmt.value(r);
+        if rhs.last() != Some(&r) {
+            rhs.push(r);
+        }
+    }
+    let pad = " ".repeat(f.lhs.chars().count());
+    rhs.iter()
+        .enumerate()
+        .map(|(i, r)| {
+            if i == 0 {
+                format!("{} = {r}", f.lhs)
+            } else {
+                format!("{pad} = {r}")
+            }
+        })
+        .collect()
+}
+
+pub fn render(trace: &Trace, fmt: &Fmt) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "{}  ({})", trace.title, trace.lesson);
+    if !trace.source.is_empty() {
+        let _ = writeln!(out, "Source: {}", trace.source);
+    }
+    let _ = writeln!(out, "Contact {}", trace.contact_label);
+    for w in &trace.warnings {
+        let _ = writeln!(out, "warning: {w}");
+    }
+    for (i, step) in trace.stages.iter().enumerate() {
+        let _ = writeln!(out);
+        match &step.skipped {
+            Some(why) => {
+                let _ = writeln!(
+                    out,
+                    "{}. {} [{}] — skipped: {why}",
+                    i + 1,
+                    step.title,
+                    step.id
+                );
+            }
+            None => {
+                let _ = writeln!(out, "{}. {} [{}]", i + 1, step.title, step.id);
+                for f in &step.formulas {
+                    for line in formula_lines(f, step, fmt) {
+                        let _ = writeln!(out, "   {line}");
+                    }
+                }
+                for note in &step.notes {
+                    let _ = writeln!(out, "   · {}", fmt.fill(note, step, false));
+                }
+            }
+        }
+    }
+    let _ = writeln!(out);
+    let _ = writeln!(out, "After");
+    for (name, a) in &trace.after {
+        let v = |x: &[f64]| format!("({})", fmt.list(x));
+        let _ = writeln!(
+            out,
+            "   {name}: position {}, orientation [{}]",
+            v(&a.position),
+            fmt.list(&a.orientation)
+        );
+        let _ = writeln!(
+            out,
+            "   {}  velocity {}, angular velocity {}",
+            " ".repeat(name.chars().count()),
+            v(&a.velocity),
+            v(&a.angular_velocity)
+        );
+    }
+    if let Some(checks) = trace.stage("checks") {
+        let _ = writeln!(out);
+        let _ = writeln!(out, "Checks");
+        for v in &trace.verdicts {
+            let mark = match v.passed {
+                Some(true) => "✓",
+                Some(false) => "✗",
+                None => "·",
+            };
+            let _ = writeln!(
+                out,
+                "   {mark} {}: {}",
+                v.label,
+                fmt.fill(&v.detail, checks, false)
+            );
+        }
+    }
+    out
+}

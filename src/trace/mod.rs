@@ -1,0 +1,154 @@
+//! The trace: one description of a worked solution, built from the stage
+//! records. Renderers (text, JSON, Markdown, LaTeX, SVG, TUI) read only this.
+
+mod build;
+pub mod latex;
+mod scene;
+
+use nalgebra::{Matrix3, Quaternion, Vector3};
+
+pub use build::build;
+pub use scene::{BodyView, SceneView, ShapeView};
+
+/// A value a stage takes in or produces.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value {
+    Scalar(f64),
+    Vector([f64; 3]),
+    Quaternion([f64; 4]),
+    /// Rows.
+    Matrix([[f64; 3]; 3]),
+    Text(String),
+}
+
+impl From<f64> for Value {
+    fn from(x: f64) -> Self {
+        Value::Scalar(x)
+    }
+}
+impl From<Vector3<f64>> for Value {
+    fn from(v: Vector3<f64>) -> Self {
+        Value::Vector([v.x, v.y, v.z])
+    }
+}
+impl From<Quaternion<f64>> for Value {
+    fn from(q: Quaternion<f64>) -> Self {
+        Value::Quaternion([q.w, q.i, q.j, q.k])
+    }
+}
+impl From<Matrix3<f64>> for Value {
+    fn from(m: Matrix3<f64>) -> Self {
+        Value::Matrix([0, 1, 2].map(|r| [0, 1, 2].map(|c| m[(r, c)])))
+    }
+}
+impl From<&str> for Value {
+    fn from(s: &str) -> Self {
+        Value::Text(s.to_string())
+    }
+}
+
+impl Value {
+    /// The numbers of the value, row by row.
+    pub fn numbers(&self) -> Vec<f64> {
+        match self {
+            Value::Scalar(x) => vec![*x],
+            Value::Vector(v) => v.to_vec(),
+            Value::Quaternion(q) => q.to_vec(),
+            Value::Matrix(m) => m.iter().flatten().copied().collect(),
+            Value::Text(_) => vec![],
+        }
+    }
+}
+
+/// One formula: symbols, then the numbers put into it, then the result.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Formula {
+    /// Left-hand side, e.g. `Δv`.
+    pub lhs: String,
+    /// Symbolic right-hand side, e.g. `−(1 + c)·v_s`.
+    pub rhs: String,
+    /// The right-hand side with `{name}` placeholders for numbers.
+    pub substituted: Option<String>,
+    /// Name of the value (in `values` or `inputs`) that is the result.
+    pub result: Option<String>,
+    /// LaTeX of `lhs = rhs`.
+    pub latex: String,
+    /// LaTeX of the substituted form, placeholders kept.
+    pub substituted_latex: Option<String>,
+}
+
+/// One stage of the worked solution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Step {
+    pub id: &'static str,
+    pub title: &'static str,
+    /// Why the stage did not run, when it did not.
+    pub skipped: Option<String>,
+    pub formulas: Vec<Formula>,
+    /// Numbers the formulas take in (not part of the JSON contract).
+    pub inputs: Vec<(String, Value)>,
+    /// Named results (the JSON contract, GUIDE §4).
+    pub values: Vec<(String, Value)>,
+    pub notes: Vec<String>,
+}
+
+impl Step {
+    /// A value or input by name.
+    pub fn lookup(&self, name: &str) -> Option<&Value> {
+        self.values
+            .iter()
+            .chain(self.inputs.iter())
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v)
+    }
+
+    pub fn value(&self, name: &str) -> Option<&Value> {
+        self.values.iter().find(|(n, _)| n == name).map(|(_, v)| v)
+    }
+}
+
+/// Pass / fail of one invariant, for the checks panel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Verdict {
+    pub label: String,
+    /// `None` for an informative measurement.
+    pub passed: Option<bool>,
+    pub detail: String,
+}
+
+/// A body's state after the contact is resolved.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AfterState {
+    pub position: [f64; 3],
+    pub orientation: [f64; 4],
+    pub velocity: [f64; 3],
+    pub angular_velocity: [f64; 3],
+}
+
+/// The worked solution of one contact.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trace {
+    pub lesson: String,
+    pub title: String,
+    pub source: String,
+    pub summary: String,
+    pub contact: usize,
+    pub contact_label: String,
+    pub bodies: Vec<String>,
+    pub stages: Vec<Step>,
+    pub after: Vec<(String, AfterState)>,
+    pub verdicts: Vec<Verdict>,
+    pub warnings: Vec<String>,
+    pub scene: SceneView,
+}
+
+impl Trace {
+    pub fn stage(&self, id: &str) -> Option<&Step> {
+        self.stages.iter().find(|s| s.id == id)
+    }
+
+    /// A stage's named value.
+    pub fn value(&self, stage: &str, name: &str) -> Option<&Value> {
+        self.stage(stage)?.value(name)
+    }
+}
