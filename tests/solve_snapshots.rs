@@ -1,0 +1,32 @@
+//! `solve` in text and JSON for every contact of every lesson file, held as
+//! snapshots. A change here is reviewed line by line (`cargo insta review`).
+
+mod common;
+
+use contact_lab::format::Fmt;
+use contact_lab::lesson::validate;
+use contact_lab::render;
+
+#[test]
+fn solve_text_and_json_of_every_lesson() {
+    common::snapshot_settings().bind(|| {
+        insta::glob!("../lessons", "**/*.toml", |path| {
+            let text = std::fs::read_to_string(path).unwrap();
+            let origin = path
+                .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+                .unwrap_or(path)
+                .display()
+                .to_string();
+            let lesson = validate::parse(&origin, &text).expect("lesson is valid");
+            let mut out_text = String::new();
+            let mut out_json = String::new();
+            for k in 0..lesson.contacts.len() {
+                let trace = contact_lab::worked_solution(&lesson, k);
+                out_text.push_str(&render::text::render(&trace, &Fmt::default()));
+                out_json.push_str(&render::json::render(&trace));
+            }
+            insta::assert_snapshot!("solve_text", out_text);
+            insta::assert_snapshot!("solve_json", out_json);
+        });
+    });
+}
