@@ -1,16 +1,13 @@
 //! Lessons compiled into the binary, so the app works from any directory.
 
+macro_rules! embed {
+    ($($file:literal),* $(,)?) => {
+        &[$(($file, include_str!(concat!("../../lessons/", $file)))),*]
+    };
+}
+
 /// `(file name, text)` of every lesson under `lessons/` (a test checks the list is complete).
-pub const LESSONS: &[(&str, &str)] = &[
-    (
-        "lecture-1.toml",
-        include_str!("../../lessons/lecture-1.toml"),
-    ),
-    (
-        "lecture-2.toml",
-        include_str!("../../lessons/lecture-2.toml"),
-    ),
-];
+pub const LESSONS: &[(&str, &str)] = embed!["lecture-1.toml", "lecture-2.toml", "lecture-3.toml",];
 
 /// Id of an embedded lesson file: its `id = "…"` line (file names match ids).
 pub fn ids() -> Vec<&'static str> {

@@ -138,6 +138,13 @@ fn skip_reason(skip: Skip) -> &'static str {
     }
 }
 
+/// True when the normal passes through the centre to within the data's
+/// rounding: the angle between r and d̂ has sine below 10⁻⁴ (the lecture's
+/// four-digit data leaves about 5·10⁻⁵).
+fn through_centre(r: &Vector3<f64>, d: &Vector3<f64>) -> bool {
+    r.cross(d).norm() <= 1e-4 * r.norm()
+}
+
 /// `Some((axis letter, counter_clockwise))` when `v` lies along one world axis.
 fn about_one_axis(v: &Vector3<f64>) -> Option<(char, bool)> {
     let n = v.norm();
@@ -303,7 +310,7 @@ impl Ctx<'_> {
                 Some(&format!("angular{n}")),
             );
             total_parts.push(format!("{{angular{n}}}"));
-            if r.angular.abs() <= 1e-9 * u.linear.max(r.angular.abs()) {
+            if through_centre(&self.s.frame.r[i].unwrap_or_default(), &d) {
                 b.note(format!(
                     "For {} the normal passes through the centre of mass (r × d̂ ≈ 0), so the angular term is zero: only the linear term resists the impulse.",
                     self.name(i)
@@ -726,6 +733,7 @@ impl Ctx<'_> {
             b.value(format!("linear_move{n}"), m.linear_move);
             b.value(format!("angular_move{n}"), m.angular_move);
             b.value(format!("angular_limit{n}"), m.angular_limit);
+            b.input(format!("r_perp_length{n}"), m.r_perp_length);
             b.value(format!("linear_change{n}"), m.linear_change);
             b.value(format!("rotation_per_unit{n}"), m.rotation_per_unit);
             b.value(format!("angular_change{n}"), m.angular_change);
@@ -750,7 +758,7 @@ impl Ctx<'_> {
             b.f(
                 &format!("limit{s}"),
                 &format!("angular_limit · |r{s} − (r{s}·d̂)d̂|"),
-                None,
+                Some(&format!("{{angular_limit_setting}} × {{r_perp_length{n}}}")),
                 Some(&format!("angular_limit{n}")),
             );
             if m.limited {
@@ -784,11 +792,12 @@ impl Ctx<'_> {
                 Some(&format!("{{p{n}}} + {{linear_change{n}}}")),
                 Some(&format!("position{n}")),
             );
-            if m.angular_inertia.abs() <= 1e-12 * m.linear_inertia
+            let d = self.s.frame.normal();
+            if through_centre(&self.s.frame.r[i].unwrap_or_default(), &d)
                 && p.method == ProjectionMethod::Nonlinear
             {
                 b.note(format!(
-                    "{} has no angular inertia along the normal (r × d̂ ≈ 0): it only translates.",
+                    "{}'s contact arm lies along the normal (r × d̂ ≈ 0): its angular inertia is (all but) zero, so it (all but) only translates.",
                     self.name(i)
                 ));
             }
@@ -888,6 +897,12 @@ impl Ctx<'_> {
             }
         }
         if self.s.checks.get(CheckKind::ResidualPenetration).is_some() {
+            b.f(
+                "residual",
+                "d_pen − Σ (−1)^(i+1) (qᵢ′ − q) · d̂",
+                Some("{depth_to_resolve} − {separation_gained}"),
+                Some("residual_penetration"),
+            );
             b.note("Residual penetration = depth to resolve − separation actually gained when each body's contact point is carried by its finite move (new position and normalised rotation). It measures how far the linearised estimate is off.");
         }
         b.done()

@@ -17,6 +17,8 @@ pub struct BodyProjection<T: Real> {
     /// Moves before the angular limit.
     pub linear_move_unlimited: T,
     pub angular_move_unlimited: T,
+    /// `|r − (r·d)d|`, the lever arm across the normal.
+    pub r_perp_length: T,
     /// `angular_limit·|r⊥|`.
     pub angular_limit: T,
     /// True when the limit cut the angular move.
@@ -76,7 +78,8 @@ pub fn nonlinear_projection<T: Real>(
 
         // Avoiding excessive rotation: scale the limit by the lever arm's size.
         let r_perp = r - d * r.dot(&d);
-        let angular_limit = settings.angular_limit * r_perp.norm();
+        let r_perp_length = r_perp.norm();
+        let angular_limit = settings.angular_limit * r_perp_length;
         let limited = angular_move_unlimited.abs() > angular_limit;
         let angular_move = if limited {
             angular_limit * angular_move_unlimited.signum()
@@ -96,6 +99,7 @@ pub fn nonlinear_projection<T: Real>(
             angular_inertia,
             linear_move_unlimited,
             angular_move_unlimited,
+            r_perp_length,
             angular_limit,
             limited,
             linear_move,
