@@ -7,7 +7,16 @@ macro_rules! embed {
 }
 
 /// `(file name, text)` of every lesson under `lessons/` (a test checks the list is complete).
-pub const LESSONS: &[(&str, &str)] = embed!["lecture-1.toml", "lecture-2.toml", "lecture-3.toml",];
+#[rustfmt::skip]
+pub const LESSONS: &[(&str, &str)] = embed![
+    "lecture-1.toml",
+    "lecture-2.toml",
+    "lecture-3.toml",
+    "friction-cube.toml",
+    "spinning-ball.toml",
+    "excessive-rotation.toml",
+    "two-boxes.toml",
+];
 
 /// Id of an embedded lesson file: its `id = "…"` line (file names match ids).
 pub fn ids() -> Vec<&'static str> {

@@ -508,7 +508,9 @@ impl Ctx<'_> {
             None,
             Some("closed_form_j"),
         );
-        if self.s.desired.velocity_from_acceleration == 0.0 {
+        if g.solve.is_some() {
+            b.note("For comparison, without friction the companion lectures' closed form gives j = {closed_form_j} along the normal.");
+        } else if self.s.desired.velocity_from_acceleration == 0.0 {
             b.note("The companion lectures' closed form j = {closed_form_j} agrees with Δv / Δq̇_t to a relative {closed_form_relative_difference}: the same number by a different route ((r × n)ᵀ I⁻¹ (r × n) = ((I⁻¹(r × n)) × r) · n).");
         } else {
             b.note("The closed form j = {closed_form_j} has no acceleration compensation, so it differs from Δv / Δq̇_t here (relative {closed_form_relative_difference}).");
@@ -551,18 +553,33 @@ impl Ctx<'_> {
                 );
                 if f.regime == FrictionRegime::Static {
                     b.note("|g_planar| ≤ μ_s g_n: static friction can supply the sticking impulse, so the contact sticks and the impulse is unchanged. μ_s decided the regime.");
+                } else if f.issue == Some(FrictionIssue::Jamming) {
+                    b.note("JAMMING: M₀₀ + μ_d(M₀₁u_y + M₀₂u_z) ≤ 0, friction would need a negative normal impulse; the frictionless impulse is used instead.");
                 } else {
-                    b.f("g_n", "Δv / (M₀₀ + μ_d (M₀₁ u_y + M₀₂ u_z))", None, None);
+                    b.input("matrix", self.s.unit.matrix.unwrap_or_default());
+                    b.value("direction", f.direction);
+                    b.value("normal_per_unit", f.normal_per_unit);
+                    b.value("normal_impulse", f.impulse_contact.x);
+                    b.f("u", "(0, g_y, g_z) / |g_planar|", None, Some("direction"));
+                    b.f(
+                        "M₀₀ + μ_d (M₀₁ u_y + M₀₂ u_z)",
+                        "",
+                        None,
+                        Some("normal_per_unit"),
+                    );
+                    b.f(
+                        "g_n",
+                        "Δv / (M₀₀ + μ_d (M₀₁ u_y + M₀₂ u_z))",
+                        Some("{desired} / {normal_per_unit}"),
+                        Some("normal_impulse"),
+                    );
                     b.f(
                         "g",
                         "(g_n, μ_d g_n u_y, μ_d g_n u_z)",
                         None,
                         Some("impulse_contact"),
                     );
-                    b.note("|g_planar| > μ_s g_n: the contact slides. μ_s decided the regime; μ_d sizes the tangential impulse μ_d g_n along the sticking impulse's direction u, and g_n is recomputed so the normal velocity target Δv still holds.");
-                }
-                if f.issue == Some(FrictionIssue::Jamming) {
-                    b.note("JAMMING: M₀₀ + μ_d(M₀₁u_y + M₀₂u_z) ≤ 0, friction would need a negative normal impulse; the frictionless impulse is used instead.");
+                    b.note("|g_planar| > μ_s g_n: the contact slides. μ_s decided the regime; μ_d = {mu_d} sizes the tangential impulse μ_d g_n along the sticking impulse's direction u, and g_n is recomputed so the normal velocity target Δv still holds.");
                 }
             }
             FrictionModel::VelocityScaling => {
@@ -589,6 +606,12 @@ impl Ctx<'_> {
                 }
             }
         }
+        b.f(
+            "g_world",
+            "C g_contact",
+            Some("{contact_to_world} {impulse_contact}"),
+            Some("impulse_world"),
+        );
         b.done()
     }
 
@@ -895,6 +918,14 @@ impl Ctx<'_> {
             } else {
                 b.note("ENERGY ROSE: kinetic energy after ({energy_after}) exceeds before ({energy_before}); with restitution ≤ 1 and no friction this should not happen.");
             }
+        }
+        if self
+            .s
+            .checks
+            .get(CheckKind::Slip)
+            .is_some_and(|c| c.passed.is_none())
+        {
+            b.note("The slip speed rose ({slip_speed_before} → {slip_speed_after}) while sliding: the normal impulse itself drives the contact point sideways (M₀₁, M₀₂ ≠ 0), more than friction capped at μ g_n can take away. This is Coulomb friction working as intended, not an error.");
         }
         if self.s.checks.get(CheckKind::ResidualPenetration).is_some() {
             b.f(

@@ -38,6 +38,10 @@ pub struct FrictionClamp<T: Real> {
     pub limit: T,
     /// Coefficient that sized the tangential impulse (μ_d when sliding).
     pub sized_by: Option<T>,
+    /// Unit slide direction in contact space `(0, u_y, u_z)` (dynamic cases).
+    pub direction: Vector3<T>,
+    /// Millington dynamic: `M₀₀ + μ_d (M₀₁ u_y + M₀₂ u_z)`, velocity per unit normal impulse.
+    pub normal_per_unit: T,
     pub impulse_contact: Vector3<T>,
     pub impulse_world: Vector3<T>,
     /// Present when the dynamic case re-solved the 3×3 system (velocity-scaling).
@@ -62,6 +66,8 @@ pub fn friction_clamp<T: Real>(
         planar: T::zero(),
         limit: T::zero(),
         sized_by: None,
+        direction: Vector3::zeros(),
+        normal_per_unit: T::zero(),
         impulse_contact: g,
         impulse_world: impulse.impulse_world,
         solve: None,
@@ -77,6 +83,8 @@ pub fn friction_clamp<T: Real>(
                 let m = unit.matrix.unwrap_or_else(nalgebra::Matrix3::identity);
                 let (uy, uz) = (g.y / out.planar, g.z / out.planar);
                 let per_unit = m[(0, 0)] + mu_d * (m[(0, 1)] * uy + m[(0, 2)] * uz);
+                out.direction = Vector3::new(T::zero(), uy, uz);
+                out.normal_per_unit = per_unit;
                 if per_unit > T::zero() {
                     let gn = desired.desired / per_unit;
                     out.impulse_contact = Vector3::new(gn, mu_d * gn * uy, mu_d * gn * uz);
@@ -112,6 +120,7 @@ pub fn friction_clamp<T: Real>(
                 out.regime = FrictionRegime::Dynamic;
                 out.sized_by = Some(mu_d);
                 out.planar = mu_d * j;
+                out.direction = Vector3::new(T::zero(), -v.y / slide, -v.z / slide);
                 out.impulse_contact =
                     Vector3::new(j, -mu_d * j * v.y / slide, -mu_d * j * v.z / slide);
             } else {
