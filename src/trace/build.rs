@@ -538,6 +538,13 @@ impl Ctx<'_> {
         };
         b.value("model", f.model.name());
         b.value("regime", regime);
+        let (decided_by, sized_by) = match (f.model, f.regime) {
+            (FrictionModel::KineticDirection, _) => ("none (always sliding)", "dynamic_friction"),
+            (_, FrictionRegime::Static) => ("static_friction", "none (the sticking impulse)"),
+            (_, FrictionRegime::Dynamic) => ("static_friction", "dynamic_friction"),
+        };
+        b.value("decided_by", decided_by);
+        b.value("sized_by", sized_by);
         b.value("planar", f.planar);
         b.value("limit", f.limit);
         b.value("impulse_contact", f.impulse_contact);
@@ -755,7 +762,11 @@ impl Ctx<'_> {
             b.input(format!("p{n}"), self.body(i).position);
             b.value(format!("linear_move{n}"), m.linear_move);
             b.value(format!("angular_move{n}"), m.angular_move);
-            b.value(format!("angular_limit{n}"), m.angular_limit);
+            if m.angular_limit.is_finite() {
+                b.value(format!("angular_limit{n}"), m.angular_limit);
+            } else {
+                b.value(format!("angular_limit{n}"), "none");
+            }
             b.input(format!("r_perp_length{n}"), m.r_perp_length);
             b.value(format!("linear_change{n}"), m.linear_change);
             b.value(format!("rotation_per_unit{n}"), m.rotation_per_unit);
@@ -778,12 +789,16 @@ impl Ctx<'_> {
                 )),
                 Some(&format!("angular_move{n}")),
             );
-            b.f(
-                &format!("limit{s}"),
-                &format!("angular_limit · |r{s} − (r{s}·d̂)d̂|"),
-                Some(&format!("{{angular_limit_setting}} × {{r_perp_length{n}}}")),
-                Some(&format!("angular_limit{n}")),
-            );
+            if !m.angular_limit.is_finite() {
+                b.note("angular_limit = inf: the angular move is not limited.");
+            } else {
+                b.f(
+                    &format!("limit{s}"),
+                    &format!("angular_limit · |r{s} − (r{s}·d̂)d̂|"),
+                    Some(&format!("{{angular_limit_setting}} × {{r_perp_length{n}}}")),
+                    Some(&format!("angular_limit{n}")),
+                );
+            }
             if m.limited {
                 b.input(
                     format!("angular_move_unlimited{n}"),

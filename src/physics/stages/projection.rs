@@ -79,7 +79,12 @@ pub fn nonlinear_projection<T: Real>(
         // Avoiding excessive rotation: scale the limit by the lever arm's size.
         let r_perp = r - d * r.dot(&d);
         let r_perp_length = r_perp.norm();
-        let angular_limit = settings.angular_limit * r_perp_length;
+        // `inf` switches the limit off (and must not become inf · 0 = NaN).
+        let angular_limit = if settings.angular_limit.is_finite() {
+            settings.angular_limit * r_perp_length
+        } else {
+            settings.angular_limit
+        };
         let limited = angular_move_unlimited.abs() > angular_limit;
         let angular_move = if limited {
             angular_limit * angular_move_unlimited.signum()
