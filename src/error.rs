@@ -27,7 +27,11 @@ impl AppError {
     /// The message for stderr: invalid lessons get a snippet per error.
     pub fn report(&self, color: bool) -> String {
         match self {
-            AppError::Lesson(LessonError::Invalid { diagnostics, .. }) => {
+            AppError::Lesson(LessonError::Invalid {
+                path,
+                diagnostics,
+                omitted,
+            }) => {
                 let theme = if color {
                     miette::GraphicalTheme::unicode()
                 } else {
@@ -38,6 +42,11 @@ impl AppError {
                 for d in diagnostics {
                     out.push_str(&format!("error: {d}\n"));
                     let _ = handler.render_report(&mut out, d);
+                }
+                if *omitted > 0 {
+                    out.push_str(&format!(
+                        "error: {path}: {omitted} more error(s) not shown; fix the ones above first\n"
+                    ));
                 }
                 out
             }

@@ -5,7 +5,9 @@ pub mod embedded;
 pub mod printed;
 pub mod raw;
 pub mod shape;
+pub mod snippet;
 pub mod source;
+pub mod syntax;
 pub mod validate;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};

@@ -109,7 +109,7 @@ impl Printed {
             ),
         };
         Ok(Printed {
-            contact: raw.contact,
+            contact: raw.contact.as_ref().map_or(0, |c| *c.get_ref()),
             stage: stage.clone(),
             value: raw.value.get_ref().clone(),
             component: raw.component,

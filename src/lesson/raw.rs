@@ -10,11 +10,9 @@ pub type S<T> = Spanned<T>;
 #[serde(deny_unknown_fields)]
 pub struct RawLesson {
     pub id: S<String>,
-    pub title: String,
-    #[serde(default)]
-    pub source: String,
-    #[serde(default)]
-    pub summary: String,
+    pub title: S<String>,
+    pub source: Option<S<String>>,
+    pub summary: Option<S<String>>,
     #[serde(default, rename = "body")]
     pub bodies: Vec<RawBody>,
     #[serde(default, rename = "contact")]
@@ -31,11 +29,17 @@ pub struct RawBody {
     pub name: S<String>,
     pub mass: S<f64>,
     pub shape: Option<S<RawShape>>,
+    #[serde(default, deserialize_with = "exact::some")]
     pub inertia: Option<S<[[f64; 3]; 3]>>,
+    #[serde(deserialize_with = "exact::spanned")]
     pub position: S<[f64; 3]>,
+    #[serde(default, deserialize_with = "exact::some")]
     pub orientation: Option<S<[f64; 4]>>,
+    #[serde(default, deserialize_with = "exact::some")]
     pub velocity: Option<S<[f64; 3]>>,
+    #[serde(default, deserialize_with = "exact::some")]
     pub angular_velocity: Option<S<[f64; 3]>>,
+    #[serde(default, deserialize_with = "exact::some")]
     pub acceleration: Option<S<[f64; 3]>>,
 }
 
@@ -46,17 +50,23 @@ pub struct RawBody {
 pub enum RawShape {
     Sphere(f64),
     HollowSphere(f64),
+    #[serde(deserialize_with = "exact::array")]
     Box([f64; 3]),
-    Cylinder { radius: f64, height: f64 },
+    Cylinder {
+        radius: f64,
+        height: f64,
+    },
     HalfSpace,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawContact {
-    pub name: Option<String>,
+    pub name: Option<S<String>>,
     pub bodies: S<Vec<S<String>>>,
+    #[serde(deserialize_with = "exact::spanned")]
     pub point: S<[f64; 3]>,
+    #[serde(deserialize_with = "exact::spanned")]
     pub normal: S<[f64; 3]>,
     pub penetration: Option<S<f64>>,
     pub restitution: S<f64>,
@@ -80,8 +90,7 @@ pub struct RawSettings {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawPrinted {
-    #[serde(default)]
-    pub contact: usize,
+    pub contact: Option<S<usize>>,
     pub stage: S<String>,
     pub value: S<String>,
     /// Component index for vectors (0-based) when only one component is printed.
@@ -107,4 +116,61 @@ pub enum PrintedValue {
     Scalar(PrintedNumber),
     Vector(Vec<PrintedNumber>),
     Matrix(Vec<Vec<PrintedNumber>>),
+}
+
+/// Fixed-size arrays that refuse extra elements. serde reads `[T; N]` as the
+/// first N elements and ignores the rest, so `velocity = [2.165, -1, 25, 0]`
+/// (a decimal comma, as in the lecture's own typos) would pass as a 3-vector.
+mod exact {
+    use serde::de::{Deserialize, DeserializeOwned, Deserializer, Error};
+
+    use super::S;
+
+    /// An array read as a list, then checked for its exact length.
+    pub trait Exact: Sized {
+        type List: DeserializeOwned;
+        fn exact(list: Self::List) -> Result<Self, String>;
+    }
+
+    fn length<T, const N: usize>(list: Vec<T>) -> Result<[T; N], String> {
+        let n = list.len();
+        list.try_into()
+            .map_err(|_| format!("expected an array of {N} numbers, got {n}"))
+    }
+
+    impl<const N: usize> Exact for [f64; N] {
+        type List = Vec<f64>;
+        fn exact(list: Vec<f64>) -> Result<Self, String> {
+            length(list)
+        }
+    }
+
+    impl Exact for [[f64; 3]; 3] {
+        type List = Vec<Vec<f64>>;
+        fn exact(rows: Vec<Vec<f64>>) -> Result<Self, String> {
+            let n = rows.len();
+            let rows: Vec<[f64; 3]> = rows
+                .into_iter()
+                .map(length)
+                .collect::<Result<_, _>>()
+                .map_err(|e| format!("a 3×3 tensor row: {e}"))?;
+            rows.try_into()
+                .map_err(|_| format!("expected a 3×3 tensor (3 rows), got {n} rows"))
+        }
+    }
+
+    pub fn array<'de, D: Deserializer<'de>, T: Exact>(d: D) -> Result<T, D::Error> {
+        T::exact(T::List::deserialize(d)?).map_err(D::Error::custom)
+    }
+
+    pub fn spanned<'de, D: Deserializer<'de>, T: Exact>(d: D) -> Result<S<T>, D::Error> {
+        let list = S::<T::List>::deserialize(d)?;
+        let span = list.span();
+        let value = T::exact(list.into_inner()).map_err(D::Error::custom)?;
+        Ok(S::new(span, value))
+    }
+
+    pub fn some<'de, D: Deserializer<'de>, T: Exact>(d: D) -> Result<Option<S<T>>, D::Error> {
+        spanned(d).map(Some)
+    }
 }

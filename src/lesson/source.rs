@@ -4,6 +4,8 @@ use std::ops::Range;
 
 use miette::{NamedSource, SourceSpan};
 
+use super::snippet::{printable, File, Snippet};
+
 /// A message about one place in a lesson file.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Note {
@@ -39,7 +41,7 @@ pub struct LessonDiagnostic {
     pub column: usize,
     pub message: String,
     #[source_code]
-    pub src: NamedSource<String>,
+    pub src: NamedSource<Snippet>,
     #[label("{label}")]
     pub span: SourceSpan,
     pub label: String,
@@ -49,19 +51,31 @@ pub struct LessonDiagnostic {
 
 impl LessonDiagnostic {
     pub fn new(path: &str, text: &str, note: Note) -> Self {
-        let start = clamp_to_char(text, note.span.start.min(text.len()));
-        let end = clamp_to_char(text, note.span.end.clamp(start, text.len()));
-        let (line, column) = line_column(text, start);
-        LessonDiagnostic {
-            path: path.to_string(),
-            line,
-            column,
-            message: note.message,
-            src: NamedSource::new(path, text.to_string()),
-            span: (start, end - start).into(),
-            label: note.label,
-            help: note.help,
-        }
+        Self::resolve(path, text, vec![note]).remove(0)
+    }
+
+    /// Resolves every note against one text, which they share.
+    pub fn resolve(path: &str, text: &str, notes: Vec<Note>) -> Vec<Self> {
+        let file = File::new(text);
+        notes
+            .into_iter()
+            .map(|note| {
+                let start = file.clamp(note.span.start);
+                let end = file.clamp(note.span.end).max(start);
+                let (line, column) = file.line_column(start);
+                let (snippet, span) = file.snippet(start..end);
+                LessonDiagnostic {
+                    path: path.to_string(),
+                    line,
+                    column,
+                    message: printable(note.message),
+                    src: NamedSource::new(path, snippet),
+                    span: (span.start, span.end - span.start).into(),
+                    label: printable(note.label),
+                    help: note.help.map(printable),
+                }
+            })
+            .collect()
     }
 }
 
@@ -91,5 +105,7 @@ pub enum LessonError {
     Invalid {
         path: String,
         diagnostics: Vec<LessonDiagnostic>,
+        /// Further errors found but not reported (see `validate::MAX_ERRORS`).
+        omitted: usize,
     },
 }

@@ -1,11 +1,14 @@
 //! From TOML text to a validated [`Lesson`]. Every error names the span of the
 //! offending value; all errors of a file are reported together.
 
+use std::collections::HashMap;
+
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use super::printed::Printed;
 use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
+use super::syntax;
 use super::{BodyDef, ContactDef, Lesson, Shape};
 use crate::physics::{FrictionModel, ProjectionMethod, Settings};
 
@@ -41,6 +44,36 @@ pub mod rules {
         } else {
             Err(format!(
                 "friction coefficient must be a finite number ≥ 0, got {mu}"
+            ))
+        }
+    }
+    /// Ids and names appear in headings and tables: not blank, no control characters.
+    pub fn name(s: &str) -> Result<(), String> {
+        if s.trim().is_empty() {
+            Err("must not be empty".into())
+        } else {
+            text(s)
+        }
+    }
+    /// Titles and summaries: line breaks and tabs, but no other control characters.
+    pub fn text(s: &str) -> Result<(), String> {
+        match s
+            .chars()
+            .find(|c| c.is_control() && !matches!(c, '\n' | '\r' | '\t'))
+        {
+            Some(c) => Err(format!(
+                "must not contain control characters (found U+{:04X})",
+                c as u32
+            )),
+            None => Ok(()),
+        }
+    }
+    pub fn velocity_limit(x: f64) -> Result<(), String> {
+        if x.is_finite() && x >= 0.0 {
+            Ok(())
+        } else {
+            Err(format!(
+                "velocity_limit must be a finite number ≥ 0, got {x}"
             ))
         }
     }
@@ -85,23 +118,32 @@ pub fn parse_bytes(origin: &str, bytes: &[u8]) -> Result<Lesson, LessonError> {
             let at = valid.len();
             let mut text = valid;
             text.push(' ');
+            let utf16 = bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]);
+            let help = if utf16 {
+                "it starts like UTF-16 text: save the lesson as UTF-8 TOML"
+            } else {
+                "save the lesson as UTF-8 TOML; see lessons/README.md"
+            };
             let note = Note::new(
                 "the file is not UTF-8 text (a lesson is a TOML file)",
                 at..at + 1,
             )
-            .help("save the lesson as UTF-8 TOML; see lessons/README.md");
+            .help(help);
             Err(invalid(origin, &text, vec![note]))
         }
     }
 }
 
-fn invalid(origin: &str, text: &str, notes: Vec<Note>) -> LessonError {
+/// At most this many errors of one file are reported; the rest are counted.
+pub const MAX_ERRORS: usize = 20;
+
+fn invalid(origin: &str, text: &str, mut notes: Vec<Note>) -> LessonError {
+    let omitted = notes.len().saturating_sub(MAX_ERRORS);
+    notes.truncate(MAX_ERRORS);
     LessonError::Invalid {
         path: origin.to_string(),
-        diagnostics: notes
-            .into_iter()
-            .map(|n| LessonDiagnostic::new(origin, text, n))
-            .collect(),
+        diagnostics: LessonDiagnostic::resolve(origin, text, notes),
+        omitted,
     }
 }
 
@@ -111,24 +153,13 @@ pub fn parse(origin: &str, text: &str) -> Result<Lesson, LessonError> {
             .help("a lesson needs at least `id`, `title`, one [[body]] and one [[contact]]; see lessons/README.md");
         return Err(invalid(origin, text, vec![note]));
     }
-    let raw: RawLesson = toml::from_str(text).map_err(|e| {
-        let span = e.span().unwrap_or(0..0);
-        let message = e.message().trim().to_string();
-        invalid(
-            origin,
-            text,
-            vec![Note::new(message, span).help("see lessons/README.md for every field")],
-        )
-    })?;
+    let raw: RawLesson =
+        toml::from_str(text).map_err(|e| invalid(origin, text, vec![syntax::note(&e, text)]))?;
     let mut v = Validator::default();
     let lesson = v.lesson(raw, origin);
     if v.errors.is_empty() {
         let mut lesson = lesson;
-        lesson.warnings = v
-            .warnings
-            .into_iter()
-            .map(|n| LessonDiagnostic::new(origin, text, n))
-            .collect();
+        lesson.warnings = LessonDiagnostic::resolve(origin, text, v.warnings);
         Ok(lesson)
     } else {
         Err(invalid(origin, text, v.errors))
@@ -162,10 +193,20 @@ impl Validator {
     }
 
     fn finite<const N: usize>(&mut self, what: &str, value: &S<[f64; N]>) -> [f64; N] {
-        if let Some(x) = value.get_ref().iter().find(|x| !x.is_finite()) {
+        let names: &[&str] = if N == 4 {
+            &["w", "x", "y", "z"]
+        } else {
+            &["x", "y", "z"]
+        };
+        let bad = value
+            .get_ref()
+            .iter()
+            .zip(names)
+            .find(|(x, _)| !x.is_finite());
+        if let Some((x, axis)) = bad {
             self.err(
                 value.span(),
-                format!("{what}: every component must be a finite number, got {x}"),
+                format!("{what}: every component must be a finite number, got {x} in {axis}"),
             );
         }
         *value.get_ref()
@@ -178,20 +219,28 @@ impl Validator {
     }
 
     fn lesson(&mut self, raw: RawLesson, origin: &str) -> Lesson {
-        if raw.id.get_ref().trim().is_empty() {
-            self.err(raw.id.span(), "id must not be empty");
+        if let Err(e) = rules::name(raw.id.get_ref()) {
+            self.err(raw.id.span(), format!("id {e}"));
+        }
+        let texts = [("title", Some(&raw.title)), ("source", raw.source.as_ref())];
+        for (what, value) in texts.into_iter().chain([("summary", raw.summary.as_ref())]) {
+            if let Some(Err(e)) = value.map(|v| rules::text(v.get_ref())) {
+                self.err(value.map_or(0..0, |v| v.span()), format!("{what} {e}"));
+            }
         }
         let bodies: Vec<BodyDef> = raw.bodies.iter().map(|b| self.body(b)).collect();
+        let mut index = HashMap::new();
         for (i, b) in raw.bodies.iter().enumerate() {
-            if raw.bodies[..i]
-                .iter()
-                .any(|o| o.name.get_ref() == b.name.get_ref())
-            {
+            if index.insert(b.name.get_ref().as_str(), i).is_some() {
                 self.err(
                     b.name.span(),
                     format!("body name '{}' is used twice", b.name.get_ref()),
                 );
             }
+        }
+        // Contacts refer to the first body of a name.
+        for (i, b) in raw.bodies.iter().enumerate().rev() {
+            index.insert(b.name.get_ref().as_str(), i);
         }
         if raw.bodies.is_empty() {
             self.err(0..0, "the lesson has no [[body]]");
@@ -199,11 +248,11 @@ impl Validator {
         if raw.contacts.is_empty() {
             self.err(0..0, "the lesson has no [[contact]]");
         }
-        let defaults = self.settings(&raw.settings, Settings::default());
+        let defaults = self.settings(&raw.settings, Settings::default(), "[settings]");
         let contacts = raw
             .contacts
             .iter()
-            .map(|c| self.contact(c, &raw.bodies, &bodies, defaults))
+            .map(|c| self.contact(c, (&index, &raw.bodies), &bodies, defaults))
             .collect();
         let printed = raw
             .printed
@@ -212,9 +261,12 @@ impl Validator {
             .collect();
         Lesson {
             id: raw.id.into_inner(),
-            title: raw.title,
-            source: raw.source,
-            summary: raw.summary.trim().to_string(),
+            title: raw.title.into_inner(),
+            source: raw.source.map(S::into_inner).unwrap_or_default(),
+            summary: raw
+                .summary
+                .map(|s| s.into_inner().trim().to_string())
+                .unwrap_or_default(),
             origin: origin.to_string(),
             bodies,
             contacts,
@@ -225,6 +277,9 @@ impl Validator {
 
     fn body(&mut self, raw: &RawBody) -> BodyDef {
         let name = raw.name.get_ref().clone();
+        if let Err(e) = rules::name(&name) {
+            self.err(raw.name.span(), format!("body name {e}"));
+        }
         let mass = self.rule(
             &format!("body '{name}'"),
             &raw.mass,
@@ -276,7 +331,7 @@ impl Validator {
             (Some((t, _)), None) => Some(*t),
             (None, Some(s)) => Some(s),
             (None, None) => {
-                if movable {
+                if movable && shape != Some(Shape::HalfSpace) {
                     self.err(
                         raw.name.span(),
                         format!("body '{name}' needs an `inertia` tensor or a `shape`"),
@@ -297,7 +352,9 @@ impl Validator {
                 ));
                 self.finite(&format!("body '{name}' orientation"), o);
                 let n = q.norm();
-                if !n.is_finite() || n == 0.0 {
+                if !n.is_finite() {
+                    Quaternion::identity()
+                } else if n == 0.0 {
                     self.err(
                         o.span(),
                         format!(
@@ -352,10 +409,15 @@ impl Validator {
     }
 
     fn finite_tensor(&mut self, name: &str, t: &S<[[f64; 3]; 3]>) -> [[f64; 3]; 3] {
-        if t.get_ref().iter().flatten().any(|x| !x.is_finite()) {
+        let cells = t
+            .get_ref()
+            .iter()
+            .enumerate()
+            .flat_map(|(r, row)| row.iter().enumerate().map(move |(c, x)| (r + 1, c + 1, *x)));
+        if let Some((r, c, x)) = cells.into_iter().find(|(_, _, x)| !x.is_finite()) {
             self.err(
                 t.span(),
-                format!("body '{name}': every inertia component must be a finite number"),
+                format!("body '{name}': every inertia component must be a finite number, got {x} in row {r}, column {c}"),
             );
         }
         *t.get_ref()
@@ -391,20 +453,20 @@ impl Validator {
         }
     }
 
-    fn settings(&mut self, raw: &RawSettings, base: Settings<f64>) -> Settings<f64> {
-        use super::validate::rules;
+    fn settings(&mut self, raw: &RawSettings, base: Settings<f64>, table: &str) -> Settings<f64> {
         let mut s = base;
+        let what = format!("in {table}");
         if let Some(x) = &raw.velocity_limit {
-            s.velocity_limit = self.rule("velocity_limit", x, rules::non_negative);
+            s.velocity_limit = self.rule(&what, x, rules::velocity_limit);
         }
         if let Some(x) = &raw.angular_limit {
-            s.angular_limit = self.rule("angular_limit", x, rules::angular_limit);
+            s.angular_limit = self.rule(&what, x, rules::angular_limit);
         }
         if let Some(x) = &raw.relaxation {
-            s.relaxation = self.rule("relaxation", x, rules::relaxation);
+            s.relaxation = self.rule(&what, x, rules::relaxation);
         }
         if let Some(x) = &raw.duration {
-            s.duration = self.rule("duration", x, rules::duration);
+            s.duration = self.rule(&what, x, rules::duration);
         }
         if let Some(p) = &raw.projection {
             match ProjectionMethod::from_name(p.get_ref()) {
@@ -412,7 +474,7 @@ impl Validator {
                 None => self.err(
                     p.span(),
                     format!(
-                        "projection must be \"linear\" or \"nonlinear\", got \"{}\"",
+                        "{what}: projection must be \"linear\" or \"nonlinear\", got \"{}\"",
                         p.get_ref()
                     ),
                 ),
@@ -424,19 +486,20 @@ impl Validator {
     fn contact(
         &mut self,
         raw: &RawContact,
-        raw_bodies: &[RawBody],
+        (by_name, raw_bodies): (&HashMap<&str, usize>, &[RawBody]),
         bodies: &[BodyDef],
         defaults: Settings<f64>,
     ) -> ContactDef {
-        use super::validate::rules;
+        if let Some(n) = &raw.name {
+            if let Err(e) = rules::name(n.get_ref()) {
+                self.err(n.span(), format!("contact name {e}"));
+            }
+        }
         let names = raw.bodies.get_ref();
         let mut index = Vec::new();
         for n in names {
-            match raw_bodies
-                .iter()
-                .position(|b| b.name.get_ref() == n.get_ref())
-            {
-                Some(i) => index.push(i),
+            match by_name.get(n.get_ref().as_str()) {
+                Some(&i) => index.push(i),
                 None => self.err(
                     n.span(),
                     format!(
@@ -464,7 +527,7 @@ impl Validator {
         }
         if !index.is_empty()
             && index.len() == names.len()
-            && index.iter().all(|&i| !bodies[i].movable())
+            && index.iter().all(|&i| bodies[i].mass == f64::INFINITY)
         {
             self.err(
                 raw.bodies.span(),
@@ -474,7 +537,9 @@ impl Validator {
         let point = v3(self.finite("contact point", &raw.point));
         let given = v3(self.finite("contact normal", &raw.normal));
         let normal_length = given.norm();
-        let normal = if !(normal_length > 1e-12 && normal_length.is_finite()) {
+        let normal = if !normal_length.is_finite() {
+            Vector3::y()
+        } else if normal_length <= 1e-12 {
             self.err(
                 raw.normal.span(),
                 format!("contact normal must be non-zero (its length is {normal_length})"),
@@ -530,11 +595,11 @@ impl Validator {
             }),
         };
         let settings = match &raw.settings {
-            Some(s) => self.settings(s, defaults),
+            Some(s) => self.settings(s, defaults, "[contact.settings]"),
             None => defaults,
         };
         ContactDef {
-            name: raw.name.clone(),
+            name: raw.name.as_ref().map(|n| n.get_ref().clone()),
             bodies: (index.first().copied().unwrap_or(0), index.get(1).copied()),
             point,
             normal,
@@ -549,12 +614,16 @@ impl Validator {
     }
 
     fn printed(&mut self, raw: &super::raw::RawPrinted, contacts: usize) -> Option<Printed> {
-        if raw.contact >= contacts.max(1) {
+        if let Some(k) = raw
+            .contact
+            .as_ref()
+            .filter(|k| *k.get_ref() >= contacts.max(1))
+        {
             self.err(
-                raw.stage.span(),
+                k.span(),
                 format!(
-                    "printed entry names contact {} but the lesson has {contacts}",
-                    raw.contact
+                    "printed entry names contact {} but the lesson has {contacts} (numbered from 0)",
+                    k.get_ref()
                 ),
             );
             return None;
@@ -569,12 +638,17 @@ impl Validator {
     }
 }
 
+/// The body names, for "unknown body" (the first ten of a long list).
 fn body_list(bodies: &[RawBody]) -> String {
-    bodies
+    let names: Vec<&str> = bodies
         .iter()
+        .take(10)
         .map(|b| b.name.get_ref().as_str())
-        .collect::<Vec<_>>()
-        .join(", ")
+        .collect();
+    match bodies.len() {
+        n if n > names.len() => format!("{}, … {n} in all", names.join(", ")),
+        _ => names.join(", "),
+    }
 }
 
 fn diag(m: &Matrix3<f64>) -> String {
