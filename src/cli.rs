@@ -56,10 +56,10 @@ pub struct ModelArgs {
     #[arg(long, value_enum)]
     pub projection: Option<ProjectionArg>,
     /// Share of the penetration resolved, in (0, 1].
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub relaxation: Option<f64>,
     /// Max angular move as a multiple of |r⊥| (inf = no limit).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub angular_limit: Option<f64>,
 }
 
