@@ -1,0 +1,319 @@
+//! Bad lesson files through the binary (GUIDE §6, the "bottom" style): every
+//! file in `tests/invalid_lessons/` exits 65, names `FILE:LINE:COLUMN` and a
+//! specific message, writes nothing to stdout and does not panic. Also very
+//! long files (generated), a missing file (66) and command-line misuse (2).
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+
+const DIR: &str = "tests/invalid_lessons";
+
+/// File → line, column and a fragment of the message of its one error.
+/// A file in the folder without a row here fails the test, and so does a row
+/// without its file.
+#[rustfmt::skip]
+const CASES: &[(&str, usize, usize, &str)] = &[
+    ("bad-shape-size", 8, 9, "shape sizes must be finite and > 0"),
+    ("binary-junk", 1, 9, "the file is not UTF-8 text"),
+    ("box-with-four-sides", 8, 9, "expected an array of 3 numbers, got 4"),
+    ("comments-only", 1, 1, "missing field `id`"),
+    ("control-character-in-name", 6, 8, "body name must not contain control characters (found U+001B)"),
+    ("crlf-unknown-field", 17, 1, "unknown field `friciton`"),
+    ("decimal-comma-in-velocity", 10, 12, "expected an array of 3 numbers, got 4"),
+    ("duplicate-body-names", 13, 8, "body name 'ball' is used twice"),
+    ("duplicate-id", 4, 1, "duplicate key `id`"),
+    ("duplicate-key", 8, 1, "duplicate key `mass`"),
+    ("duplicate-settings-table", 21, 2, "table [settings] is defined twice"),
+    ("duration-zero", 19, 12, "in [settings]: duration must be a finite number > 0, got 0"),
+    ("empty-body-name", 6, 8, "body name must not be empty"),
+    ("empty-file", 1, 1, "the lesson file is empty"),
+    ("empty-id", 2, 6, "id must not be empty"),
+    ("float-past-f64", 7, 8, "the number 1e400 is too large for a 64-bit float"),
+    ("half-space-with-finite-mass", 8, 9, "a half-space must be immovable (mass = inf)"),
+    ("immovable-with-velocity", 17, 12, "body 'floor' is immovable (mass = inf): its velocity must be zero"),
+    ("inf-penetration", 17, 15, "penetration: must be a finite number, got inf"),
+    ("inf-position", 9, 12, "position: every component must be a finite number, got inf in y"),
+    ("integer-past-i64", 7, 8, "the integer 99999999999999999999 does not fit in 64 bits"),
+    ("missing-field-id", 1, 1, "missing field `id`"),
+    ("missing-field-mass", 5, 1, "missing field `mass`"),
+    ("missing-field-restitution", 12, 1, "missing field `restitution`"),
+    ("movable-without-inertia", 6, 8, "body 'ball' needs an `inertia` tensor or a `shape`"),
+    ("nan-in-tensor", 8, 11, "every inertia component must be a finite number, got NaN in row 2, column 2"),
+    ("nan-in-velocity", 10, 12, "velocity: every component must be a finite number, got NaN in y"),
+    ("nan-mass", 7, 8, "mass must be > 0 (or inf for an immovable body), got NaN"),
+    ("negative-angular-limit", 19, 17, "in [settings]: angular_limit must be ≥ 0"),
+    ("negative-friction", 17, 12, "friction coefficient must be a finite number ≥ 0, got -0.3"),
+    ("negative-mass", 7, 8, "mass must be > 0 (or inf for an immovable body), got -1"),
+    ("negative-velocity-limit", 19, 18, "in [settings]: velocity_limit must be a finite number ≥ 0, got -0.25"),
+    ("no-bodies-in-contact", 13, 10, "a contact names one or two bodies, got 0"),
+    ("no-contact", 1, 1, "the lesson has no [[contact]]"),
+    ("non-positive-definite-tensor", 8, 11, "inertia tensor must be positive-definite"),
+    ("non-symmetric-tensor", 8, 11, "inertia tensor must be symmetric"),
+    ("printed-contact-out-of-range", 19, 11, "printed entry names contact 3 but the lesson has 1"),
+    ("printed-unknown-stage", 19, 9, "unknown stage \"impulses\""),
+    ("raw-escape-in-comment", 1, 77, "invalid comment character"),
+    ("relaxation-above-one", 19, 14, "in [contact.settings]: relaxation must be in (0, 1], got 1.5"),
+    ("relaxation-zero", 19, 14, "in [settings]: relaxation must be in (0, 1], got 0"),
+    ("restitution-above-one", 16, 15, "restitution must be in [0, 1], got 1.5"),
+    ("same-body-twice", 13, 19, "a contact needs two different bodies, got 'ball' twice"),
+    ("syntax-bad-array", 10, 1, "missing comma between array elements"),
+    ("syntax-missing-equals", 7, 6, "key with no value, expected `=`"),
+    ("syntax-unterminated-string", 3, 20, "invalid basic string, expected `\"`"),
+    ("tensor-row-too-long", 8, 11, "a 3×3 tensor row: expected an array of 3 numbers, got 4"),
+    ("three-bodies-in-contact", 19, 10, "a contact names one or two bodies, got 3"),
+    ("two-immovable-bodies", 18, 10, "a contact needs at least one movable body"),
+    ("unknown-body", 13, 11, "unknown body 'bal' (bodies: ball)"),
+    ("unknown-body-after-non-ascii", 18, 19, "unknown body 'ballé' (bodies: bäll, ball)"),
+    ("unknown-field-typo", 16, 1, "unknown field `restitutoin`"),
+    ("unknown-friction-model", 18, 18, "friction_model must be one of millington"),
+    ("unknown-projection", 19, 14, "projection must be \"linear\" or \"nonlinear\", got \"quadratic\""),
+    ("unknown-settings-field", 19, 1, "unknown field `relaxtion`"),
+    ("unknown-shape", 8, 11, "unknown variant `cone`"),
+    ("utf16-file", 1, 1, "the file is not UTF-8 text"),
+    ("wrong-length-normal", 15, 10, "expected an array of 3 numbers, got 2"),
+    ("wrong-table-kind-body", 5, 1, "[body] must be an array of tables: write [[body]]"),
+    ("wrong-type-mass-string", 7, 8, "invalid type: string \"heavy\", expected a number"),
+    ("wrong-type-position-scalar", 9, 12, "invalid type: floating point `0.5`, expected an array"),
+    ("zero-mass", 7, 8, "mass must be > 0 (or inf for an immovable body), got 0"),
+    ("zero-normal", 15, 10, "contact normal must be non-zero (its length is 0)"),
+    ("zero-quaternion", 11, 15, "orientation must be a non-zero quaternion"),
+];
+
+/// Extra help lines some cases must carry.
+const HELP: &[(&str, &str)] = &[
+    ("crlf-unknown-field", "did you mean `friction`?"),
+    ("unknown-field-typo", "did you mean `restitution`?"),
+    ("unknown-settings-field", "did you mean `relaxation`?"),
+    ("utf16-file", "it starts like UTF-16 text"),
+    ("float-past-f64", "write `inf` where infinity is meant"),
+];
+
+fn contact_lab() -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_contact-lab"));
+    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
+    cmd
+}
+
+struct Run {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+fn run(args: &[&str]) -> Run {
+    let out = contact_lab().args(args).output().expect("contact-lab runs");
+    Run {
+        code: out.status.code(),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+/// Runs `solve PATH` and checks everything a bad lesson must give; returns stderr.
+fn assert_invalid(path: &str, line: usize, column: usize, fragment: &str) -> String {
+    let r = run(&["solve", path]);
+    let context = format!("{path}\n--- stderr ---\n{}", r.stderr);
+    assert_eq!(r.code, Some(65), "exit code, {context}");
+    assert!(r.stdout.is_empty(), "stdout must be empty, {context}");
+    assert!(!r.stderr.contains("panicked"), "panic, {context}");
+    assert!(
+        !r.stderr.contains('\u{1b}'),
+        "raw escape on stderr, {context}"
+    );
+    let first = r.stderr.lines().next().unwrap_or("");
+    let at = format!("error: {path}:{line}:{column}: ");
+    assert!(first.starts_with(&at), "expected `{at}…`, {context}");
+    assert!(first.contains(fragment), "expected «{fragment}», {context}");
+    let header = format!("[{path}:{line}:{column}]");
+    assert!(
+        r.stderr.contains(&header),
+        "snippet header {header}, {context}"
+    );
+    r.stderr
+}
+
+fn corpus() -> Vec<String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join(DIR);
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("tests/invalid_lessons exists")
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn every_bad_lesson_fails_with_its_line_column_and_message() {
+    let files = corpus();
+    assert!(files.len() >= 30, "the corpus has {} files", files.len());
+    for file in &files {
+        let stem = file.strip_suffix(".toml").unwrap_or_else(|| {
+            panic!("{DIR}/{file}: lesson files end in .toml");
+        });
+        let Some(&(_, line, column, fragment)) = CASES.iter().find(|c| c.0 == stem) else {
+            panic!("{DIR}/{file} has no row in CASES: add its line, column and message");
+        };
+        let stderr = assert_invalid(&format!("{DIR}/{file}"), line, column, fragment);
+        let errors = stderr.lines().filter(|l| l.starts_with("error: ")).count();
+        assert_eq!(errors, 1, "{file} has one defect, so one error:\n{stderr}");
+        if let Some((_, help)) = HELP.iter().find(|h| h.0 == stem) {
+            assert!(
+                stderr.contains(help),
+                "{file}: expected help «{help}»:\n{stderr}"
+            );
+        }
+    }
+    for (stem, ..) in CASES {
+        assert!(
+            files.contains(&format!("{stem}.toml")),
+            "CASES names {stem}, which is not in {DIR}"
+        );
+    }
+}
+
+/// A scratch file for generated lessons too big to commit.
+fn scratch(name: &str, text: &str) -> String {
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+fn valid_lesson() -> String {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join(DIR)
+            .join("negative-mass.toml"),
+    );
+    text.unwrap().replace("mass = -1.0", "mass = 1.0")
+}
+
+#[test]
+fn a_very_long_file_reports_the_right_line() {
+    let mut text = valid_lesson();
+    let lines = text.lines().count();
+    for i in 0..200_000 {
+        text.push_str(&format!("# filler comment {i}\n"));
+    }
+    text.push_str("restitutoin = 0.5\n");
+    let path = scratch("very-long.toml", &text);
+    let stderr = assert_invalid(&path, lines + 200_001, 1, "unknown field `restitutoin`");
+    assert!(stderr.len() < 4_000, "{} bytes of stderr", stderr.len());
+}
+
+#[test]
+fn a_very_long_line_is_shown_as_an_excerpt() {
+    let long = format!("title = \"{}\", restitution = 2\n", "é".repeat(2_000_000));
+    let text = valid_lesson().replace("title = \"One defect\"\n", &long);
+    let path = scratch("very-long-line.toml", &text);
+    let stderr = assert_invalid(&path, 3, 2_000_011, "expected newline");
+    assert!(stderr.len() < 4_000, "{} bytes of stderr", stderr.len());
+    assert!(
+        stderr.contains("…éééé"),
+        "an excerpt of the line:\n{stderr}"
+    );
+}
+
+#[test]
+fn thousands_of_errors_are_counted_not_all_printed() {
+    let mut text = valid_lesson();
+    for i in 0..5_000 {
+        text.push_str(&format!(
+            "\n[[body]]\nname = \"b{i}\"\nmass = -1.0\nshape = {{ sphere = 1.0 }}\nposition = [0.0, 0.0, 0.0]\n"
+        ));
+    }
+    let path = scratch("many-errors.toml", &text);
+    let stderr = assert_invalid(&path, 20, 8, "body 'b0': mass must be > 0");
+    let errors = stderr.lines().filter(|l| l.starts_with("error: ")).count();
+    assert_eq!(errors, 21, "20 errors and a count of the rest:\n{stderr}");
+    assert!(stderr.contains("4980 more error(s) not shown"), "{stderr}");
+}
+
+#[test]
+fn deep_nesting_is_refused_without_overflowing_the_stack() {
+    let text = format!("a = {}{}\n", "[".repeat(100_000), "]".repeat(100_000));
+    let path = scratch("deep-nesting.toml", &text);
+    assert_invalid(&path, 1, 85, "recursion");
+}
+
+#[test]
+fn a_missing_file_exits_66() {
+    for path in ["tests/no/such/lesson.toml", "not-a-lesson-id", DIR] {
+        let r = run(&["solve", path]);
+        assert_eq!(r.code, Some(66), "{path}: {}", r.stderr);
+        assert!(r.stdout.is_empty());
+        assert!(
+            r.stderr
+                .starts_with(&format!("error: lesson file missing: {path}: ")),
+            "{}",
+            r.stderr
+        );
+    }
+}
+
+#[test]
+fn command_line_misuse_exits_2_with_a_message() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["solve", "lecture-2", "--bogus"],
+            "unexpected argument '--bogus'",
+        ),
+        (
+            &["solve", "lecture-2", "--contact", "99"],
+            "--contact 99: lesson 'lecture-2' has 1 contact(s)",
+        ),
+        (&["solve", "lecture-2", "--contact", "-1"], "'-1'"),
+        (
+            &["solve", "lecture-2", "--digits", "0"],
+            "0 is not in 1..=17",
+        ),
+        (
+            &["solve", "lecture-2", "--digits", "18"],
+            "18 is not in 1..=17",
+        ),
+        (
+            &["solve", "lecture-2", "--relaxation", "2"],
+            "--relaxation: relaxation must be in (0, 1], got 2",
+        ),
+        (
+            &["solve", "lecture-2", "--relaxation", "nan"],
+            "--relaxation: relaxation must be in (0, 1], got NaN",
+        ),
+        (
+            &["solve", "lecture-2", "--relaxation", "-0.5"],
+            "--relaxation: relaxation must be in (0, 1], got -0.5",
+        ),
+        (
+            &["solve", "lecture-2", "--angular-limit", "-1"],
+            "--angular-limit: angular_limit must be ≥ 0",
+        ),
+        (
+            &["solve", "lecture-2", "--format", "yaml"],
+            "invalid value 'yaml' for '--format <FORMAT>'",
+        ),
+        (
+            &["solve", "lecture-2", "--friction-model", "coulomb"],
+            "invalid value 'coulomb'",
+        ),
+        (
+            &["solve"],
+            "the following required arguments were not provided",
+        ),
+        (
+            &["solve", "lecture-2", "extra"],
+            "unexpected argument 'extra'",
+        ),
+        (&["frobnicate"], "unrecognized subcommand 'frobnicate'"),
+    ];
+    for (args, fragment) in cases {
+        let r = run(args);
+        assert_eq!(r.code, Some(2), "{args:?}: {}", r.stderr);
+        assert!(r.stdout.is_empty(), "{args:?} wrote {}", r.stdout);
+        assert!(
+            r.stderr.contains(fragment),
+            "{args:?}: expected «{fragment}» in {}",
+            r.stderr
+        );
+        assert!(!r.stderr.contains("panicked"), "{args:?}: {}", r.stderr);
+    }
+}
