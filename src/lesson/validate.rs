@@ -27,6 +27,10 @@ pub mod rules {
             Err(format!(
                 "mass must be > 0 (or inf for an immovable body), got {m}"
             ))
+        } else if !(1.0 / m).is_finite() {
+            Err(format!(
+                "mass {m:e} is too small: its inverse 1/m overflows a 64-bit float"
+            ))
         } else {
             Ok(())
         }
@@ -285,7 +289,8 @@ impl Validator {
             &raw.mass,
             super::validate::rules::mass,
         );
-        let movable = mass.is_finite() && mass > 0.0;
+        let movable = mass.is_finite() && rules::mass(mass).is_ok();
+        let errors_before = self.errors.len();
         let shape = raw.shape.as_ref().map(|s| *s.get_ref());
         if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
             if s.dimensions().iter().any(|x| !x.is_finite() || *x <= 0.0) {
@@ -340,6 +345,19 @@ impl Validator {
                 None
             }
         };
+        // The stages use I⁻¹: a tensor f64 cannot invert must not become a
+        // silent zero (a body that cannot turn) or a matrix of NaN.
+        if let Some(t) = inertia.filter(|_| movable && self.errors.len() == errors_before) {
+            let inverse = t.try_inverse().filter(|i| i.iter().all(|x| x.is_finite()));
+            if inverse.is_none_or(|i| (t * i - Matrix3::identity()).norm() > 0.5) {
+                let span = raw.inertia.as_ref().map(|t| t.span());
+                let span = span.or(raw.shape.as_ref().map(|s| s.span()));
+                self.err(
+                    span.unwrap_or(raw.name.span()),
+                    format!("body '{name}': the inertia tensor (diag {}) cannot be inverted in 64-bit floats", diag(&t)),
+                );
+            }
+        }
         let position = v3(self.finite(&format!("body '{name}' position"), &raw.position));
         let orientation = match &raw.orientation {
             None => Quaternion::identity(),
