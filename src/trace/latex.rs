@@ -1,7 +1,11 @@
 //! Unicode formula text to LaTeX (the formulas are written once, in Unicode).
 
-/// Converts the Unicode maths used in formulas to LaTeX. `{name}` placeholders
-/// pass through untouched; `_word` becomes a braced subscript.
+/// Converts the Unicode maths used in formulas to LaTeX math. `{name}`
+/// placeholders pass through untouched; `_word` becomes a braced subscript
+/// (merged with a following subscript run: `Δq̇_d₁` → `\Delta \dot{q}_{d,1}`);
+/// runs of sub- or superscript characters become one group (`M₀₁` →
+/// `M_{01}`, `10⁻³` → `10^{-3}`); `^(…)` and `√(…)` take their parentheses
+/// as the group.
 pub fn to_latex(s: &str) -> String {
     let chars: Vec<char> = s.chars().collect();
     let mut out = String::new();
@@ -10,17 +14,13 @@ pub fn to_latex(s: &str) -> String {
         let ch = chars[i];
         let next = chars.get(i + 1).copied();
         // Accents are combining marks that follow their letter.
-        if next == Some('\u{302}') || next == Some('\u{307}') {
-            let accent = if next == Some('\u{302}') {
-                "\\hat"
-            } else {
-                "\\dot"
-            };
+        if let Some(accent) = next.and_then(accent) {
             out.push_str(&format!(
                 "{accent}{{{}}}",
                 symbol(ch).unwrap_or_else(|| ch.to_string())
             ));
             i += 2;
+            space_before_letter(&mut out, chars.get(i));
             continue;
         }
         if ch == '{' {
@@ -37,32 +37,51 @@ pub fn to_latex(s: &str) -> String {
         }
         if ch == '_' {
             let mut j = i + 1;
-            while j < chars.len()
-                && (chars[j].is_alphanumeric() || chars[j] == ',')
-                && !is_subscript(chars[j])
-            {
+            while j < chars.len() && (chars[j].is_ascii_alphanumeric() || chars[j] == ',') {
                 j += 1;
             }
             let word: String = chars[i + 1..j].iter().collect();
-            if word.chars().count() > 1 {
-                out.push_str(&format!("_{{\\mathrm{{{word}}}}}"));
+            let (run, end) = script_run(&chars, j, subscript);
+            let word = if word.chars().count() > 1 {
+                format!("\\mathrm{{{word}}}")
             } else {
-                out.push('_');
-                out.push_str(&word);
-            }
-            i = j;
+                word
+            };
+            let group = match (word.is_empty(), run.is_empty()) {
+                (false, true) => word,
+                (true, false) => run,
+                (false, false) => format!("{word},{run}"),
+                (true, true) => String::new(),
+            };
+            out.push_str(&script('_', &group));
+            i = end;
             continue;
+        }
+        if subscript(ch).is_some() {
+            let (run, end) = script_run(&chars, i, subscript);
+            out.push_str(&script('_', &run));
+            i = end;
+            continue;
+        }
+        if superscript(ch).is_some() {
+            let (run, end) = script_run(&chars, i, superscript);
+            out.push_str(&script('^', &run));
+            i = end;
+            continue;
+        }
+        if (ch == '^' || ch == '√') && next == Some('(') {
+            if let Some(close) = matching_paren(&chars, i + 1) {
+                let inner: String = chars[i + 2..close].iter().collect();
+                let head = if ch == '^' { "^" } else { "\\sqrt" };
+                out.push_str(&format!("{head}{{{}}}", to_latex(&inner)));
+                i = close + 1;
+                continue;
+            }
         }
         match symbol(ch) {
             Some(t) => {
                 out.push_str(&t);
-                // Keep a command from swallowing the next letter.
-                if t.starts_with('\\')
-                    && t.chars().last().is_some_and(|c| c.is_alphabetic())
-                    && next.is_some_and(|c| c.is_alphanumeric())
-                {
-                    out.push(' ');
-                }
+                space_before_letter(&mut out, chars.get(i + 1));
             }
             None => out.push(ch),
         }
@@ -71,48 +90,254 @@ pub fn to_latex(s: &str) -> String {
     out
 }
 
-fn is_subscript(c: char) -> bool {
-    matches!(c, '₀'..='₉' | 'ᵢ')
+/// Keeps a command from swallowing the next letter.
+fn space_before_letter(out: &mut String, next: Option<&char>) {
+    let ends_in_command = {
+        let word: String = out
+            .chars()
+            .rev()
+            .take_while(|c| c.is_ascii_alphabetic())
+            .collect();
+        !word.is_empty() && out[..out.len() - word.len()].ends_with('\\')
+    };
+    if ends_in_command && next.is_some_and(|c| c.is_alphanumeric()) {
+        out.push(' ');
+    }
+}
+
+fn accent(c: char) -> Option<&'static str> {
+    match c {
+        '\u{302}' => Some("\\hat"),
+        '\u{307}' => Some("\\dot"),
+        _ => None,
+    }
+}
+
+fn script(mark: char, group: &str) -> String {
+    match group.chars().count() {
+        0 => String::new(),
+        1 => format!("{mark}{group}"),
+        _ => format!("{mark}{{{group}}}"),
+    }
+}
+
+/// The LaTeX of a run of script characters starting at `from`, and where it ends.
+fn script_run(
+    chars: &[char],
+    from: usize,
+    map: fn(char) -> Option<&'static str>,
+) -> (String, usize) {
+    let mut run = String::new();
+    let mut j = from;
+    while let Some(t) = chars.get(j).and_then(|c| map(*c)) {
+        run.push_str(t);
+        j += 1;
+    }
+    (run, j)
+}
+
+fn matching_paren(chars: &[char], open: usize) -> Option<usize> {
+    let mut depth = 0;
+    for (j, c) in chars.iter().enumerate().skip(open) {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(j);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+fn subscript(c: char) -> Option<&'static str> {
+    Some(match c {
+        '₀' => "0",
+        '₁' => "1",
+        '₂' => "2",
+        '₃' => "3",
+        '₄' => "4",
+        '₅' => "5",
+        '₆' => "6",
+        '₇' => "7",
+        '₈' => "8",
+        '₉' => "9",
+        'ᵢ' => "i",
+        _ => return None,
+    })
+}
+
+fn superscript(c: char) -> Option<&'static str> {
+    Some(match c {
+        '⁰' => "0",
+        '¹' => "1",
+        '²' => "2",
+        '³' => "3",
+        '⁴' => "4",
+        '⁵' => "5",
+        '⁶' => "6",
+        '⁷' => "7",
+        '⁸' => "8",
+        '⁹' => "9",
+        '⁻' => "-",
+        'ᵀ' => "\\mathsf{T}",
+        _ => return None,
+    })
 }
 
 fn symbol(c: char) -> Option<String> {
     let s = match c {
         'Δ' => "\\Delta",
+        'Σ' => "\\sum",
         'θ' => "\\theta",
         'ω' => "\\omega",
         'μ' => "\\mu",
         'κ' => "\\kappa",
         'λ' => "\\lambda",
         'ε' => "\\varepsilon",
-        'Σ' => "\\sum",
+        'π' => "\\pi",
+        'ṗ' => "\\dot{p}",
         '∞' => "\\infty",
         '×' => "\\times",
         '·' => "\\cdot",
-        '−' => "-",
+        '−' | '–' => "-",
+        '±' => "\\pm",
         '≤' => "\\le",
         '≥' => "\\ge",
         '≈' => "\\approx",
+        '≠' => "\\neq",
         '→' => "\\to",
+        '↔' => "\\leftrightarrow",
+        '∥' => "\\parallel",
         '½' => "\\tfrac{1}{2}",
-        '𝟙' => "\\mathbb{1}",
-        '⁻' => "^{-",
-        '¹' => "1}",
-        'ᵀ' => "^{\\mathsf{T}}",
+        '𝟙' => "\\mathbf{1}",
         '′' => "'",
+        '″' => "''",
         '°' => "^{\\circ}",
-        '₀' => "_0",
-        '₁' => "_1",
-        '₂' => "_2",
-        'ᵢ' => "_i",
         '⊥' => "_{\\perp}",
         '√' => "\\sqrt",
         '‖' => "\\|",
         '⟨' => "\\langle",
         '⟩' => "\\rangle",
+        '…' => "\\ldots",
+        '§' => "\\S",
         '%' => "\\%",
+        '&' => "\\&",
+        '#' => "\\#",
         _ => return None,
     };
     Some(s.to_string())
+}
+
+/// Escapes text for LaTeX's text mode: the special characters, typographic
+/// punctuation, and any maths symbol as `\ensuremath{…}`.
+pub fn escape_text(s: &str) -> String {
+    let chars: Vec<char> = s.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if chars.get(i + 1).copied().and_then(accent).is_some() {
+            let pair: String = chars[i..i + 2].iter().collect();
+            out.push_str(&format!("\\ensuremath{{{}}}", to_latex(&pair)));
+            i += 2;
+            continue;
+        }
+        match c {
+            '\\' => out.push_str("\\textbackslash{}"),
+            '{' | '}' | '$' | '&' | '%' | '#' | '_' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '~' => out.push_str("\\textasciitilde{}"),
+            '^' => out.push_str("\\textasciicircum{}"),
+            '—' => out.push_str("---"),
+            '–' => out.push_str("--"),
+            '…' => out.push_str("\\ldots{}"),
+            '‘' => out.push('`'),
+            '’' => out.push('\''),
+            '“' => out.push_str("``"),
+            '”' => out.push_str("\'\'"),
+            '§' => out.push_str("\\S{}"),
+            '°' => out.push_str("\\ensuremath{^{\\circ}}"),
+            c if is_math_char(c) => {
+                out.push_str(&format!("\\ensuremath{{{}}}", to_latex(&c.to_string())))
+            }
+            c => out.push(c),
+        }
+        i += 1;
+    }
+    out
+}
+
+/// A character that only exists in maths (Greek, operators, scripts, accents).
+fn is_math_char(c: char) -> bool {
+    !c.is_ascii()
+        && !matches!(c, '—' | '–' | '…' | '‘' | '’' | '“' | '”' | '§' | '°')
+        && (symbol(c).is_some()
+            || subscript(c).is_some()
+            || superscript(c).is_some()
+            || accent(c).is_some())
+}
+
+/// Prose with Unicode maths in it (notes, summaries, titles) as LaTeX text:
+/// each word that carries maths (`Δθ̇₁`, `μ_s`, `r²`) becomes inline `$…$`,
+/// identifiers such as `velocity_limit` become `\texttt`, the rest is escaped.
+pub fn prose(s: &str) -> String {
+    let mut out = String::new();
+    let mut word = String::new();
+    for c in s.chars() {
+        if c.is_whitespace() {
+            out.push_str(&prose_word(&std::mem::take(&mut word)));
+            out.push(c);
+        } else {
+            word.push(c);
+        }
+    }
+    out.push_str(&prose_word(&word));
+    out
+}
+
+fn prose_word(w: &str) -> String {
+    if w.is_empty() {
+        return String::new();
+    }
+    let dangerous = w.chars().any(|c| "\\{}$&#~^%".contains(c));
+    let identifier = w.contains('_')
+        && w.split('_').all(|p| p.len() > 1)
+        && w.trim_matches(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_');
+    let mathy = w.chars().any(is_math_char) || (w.contains('_') && !identifier);
+    if dangerous || !(mathy || identifier) {
+        return escape_text(w);
+    }
+    let lead_end = w
+        .char_indices()
+        .find(|(_, c)| !"\"'‘“`".contains(*c))
+        .map_or(w.len(), |(i, _)| i);
+    let (lead, rest) = w.split_at(lead_end);
+    let core = rest.trim_end_matches(|c: char| ".,;:!?\"'’”".contains(c));
+    let tail = &rest[core.len()..];
+    if core.is_empty() {
+        return escape_text(w);
+    }
+    let body = if identifier {
+        let ident = core.trim_matches(|c: char| !c.is_ascii_alphanumeric() && c != '_');
+        let start = core.find(ident).unwrap_or(0);
+        format!(
+            "{}\\texttt{{{}}}{}",
+            escape_text(&core[..start]),
+            escape_text(ident),
+            escape_text(&core[start + ident.len()..])
+        )
+    } else {
+        format!("${}$", to_latex(core))
+    };
+    format!("{}{body}{}", escape_text(lead), escape_text(tail))
 }
 
 #[cfg(test)]
@@ -132,5 +357,39 @@ mod tests {
         );
         assert_eq!(to_latex("v_acc"), "v_{\\mathrm{acc}}");
         assert_eq!(to_latex("{r1} × {d}"), "{r1} \\times {d}");
+    }
+
+    #[test]
+    fn script_runs_are_one_group() {
+        assert_eq!(to_latex("M₀₁ u_y"), "M_{01} u_y");
+        assert_eq!(to_latex("Δq̇_d₁"), "\\Delta \\dot{q}_{d,1}");
+        assert_eq!(to_latex("I_l₂"), "I_{l,2}");
+        assert_eq!(to_latex("10⁻³"), "10^{-3}");
+        assert_eq!(to_latex("Cᵀ"), "C^{\\mathsf{T}}");
+        assert_eq!(to_latex("√(g_y² + g_z²)"), "\\sqrt{g_y^2 + g_z^2}");
+        assert_eq!(to_latex("(−1)^(2+1) d_pen"), "(-1)^{2+1} d_{\\mathrm{pen}}");
+        assert_eq!(to_latex("Δṗ_d"), "\\Delta \\dot{p}_d");
+        assert_eq!(to_latex("Δṗ₁"), "\\Delta \\dot{p}_1");
+    }
+
+    #[test]
+    fn prose_puts_maths_in_dollars_and_escapes_the_rest() {
+        use super::{escape_text, prose};
+        assert_eq!(
+            prose("50% of μ_s g_n, #1 & co."),
+            "50\\% of $\\mu_s$ $g_n$, \\#1 \\& co."
+        );
+        assert_eq!(
+            prose("the velocity_limit (0.25) is 9.8 °/s — fine…"),
+            "the \\texttt{velocity\\_limit} (0.25) is 9.8 \\ensuremath{^{\\circ}}/s --- fine\\ldots{}"
+        );
+        assert_eq!(
+            prose("|Δθ̇₁| = 2, (r × d̂ ≈ 0)."),
+            "$|\\Delta \\dot{\\theta}_1|$ = 2, (r $\\times$ $\\hat{d}$ $\\approx$ 0)."
+        );
+        assert_eq!(
+            escape_text("a_b {x} ↔ y"),
+            "a\\_b \\{x\\} \\ensuremath{\\leftrightarrow} y"
+        );
     }
 }
