@@ -57,6 +57,39 @@ pub fn to_latex(s: &str) -> String {
             i = end;
             continue;
         }
+        // A word of two or more letters is a name, set upright; a name
+        // joined by `_` to another long word is one identifier.
+        if ch.is_ascii_alphabetic() && !out.ends_with('\\') && !prev_is_letter(&chars, i) {
+            let mut j = i;
+            while j < chars.len() && chars[j].is_ascii_alphanumeric() {
+                j += 1;
+            }
+            let head_len = chars[i..j]
+                .iter()
+                .take_while(|c| c.is_ascii_alphabetic())
+                .count();
+            if head_len >= 2 && chars.get(i + head_len).and_then(|c| accent(*c)).is_none() {
+                let mut name: String = chars[i..j].iter().collect();
+                while chars.get(j) == Some(&'_')
+                    && chars[j + 1..]
+                        .iter()
+                        .take_while(|c| c.is_ascii_alphanumeric())
+                        .count()
+                        >= 2
+                {
+                    let mut k = j + 1;
+                    while k < chars.len() && chars[k].is_ascii_alphanumeric() {
+                        k += 1;
+                    }
+                    name.push_str("\\_");
+                    name.extend(&chars[j + 1..k]);
+                    j = k;
+                }
+                out.push_str(&format!("\\mathrm{{{name}}}"));
+                i = j;
+                continue;
+            }
+        }
         if subscript(ch).is_some() {
             let (run, end) = script_run(&chars, i, subscript);
             out.push_str(&script('_', &run));
@@ -90,6 +123,10 @@ pub fn to_latex(s: &str) -> String {
     out
 }
 
+fn prev_is_letter(chars: &[char], i: usize) -> bool {
+    i > 0 && chars[i - 1].is_ascii_alphanumeric()
+}
+
 /// Keeps a command from swallowing the next letter.
 fn space_before_letter(out: &mut String, next: Option<&char>) {
     let ends_in_command = {
@@ -100,7 +137,9 @@ fn space_before_letter(out: &mut String, next: Option<&char>) {
             .collect();
         !word.is_empty() && out[..out.len() - word.len()].ends_with('\\')
     };
-    if ends_in_command && next.is_some_and(|c| c.is_alphanumeric()) {
+    let letter =
+        |c: &char| c.is_alphanumeric() && subscript(*c).is_none() && superscript(*c).is_none();
+    if ends_in_command && next.is_some_and(letter) {
         out.push(' ');
     }
 }
@@ -252,8 +291,12 @@ pub fn escape_text(s: &str) -> String {
                 out.push('\\');
                 out.push(c);
             }
-            '~' => out.push_str("\\textasciitilde{}"),
-            '^' => out.push_str("\\textasciicircum{}"),
+            '~' => out.push_str("\\~{}"),
+            '^' => out.push_str("\\^{}"),
+            // The default (OT1) fonts have no <, > or | in text.
+            '<' => out.push_str("\\textless{}"),
+            '>' => out.push_str("\\textgreater{}"),
+            '|' => out.push_str("\\textbar{}"),
             '—' => out.push_str("---"),
             '–' => out.push_str("--"),
             '…' => out.push_str("\\ldots{}"),
@@ -287,6 +330,20 @@ fn is_math_char(c: char) -> bool {
 /// each word that carries maths (`Δθ̇₁`, `μ_s`, `r²`) becomes inline `$…$`,
 /// identifiers such as `velocity_limit` become `\texttt`, the rest is escaped.
 pub fn prose(s: &str) -> String {
+    // `code` spans (when the backticks pair up) are typewriter text.
+    if s.matches('`').count() >= 2 && s.matches('`').count() % 2 == 0 {
+        return s
+            .split('`')
+            .enumerate()
+            .map(|(i, part)| {
+                if i % 2 == 1 {
+                    format!("\\texttt{{{}}}", escape_text(part))
+                } else {
+                    prose(part)
+                }
+            })
+            .collect();
+    }
     let mut out = String::new();
     let mut word = String::new();
     for c in s.chars() {
@@ -298,42 +355,47 @@ pub fn prose(s: &str) -> String {
         }
     }
     out.push_str(&prose_word(&word));
-    out
+    // Straight double quotes become opening and closing quotes, in turn.
+    let mut open = true;
+    out.chars()
+        .map(|c| match c {
+            '"' => {
+                open = !open;
+                if open { "''" } else { "``" }.to_string()
+            }
+            c => c.to_string(),
+        })
+        .collect()
 }
 
 fn prose_word(w: &str) -> String {
     if w.is_empty() {
         return String::new();
     }
-    let dangerous = w.chars().any(|c| "\\{}$&#~^%".contains(c));
-    let identifier = w.contains('_')
-        && w.split('_').all(|p| p.len() > 1)
-        && w.trim_matches(|c: char| !c.is_ascii_alphanumeric() && c != '_')
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || c == '_');
-    let mathy = w.chars().any(is_math_char) || (w.contains('_') && !identifier);
-    if dangerous || !(mathy || identifier) {
-        return escape_text(w);
-    }
+    // Punctuation around the word stays in the text; parentheses only when
+    // the word does not close (or open) them itself.
+    let opens = w.matches('(').count();
+    let closes = w.matches(')').count();
     let lead_end = w
         .char_indices()
-        .find(|(_, c)| !"\"'‘“`".contains(*c))
+        .find(|&(i, c)| !("\"'‘“".contains(c) || (c == '(' && opens > closes && i == 0)))
         .map_or(w.len(), |(i, _)| i);
     let (lead, rest) = w.split_at(lead_end);
-    let core = rest.trim_end_matches(|c: char| ".,;:!?\"'’”".contains(c));
+    let core =
+        rest.trim_end_matches(|c: char| ".,;:!?\"'’”".contains(c) || (c == ')' && closes > opens));
     let tail = &rest[core.len()..];
-    if core.is_empty() {
+    let dangerous = core.chars().any(|c| "\\{}$&#~^%".contains(c));
+    let parts: Vec<&str> = core.split('_').collect();
+    let identifier = parts.len() > 1
+        && parts.iter().all(|p| p.len() > 1)
+        && core.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && core.starts_with(|c: char| c.is_ascii_alphabetic());
+    let mathy = core.chars().any(is_math_char) || (core.contains('_') && !identifier);
+    if core.is_empty() || dangerous || !(mathy || identifier) {
         return escape_text(w);
     }
     let body = if identifier {
-        let ident = core.trim_matches(|c: char| !c.is_ascii_alphanumeric() && c != '_');
-        let start = core.find(ident).unwrap_or(0);
-        format!(
-            "{}\\texttt{{{}}}{}",
-            escape_text(&core[..start]),
-            escape_text(ident),
-            escape_text(&core[start + ident.len()..])
-        )
+        format!("\\texttt{{{}}}", escape_text(core))
     } else {
         format!("${}$", to_latex(core))
     };
@@ -370,6 +432,15 @@ mod tests {
         assert_eq!(to_latex("(−1)^(2+1) d_pen"), "(-1)^{2+1} d_{\\mathrm{pen}}");
         assert_eq!(to_latex("Δṗ_d"), "\\Delta \\dot{p}_d");
         assert_eq!(to_latex("Δṗ₁"), "\\Delta \\dot{p}_1");
+        assert_eq!(
+            to_latex("limit₁ = angular_limit · 2"),
+            "\\mathrm{limit}_1 = \\mathrm{angular\\_limit} \\cdot 2"
+        );
+        assert_eq!(
+            to_latex("2 atan2(|v|, w) of θ′"),
+            "2 \\mathrm{atan2}(|v|, w) \\mathrm{of} \\theta'"
+        );
+        assert_eq!(to_latex("x̂ ab̂"), "\\hat{x} a\\hat{b}");
     }
 
     #[test]
