@@ -75,7 +75,14 @@ fn ran(t: &Trace, stage: &str) -> bool {
 /// Whether a solved scene is a good exercise of `kind`.
 pub fn suits(kind: Kind, lesson: &Lesson, t: &Trace) -> bool {
     let checks_pass = t.verdicts.iter().all(|v| v.passed != Some(false));
-    let clean = lesson.warnings.is_empty() && checks_pass;
+    // Inertia tensors that print exactly in four decimals, as the lecture's do.
+    let exact = |x: f64| ((x * 1e4).round() - x * 1e4).abs() < 1e-6;
+    let round_tensors = lesson
+        .bodies
+        .iter()
+        .filter_map(|b| b.inertia)
+        .all(|m| m.iter().all(|x| exact(*x)));
+    let clean = lesson.warnings.is_empty() && checks_pass && round_tensors;
     let well_conditioned = scalar(t, "impulse", "condition_number").is_none_or(|k| k < 1e4);
     // A clear margin either side of the Coulomb limit, so rounding cannot flip the regime.
     let ratio = match (

@@ -49,7 +49,7 @@ fn questions(kind: Kind, t: &Trace) -> Vec<&'static str> {
 }
 
 /// `(label, value)` of the short answers, where the trace has them.
-fn short_answers<'a>(kind: Kind, t: &'a Trace) -> Vec<(&'static str, &'a Value)> {
+fn short_answers(kind: Kind, t: &Trace) -> Vec<(&'static str, &Value)> {
     let mut wanted: Vec<(&'static str, &'static str, &'static str)> = Vec::new();
     let velocities = [
         ("v₁′", "apply_impulse", "v1"),

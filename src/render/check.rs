@@ -7,12 +7,18 @@ use serde_json::{json, Value as J};
 use crate::check::{Item, Status, Tally};
 use crate::format::Fmt;
 use crate::lesson::printed::{PrintedNum, PrintedShape};
+use crate::trace::Value;
 
-fn printed_text(p: &PrintedShape, fmt: &Fmt) -> String {
+/// The printed numbers as printed (their decimals kept), bracketed like the
+/// computed value (`[…]` for a quaternion, `(…)` for a vector).
+fn printed_text(p: &PrintedShape, computed: Option<&Value>, fmt: &Fmt) -> String {
     let n = |x: &PrintedNum| fmt.fixed(x.value, x.decimals);
     let list = |xs: &[PrintedNum]| xs.iter().map(n).collect::<Vec<_>>().join(", ");
     match p {
         PrintedShape::Scalar(x) => n(x),
+        PrintedShape::Vector(v) if matches!(computed, Some(Value::Quaternion(_))) => {
+            format!("[{}]", list(v))
+        }
         PrintedShape::Vector(v) => format!("({})", list(v)),
         PrintedShape::Matrix(m) => format!(
             "[{}]",
@@ -53,11 +59,22 @@ fn name(i: &Item) -> String {
     s
 }
 
+/// "12 agree, 3 known errata", and any problem that is not zero.
 fn summary(t: &Tally) -> String {
-    format!(
-        "{} agree, {} known errata, {} new disagreements, {} stale errata, {} not computed",
-        t.agrees, t.known, t.new, t.stale, t.not_computed
-    )
+    let mut parts = vec![
+        format!("{} agree", t.agrees),
+        format!("{} known errata", t.known),
+    ];
+    for (n, what) in [
+        (t.new, "new disagreements"),
+        (t.stale, "stale errata"),
+        (t.not_computed, "not computed"),
+    ] {
+        if n > 0 {
+            parts.push(format!("{n} {what}"));
+        }
+    }
+    parts.join(", ")
 }
 
 /// The errata sheet: per lesson one line per agreeing number and a block per
@@ -65,8 +82,13 @@ fn summary(t: &Tally) -> String {
 /// title, in order.
 pub fn text(lessons: &[(String, String)], items: &[Item], fmt: &Fmt) -> String {
     let mut out = String::new();
+    let mut unprinted = Vec::new();
     for (id, title) in lessons {
         let mine: Vec<&Item> = items.iter().filter(|i| &i.lesson == id).collect();
+        if mine.is_empty() {
+            unprinted.push(id.as_str());
+            continue;
+        }
         let _ = writeln!(
             out,
             "{id} — {title}\n  {} printed numbers: {}\n",
@@ -75,7 +97,7 @@ pub fn text(lessons: &[(String, String)], items: &[Item], fmt: &Fmt) -> String {
         );
         for i in &mine {
             let computed = i.computed.as_ref().map_or("–".into(), |v| fmt.value(v));
-            let printed = printed_text(&i.printed, fmt);
+            let printed = printed_text(&i.printed, i.computed.as_ref(), fmt);
             if i.status == Status::Agrees {
                 let _ = writeln!(
                     out,
@@ -112,6 +134,9 @@ pub fn text(lessons: &[(String, String)], items: &[Item], fmt: &Fmt) -> String {
             }
         }
         out.push('\n');
+    }
+    if !unprinted.is_empty() {
+        let _ = writeln!(out, "No printed numbers: {}.\n", unprinted.join(", "));
     }
     let t = Tally::of(items);
     let _ = writeln!(

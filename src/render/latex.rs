@@ -109,7 +109,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
             .join(", ");
         let _ = writeln!(
             out,
-            "\\item[{}] position ${}$, orientation $[{q}]$, velocity ${}$, angular velocity ${}$.",
+            "\\item[{}] position ${}$, orientation $[{q}]$,\\\\\n velocity ${}$, angular velocity ${}$.",
             prose(name),
             v(&a.position),
             v(&a.velocity),
@@ -119,7 +119,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
     out.push_str("\\end{description}\n");
     if let Some(checks) = trace.stage("checks") {
         out.push('\n');
-        out.push_str(&heading(depth + 1, "Checks"));
+        out.push_str(&heading(depth + 1, "Verdicts"));
         out.push_str("\\begin{itemize}\n");
         for v in &trace.verdicts {
             let mark = match v.passed {

@@ -9,8 +9,8 @@ use crate::format::Fmt;
 use crate::trace::{Step, Trace};
 
 /// Escapes what Markdown would read as markup in running text, and no more,
-/// so the source stays readable: `\\`, `` ` ``, `*` and `$` (which starts
-/// math) always; `_` at a word boundary; `<` before a tag-like character;
+/// so the source stays readable: `\\`, `*` and `$` (which starts math)
+/// always (backticks are left alone: lesson texts write `code` spans); `_` at a word boundary; `<` before a tag-like character;
 /// `]` before `(`, `[` or `:`; `#` and `>` at the start of a line.
 pub fn escape(s: &str) -> String {
     let chars: Vec<char> = s.chars().collect();
@@ -19,9 +19,12 @@ pub fn escape(s: &str) -> String {
     for (i, &c) in chars.iter().enumerate() {
         let prev = i.checked_sub(1).map(|j| chars[j]);
         let next = chars.get(i + 1).copied();
-        let word = |x: Option<char>| x.is_some_and(|x| x.is_alphanumeric());
+        // Letters, digits and combining accents (q̇) make up words.
+        let word = |x: Option<char>| {
+            x.is_some_and(|x| x.is_alphanumeric() || ('\u{300}'..='\u{36f}').contains(&x))
+        };
         let escape = match c {
-            '\\' | '`' | '*' | '$' => true,
+            '\\' | '*' | '$' => true,
             '_' => !(word(prev) && word(next)),
             '<' => next.is_some_and(|n| n.is_ascii_alphabetic() || "/!?".contains(n)),
             ']' => next.is_some_and(|n| "([:".contains(n)),
@@ -120,7 +123,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
     }
     out.push('\n');
     if let Some(checks) = trace.stage("checks") {
-        out.push_str(&heading(level + 1, "Checks"));
+        out.push_str(&heading(level + 1, "Verdicts"));
         for v in &trace.verdicts {
             let mark = match v.passed {
                 Some(true) => "✓",

@@ -778,8 +778,8 @@ fn legend(f: &mut Figure, bodies: &[&BodyView], reach: f64, v_max: f64) {
                 &format!("⚠ q is {} {side} {}", fmt.num(dist.abs()), b.name),
                 &mut y,
             );
-            line(f, None, "   as drawn (shape or orientation", &mut y);
-            line(f, None, "   in the lesson do not fit q).", &mut y);
+            line(f, None, "as drawn (shape or orientation", &mut y);
+            line(f, None, "in the lesson do not fit q).", &mut y);
         }
     }
 }

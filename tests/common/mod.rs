@@ -18,3 +18,23 @@ pub fn all_lessons() -> Vec<Lesson> {
         .map(|id| Lesson::load(id).expect("embedded lesson is valid"))
         .collect()
 }
+
+/// A fresh scratch directory for one test (under cargo's tmp dir for tests).
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("contact-lab-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
+
+/// The lesson at `path` (a file under lessons/), with its origin relative to the crate.
+pub fn lesson_file(path: &std::path::Path) -> Lesson {
+    let text = std::fs::read_to_string(path).unwrap();
+    let origin = path
+        .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+        .unwrap_or(path)
+        .display()
+        .to_string();
+    contact_lab::lesson::validate::parse(&origin, &text).expect("lesson is valid")
+}
