@@ -381,6 +381,17 @@ impl Validator {
             );
             return;
         }
+        let condition = eig.max() / eig.min();
+        if condition > 1e8 {
+            self.warnings.push(Note::new(
+                format!(
+                    "body '{name}': the inertia tensor's condition number is {}: its inverse keeps only about {:.0} significant digits in f64",
+                    crate::format::Fmt::new(2).num(condition),
+                    (1.0 / (condition * f64::EPSILON)).log10().max(0.0)
+                ),
+                span.clone(),
+            ));
+        }
         let mut e: Vec<f64> = eig.iter().copied().collect();
         e.sort_by(|a, b| a.total_cmp(b));
         if e[0] + e[1] < e[2] * (1.0 - 1e-9) {

@@ -241,6 +241,16 @@ impl Ctx<'_> {
                 "The normal as written has length {normal_length}; it was normalised before use.",
             );
         }
+        for i in self.movable() {
+            let n = i + 1;
+            if let Some(digits) = f.r_digits[i].filter(|d| *d < 12.0) {
+                b.input(format!("r{n}_digits"), digits.floor());
+                b.note(format!(
+                    "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q − p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",
+                    s = SUB[i]
+                ));
+            }
+        }
         for i in self.immovable_named() {
             b.note(format!(
                 "{} is immovable (m = ∞): it has no r and contributes nothing.",

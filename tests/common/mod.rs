@@ -1,6 +1,8 @@
 //! Shared test helpers: snapshots live in the top-level `snapshots/` (GUIDE §6).
 #![allow(dead_code)]
 
+pub mod dd;
+
 use contact_lab::lesson::{embedded, Lesson};
 
 /// insta settings: snapshots in `snapshots/`, names without the module prefix.
