@@ -32,12 +32,22 @@ fn text(t: &Trace, stage: &str, name: &str) -> String {
 
 #[test]
 fn every_lesson_file_is_embedded_and_named_for_its_id() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/lessons");
-    let mut files: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|f| f.ends_with(".toml"))
-        .collect();
+    fn toml_files(dir: &std::path::Path, prefix: &str, out: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap().flatten() {
+            let name = entry.file_name().into_string().unwrap();
+            if entry.path().is_dir() {
+                toml_files(&entry.path(), &format!("{prefix}{name}/"), out);
+            } else if name.ends_with(".toml") {
+                out.push(format!("{prefix}{name}"));
+            }
+        }
+    }
+    let mut files = Vec::new();
+    toml_files(
+        std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/lessons")),
+        "",
+        &mut files,
+    );
     files.sort();
     let mut embedded: Vec<String> = embedded::LESSONS
         .iter()
