@@ -902,6 +902,15 @@ impl Ctx<'_> {
                 Some(&format!("rotation_degrees{n}")),
             );
             let name = self.name(i);
+            if let Some((axis, ccw)) = about_one_axis(&u.rotation) {
+                let signed = if ccw {
+                    u.angle_degrees
+                } else {
+                    -u.angle_degrees
+                };
+                b.value(format!("rotation_signed_degrees{n}"), signed);
+                b.value(format!("rotation_world_axis{n}"), axis.to_string().as_str());
+            }
             match about_one_axis(&u.rotation) {
                 Some((axis, ccw)) => b.note(format!(
                     "{name} turns {{rotation_degrees{n}}}° {} about the {axis}-axis (seen from +{axis}); |Δθ| = {{rotation_vector_degrees{n}}}° is the small-angle estimate of the same turn.",
