@@ -2,32 +2,13 @@
 
 mod common;
 
+use common::{scalar, text, vector};
+
 use contact_lab::lesson::{embedded, Lesson};
 use contact_lab::trace::{Trace, Value};
 
 fn trace(id: &str, k: usize) -> Trace {
     contact_lab::worked_solution(&Lesson::load(id).unwrap(), k)
-}
-
-fn scalar(t: &Trace, stage: &str, name: &str) -> f64 {
-    match t.value(stage, name) {
-        Some(Value::Scalar(x)) => *x,
-        other => panic!("{stage}.{name}: {other:?}"),
-    }
-}
-
-fn vector(t: &Trace, stage: &str, name: &str) -> [f64; 3] {
-    match t.value(stage, name) {
-        Some(Value::Vector(v)) => *v,
-        other => panic!("{stage}.{name}: {other:?}"),
-    }
-}
-
-fn text(t: &Trace, stage: &str, name: &str) -> String {
-    match t.value(stage, name) {
-        Some(Value::Text(s)) => s.clone(),
-        other => panic!("{stage}.{name}: {other:?}"),
-    }
 }
 
 #[test]

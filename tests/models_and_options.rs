@@ -1,8 +1,12 @@
 //! The seeds' friction models, the comparison, and the projection options.
 
+mod common;
+
+use common::text;
+
 use contact_lab::lesson::{Lesson, Overrides};
 use contact_lab::physics::{FrictionModel, ProjectionMethod};
-use contact_lab::trace::{Trace, Value};
+use contact_lab::trace::Trace;
 
 fn solved(id: &str, k: usize, o: Overrides) -> Trace {
     let mut l = Lesson::load(id).unwrap();
@@ -21,13 +25,6 @@ fn num(t: &Trace, stage: &str, name: &str) -> f64 {
     t.value(stage, name)
         .unwrap_or_else(|| panic!("{stage}.{name}"))
         .numbers()[0]
-}
-
-fn text(t: &Trace, stage: &str, name: &str) -> String {
-    match t.value(stage, name) {
-        Some(Value::Text(s)) => s.clone(),
-        other => panic!("{other:?}"),
-    }
 }
 
 #[test]
