@@ -261,10 +261,10 @@ impl Validator {
                     self.warnings.push(
                         Note::new(
                             format!(
-                                "body '{name}': the inertia tensor given differs from the {}: given diag {}, shape gives diag {}; the given tensor is used",
+                                "body '{name}': the inertia tensor given differs from the {}: given {}, the shape gives {}; the given tensor is used",
                                 shape.map(|s| s.describe()).unwrap_or_default(),
-                                diag(t),
-                                diag(&s)
+                                tensor(t),
+                                tensor(&s)
                             ),
                             span.clone(),
                         )
@@ -588,12 +588,11 @@ fn body_list(bodies: &[RawBody]) -> String {
         .join(", ")
 }
 
-fn diag(m: &Matrix3<f64>) -> String {
+/// A tensor as rows, through the one formatter.
+fn tensor(m: &Matrix3<f64>) -> String {
     let f = crate::format::Fmt::default();
-    format!(
-        "({}, {}, {})",
-        f.num(m[(0, 0)]),
-        f.num(m[(1, 1)]),
-        f.num(m[(2, 2)])
-    )
+    let rows: Vec<String> = (0..3)
+        .map(|r| format!("[{}]", f.list(&[m[(r, 0)], m[(r, 1)], m[(r, 2)]])))
+        .collect();
+    format!("[{}]", rows.join(", "))
 }

@@ -344,7 +344,20 @@ impl Ctx<'_> {
             for i in self.movable() {
                 let n = i + 1;
                 let r = u.bodies[i].as_ref().expect("movable");
+                let s = SUB[i];
                 b.value(format!("skew_r{n}"), r.skew_r);
+                b.f(&format!("[r{s}]×"), "", None, Some(&format!("skew_r{n}")));
+                if let Some(a) = r.angular_matrix_world {
+                    b.value(format!("angular_matrix_world{n}"), a);
+                    b.f(
+                        &format!("−[r{s}]× I{s}⁻¹ [r{s}]×"),
+                        "",
+                        Some(&format!(
+                            "−{{skew_r{n}}} {{inverse_inertia_world{n}}} {{skew_r{n}}}"
+                        )),
+                        Some(&format!("angular_matrix_world{n}")),
+                    );
+                }
             }
             b.value("matrix", m);
             b.f(
