@@ -54,10 +54,13 @@ fn every_check_of_every_lesson_passes() {
         for k in 0..lesson.contacts.len() {
             let t = contact_lab::worked_solution(&lesson, k);
             for v in &t.verdicts {
-                assert_ne!(
-                    v.passed,
-                    Some(false),
-                    "{} contact {k}: {} failed",
+                // Kane's example exists to show the energy check failing.
+                let expected =
+                    lesson.id == "kane-energy-gain" && v.label.starts_with("kinetic energy");
+                assert_eq!(
+                    v.passed == Some(false),
+                    expected,
+                    "{} contact {k}: {}",
                     lesson.id,
                     v.label
                 );
@@ -194,4 +197,22 @@ fn both_bodies_rotate_in_the_two_box_lesson() {
     let dw1 = vector(&t, "apply_impulse", "dw1")[2];
     let dw2 = vector(&t, "apply_impulse", "dw2")[2];
     assert!(dw1 * dw2 < 0.0, "opposite senses: {dw1} {dw2}");
+}
+
+#[test]
+fn kanes_example_gains_energy_and_says_so_loudly() {
+    let t = trace("kane-energy-gain", 0);
+    let (before, after) = (
+        scalar(&t, "checks", "energy_before"),
+        scalar(&t, "checks", "energy_after"),
+    );
+    assert!(after > 1.2 * before, "{before} → {after}");
+    assert_eq!(text(&t, "friction_clamp", "regime"), "static");
+    let notes = &t.stage("checks").unwrap().notes;
+    assert!(
+        notes
+            .iter()
+            .any(|n| n.starts_with("ENERGY ROSE") && n.contains("Kane")),
+        "{notes:?}"
+    );
 }

@@ -16,6 +16,7 @@ pub const LESSONS: &[(&str, &str)] = embed![
     "spinning-ball.toml",
     "excessive-rotation.toml",
     "two-boxes.toml",
+    "kane-energy-gain.toml",
     "extremes/extreme-mass-ratio.toml",
     "extremes/extreme-far-from-origin.toml",
     "extremes/extreme-velocities.toml",
