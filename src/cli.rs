@@ -8,7 +8,7 @@ Examples:
   contact-lab solve lecture-2                       the lecture's second worked example
   contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
   contact-lab solve my-scene.toml --contact 1 --digits 4
-  contact-lab solve friction-slides --compare-friction
+  contact-lab solve spinning-ball -c 1 --compare-friction
 
 Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing.";
 
