@@ -8,7 +8,7 @@ Examples:
   contact-lab solve lecture-2                       the lecture's second worked example
   contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
   contact-lab solve my-scene.toml --contact 1 --digits 4
-  contact-lab solve friction-cube --compare-friction
+  contact-lab solve spinning-ball -c 1 --compare-friction
   contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
   contact-lab solve friction-cube --all-contacts --format md --figures figs > friction.md
   contact-lab figure lecture-2 -o lecture-2.svg     the contact as a slide-ready picture

@@ -355,6 +355,11 @@ fn spins(rate: f64, reach: f64, v_max: f64) -> bool {
     }
 }
 
+/// Whether projection moves the body further than three times the scene's size.
+fn far(b: &BodyView, reach: f64) -> bool {
+    norm(scaled(b.position_after, b.position, -1.0)) > 3.0 * reach
+}
+
 fn moved(b: &BodyView) -> bool {
     let dp = (0..3)
         .map(|i| (b.position_after[i] - b.position[i]).abs())
@@ -403,7 +408,7 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
         }
     });
 
-    let mut arrows = Vec::new();
+    let mut arrows: Vec<Arrow> = Vec::new();
     let normal_tip = scaled(s.point, s.normal, 0.45 * reach);
     let arrow = |from, to, colour, width, dashed, label: &str, at| Arrow {
         from,
@@ -477,10 +482,12 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
     ];
     for b in &in_contact {
         points.push(plane.project(b.position));
-        for (p, q) in [
-            (b.position, b.orientation),
-            (b.position_after, b.orientation_after),
-        ] {
+        let mut poses = vec![(b.position, b.orientation)];
+        // A projection that moves a body far off is noted, not fitted.
+        if !far(b, reach) {
+            poses.push((b.position_after, b.orientation_after));
+        }
+        for (p, q) in poses {
             if let Some(o) = outline(&b.shape, p, q, plane) {
                 points.extend(o.points());
             }
@@ -491,6 +498,11 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
         points.push(plane.project(a.to));
     }
     let view = View::fit(&points);
+    // The normal is a direction: at least 60 px long whatever the scale.
+    let normal_len = (0.45 * reach).max(60.0 / view.scale);
+    if let Some(a) = arrows.iter_mut().find(|a| a.colour == NORMAL) {
+        a.to = scaled(s.point, s.normal, normal_len);
+    }
 
     let mut f = Figure {
         trace,
@@ -544,6 +556,8 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
         &subtitle,
     );
 
+    // Everything drawn stays in the drawing area, however far a value reaches.
+    f.out.push_str("  <g clip-path=\"url(#area)\">\n");
     // Bodies: half-spaces first, then shapes; where projection moves them, a dashed outline.
     for b in &in_contact {
         if b.shape == ShapeView::HalfSpace {
@@ -644,6 +658,7 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
         "q",
     );
 
+    f.out.push_str("  </g>\n");
     legend(&mut f, &in_contact, reach, v_max);
     f.out.push_str("</svg>\n");
     f.out
@@ -758,6 +773,16 @@ fn legend(f: &mut Figure, bodies: &[&BodyView], reach: f64, v_max: f64) {
                 &mut y,
             );
         }
+    }
+    for b in bodies.iter().filter(|b| far(b, reach)) {
+        let d = norm(scaled(b.position_after, b.position, -1.0));
+        line(
+            f,
+            None,
+            &format!("projection moves {} by {}", b.name, fmt.num(d)),
+            &mut y,
+        );
+        line(f, None, "(beyond the figure)", &mut y);
     }
     if bodies.iter().any(|b| moved(b)) {
         line(f, Some((MOVED, true, 2.5)), "after projection", &mut y);

@@ -1,6 +1,8 @@
 //! Shared test helpers: snapshots live in the top-level `snapshots/` (GUIDE §6).
 #![allow(dead_code)]
 
+pub mod dd;
+
 use contact_lab::lesson::{embedded, Lesson};
 
 /// insta settings: snapshots in `snapshots/`, names without the module prefix.
@@ -17,6 +19,32 @@ pub fn all_lessons() -> Vec<Lesson> {
         .into_iter()
         .map(|id| Lesson::load(id).expect("embedded lesson is valid"))
         .collect()
+}
+
+use contact_lab::trace::{Trace, Value};
+
+/// A stage's scalar value; panics with the name when it is missing.
+pub fn scalar(t: &Trace, stage: &str, name: &str) -> f64 {
+    match t.value(stage, name) {
+        Some(Value::Scalar(x)) => *x,
+        other => panic!("{stage}.{name}: {other:?}"),
+    }
+}
+
+/// A stage's vector value.
+pub fn vector(t: &Trace, stage: &str, name: &str) -> [f64; 3] {
+    match t.value(stage, name) {
+        Some(Value::Vector(v)) => *v,
+        other => panic!("{stage}.{name}: {other:?}"),
+    }
+}
+
+/// A stage's text value.
+pub fn text(t: &Trace, stage: &str, name: &str) -> String {
+    match t.value(stage, name) {
+        Some(Value::Text(s)) => s.clone(),
+        other => panic!("{stage}.{name}: {other:?}"),
+    }
 }
 
 /// A fresh scratch directory for one test (under cargo's tmp dir for tests).
