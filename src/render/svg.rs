@@ -297,10 +297,12 @@ impl Figure<'_> {
         );
     }
 
-    fn half_space(&mut self, view: &View, body: &BodyView, reach: f64) {
+    /// The plane through q perpendicular to d̂, hatched on the side of the
+    /// body in `slot` (body 2 lies on the −d̂ side, body 1 on the +d̂ side).
+    fn half_space(&mut self, view: &View, slot: usize, name: &str, reach: f64) {
         let s = &self.trace.scene;
         // Body 2 lies on the −d̂ side of the plane, body 1 on the +d̂ side.
-        let side = if body.slot == 1 { 1.0 } else { -1.0 };
+        let side = if slot == 1 { 1.0 } else { -1.0 };
         let d = self.plane.project(s.normal);
         let len = (d.0 * d.0 + d.1 * d.1).sqrt();
         if len < 0.2 {
@@ -340,7 +342,7 @@ impl Figure<'_> {
             q.0 + 0.9 * reach * t.0 + 0.25 * reach * d.0,
             q.1 + 0.9 * reach * t.1 + 0.25 * reach * d.1,
         ));
-        let name = format!("{} (m = ∞)", body.name);
+        let name = format!("{name} (m = ∞)");
         self.text(label, 20.0, "middle", "normal", INK, &name);
     }
 }
@@ -561,8 +563,12 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
     // Bodies: half-spaces first, then shapes; where projection moves them, a dashed outline.
     for b in &in_contact {
         if b.shape == ShapeView::HalfSpace {
-            f.half_space(&view, b, reach);
+            f.half_space(&view, b.slot, &b.name, reach);
         }
+    }
+    // A contact against the world: its surface is drawn like a half-space.
+    if !in_contact.iter().any(|b| b.slot == 2) {
+        f.half_space(&view, 2, "the world", reach);
     }
     for b in &in_contact {
         let fill = if b.movable {
