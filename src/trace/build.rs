@@ -236,10 +236,8 @@ impl Ctx<'_> {
             if guess.1 == "y" { ">" } else { "≤" }
         ));
         if (c.normal_length - 1.0).abs() > 1e-12 {
-            b.input("normal_length", c.normal_length);
-            b.note(
-                "The normal as written has length {normal_length}; it was normalised before use.",
-            );
+            b.input("normal_length_deviation", c.normal_length - 1.0);
+            b.note("The normal as written has length 1 + ({normal_length_deviation}); it was normalised before use.");
         }
         for i in self.movable() {
             let n = i + 1;
@@ -706,7 +704,18 @@ impl Ctx<'_> {
                 Some(&format!("{{w{n}_before}} + {{dw{n}}}")),
                 Some(&format!("w{n}")),
             );
-            if let Some((axis, ccw)) = about_one_axis(&c.dw) {
+            // The impulse (with friction, not only its normal part) passes
+            // through the centre: any spin left is the data's rounding.
+            let rounding = through_centre(
+                &self.s.frame.r[i].unwrap_or_default(),
+                &c.impulse.normalize(),
+            );
+            if rounding && c.dw != Vector3::zeros() {
+                b.note(format!(
+                    "{}'s spin changes by only {{dw{n}_degrees_per_second}} °/s: the impulse passes through its centre to within the data's rounding, so this is what the rounding leaves, not a real spin-up.",
+                    self.name(i)
+                ));
+            } else if let Some((axis, ccw)) = about_one_axis(&c.dw) {
                 b.note(format!(
                     "{}'s spin changes by |Δθ̇{s}| = {{dw{n}_degrees_per_second}} °/s, {} about the {axis}-axis (seen from +{axis}).",
                     self.name(i),
@@ -924,7 +933,14 @@ impl Ctx<'_> {
                 b.value(format!("rotation_signed_degrees{n}"), signed);
                 b.value(format!("rotation_world_axis{n}"), axis.to_string().as_str());
             }
+            let rounding = through_centre(
+                &self.s.frame.r[i].unwrap_or_default(),
+                &self.s.frame.normal(),
+            );
             match about_one_axis(&u.rotation) {
+                _ if rounding => b.note(format!(
+                    "{name} turns only {{rotation_degrees{n}}}°: its contact arm lies along the normal to within the data's rounding, so this is what the rounding leaves."
+                )),
                 Some((axis, ccw)) => b.note(format!(
                     "{name} turns {{rotation_degrees{n}}}° {} about the {axis}-axis (seen from +{axis}); |Δθ| = {{rotation_vector_degrees{n}}}° is the small-angle estimate of the same turn.",
                     sense(ccw)
