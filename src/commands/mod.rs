@@ -13,10 +13,25 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     match cli.command {
+        None if interactive() => crate::tui::run(None, 0),
         None => list::welcome(out),
+        Some(Command::Tui(args)) => {
+            if !interactive() {
+                return Err(AppError::Usage(
+                    "the TUI needs a terminal on stdin and stdout; for a script use `contact-lab solve LESSON`".into(),
+                ));
+            }
+            crate::tui::run(args.lesson.as_deref(), args.contact)
+        }
         Some(Command::List) => list::list(out),
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
     }
+}
+
+/// Both stdin and stdout are a terminal, so the TUI can run.
+fn interactive() -> bool {
+    use std::io::IsTerminal;
+    std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
 }
 
 pub(crate) fn io(e: std::io::Error) -> AppError {
