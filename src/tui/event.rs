@@ -36,7 +36,7 @@ pub const KEYS: &[(&str, &str)] = &[
     ("← h", "previous stage"),
     (
         "Space Enter",
-        "next stage; in predict mode, reveal the next result first",
+        "next stage; in predict mode first reveal the next result",
     ),
     ("Home g / End G", "first / last stage"),
     ("Tab / Shift-Tab", "next / previous contact"),
@@ -44,13 +44,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ("PgDn / PgUp", "scroll the stage panel"),
     (
         "e",
-        "edit an input of this contact (restitution, friction, masses, velocities, …)",
+        "edit restitution, friction, masses, velocities, … of this contact",
     ),
     ("r", "reset this lesson to its file's values"),
-    (
-        "p",
-        "predict mode: hide each result until Space / Enter reveals it",
-    ),
+    ("p", "predict mode: hide each result until Space reveals it"),
     ("v", "view plane of the picture: xy → yz → zx"),
     ("z", "picture full size / beside the stages"),
     ("w", "write this worked solution to a Markdown file"),

@@ -95,12 +95,15 @@ fn render_stages(app: &App, area: Rect, buf: &mut Buffer) {
         let name = format!("{} {}", s + 1, short_title(step.id, step.title));
         let line = match &step.skipped {
             Some(why) => {
-                let full = format!("{name} – {}", short_reason(why));
-                let text = if width(&full) <= w.saturating_sub(2) {
-                    full
-                } else {
-                    truncate(&format!("{name} · skipped"), w.saturating_sub(2))
-                };
+                // As much of the reason as fits; the panel shows all of it.
+                let room = w.saturating_sub(2);
+                let text = [
+                    format!("{name} – {}", short_reason(why)),
+                    format!("{name} · skipped"),
+                ]
+                .into_iter()
+                .find(|t| width(t) <= room)
+                .unwrap_or_else(|| truncate(&name, room));
                 Line::from(vec![gutter, Span::styled(text, t.dim())])
             }
             None => Line::from(vec![

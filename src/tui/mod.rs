@@ -40,9 +40,8 @@ pub fn lessons(lesson: Option<&str>) -> Result<(Vec<Lesson>, usize), AppError> {
     Ok((all, at))
 }
 
-/// Runs the TUI until the user quits; the terminal is restored on return,
-/// on error and on panic (ratatui's hook).
-pub fn run(lesson: Option<&str>, contact: usize) -> Result<(), AppError> {
+/// The app on `lesson` (embedded id or path; lecture-2 when `None`) and contact `contact`.
+pub fn open(lesson: Option<&str>, contact: usize) -> Result<App, AppError> {
     let (all, at) = lessons(lesson)?;
     let n = all[at].contacts.len();
     if contact >= n {
@@ -53,8 +52,17 @@ pub fn run(lesson: Option<&str>, contact: usize) -> Result<(), AppError> {
     }
     let mut app = App::new(all, at, contact, Theme::from_env());
     app.write_dir = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut terminal = ratatui::try_init()
-        .map_err(|e| AppError::Runtime(format!("cannot open the terminal: {e}")))?;
+    Ok(app)
+}
+
+/// Runs the app until the user quits; the terminal is restored on return,
+/// on error and on panic (ratatui's hook).
+pub fn run(mut app: App) -> Result<(), AppError> {
+    let mut terminal = ratatui::try_init().map_err(|e| {
+        // Raw mode may be on although the alternate screen failed.
+        ratatui::restore();
+        AppError::Runtime(format!("cannot open the terminal: {e}"))
+    })?;
     let result = run_loop(&mut terminal, &mut app);
     ratatui::restore();
     result.map_err(|e| AppError::Runtime(format!("terminal: {e}")))

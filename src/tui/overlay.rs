@@ -54,12 +54,10 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
             ]));
         }
     }
-    lines.push(Line::raw(""));
     for text in [
-        "In the edit form: ↑↓ choose a field, Enter edits it (or cycles a choice), Enter sets the value, Esc goes back.",
-        "● marks numbers changed by the last edit; ? marks stages whose results predict mode still hides.",
-        "Picture: v velocity before, v′ after, g impulse on body 1 (−g on body 2), d̂ normal, r arms, q contact point.",
-        "Any key closes this help.",
+        "Edit form: ↑↓ field, Enter edits (or cycles a choice), Enter sets, Esc goes back.",
+        "● changed by the last edit · ? results predict mode still hides",
+        "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
     ] {
         for piece in wrap(text, text_w, 0) {
             lines.push(Line::styled(format!(" {piece}"), t.dim()));
@@ -77,14 +75,17 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
     let rect = centered(
         area,
         72.min(area.width.saturating_sub(4)),
-        (form.fields.len() as u16 + 7).min(area.height.saturating_sub(2)),
+        (form.fields.len() as u16 + 8).min(area.height.saturating_sub(2)),
     );
     let title = format!(" Edit contact {} ", lesson.contact_label(k));
     let title = truncate(&title, rect.width.saturating_sub(4) as usize);
     let inner = frame(app, &title, rect, buf);
+    let error_rows = form.error.as_deref().map_or(0, |e| {
+        wrap(&format!(" refused: {e}"), inner.width as usize, 0).len() as u16
+    });
     let [list_area, input_area, help_area] = Layout::vertical([
         Constraint::Fill(1),
-        Constraint::Length(2),
+        Constraint::Length(1 + error_rows),
         Constraint::Length(2),
     ])
     .areas(inner);
@@ -104,7 +105,7 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
                 _ => "",
             };
             ListItem::new(Line::from(vec![
-                Span::raw(format!(" {:lw$}  ", f.label)),
+                Span::raw(format!("{:lw$}  ", f.label)),
                 Span::styled(value, t.result()),
                 Span::styled(hint, t.dim()),
             ]))
@@ -112,7 +113,9 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
         .collect();
     let mut state = ListState::default().with_selected(Some(form.selected));
     StatefulWidget::render(
-        List::new(items).highlight_style(t.selected()),
+        List::new(items)
+            .highlight_style(t.selected())
+            .highlight_symbol("▶"),
         list_area,
         buf,
         &mut state,
@@ -146,7 +149,8 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
 
 pub fn write_prompt(app: &App, input: &str, error: Option<&str>, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
-    let rect = centered(area, 70.min(area.width.saturating_sub(4)), 7);
+    let rows = 4 + u16::from(error.is_some());
+    let rect = centered(area, 70.min(area.width.saturating_sub(4)), rows);
     let inner = frame(app, " Write Markdown ", rect, buf);
     let mut lines = vec![
         Line::styled(format!(" into {}", app.write_dir.display()), t.dim()),
@@ -166,15 +170,24 @@ pub fn write_prompt(app: &App, input: &str, error: Option<&str>, area: Rect, buf
 
 pub fn confirm(app: &App, path: &Path, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
-    let rect = centered(area, 70.min(area.width.saturating_sub(4)), 6);
+    let w = 70.min(area.width.saturating_sub(4));
+    let name = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let mut lines: Vec<Line> = wrap(
+        &format!("{name} already exists."),
+        w.saturating_sub(3) as usize,
+        0,
+    )
+    .into_iter()
+    .map(|l| Line::raw(format!(" {l}")))
+    .collect();
+    lines.push(Line::from(vec![
+        Span::styled(" y", t.key()),
+        Span::raw(" overwrites it · any other key keeps it"),
+    ]));
+    let rect = centered(area, w, lines.len() as u16 + 2);
     let inner = frame(app, " File exists ", rect, buf);
-    Paragraph::new(vec![
-        Line::raw(format!(" {} already exists.", path.display())),
-        Line::from(vec![
-            Span::styled(" y", t.key()),
-            Span::raw(" overwrite it · any other key keeps it"),
-        ]),
-    ])
-    .wrap(Wrap { trim: false })
-    .render(inner, buf);
+    Paragraph::new(lines).render(inner, buf);
 }

@@ -69,17 +69,53 @@ impl Picture {
         let len = along[0].hypot(along[1]);
         self.seg(from, to, ink);
         if len > 1e-12 {
-            let h = head.min(0.4 * len);
-            let (ux, uy) = (along[0] / len, along[1] / len);
-            for s in [-1.0, 1.0] {
-                let (c, si) = (0.93f64, 0.37f64 * s);
-                let dx = -(ux * c - uy * si) * h;
-                let dy = -(ux * si + uy * c) * h;
-                self.seg(to, [to[0] + dx, to[1] + dy], ink);
-            }
+            self.head(to, scale(along, 1.0 / len), head.min(0.4 * len), ink);
         }
         self.label(to, label, ink, rank);
         self.keep.push(to);
+    }
+
+    /// Two barbs of length `h` at `to`, for a line arriving along the unit vector `u`.
+    fn head(&mut self, to: P, u: P, h: f64, ink: Ink) {
+        for s in [-1.0, 1.0] {
+            let (c, si) = (0.93f64, 0.37f64 * s);
+            let dx = -(u[0] * c - u[1] * si) * h;
+            let dy = -(u[0] * si + u[1] * c) * h;
+            self.seg(to, [to[0] + dx, to[1] + dy], ink);
+        }
+    }
+}
+
+/// A radius for a body's spin arc: inside the body, a share of the view for a marker.
+fn size(shape: ShapeView, extent: f64) -> f64 {
+    match shape {
+        ShapeView::Sphere { radius } => 0.5 * radius,
+        ShapeView::Box { sides } => 0.3 * sides.iter().copied().fold(f64::INFINITY, f64::min),
+        ShapeView::Cylinder { radius, height } => 0.5 * radius.min(height / 2.0),
+        ShapeView::HalfSpace | ShapeView::Marker => 0.06 * extent,
+    }
+}
+
+impl Picture {
+    /// A ¾ circle around `c` with an arrowhead showing the sense of turning.
+    fn spin(&mut self, c: P, radius: f64, ccw: bool, head: f64, ink: Ink, label: &str) {
+        let sense = if ccw { 1.0 } else { -1.0 };
+        let start = std::f64::consts::FRAC_PI_4;
+        let n = 24;
+        let at = |i: usize| {
+            let a = start + sense * 1.5 * std::f64::consts::PI * i as f64 / n as f64;
+            [c[0] + radius * a.cos(), c[1] + radius * a.sin()]
+        };
+        for i in 0..n {
+            self.seg(at(i), at(i + 1), ink);
+        }
+        let (end, before) = (at(n), at(n - 1));
+        let along = [end[0] - before[0], end[1] - before[1]];
+        let len = along[0].hypot(along[1]);
+        if len > 0.0 {
+            self.head(end, scale(along, 1.0 / len), head.min(0.6 * radius), ink);
+        }
+        self.label(at(0), label, ink, 7);
     }
 }
 
@@ -217,12 +253,17 @@ fn picture(scene: &SceneView, view: &View, show: &Show) -> (Picture, [f64; 4]) {
     let head = 0.06 * extent;
     let arrow_len = 0.35 * extent;
 
-    // Half-spaces: the surface through q across the whole view, hatched below.
-    for b in in_contact
+    // Half-spaces, and the immovable world of a one-body contact: the
+    // surface through q across the whole view, hatched on the solid side.
+    let mut surfaces: Vec<(f64, String)> = in_contact
         .iter()
         .filter(|b| b.shape == ShapeView::HalfSpace)
-    {
-        let sign = if b.slot == 2 { 1.0 } else { -1.0 };
+        .map(|b| (if b.slot == 2 { 1.0 } else { -1.0 }, b.name.clone()))
+        .collect();
+    if !in_contact.iter().any(|b| b.slot == 2) {
+        surfaces.push((1.0, "world".into()));
+    }
+    for (sign, name) in surfaces {
         let n = scale(view.p(v3(scene.normal)), sign);
         let len = n[0].hypot(n[1]);
         if len < 1e-9 {
@@ -242,12 +283,9 @@ fn picture(scene: &SceneView, view: &View, show: &Show) -> (Picture, [f64; 4]) {
             let tip = add(base, scale(add(scale(n, -1.0), along), 0.35 * step));
             pic.seg(base, tip, Ink::Ground);
         }
-        pic.label(
-            add(q, scale(n, -0.45 * extent)),
-            b.name.clone(),
-            Ink::Ground,
-            9,
-        );
+        let at = add(q, scale(n, -0.15 * extent));
+        pic.keep.push(at);
+        pic.label(at, name, Ink::Ground, 9);
     }
     // Bodies, and where the projection moved them.
     for (b, segs) in &body_segs {
@@ -303,6 +341,35 @@ fn picture(scene: &SceneView, view: &View, show: &Show) -> (Picture, [f64; 4]) {
                     &format!("v{}′", SUB[b.slot]),
                     4,
                 );
+            }
+        }
+    }
+    // Spin about the axis out of the picture: an arc, counter-clockwise
+    // for a positive component (the view axes are right-handed).
+    let out_axis = 3 - view.plane.axes().0 - view.plane.axes().1;
+    for b in &movers {
+        let p = view.p(v3(b.position));
+        let r = size(b.shape, extent);
+        let spins = [
+            (
+                b.angular_velocity[out_axis],
+                r,
+                Ink::VelocityBefore,
+                "",
+                true,
+            ),
+            (
+                b.angular_velocity_after[out_axis],
+                0.65 * r,
+                Ink::VelocityAfter,
+                "′",
+                show.after_velocity,
+            ),
+        ];
+        for (w, radius, ink, prime, shown) in spins {
+            if shown && w.abs() > 1e-12 && w.is_finite() {
+                let label = format!("ω{}{prime}", SUB[b.slot]);
+                pic.spin(p, radius, w > 0.0, head, ink, &label);
             }
         }
     }
@@ -364,8 +431,7 @@ fn fit(b: [f64; 4], cols: u16, rows: u16) -> ([f64; 2], [f64; 2]) {
     ([cx - w / 2.0, cx + w / 2.0], [cy - h / 2.0, cy + h / 2.0])
 }
 
-/// Puts each label in free cells near its point (the canvas prints a label
-/// in the cell holding its point): first by rank, trying the cell itself,
+/// Puts each label in free cells near its point: first by rank, trying the cell itself,
 /// then its neighbours; a label with no free place nearby is left out.
 fn place_labels(
     marks: &[Mark],
@@ -393,8 +459,9 @@ fn place_labels(
         if !(xb[0]..=xb[1]).contains(&p[0]) || !(yb[0]..=yb[1]).contains(&p[1]) {
             continue;
         }
-        let c = ((p[0] - xb[0]) * f64::from(w - 1) / xr) as i32;
-        let r = ((yb[1] - p[1]) * f64::from(h - 1) / yr) as i32;
+        // The cell of the braille dot the point is drawn at (2 × 4 dots a cell).
+        let c = ((p[0] - xb[0]) * f64::from(2 * w - 1) / xr).round() as i32 / 2;
+        let r = ((yb[1] - p[1]) * f64::from(4 * h - 1) / yr).round() as i32 / 4;
         let n = super::wrap::width(text) as i32;
         let tries = [
             (0, 0),
@@ -424,7 +491,8 @@ fn place_labels(
             for x in c..c + n {
                 taken[(r * w + x) as usize] = true;
             }
-            // The point whose cell is (c, r), nudged inside the cell.
+            // A point the canvas prints in cell (c, r): labels map with
+            // (cells − 1) steps, unlike the dots.
             let x = (xb[0] + (f64::from(c) + 0.01) * xr / f64::from(w - 1)).min(xb[1]);
             let y = (yb[1] - (f64::from(r) + 0.01) * yr / f64::from(h - 1)).max(yb[0]);
             out.push(([x, y], text.clone(), ink));

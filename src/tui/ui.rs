@@ -4,6 +4,7 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
@@ -30,7 +31,7 @@ impl Widget for &App {
         key_bar(self, bottom, buf);
         let wide = area.width >= 100;
         let [left, right] = Layout::horizontal([
-            Constraint::Length(if wide { 26 } else { 22 }),
+            Constraint::Length(if wide { 28 } else { 22 }),
             Constraint::Fill(1),
         ])
         .areas(body);
@@ -113,44 +114,48 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         }
         Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
-        Mode::Confirm(_) => &[("y", "overwrite"), ("any other key", "keep the file")],
+        Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
         Mode::Help => &[("any key", "closes this help")],
         Mode::Normal => &[
             ("←→", "stage"),
             ("⇥", "contact"),
             ("↑↓", "lesson"),
             ("e", "edit"),
-            ("r", "reset"),
             ("p", "predict"),
+            ("w", "write"),
             ("v", "plane"),
             ("z", "zoom"),
-            ("w", "write"),
+            ("r", "reset"),
             ("?", "help"),
             ("q", "quit"),
         ],
     };
     // Drop keys from the end (but never help and quit) until the bar fits.
-    let cost = |k: &str, w: &str| super::wrap::width(k) + super::wrap::width(w) + 3;
-    let (tail, head) = match app.mode {
-        Mode::Normal => (&keys[keys.len() - 2..], &keys[..keys.len() - 2]),
-        _ => (&keys[..0], keys),
+    let cost = |(k, w): &(&str, &str)| super::wrap::width(k) + super::wrap::width(w) + 3;
+    let split = if matches!(app.mode, Mode::Normal) {
+        keys.len() - 2
+    } else {
+        keys.len()
     };
-    let mut room = (area.width as usize).saturating_sub(1);
-    room = room.saturating_sub(tail.iter().map(|(k, w)| cost(k, w)).sum());
+    let (head, tail) = keys.split_at(split);
+    // The last item needs no trailing gap.
+    let mut room = (area.width as usize + 2).saturating_sub(tail.iter().map(cost).sum());
     let mut shown: Vec<&(&str, &str)> = Vec::new();
     for item in head {
-        let c = cost(item.0, item.1);
-        if c > room {
+        if cost(item) > room {
             break;
         }
-        room -= c;
+        room -= cost(item);
         shown.push(item);
     }
     shown.extend(tail);
-    let mut spans = vec![Span::raw(" ")];
-    for (k, what) in shown {
+    let mut spans = vec![];
+    for (i, (k, what)) in shown.into_iter().enumerate() {
+        if i > 0 {
+            spans.push(Span::raw("  "));
+        }
         spans.push(Span::styled(*k, t.key()));
-        spans.push(Span::raw(format!(" {what}  ")));
+        spans.push(Span::raw(format!(" {what}")));
     }
     Paragraph::new(Line::from(spans)).render(area, buf);
 }
@@ -167,7 +172,8 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
         )]
     } else {
         let step = app.trace.stage("checks");
-        app.trace
+        let rows: Vec<(&str, Style, String, String)> = app
+            .trace
             .verdicts
             .iter()
             .map(|v| {
@@ -180,11 +186,26 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
                     Some(s) => app.fmt.fill(&v.detail, s, false),
                     None => v.detail.clone(),
                 };
-                Line::from(vec![
-                    Span::styled(mark, style),
-                    Span::raw(format!(" {}: ", v.label)),
-                    Span::styled(detail, t.dim()),
-                ])
+                (mark, style, v.label.clone(), detail)
+            })
+            .collect();
+        // With no room for every detail, the verdicts alone.
+        let inner = block.inner(area);
+        let needed: usize = rows
+            .iter()
+            .map(|(_, _, label, detail)| {
+                super::wrap::wrap(&format!("✓ {label}: {detail}"), inner.width as usize, 0).len()
+            })
+            .sum();
+        let details = needed <= inner.height as usize;
+        rows.into_iter()
+            .map(|(mark, style, label, detail)| {
+                let mut spans = vec![Span::styled(mark, style), Span::raw(format!(" {label}"))];
+                if details {
+                    spans.push(Span::raw(": "));
+                    spans.push(Span::styled(detail, t.dim()));
+                }
+                Line::from(spans)
             })
             .collect()
     };

@@ -9,50 +9,126 @@ pub fn width(s: &str) -> usize {
 }
 
 /// Splits `text` into lines of at most `max` cells; lines after the first
-/// start with `indent` spaces. Breaks after spaces, and inside a word only
-/// when the word alone is too long.
+/// start with `indent` spaces. Breaks at spaces outside brackets first, so a
+/// vector `(1, 2, 3)` stays on one line when it fits on one; then at any
+/// space; inside a word only when the word alone is too long.
 pub fn wrap(text: &str, max: usize, indent: usize) -> Vec<String> {
-    let max = max.max(1);
-    let indent = if indent + 8 > max { 0 } else { indent };
-    let mut lines = Vec::new();
-    let mut line = String::new();
-    let mut w = 0;
-    for word in text.split_inclusive(' ') {
-        let ww = width(word.trim_end());
-        if w + ww > max && w > indent_of(&lines, indent) {
-            lines.push(line.trim_end().to_string());
-            line = " ".repeat(indent);
-            w = indent;
-        }
-        if w + ww > max {
-            // A word longer than the line: cut it.
-            for ch in word.chars() {
-                let cw = width(ch.encode_utf8(&mut [0; 4]));
-                if w + cw > max && w > indent_of(&lines, indent) {
-                    lines.push(std::mem::replace(&mut line, " ".repeat(indent)));
-                    w = indent;
-                }
-                line.push(ch);
-                w += cw;
-            }
-        } else {
-            line.push_str(word);
-            w += width(word);
-        }
+    let mut w = Wrapper {
+        max: max.max(1),
+        indent: if indent + 8 > max { 0 } else { indent },
+        lines: vec![],
+        line: String::new(),
+        width: 0,
+    };
+    for unit in units(text, 0) {
+        w.unit(unit, 0);
     }
-    let last = line.trim_end().to_string();
-    if !last.trim().is_empty() || lines.is_empty() {
-        lines.push(last);
+    let last = w.line.trim_end().to_string();
+    if !last.trim().is_empty() || w.lines.is_empty() {
+        w.lines.push(last);
     }
-    lines
+    w.lines
 }
 
-/// Indent of the line being filled: none on the first line.
-fn indent_of(lines: &[String], indent: usize) -> usize {
-    if lines.is_empty() {
-        0
-    } else {
-        indent
+/// Pieces of `text` split after spaces inside at most `level` brackets.
+fn units(text: &str, level: i32) -> Vec<&str> {
+    let mut out = vec![];
+    let mut depth = 0i32;
+    let mut start = 0;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            ' ' if depth <= level => {
+                out.push(&text[start..i + 1]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    if start < text.len() {
+        out.push(&text[start..]);
+    }
+    out
+}
+
+struct Wrapper {
+    max: usize,
+    indent: usize,
+    lines: Vec<String>,
+    line: String,
+    width: usize,
+}
+
+impl Wrapper {
+    /// Where text starts on the current line: after the indent on a continuation.
+    fn start(&self) -> usize {
+        if self.lines.is_empty() {
+            0
+        } else {
+            self.indent
+        }
+    }
+    /// Where text would start after a [`newline`](Self::newline).
+    fn fresh_start(&self) -> usize {
+        if self.has_text() {
+            self.indent
+        } else {
+            self.width
+        }
+    }
+    fn has_text(&self) -> bool {
+        self.width > self.start()
+    }
+    fn newline(&mut self) {
+        if self.has_text() {
+            let done = std::mem::replace(&mut self.line, " ".repeat(self.indent));
+            self.lines.push(done.trim_end().to_string());
+            self.width = self.indent;
+        }
+    }
+    fn push(&mut self, s: &str) {
+        self.line.push_str(s);
+        self.width += width(s);
+    }
+    /// Places a piece split at bracket depth `level`: whole if it fits on
+    /// this line or the next, else split one bracket deeper (matrix rows),
+    /// else word by word.
+    fn unit(&mut self, unit: &str, level: i32) {
+        let uw = width(unit.trim_end());
+        if self.width + uw <= self.max {
+            self.push(unit);
+        } else if self.fresh_start() + uw <= self.max {
+            self.newline();
+            self.push(unit);
+        } else if level < 2 {
+            for piece in units(unit, level + 1) {
+                self.unit(piece, level + 1);
+            }
+        } else {
+            for word in unit.split_inclusive(' ') {
+                self.word(word);
+            }
+        }
+    }
+
+    fn word(&mut self, word: &str) {
+        let ww = width(word.trim_end());
+        if self.width + ww > self.max {
+            self.newline();
+        }
+        if self.width + ww <= self.max {
+            return self.push(word);
+        }
+        // A word longer than the line: cut it.
+        for ch in word.chars() {
+            let cw = width(ch.encode_utf8(&mut [0; 4]));
+            if self.width + cw > self.max && self.has_text() {
+                self.newline();
+            }
+            self.line.push(ch);
+            self.width += cw;
+        }
     }
 }
 
@@ -91,6 +167,34 @@ mod tests {
         for l in &lines {
             assert!(width(l) <= 16);
         }
+    }
+
+    #[test]
+    fn vectors_stay_whole_when_they_fit() {
+        let lines = wrap("= (0, 0, 0.0091525) × (2.1966, -8.1966, 0)", 30, 2);
+        assert_eq!(lines, ["= (0, 0, 0.0091525) ×", "  (2.1966, -8.1966, 0)"]);
+        let lines = wrap(
+            "= [[0.00416667, 0, 0], [0, 0.00416667, 0]] (0, 0, 2)",
+            30,
+            2,
+        );
+        assert!(lines.iter().all(|l| width(l) <= 30), "{lines:?}");
+        assert_eq!(
+            lines,
+            [
+                "= [[0.00416667, 0, 0],",
+                "  [0, 0.00416667, 0]]",
+                "  (0, 0, 2)"
+            ]
+        );
+    }
+
+    #[test]
+    fn continuation_lines_count_their_indent() {
+        let text = "      = [[1.5, 0, 0], [0, 0.6, 0], [0, 0, 0.6]] (0, 0, -3.91315)";
+        let lines = wrap(text, 40, 6);
+        assert!(lines.iter().all(|l| width(l) <= 40), "{lines:?}");
+        assert_eq!(lines[0], "      = [[1.5, 0, 0], [0, 0.6, 0],");
     }
 
     #[test]
