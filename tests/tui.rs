@@ -419,3 +419,45 @@ fn write_makes_a_markdown_file_and_asks_before_overwriting() {
     assert_eq!(names.len(), 1, "no temporary file left: {names:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn without_a_terminal_the_bare_command_prints_the_lesson_list() {
+    let out = assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .assert()
+        .success();
+    let text = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
+    assert!(text.contains("lecture-2"), "{text}");
+}
+
+#[test]
+fn tui_subcommand_needs_a_terminal() {
+    assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(["tui", "lecture-2"])
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("the TUI needs a terminal"));
+    assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(["tui", "no-such-lesson"])
+        .assert()
+        .code(66);
+    assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(["tui", "lecture-2", "--contact", "3"])
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("--contact 3"));
+}
+
+#[test]
+fn readme_lists_every_tui_key() {
+    let readme = include_str!("../README.md");
+    for (k, what) in contact_lab::tui::event::KEYS {
+        assert!(
+            readme.contains(&format!("| {k} | {what} |")),
+            "README lacks {k}"
+        );
+    }
+}
