@@ -4,9 +4,11 @@
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
 //! show ([`render`]). [`lesson`] reads scenes; [`commands`] wires the CLI.
 
+pub mod check;
 pub mod cli;
 pub mod commands;
 pub mod error;
+pub mod exercise;
 pub mod format;
 pub mod lesson;
 pub mod physics;

@@ -151,6 +151,20 @@ impl Lesson {
         [Some(a), b]
     }
 
+    /// The physics input of contact `k` with the scene moved (in f64) so the
+    /// contact point is the origin. Every stage depends only on `r = q − p`,
+    /// so this keeps f32 runs precise far from the origin; positions after
+    /// the projection are then relative to q.
+    pub fn problem_centred<T: Real>(&self, k: usize) -> Problem<T> {
+        let mut moved = self.clone();
+        let q = moved.contacts[k].point;
+        for b in &mut moved.bodies {
+            b.position -= q;
+        }
+        moved.contacts[k].point = Vector3::zeros();
+        moved.problem(k)
+    }
+
     /// The physics input of contact `k`, in float type `T`. Immovable bodies
     /// become empty slots.
     pub fn problem<T: Real>(&self, k: usize) -> Problem<T> {

@@ -241,6 +241,16 @@ impl Ctx<'_> {
                 "The normal as written has length {normal_length}; it was normalised before use.",
             );
         }
+        for i in self.movable() {
+            let n = i + 1;
+            if let Some(digits) = f.r_digits[i].filter(|d| *d < 12.0) {
+                b.input(format!("r{n}_digits"), digits.floor());
+                b.note(format!(
+                    "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q − p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",
+                    s = SUB[i]
+                ));
+            }
+        }
         for i in self.immovable_named() {
             b.note(format!(
                 "{} is immovable (m = ∞): it has no r and contributes nothing.",
@@ -334,7 +344,20 @@ impl Ctx<'_> {
             for i in self.movable() {
                 let n = i + 1;
                 let r = u.bodies[i].as_ref().expect("movable");
+                let s = SUB[i];
                 b.value(format!("skew_r{n}"), r.skew_r);
+                b.f(&format!("[r{s}]×"), "", None, Some(&format!("skew_r{n}")));
+                if let Some(a) = r.angular_matrix_world {
+                    b.value(format!("angular_matrix_world{n}"), a);
+                    b.f(
+                        &format!("−[r{s}]× I{s}⁻¹ [r{s}]×"),
+                        "",
+                        Some(&format!(
+                            "−{{skew_r{n}}} {{inverse_inertia_world{n}}} {{skew_r{n}}}"
+                        )),
+                        Some(&format!("angular_matrix_world{n}")),
+                    );
+                }
             }
             b.value("matrix", m);
             b.f(
@@ -892,6 +915,15 @@ impl Ctx<'_> {
                 Some(&format!("rotation_degrees{n}")),
             );
             let name = self.name(i);
+            if let Some((axis, ccw)) = about_one_axis(&u.rotation) {
+                let signed = if ccw {
+                    u.angle_degrees
+                } else {
+                    -u.angle_degrees
+                };
+                b.value(format!("rotation_signed_degrees{n}"), signed);
+                b.value(format!("rotation_world_axis{n}"), axis.to_string().as_str());
+            }
             match about_one_axis(&u.rotation) {
                 Some((axis, ccw)) => b.note(format!(
                     "{name} turns {{rotation_degrees{n}}}° {} about the {axis}-axis (seen from +{axis}); |Δθ| = {{rotation_vector_degrees{n}}}° is the small-angle estimate of the same turn.",

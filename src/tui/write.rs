@@ -6,39 +6,32 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use crate::format::Fmt;
-use crate::render;
+use crate::render::markdown;
 use crate::trace::Trace;
 
 /// A file name for the trace: `lecture-2-contact-0.md`.
 pub fn default_name(trace: &Trace) -> String {
-    let id: String = trace
-        .lesson
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '-'
-            }
-        })
-        .collect();
-    format!("{id}-contact-{}.md", trace.contact)
+    format!(
+        "{}-contact-{}.md",
+        crate::commands::file_stem(&trace.lesson),
+        trace.contact
+    )
 }
 
-/// The Markdown document: the text renderer's worked solution in a fenced
-/// block, after the edits made in the TUI, if any.
+/// The Markdown document of `render::markdown` for one contact, with the
+/// edits made in the TUI listed after the lesson's preamble.
 pub fn markdown(trace: &Trace, edits: &[String], fmt: &Fmt) -> String {
-    let mut out = format!("# {} — contact {}\n\n", trace.title, trace.contact_label);
+    let mut out = markdown::preamble(trace, 1);
     if !edits.is_empty() {
         out.push_str("Edited in contact-lab (these differ from the lesson file):\n\n");
         for e in edits {
-            out.push_str(&format!("- {e}\n"));
+            out.push_str(&format!("- {}\n", markdown::escape(e)));
         }
         out.push('\n');
     }
-    out.push_str("```text\n");
-    out.push_str(&render::text::render(trace, fmt));
-    out.push_str("```\n");
+    out.push_str(&markdown::contact(trace, fmt, 2, None));
+    out.truncate(out.trim_end().len());
+    out.push('\n');
     out
 }
 
