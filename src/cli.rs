@@ -4,6 +4,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 const EXAMPLES: &str = "\
 Examples:
+  contact-lab                                       the interactive app (in a terminal)
+  contact-lab tui lecture-2 --contact 0             the app, opened on one contact
   contact-lab list                                  the embedded lessons
   contact-lab solve lecture-2                       the lecture's second worked example
   contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
@@ -36,6 +38,17 @@ pub enum Command {
     Check(CheckArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
+    /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
+    Tui(TuiArgs),
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct TuiArgs {
+    /// Embedded lesson id or path to a lesson file to open (default: lecture-2).
+    pub lesson: Option<String>,
+    /// Which contact of the lesson to open (0-based).
+    #[arg(long, short, default_value_t = 0)]
+    pub contact: usize,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

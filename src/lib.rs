@@ -14,6 +14,7 @@ pub mod lesson;
 pub mod physics;
 pub mod render;
 pub mod trace;
+pub mod tui;
 
 /// Solves contact `k` of `lesson` in f64 and describes it.
 pub fn worked_solution(lesson: &lesson::Lesson, k: usize) -> trace::Trace {

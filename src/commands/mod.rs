@@ -16,13 +16,29 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     match cli.command {
+        None if interactive() => crate::tui::run(crate::tui::open(None, 0)?),
         None => list::welcome(out),
+        Some(Command::Tui(args)) => {
+            let app = crate::tui::open(args.lesson.as_deref(), args.contact)?;
+            if !interactive() {
+                return Err(AppError::Usage(
+                    "the TUI needs a terminal on stdin and stdout; for a script use `contact-lab solve LESSON`".into(),
+                ));
+            }
+            crate::tui::run(app)
+        }
         Some(Command::List) => list::list(out),
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
         Some(Command::Check(args)) => check::check(&args, out),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
     }
+}
+
+/// Both stdin and stdout are a terminal, so the TUI can run.
+fn interactive() -> bool {
+    use std::io::IsTerminal;
+    std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
 }
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, renamed
