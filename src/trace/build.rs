@@ -525,7 +525,7 @@ impl Ctx<'_> {
         );
         b.f(
             "j",
-            "−(1 + e)(v_rel · n) / (Σ 1/mᵢ + Σ (rᵢ × n)ᵀ Iᵢ⁻¹ (rᵢ × n))",
+            "−(1 + c)(v_rel · n) / (Σ 1/mᵢ + Σ (rᵢ × n)ᵀ Iᵢ⁻¹ (rᵢ × n))",
             None,
             Some("closed_form_j"),
         );
@@ -805,13 +805,27 @@ impl Ctx<'_> {
             b.value(format!("angular_change{n}"), m.angular_change);
             b.value(format!("position{n}"), m.position);
             let e = format!("(−1)^({n}+1)");
+            // Before the limit; when it acts, the clamped moves follow below.
+            b.input(
+                format!("angular_move_unlimited{n}"),
+                m.angular_move_unlimited,
+            );
+            b.input(format!("linear_move_unlimited{n}"), m.linear_move_unlimited);
+            let (lin, ang) = if m.limited {
+                (
+                    format!("linear_move_unlimited{n}"),
+                    format!("angular_move_unlimited{n}"),
+                )
+            } else {
+                (format!("linear_move{n}"), format!("angular_move{n}"))
+            };
             b.f(
                 &format!("Δ_l{s}"),
                 &format!("{e} d_pen I_l{s} / I_t"),
                 Some(&format!(
                     "{sign}{depth} × {{linear_inertia{n}}} / {{total_inertia}}"
                 )),
-                Some(&format!("linear_move{n}")),
+                Some(&lin),
             );
             b.f(
                 &format!("Δ_a{s}"),
@@ -819,7 +833,7 @@ impl Ctx<'_> {
                 Some(&format!(
                     "{sign}{depth} × {{angular_inertia{n}}} / {{total_inertia}}"
                 )),
-                Some(&format!("angular_move{n}")),
+                Some(&ang),
             );
             if !m.angular_limit.is_finite() {
                 b.note("angular_limit = inf: the angular move is not limited.");
@@ -832,11 +846,18 @@ impl Ctx<'_> {
                 );
             }
             if m.limited {
-                b.input(
-                    format!("angular_move_unlimited{n}"),
-                    m.angular_move_unlimited,
+                b.f(
+                    &format!("Δ_a{s} (limited)"),
+                    &format!("±limit{s}"),
+                    None,
+                    Some(&format!("angular_move{n}")),
                 );
-                b.input(format!("linear_move_unlimited{n}"), m.linear_move_unlimited);
+                b.f(
+                    &format!("Δ_l{s} (limited)"),
+                    &format!("Δ_l{s} + (Δ_a{s} − Δ_a{s} (limited))"),
+                    Some(&format!("{{linear_move_unlimited{n}}} + ({{angular_move_unlimited{n}}} − {{angular_move{n}}})")),
+                    Some(&format!("linear_move{n}")),
+                );
                 b.note(format!(
                     "Excessive rotation: {}'s angular move {{angular_move_unlimited{n}}} exceeds the limit {{angular_limit{n}}}; it is cut to the limit and the excess moves to the linear share ({{linear_move_unlimited{n}}} → {{linear_move{n}}}).",
                     self.name(i)
@@ -882,11 +903,12 @@ impl Ctx<'_> {
     fn orientation(&self) -> Step {
         let mut b = B::new("orientation_update", "Orientation update");
         let Some(o) = &self.s.orientation else {
-            let skip = self
-                .s
-                .skip("orientation_update")
-                .unwrap_or(Skip::NoRotation);
-            return b.skipped(skip_reason(skip));
+            return match self.s.skip("orientation_update") {
+                Some(Skip::NoPenetration) => {
+                    b.skipped("no penetration (d_pen ≤ 0): no projection, so no body turns")
+                }
+                other => b.skipped(skip_reason(other.unwrap_or(Skip::NoRotation))),
+            };
         };
         for i in self.movable() {
             let Some(u) = &o.bodies[i] else { continue };
