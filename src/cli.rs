@@ -4,11 +4,18 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 const EXAMPLES: &str = "\
 Examples:
+  contact-lab                                       the interactive app (in a terminal)
+  contact-lab tui lecture-2 --contact 0             the app, opened on one contact
   contact-lab list                                  the embedded lessons
   contact-lab solve lecture-2                       the lecture's second worked example
   contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
   contact-lab solve my-scene.toml --contact 1 --digits 4
-  contact-lab solve friction-slides --compare-friction
+  contact-lab solve spinning-ball -c 1 --compare-friction
+  contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
+  contact-lab solve friction-cube --all-contacts --format md --figures figs > friction.md
+  contact-lab figure lecture-2 -o lecture-2.svg     the contact as a slide-ready picture
+  contact-lab check                                 the lectures' printed numbers vs the computed ones
+  contact-lab exercise --seed 1 --count 5 --answers --format md
 
 Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing.";
 
@@ -23,14 +30,37 @@ pub struct Cli {
 pub enum Command {
     /// List the embedded lessons: id, title, source, contacts.
     List,
-    /// Print the worked solution of one contact.
+    /// Print the worked solution of one contact (or all: --all-contacts).
     Solve(SolveArgs),
+    /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
+    Figure(FigureArgs),
+    /// Compare every number a lesson prints ([[printed]]) with the computed one.
+    Check(CheckArgs),
+    /// Generate exercises with worked answers, the same for the same seed.
+    Exercise(ExerciseArgs),
+    /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
+    Tui(TuiArgs),
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct TuiArgs {
+    /// Embedded lesson id or path to a lesson file to open (default: lecture-2).
+    pub lesson: Option<String>,
+    /// Which contact of the lesson to open (0-based).
+    #[arg(long, short, default_value_t = 0)]
+    pub contact: usize,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Format {
     Text,
     Json,
+    /// Markdown with LaTeX maths ($…$).
+    #[value(alias = "markdown")]
+    Md,
+    /// A standalone LaTeX document (article + amsmath); --fragment for the body.
+    #[value(alias = "tex")]
+    Latex,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -79,6 +109,104 @@ pub struct SolveArgs {
     /// Print every friction model's result for this contact side by side.
     #[arg(long)]
     pub compare_friction: bool,
+    /// Solve every contact of the lesson, one after another.
+    #[arg(long, conflicts_with = "contact")]
+    pub all_contacts: bool,
+    /// LaTeX: the document body only, to \input into your own document.
+    #[arg(long)]
+    pub fragment: bool,
+    /// Markdown: write an SVG figure of each contact to DIR and link it.
+    #[arg(long, value_name = "DIR")]
+    pub figures: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PlaneArg {
+    /// x to the right, y up, z toward the viewer.
+    Xy,
+    /// y to the right, z up, x toward the viewer.
+    Yz,
+    /// z to the right, x up, y toward the viewer.
+    Zx,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct FigureArgs {
+    /// Embedded lesson id or path to a lesson file.
+    pub lesson: String,
+    /// Which contact of the lesson (0-based).
+    #[arg(long, short, default_value_t = 0)]
+    pub contact: usize,
+    /// Write the SVG to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE.svg")]
+    pub output: Option<std::path::PathBuf>,
+    /// The plane the figure shows.
+    #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
+    pub plane: PlaneArg,
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CheckFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct CheckArgs {
+    /// Lesson ids or paths (default: every embedded lesson).
+    pub lessons: Vec<String>,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = CheckFormat::Text)]
+    pub format: CheckFormat,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ExerciseKind {
+    /// Restitution only: no friction, no penetration.
+    Frictionless,
+    /// Friction that holds: the contact sticks.
+    StaticFriction,
+    /// Friction that gives: the contact slides.
+    DynamicFriction,
+    /// Bodies interpenetrate: projection (and orientation update).
+    Penetration,
+    /// Each exercise of one of the kinds above.
+    Mixed,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SheetFormat {
+    Md,
+    Latex,
+    /// Lesson files (one per exercise; several need --dir).
+    Toml,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ExerciseArgs {
+    /// Seed: the same seed gives the same exercises, byte for byte.
+    #[arg(long)]
+    pub seed: u64,
+    /// What the exercises practise.
+    #[arg(long, value_enum, default_value_t = ExerciseKind::Mixed)]
+    pub kind: ExerciseKind,
+    /// How many exercises.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u16).range(1..=50))]
+    pub count: u16,
+    /// Append the worked solutions.
+    #[arg(long)]
+    pub answers: bool,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = SheetFormat::Md)]
+    pub format: SheetFormat,
+    /// TOML: write exercise-SEED-N.toml files into DIR.
+    #[arg(long, value_name = "DIR")]
+    pub dir: Option<std::path::PathBuf>,
+    /// Significant digits of the answers.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
 }

@@ -110,36 +110,70 @@ impl Fmt {
                     .collect::<Vec<_>>()
                     .join(" \\\\ ")
             ),
-            Value::Text(s) => format!("\\text{{{s}}}"),
+            Value::Text(s) => format!("\\text{{{}}}", crate::trace::latex::escape_text(s)),
         }
     }
 
     /// Replaces each `{name}` of `template` with the step's value `name`.
     /// An unknown name is left as written.
     pub fn fill(&self, template: &str, step: &Step, latex: bool) -> String {
+        self.fill_with(template, step, &|s| s.to_string(), &|v| {
+            if latex {
+                self.value_latex(v)
+            } else {
+                self.value(v)
+            }
+        })
+    }
+
+    /// Like [`Fmt::fill`], with each literal piece of the template passed
+    /// through `literal` and each value shown by `value` (renderers that
+    /// escape text and typeset numbers differently).
+    pub fn fill_with(
+        &self,
+        template: &str,
+        step: &Step,
+        literal: &dyn Fn(&str) -> String,
+        value: &dyn Fn(&Value) -> String,
+    ) -> String {
         let mut out = String::new();
+        let mut text = String::new();
         let mut rest = template;
         while let Some(open) = rest.find('{') {
-            out.push_str(&rest[..open]);
+            text.push_str(&rest[..open]);
             let after = &rest[open + 1..];
             match after.find('}') {
                 Some(close) if is_name(&after[..close]) => {
                     let name = &after[..close];
                     match step.lookup(name) {
-                        Some(v) if latex => out.push_str(&self.value_latex(v)),
-                        Some(v) => out.push_str(&self.value(v)),
-                        None => out.push_str(&rest[open..open + close + 2]),
+                        Some(v) => {
+                            out.push_str(&literal(&std::mem::take(&mut text)));
+                            out.push_str(&value(v));
+                        }
+                        None => text.push_str(&rest[open..open + close + 2]),
                     }
                     rest = &after[close + 1..];
                 }
                 _ => {
-                    out.push('{');
+                    text.push('{');
                     rest = after;
                 }
             }
         }
-        out.push_str(rest);
+        text.push_str(rest);
+        out.push_str(&literal(&text));
         out
+    }
+
+    /// `x` with exactly `decimals` decimals, as a lecture prints it
+    /// (`-0` shown as `0`).
+    pub fn fixed(&self, x: f64, decimals: u32) -> String {
+        let s = format!("{:.*}", decimals as usize, x);
+        if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+            s[1..].to_string()
+        } else {
+            s
+        }
     }
 }
 

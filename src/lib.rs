@@ -4,14 +4,17 @@
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
 //! show ([`render`]). [`lesson`] reads scenes; [`commands`] wires the CLI.
 
+pub mod check;
 pub mod cli;
 pub mod commands;
 pub mod error;
+pub mod exercise;
 pub mod format;
 pub mod lesson;
 pub mod physics;
 pub mod render;
 pub mod trace;
+pub mod tui;
 
 /// Solves contact `k` of `lesson` in f64 and describes it.
 pub fn worked_solution(lesson: &lesson::Lesson, k: usize) -> trace::Trace {

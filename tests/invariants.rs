@@ -2,6 +2,8 @@
 
 mod common;
 
+use common::{scalar, text, vector};
+
 use contact_lab::lesson::{embedded, Lesson};
 use contact_lab::trace::{Trace, Value};
 
@@ -9,35 +11,24 @@ fn trace(id: &str, k: usize) -> Trace {
     contact_lab::worked_solution(&Lesson::load(id).unwrap(), k)
 }
 
-fn scalar(t: &Trace, stage: &str, name: &str) -> f64 {
-    match t.value(stage, name) {
-        Some(Value::Scalar(x)) => *x,
-        other => panic!("{stage}.{name}: {other:?}"),
-    }
-}
-
-fn vector(t: &Trace, stage: &str, name: &str) -> [f64; 3] {
-    match t.value(stage, name) {
-        Some(Value::Vector(v)) => *v,
-        other => panic!("{stage}.{name}: {other:?}"),
-    }
-}
-
-fn text(t: &Trace, stage: &str, name: &str) -> String {
-    match t.value(stage, name) {
-        Some(Value::Text(s)) => s.clone(),
-        other => panic!("{stage}.{name}: {other:?}"),
-    }
-}
-
 #[test]
 fn every_lesson_file_is_embedded_and_named_for_its_id() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/lessons");
-    let mut files: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|f| f.ends_with(".toml"))
-        .collect();
+    fn toml_files(dir: &std::path::Path, prefix: &str, out: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap().flatten() {
+            let name = entry.file_name().into_string().unwrap();
+            if entry.path().is_dir() {
+                toml_files(&entry.path(), &format!("{prefix}{name}/"), out);
+            } else if name.ends_with(".toml") {
+                out.push(format!("{prefix}{name}"));
+            }
+        }
+    }
+    let mut files = Vec::new();
+    toml_files(
+        std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/lessons")),
+        "",
+        &mut files,
+    );
     files.sort();
     let mut embedded: Vec<String> = embedded::LESSONS
         .iter()
@@ -63,10 +54,13 @@ fn every_check_of_every_lesson_passes() {
         for k in 0..lesson.contacts.len() {
             let t = contact_lab::worked_solution(&lesson, k);
             for v in &t.verdicts {
-                assert_ne!(
-                    v.passed,
-                    Some(false),
-                    "{} contact {k}: {} failed",
+                // Kane's example exists to show the energy check failing.
+                let expected =
+                    lesson.id == "kane-energy-gain" && v.label.starts_with("kinetic energy");
+                assert_eq!(
+                    v.passed == Some(false),
+                    expected,
+                    "{} contact {k}: {}",
                     lesson.id,
                     v.label
                 );
@@ -203,4 +197,22 @@ fn both_bodies_rotate_in_the_two_box_lesson() {
     let dw1 = vector(&t, "apply_impulse", "dw1")[2];
     let dw2 = vector(&t, "apply_impulse", "dw2")[2];
     assert!(dw1 * dw2 < 0.0, "opposite senses: {dw1} {dw2}");
+}
+
+#[test]
+fn kanes_example_gains_energy_and_says_so_loudly() {
+    let t = trace("kane-energy-gain", 0);
+    let (before, after) = (
+        scalar(&t, "checks", "energy_before"),
+        scalar(&t, "checks", "energy_after"),
+    );
+    assert!(after > 1.2 * before, "{before} → {after}");
+    assert_eq!(text(&t, "friction_clamp", "regime"), "static");
+    let notes = &t.stage("checks").unwrap().notes;
+    assert!(
+        notes
+            .iter()
+            .any(|n| n.starts_with("ENERGY ROSE") && n.contains("Kane")),
+        "{notes:?}"
+    );
 }

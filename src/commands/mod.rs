@@ -1,5 +1,8 @@
 //! What each subcommand does: load, solve, render, write.
 
+mod check;
+mod exercise;
+mod figure;
 mod list;
 mod solve;
 
@@ -13,10 +16,66 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     match cli.command {
+        None if interactive() => crate::tui::run(crate::tui::open(None, 0)?),
         None => list::welcome(out),
+        Some(Command::Tui(args)) => {
+            let app = crate::tui::open(args.lesson.as_deref(), args.contact)?;
+            if !interactive() {
+                return Err(AppError::Usage(
+                    "the TUI needs a terminal on stdin and stdout; for a script use `contact-lab solve LESSON`".into(),
+                ));
+            }
+            crate::tui::run(app)
+        }
         Some(Command::List) => list::list(out),
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
+        Some(Command::Figure(args)) => figure::figure(&args, out, err),
+        Some(Command::Check(args)) => check::check(&args, out),
+        Some(Command::Exercise(args)) => exercise::exercise(&args, out),
     }
+}
+
+/// Both stdin and stdout are a terminal, so the TUI can run.
+fn interactive() -> bool {
+    use std::io::IsTerminal;
+    std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
+}
+
+/// Writes `bytes` to `path` atomically: a temporary file beside it, renamed
+/// over it, so a reader never sees half a file and a failure leaves no file.
+pub(crate) fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<(), AppError> {
+    let fail =
+        |e: std::io::Error| AppError::Runtime(format!("cannot write {}: {e}", path.display()));
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    let name = path
+        .file_name()
+        .ok_or_else(|| AppError::Usage(format!("{}: not a file name", path.display())))?;
+    let tmp = dir.join(format!(
+        ".{}.{}.tmp",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    std::fs::write(&tmp, bytes).map_err(fail)?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        fail(e)
+    })
+}
+
+/// A lesson id made safe for a file name.
+pub(crate) fn file_stem(id: &str) -> String {
+    id.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect()
 }
 
 pub(crate) fn io(e: std::io::Error) -> AppError {

@@ -1,16 +1,35 @@
-//! `contact-lab solve`: the worked solution of one contact.
+//! `contact-lab solve`: the worked solution of one contact, or of all.
 
 use std::io::Write;
 
-use super::{io, load, warn};
+use super::{file_stem, io, load, warn, write_atomic};
 use crate::cli::{Format, SolveArgs};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Overrides;
 use crate::physics::FrictionModel;
 use crate::render;
+use crate::render::svg::{self, Plane};
+
+fn usage(args: &SolveArgs) -> Result<(), AppError> {
+    let bad = |m: &str| Err(AppError::Usage(m.to_string()));
+    if args.compare_friction && matches!(args.format, Format::Md | Format::Latex) {
+        return bad("--compare-friction prints text or JSON (--format text|json)");
+    }
+    if args.compare_friction && args.all_contacts {
+        return bad("--compare-friction compares one contact; leave out --all-contacts");
+    }
+    if args.fragment && args.format != Format::Latex {
+        return bad("--fragment applies to --format latex");
+    }
+    if args.figures.is_some() && args.format != Format::Md {
+        return bad("--figures applies to --format md");
+    }
+    Ok(())
+}
 
 pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
+    usage(args)?;
     let lesson = load(&args.lesson, &args.model, Some(args.contact))?;
     warn(&lesson, err);
     let fmt = Fmt::new(args.digits as usize);
@@ -28,14 +47,59 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
             .collect();
         let text = match args.format {
             Format::Json => render::compare::json(&traces),
-            Format::Text => render::compare::text(&traces, &fmt),
+            _ => render::compare::text(&traces, &fmt),
         };
         return out.write_all(text.as_bytes()).map_err(io);
     }
-    let trace = crate::worked_solution(&lesson, args.contact);
+    let contacts: Vec<usize> = if args.all_contacts {
+        (0..lesson.contacts.len()).collect()
+    } else {
+        vec![args.contact]
+    };
+    let traces: Vec<_> = contacts
+        .iter()
+        .map(|&k| crate::worked_solution(&lesson, k))
+        .collect();
     let text = match args.format {
-        Format::Text => render::text::render(&trace, &fmt),
-        Format::Json => render::json::render(&trace),
+        Format::Text => traces
+            .iter()
+            .map(|t| render::text::render(t, &fmt))
+            .collect::<Vec<_>>()
+            .join("\n"),
+        Format::Json if args.all_contacts => {
+            let all: Vec<_> = traces.iter().map(render::json::to_json).collect();
+            serde_json::to_string_pretty(&all).expect("JSON of traces") + "\n"
+        }
+        Format::Json => render::json::render(&traces[0]),
+        Format::Md => {
+            let figures = match &args.figures {
+                Some(dir) => figures(dir, &lesson.id, &contacts, &traces)?,
+                None => vec![],
+            };
+            render::markdown::document(&traces, &fmt, &figures)
+        }
+        Format::Latex => render::latex::document(&traces, &fmt, args.fragment),
     };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// Writes one SVG per contact into `dir`; returns the links to them.
+fn figures(
+    dir: &std::path::Path,
+    id: &str,
+    contacts: &[usize],
+    traces: &[crate::trace::Trace],
+) -> Result<Vec<Option<String>>, AppError> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| AppError::Runtime(format!("cannot create {}: {e}", dir.display())))?;
+    contacts
+        .iter()
+        .zip(traces)
+        .map(|(k, t)| {
+            let name = format!("{}-contact-{k}.svg", file_stem(id));
+            write_atomic(&dir.join(&name), svg::render(t, Plane::Xy).as_bytes())?;
+            let link = dir.join(&name).to_string_lossy().replace('\\', "/");
+            Ok(Some(link.replace(' ', "%20")))
+        })
+        .collect()
 }

@@ -16,23 +16,40 @@ pub const LESSONS: &[(&str, &str)] = embed![
     "spinning-ball.toml",
     "excessive-rotation.toml",
     "two-boxes.toml",
+    "kane-energy-gain.toml",
+    "extremes/extreme-mass-ratio.toml",
+    "extremes/extreme-far-from-origin.toml",
+    "extremes/extreme-velocities.toml",
+    "extremes/extreme-penetrations.toml",
+    "extremes/extreme-normals.toml",
+    "extremes/extreme-inertia.toml",
 ];
 
-/// Id of an embedded lesson file: its `id = "…"` line (file names match ids).
+/// The id of an embedded lesson file: its base name without `.toml`.
+fn id_of(file: &str) -> &str {
+    file.rsplit('/')
+        .next()
+        .unwrap_or(file)
+        .trim_end_matches(".toml")
+}
+
+/// Ids of the embedded lessons, in list order.
 pub fn ids() -> Vec<&'static str> {
-    LESSONS
-        .iter()
-        .map(|(file, _)| file.trim_end_matches(".toml"))
-        .collect()
+    LESSONS.iter().map(|(file, _)| id_of(file)).collect()
 }
 
 pub fn find(id: &str) -> Option<&'static str> {
     LESSONS
         .iter()
-        .find(|(file, _)| file.trim_end_matches(".toml") == id)
+        .find(|(file, _)| id_of(file) == id)
         .map(|(_, text)| *text)
 }
 
 pub fn origin(id: &str) -> String {
-    format!("lessons/{id}.toml (embedded)")
+    let file = LESSONS
+        .iter()
+        .map(|(f, _)| *f)
+        .find(|f| id_of(f) == id)
+        .unwrap_or(id);
+    format!("lessons/{file} (embedded)")
 }

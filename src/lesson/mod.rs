@@ -1,6 +1,7 @@
 //! Lesson files: one scene per TOML file (format in `lessons/README.md`),
 //! validated into a [`Lesson`] with spans for every error.
 
+pub mod edit;
 pub mod embedded;
 pub mod printed;
 pub mod raw;
@@ -150,6 +151,20 @@ impl Lesson {
     pub fn slots(&self, k: usize) -> [Option<usize>; 2] {
         let (a, b) = self.contacts[k].bodies;
         [Some(a), b]
+    }
+
+    /// The physics input of contact `k` with the scene moved (in f64) so the
+    /// contact point is the origin. Every stage depends only on `r = q − p`,
+    /// so this keeps f32 runs precise far from the origin; positions after
+    /// the projection are then relative to q.
+    pub fn problem_centred<T: Real>(&self, k: usize) -> Problem<T> {
+        let mut moved = self.clone();
+        let q = moved.contacts[k].point;
+        for b in &mut moved.bodies {
+            b.position -= q;
+        }
+        moved.contacts[k].point = Vector3::zeros();
+        moved.problem(k)
     }
 
     /// The physics input of contact `k`, in float type `T`. Immovable bodies

@@ -321,10 +321,10 @@ impl Validator {
                     self.warnings.push(
                         Note::new(
                             format!(
-                                "body '{name}': the inertia tensor given differs from the {}: given diag {}, shape gives diag {}; the given tensor is used",
+                                "body '{name}': the inertia tensor given differs from the {}: given {}, the shape gives {}; the given tensor is used",
                                 shape.map(|s| s.describe()).unwrap_or_default(),
-                                diag(t),
-                                diag(&s)
+                                tensor(t),
+                                tensor(&s)
                             ),
                             span.clone(),
                         )
@@ -354,7 +354,10 @@ impl Validator {
                 let span = span.or(raw.shape.as_ref().map(|s| s.span()));
                 self.err(
                     span.unwrap_or(raw.name.span()),
-                    format!("body '{name}': the inertia tensor (diag {}) cannot be inverted in 64-bit floats", diag(&t)),
+                    format!(
+                        "body '{name}': the inertia tensor {} cannot be inverted in 64-bit floats",
+                        tensor(&t)
+                    ),
                 );
             }
         }
@@ -460,6 +463,17 @@ impl Validator {
                 format!("body '{name}': inertia tensor must be positive-definite (eigenvalues {:.6e}, {:.6e}, {:.6e})", eig[0], eig[1], eig[2]),
             );
             return;
+        }
+        let condition = eig.max() / eig.min();
+        if condition > 1e8 {
+            self.warnings.push(Note::new(
+                format!(
+                    "body '{name}': the inertia tensor's condition number is {}: its inverse keeps only about {:.0} significant digits in f64",
+                    crate::format::Fmt::new(2).num(condition),
+                    (1.0 / (condition * f64::EPSILON)).log10().max(0.0)
+                ),
+                span.clone(),
+            ));
         }
         let mut e: Vec<f64> = eig.iter().copied().collect();
         e.sort_by(|a, b| a.total_cmp(b));
@@ -669,12 +683,11 @@ fn body_list(bodies: &[RawBody]) -> String {
     }
 }
 
-fn diag(m: &Matrix3<f64>) -> String {
+/// A tensor as rows, through the one formatter.
+fn tensor(m: &Matrix3<f64>) -> String {
     let f = crate::format::Fmt::default();
-    format!(
-        "({}, {}, {})",
-        f.num(m[(0, 0)]),
-        f.num(m[(1, 1)]),
-        f.num(m[(2, 2)])
-    )
+    let rows: Vec<String> = (0..3)
+        .map(|r| format!("[{}]", f.list(&[m[(r, 0)], m[(r, 1)], m[(r, 2)]])))
+        .collect();
+    format!("[{}]", rows.join(", "))
 }

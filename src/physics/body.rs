@@ -33,14 +33,12 @@ impl<T: Real> RigidBody<T> {
 
     /// World inverse inertia `I_w⁻¹ = R I_b⁻¹ Rᵀ`.
     pub fn inverse_inertia_world(&self) -> Matrix3<T> {
-        let r = self.rotation();
-        r * self.inverse_inertia_body * r.transpose()
+        to_world(&self.rotation(), &self.inverse_inertia_body)
     }
 
     /// World inertia `I_w = R I_b Rᵀ`.
     pub fn inertia_world(&self) -> Matrix3<T> {
-        let r = self.rotation();
-        r * self.inertia_body * r.transpose()
+        to_world(&self.rotation(), &self.inertia_body)
     }
 
     /// Velocity of the material point at offset `r` from the centre: `ω × r + v` (lecture eq. A).
@@ -64,4 +62,14 @@ impl<T: Real> RigidBody<T> {
     ) -> Vector3<T> {
         self.inertia_world() * angular_velocity + (self.position - q).cross(&(velocity * self.mass))
     }
+}
+
+/// `R A Rᵀ` for a symmetric `A`, made exactly symmetric, with entries at
+/// round-off level (below 8ε of the largest) set to zero: a turned cube's
+/// isotropic tensor stays diagonal instead of growing ±1e-19 noise.
+fn to_world<T: Real>(r: &Matrix3<T>, a: &Matrix3<T>) -> Matrix3<T> {
+    let m = r * a * r.transpose();
+    let m = (m + m.transpose()) * super::c::<T>(0.5);
+    let floor = m.amax() * T::default_epsilon() * super::c::<T>(8.0);
+    m.map(|x| if x.abs() <= floor { T::zero() } else { x })
 }

@@ -33,3 +33,16 @@ pub fn contact_basis<T: Real>(d: &Vector3<T>) -> (Matrix3<T>, GuessAxis) {
 pub fn skew<T: Real>(v: &Vector3<T>) -> Matrix3<T> {
     v.cross_matrix()
 }
+
+/// Significant digits `r = q − p` keeps when q and p are stored in `T`: each
+/// coordinate is held to about ε·|x|, so r is known to ±ε·max(|q|, |p|)
+/// (componentwise max). Capped at the type's own digits.
+pub fn difference_digits<T: Real>(r: &Vector3<T>, q: &Vector3<T>, p: &Vector3<T>) -> T {
+    let eps = T::default_epsilon();
+    let full = -eps.log10();
+    let size = q.amax().max(p.amax());
+    if r.norm() == T::zero() || size == T::zero() {
+        return full;
+    }
+    (r.norm() / (eps * size)).log10().min(full)
+}

@@ -236,10 +236,18 @@ impl Ctx<'_> {
             if guess.1 == "y" { ">" } else { "≤" }
         ));
         if (c.normal_length - 1.0).abs() > 1e-12 {
-            b.input("normal_length", c.normal_length);
-            b.note(
-                "The normal as written has length {normal_length}; it was normalised before use.",
-            );
+            b.input("normal_length_deviation", c.normal_length - 1.0);
+            b.note("The normal as written has length 1 + ({normal_length_deviation}); it was normalised before use.");
+        }
+        for i in self.movable() {
+            let n = i + 1;
+            if let Some(digits) = f.r_digits[i].filter(|d| *d < 12.0) {
+                b.input(format!("r{n}_digits"), digits.floor());
+                b.note(format!(
+                    "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q − p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",
+                    s = SUB[i]
+                ));
+            }
         }
         for i in self.immovable_named() {
             b.note(format!(
@@ -334,7 +342,20 @@ impl Ctx<'_> {
             for i in self.movable() {
                 let n = i + 1;
                 let r = u.bodies[i].as_ref().expect("movable");
+                let s = SUB[i];
                 b.value(format!("skew_r{n}"), r.skew_r);
+                b.f(&format!("[r{s}]×"), "", None, Some(&format!("skew_r{n}")));
+                if let Some(a) = r.angular_matrix_world {
+                    b.value(format!("angular_matrix_world{n}"), a);
+                    b.f(
+                        &format!("−[r{s}]× I{s}⁻¹ [r{s}]×"),
+                        "",
+                        Some(&format!(
+                            "−{{skew_r{n}}} {{inverse_inertia_world{n}}} {{skew_r{n}}}"
+                        )),
+                        Some(&format!("angular_matrix_world{n}")),
+                    );
+                }
             }
             b.value("matrix", m);
             b.f(
@@ -504,7 +525,7 @@ impl Ctx<'_> {
         );
         b.f(
             "j",
-            "−(1 + e)(v_rel · n) / (Σ 1/mᵢ + Σ (rᵢ × n)ᵀ Iᵢ⁻¹ (rᵢ × n))",
+            "−(1 + c)(v_rel · n) / (Σ 1/mᵢ + Σ (rᵢ × n)ᵀ Iᵢ⁻¹ (rᵢ × n))",
             None,
             Some("closed_form_j"),
         );
@@ -683,7 +704,18 @@ impl Ctx<'_> {
                 Some(&format!("{{w{n}_before}} + {{dw{n}}}")),
                 Some(&format!("w{n}")),
             );
-            if let Some((axis, ccw)) = about_one_axis(&c.dw) {
+            // The impulse (with friction, not only its normal part) passes
+            // through the centre: any spin left is the data's rounding.
+            let rounding = through_centre(
+                &self.s.frame.r[i].unwrap_or_default(),
+                &c.impulse.normalize(),
+            );
+            if rounding && c.dw != Vector3::zeros() {
+                b.note(format!(
+                    "{}'s spin changes by only {{dw{n}_degrees_per_second}} °/s: the impulse passes through its centre to within the data's rounding, so this is what the rounding leaves, not a real spin-up.",
+                    self.name(i)
+                ));
+            } else if let Some((axis, ccw)) = about_one_axis(&c.dw) {
                 b.note(format!(
                     "{}'s spin changes by |Δθ̇{s}| = {{dw{n}_degrees_per_second}} °/s, {} about the {axis}-axis (seen from +{axis}).",
                     self.name(i),
@@ -773,13 +805,27 @@ impl Ctx<'_> {
             b.value(format!("angular_change{n}"), m.angular_change);
             b.value(format!("position{n}"), m.position);
             let e = format!("(−1)^({n}+1)");
+            // Before the limit; when it acts, the clamped moves follow below.
+            b.input(
+                format!("angular_move_unlimited{n}"),
+                m.angular_move_unlimited,
+            );
+            b.input(format!("linear_move_unlimited{n}"), m.linear_move_unlimited);
+            let (lin, ang) = if m.limited {
+                (
+                    format!("linear_move_unlimited{n}"),
+                    format!("angular_move_unlimited{n}"),
+                )
+            } else {
+                (format!("linear_move{n}"), format!("angular_move{n}"))
+            };
             b.f(
                 &format!("Δ_l{s}"),
                 &format!("{e} d_pen I_l{s} / I_t"),
                 Some(&format!(
                     "{sign}{depth} × {{linear_inertia{n}}} / {{total_inertia}}"
                 )),
-                Some(&format!("linear_move{n}")),
+                Some(&lin),
             );
             b.f(
                 &format!("Δ_a{s}"),
@@ -787,7 +833,7 @@ impl Ctx<'_> {
                 Some(&format!(
                     "{sign}{depth} × {{angular_inertia{n}}} / {{total_inertia}}"
                 )),
-                Some(&format!("angular_move{n}")),
+                Some(&ang),
             );
             if !m.angular_limit.is_finite() {
                 b.note("angular_limit = inf: the angular move is not limited.");
@@ -800,11 +846,18 @@ impl Ctx<'_> {
                 );
             }
             if m.limited {
-                b.input(
-                    format!("angular_move_unlimited{n}"),
-                    m.angular_move_unlimited,
+                b.f(
+                    &format!("Δ_a{s} (limited)"),
+                    &format!("±limit{s}"),
+                    None,
+                    Some(&format!("angular_move{n}")),
                 );
-                b.input(format!("linear_move_unlimited{n}"), m.linear_move_unlimited);
+                b.f(
+                    &format!("Δ_l{s} (limited)"),
+                    &format!("Δ_l{s} + (Δ_a{s} − Δ_a{s} (limited))"),
+                    Some(&format!("{{linear_move_unlimited{n}}} + ({{angular_move_unlimited{n}}} − {{angular_move{n}}})")),
+                    Some(&format!("linear_move{n}")),
+                );
                 b.note(format!(
                     "Excessive rotation: {}'s angular move {{angular_move_unlimited{n}}} exceeds the limit {{angular_limit{n}}}; it is cut to the limit and the excess moves to the linear share ({{linear_move_unlimited{n}}} → {{linear_move{n}}}).",
                     self.name(i)
@@ -850,11 +903,12 @@ impl Ctx<'_> {
     fn orientation(&self) -> Step {
         let mut b = B::new("orientation_update", "Orientation update");
         let Some(o) = &self.s.orientation else {
-            let skip = self
-                .s
-                .skip("orientation_update")
-                .unwrap_or(Skip::NoRotation);
-            return b.skipped(skip_reason(skip));
+            return match self.s.skip("orientation_update") {
+                Some(Skip::NoPenetration) => {
+                    b.skipped("no penetration (d_pen ≤ 0): no projection, so no body turns")
+                }
+                other => b.skipped(skip_reason(other.unwrap_or(Skip::NoRotation))),
+            };
         };
         for i in self.movable() {
             let Some(u) = &o.bodies[i] else { continue };
@@ -892,7 +946,23 @@ impl Ctx<'_> {
                 Some(&format!("rotation_degrees{n}")),
             );
             let name = self.name(i);
+            if let Some((axis, ccw)) = about_one_axis(&u.rotation) {
+                let signed = if ccw {
+                    u.angle_degrees
+                } else {
+                    -u.angle_degrees
+                };
+                b.value(format!("rotation_signed_degrees{n}"), signed);
+                b.value(format!("rotation_world_axis{n}"), axis.to_string().as_str());
+            }
+            let rounding = through_centre(
+                &self.s.frame.r[i].unwrap_or_default(),
+                &self.s.frame.normal(),
+            );
             match about_one_axis(&u.rotation) {
+                _ if rounding => b.note(format!(
+                    "{name} turns only {{rotation_degrees{n}}}°: its contact arm lies along the normal to within the data's rounding, so this is what the rounding leaves."
+                )),
                 Some((axis, ccw)) => b.note(format!(
                     "{name} turns {{rotation_degrees{n}}}° {} about the {axis}-axis (seen from +{axis}); |Δθ| = {{rotation_vector_degrees{n}}}° is the small-angle estimate of the same turn.",
                     sense(ccw)

@@ -2,7 +2,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::physics::frame::{contact_basis, GuessAxis};
+use crate::physics::frame::{contact_basis, difference_digits, GuessAxis};
 use crate::physics::{Problem, Real};
 
 #[derive(Debug, Clone, PartialEq)]
@@ -12,6 +12,8 @@ pub struct ContactFrame<T: Real> {
     pub guess: GuessAxis,
     /// `r_i = q − p_i` for each movable body.
     pub r: [Option<Vector3<T>>; 2],
+    /// Significant digits each `r_i` keeps, given how far q and p_i are from the origin.
+    pub r_digits: [Option<T>; 2],
 }
 
 impl<T: Real> ContactFrame<T> {
@@ -34,9 +36,14 @@ pub fn contact_frame<T: Real>(problem: &Problem<T>) -> ContactFrame<T> {
     let (contact_to_world, guess) = contact_basis(&problem.contact.normal);
     let q = problem.contact.point;
     let r = [0, 1].map(|i| problem.bodies[i].as_ref().map(|b| q - b.position));
+    let r_digits = [0, 1].map(|i| {
+        let p = problem.bodies[i].as_ref()?.position;
+        Some(difference_digits(&r[i]?, &q, &p))
+    });
     ContactFrame {
         contact_to_world,
         guess,
         r,
+        r_digits,
     }
 }

@@ -1,0 +1,42 @@
+//! `contact-lab check`: every printed lecture number against the computed one.
+
+use std::io::Write;
+
+use super::io;
+use crate::check::{self, Tally};
+use crate::cli::{CheckArgs, CheckFormat};
+use crate::error::AppError;
+use crate::format::Fmt;
+use crate::lesson::{embedded, Lesson};
+use crate::render;
+
+pub fn check(args: &CheckArgs, out: &mut dyn Write) -> Result<(), AppError> {
+    let names: Vec<String> = if args.lessons.is_empty() {
+        embedded::ids().into_iter().map(String::from).collect()
+    } else {
+        args.lessons.clone()
+    };
+    let mut lessons = Vec::new();
+    let mut items = Vec::new();
+    for name in &names {
+        let lesson = Lesson::load(name)?;
+        let traces: Vec<_> = (0..lesson.contacts.len())
+            .map(|k| crate::worked_solution(&lesson, k))
+            .collect();
+        items.extend(check::lesson(&lesson, &traces));
+        lessons.push((lesson.id.clone(), lesson.title.clone()));
+    }
+    let text = match args.format {
+        CheckFormat::Text => render::check::text(&lessons, &items, &Fmt::default()),
+        CheckFormat::Json => render::check::json(&items),
+    };
+    out.write_all(text.as_bytes()).map_err(io)?;
+    let tally = Tally::of(&items);
+    if tally.failures() > 0 {
+        return Err(AppError::Runtime(format!(
+            "check failed: {} new disagreement(s), {} stale erratum note(s), {} printed value(s) not computed",
+            tally.new, tally.stale, tally.not_computed
+        )));
+    }
+    Ok(())
+}

@@ -1,0 +1,60 @@
+//! `contact-lab exercise`: a question sheet (and answers) from a seed.
+
+use std::io::Write;
+
+use super::{io, write_atomic};
+use crate::cli::{ExerciseArgs, ExerciseKind, SheetFormat};
+use crate::error::AppError;
+use crate::exercise::{self, sheet, Kind};
+use crate::format::Fmt;
+
+fn kind(k: ExerciseKind) -> (Option<Kind>, &'static str) {
+    match k {
+        ExerciseKind::Frictionless => (Some(Kind::Frictionless), "frictionless"),
+        ExerciseKind::StaticFriction => (Some(Kind::StaticFriction), "static-friction"),
+        ExerciseKind::DynamicFriction => (Some(Kind::DynamicFriction), "dynamic-friction"),
+        ExerciseKind::Penetration => (Some(Kind::Penetration), "penetration"),
+        ExerciseKind::Mixed => (None, "mixed"),
+    }
+}
+
+pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError> {
+    let count = args.count as usize;
+    if args.format == SheetFormat::Toml && count > 1 && args.dir.is_none() {
+        return Err(AppError::Usage(
+            "--format toml writes one lesson file per exercise: give --dir DIR for --count > 1"
+                .into(),
+        ));
+    }
+    if args.dir.is_some() && args.format != SheetFormat::Toml {
+        return Err(AppError::Usage("--dir applies to --format toml".into()));
+    }
+    let (k, name) = kind(args.kind);
+    let exercises = exercise::generate(args.seed, k, count).map_err(AppError::Runtime)?;
+    let request = sheet::Request {
+        seed: args.seed,
+        kind: name,
+        count,
+    };
+    let fmt = Fmt::new(args.digits as usize);
+    let text = match args.format {
+        SheetFormat::Md => sheet::markdown(&exercises, &request, args.answers, &fmt),
+        SheetFormat::Latex => sheet::latex(&exercises, &request, args.answers, &fmt),
+        SheetFormat::Toml => match &args.dir {
+            None => exercises[0].toml.clone(),
+            Some(dir) => {
+                std::fs::create_dir_all(dir).map_err(|e| {
+                    AppError::Runtime(format!("cannot create {}: {e}", dir.display()))
+                })?;
+                let mut list = String::new();
+                for e in &exercises {
+                    let path = dir.join(format!("{}.toml", e.lesson.id));
+                    write_atomic(&path, e.toml.as_bytes())?;
+                    list.push_str(&format!("{}\n", path.display()));
+                }
+                list
+            }
+        },
+    };
+    out.write_all(text.as_bytes()).map_err(io)
+}

@@ -1,0 +1,351 @@
+//! The exercise sheet: per exercise the scene and the questions; with
+//! answers, the short answers and the worked solution (Markdown or LaTeX).
+
+use std::fmt::Write;
+
+use super::{Exercise, Kind};
+use crate::format::Fmt;
+use crate::lesson::{BodyDef, Lesson, Shape};
+use crate::render::{latex, markdown};
+use crate::trace::latex::prose;
+use crate::trace::{Trace, Value};
+
+const INTRO: &str = "Resolve each contact as in the lecture (Millington's impulse-based method). The normal d̂ points from body 2 toward body 1; body 1 receives the impulse g and body 2 receives −g. Inertia tensors are in body coordinates; orientations are quaternions [w, x, y, z]. Work to four decimals.";
+
+/// How to regenerate a sheet.
+pub struct Request {
+    pub seed: u64,
+    pub kind: &'static str,
+    pub count: usize,
+}
+
+fn questions(kind: Kind, t: &Trace) -> Vec<&'static str> {
+    let closing = t.stage("impulse").is_some_and(|s| s.skipped.is_none());
+    match kind {
+        Kind::Frictionless => vec![
+            "Find the contact velocity v_c, the separating velocity v_s and the desired change in velocity Δv.",
+            "Find the velocity change per unit impulse along the normal, Δq̇_t.",
+            "Find the impulse g, in contact and in world coordinates.",
+            "Find each movable body's velocity v′ and angular velocity ω′ after the impulse.",
+        ],
+        Kind::StaticFriction | Kind::DynamicFriction => vec![
+            "Find the contact velocity v_c, the separating velocity v_s and the desired change in velocity Δv.",
+            "Build the matrix M of velocity change per unit impulse in contact coordinates (M₀₀ = Δq̇_t).",
+            "Find the impulse that stops all sliding, and decide whether static friction can supply it: does the contact stick or slide?",
+            "Find the impulse in world coordinates and each movable body's v′ and ω′ after it.",
+        ],
+        Kind::Penetration => {
+            let mut q = vec![
+                "Find each movable body's linear and angular inertia along the normal, and the total inertia I_t.",
+                "Share the penetration d_pen: find each body's linear move Δ_l and angular move Δ_a.",
+                "Find the new positions, the rotation Δθ of each body, and the updated, normalised orientation quaternions.",
+            ];
+            if closing {
+                q.push("The bodies are also closing: find the impulse g and the velocities v′ and ω′ after it.");
+            }
+            q
+        }
+    }
+}
+
+/// `(label, value)` of the short answers, where the trace has them.
+fn short_answers(kind: Kind, t: &Trace) -> Vec<(&'static str, &Value)> {
+    let mut wanted: Vec<(&'static str, &'static str, &'static str)> = Vec::new();
+    let velocities = [
+        ("v₁′", "apply_impulse", "v1"),
+        ("ω₁′", "apply_impulse", "w1"),
+        ("v₂′", "apply_impulse", "v2"),
+        ("ω₂′", "apply_impulse", "w2"),
+    ];
+    let impulse = [
+        ("v_s", "desired_delta_velocity", "separating_velocity"),
+        ("Δv", "desired_delta_velocity", "desired"),
+        ("Δq̇_t", "unit_impulse", "total"),
+    ];
+    match kind {
+        Kind::Frictionless => {
+            wanted.extend(impulse);
+            wanted.push(("g (world)", "impulse", "impulse_world"));
+            wanted.extend(velocities);
+        }
+        Kind::StaticFriction | Kind::DynamicFriction => {
+            wanted.extend(impulse);
+            wanted.extend([
+                ("sticking impulse (contact)", "impulse", "impulse_contact"),
+                ("|g_planar|", "friction_clamp", "planar"),
+                ("μ_s g_n", "friction_clamp", "limit"),
+                ("regime", "friction_clamp", "regime"),
+                ("g (world)", "friction_clamp", "impulse_world"),
+            ]);
+            wanted.extend(velocities);
+        }
+        Kind::Penetration => {
+            let p = "nonlinear_projection";
+            wanted.extend([
+                ("I_l₁", p, "linear_inertia1"),
+                ("I_a₁", p, "angular_inertia1"),
+                ("I_l₂", p, "linear_inertia2"),
+                ("I_a₂", p, "angular_inertia2"),
+                ("I_t", p, "total_inertia"),
+                ("Δ_l₁", p, "linear_move1"),
+                ("Δ_a₁", p, "angular_move1"),
+                ("Δ_l₂", p, "linear_move2"),
+                ("Δ_a₂", p, "angular_move2"),
+                ("p₁′", p, "position1"),
+                ("p₂′", p, "position2"),
+                ("Δθ₁", p, "angular_change1"),
+                ("Δθ₂", p, "angular_change2"),
+                ("θ₁′", "orientation_update", "orientation1"),
+                ("θ₂′", "orientation_update", "orientation2"),
+                ("g (world)", "impulse", "impulse_world"),
+            ]);
+            wanted.extend(velocities);
+        }
+    }
+    wanted
+        .into_iter()
+        .filter_map(|(label, stage, name)| {
+            let s = t.stage(stage).filter(|s| s.skipped.is_none())?;
+            Some((label, s.value(name)?))
+        })
+        .collect()
+}
+
+fn shape(s: &Option<Shape>) -> String {
+    match s {
+        Some(Shape::Box([x, y, z])) if x == y && y == z => format!("cube, sides {x}"),
+        Some(Shape::Box([x, y, z])) => format!("box {x} × {y} × {z}"),
+        Some(Shape::Sphere(r)) => format!("solid sphere, r = {r}"),
+        Some(Shape::HollowSphere(r)) => format!("hollow sphere, r = {r}"),
+        Some(Shape::Cylinder { radius, height }) => format!("cylinder, r = {radius}, h = {height}"),
+        Some(Shape::HalfSpace) => "half-space".into(),
+        None => "–".into(),
+    }
+}
+
+/// Rows of the scene table: (quantity, one cell per body).
+fn rows(lesson: &Lesson, fmt: &Fmt) -> Vec<(&'static str, Vec<String>)> {
+    let v = |x: &[f64]| format!("({})", fmt.list(x));
+    let cell = |b: &BodyDef, f: &dyn Fn(&BodyDef) -> String| {
+        if b.movable() {
+            f(b)
+        } else {
+            "–".into()
+        }
+    };
+    let all = |f: &dyn Fn(&BodyDef) -> String| lesson.bodies.iter().map(|b| cell(b, f)).collect();
+    vec![
+        (
+            "mass m",
+            lesson
+                .bodies
+                .iter()
+                .map(|b| {
+                    if b.movable() {
+                        fmt.num(b.mass)
+                    } else {
+                        "∞ (immovable)".into()
+                    }
+                })
+                .collect(),
+        ),
+        (
+            "shape",
+            lesson.bodies.iter().map(|b| shape(&b.shape)).collect(),
+        ),
+        (
+            "inertia tensor I",
+            all(&|b| {
+                b.inertia.map_or("–".into(), |m| {
+                    if (0..3).all(|r| (0..3).all(|c| r == c || m[(r, c)] == 0.0)) {
+                        format!("diag({})", fmt.list(&[m[(0, 0)], m[(1, 1)], m[(2, 2)]]))
+                    } else {
+                        fmt.value(&Value::from(m))
+                    }
+                })
+            }),
+        ),
+        (
+            "position p",
+            lesson
+                .bodies
+                .iter()
+                .map(|b| v(b.position.as_slice()))
+                .collect(),
+        ),
+        (
+            "orientation θ",
+            all(&|b| {
+                let q = b.orientation;
+                format!("[{}]", fmt.list(&[q.w, q.i, q.j, q.k]))
+            }),
+        ),
+        ("velocity v", all(&|b| v(b.velocity.as_slice()))),
+        (
+            "angular velocity ω",
+            all(&|b| v(b.angular_velocity.as_slice())),
+        ),
+    ]
+}
+
+/// The contact's data in one sentence.
+fn contact_line(lesson: &Lesson, fmt: &Fmt) -> String {
+    let c = &lesson.contacts[0];
+    let names = lesson.contact_body_names(0);
+    let v = |x: &[f64]| format!("({})", fmt.list(x));
+    let mut s = format!(
+        "Contact point q = {}; normal d̂ = {}, from {} toward {}; restitution c = {}",
+        v(c.point.as_slice()),
+        v(c.normal.as_slice()),
+        names.get(1).map_or("the world", String::as_str),
+        names[0],
+        fmt.num(c.restitution)
+    );
+    if c.penetration > 0.0 {
+        let _ = write!(s, "; penetration d_pen = {}", fmt.num(c.penetration));
+    }
+    if c.static_friction > 0.0 || c.dynamic_friction > 0.0 {
+        if c.static_friction == c.dynamic_friction {
+            let _ = write!(s, "; friction μ = {}", fmt.num(c.static_friction));
+        } else {
+            let _ = write!(
+                s,
+                "; static friction μ_s = {}, dynamic friction μ_d = {}",
+                fmt.num(c.static_friction),
+                fmt.num(c.dynamic_friction)
+            );
+        }
+    } else {
+        s.push_str("; no friction");
+    }
+    s.push('.');
+    s
+}
+
+fn command(r: &Request, answers: bool, format: &str) -> String {
+    format!(
+        "contact-lab exercise --seed {} --kind {} --count {}{} --format {format}",
+        r.seed,
+        r.kind,
+        r.count,
+        if answers { " --answers" } else { "" }
+    )
+}
+
+/// The sheet in Markdown.
+pub fn markdown(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> String {
+    let inputs = Fmt::new(10);
+    let mut out = String::from("# Contact resolution exercises\n\n");
+    let _ = writeln!(
+        out,
+        "Seed {} · {} exercise(s) · `{}`\n\n{}\n",
+        r.seed,
+        exercises.len(),
+        command(r, answers, "md"),
+        markdown::escape(INTRO)
+    );
+    for e in exercises {
+        let l = &e.lesson;
+        let _ = writeln!(
+            out,
+            "## {} ({})\n",
+            markdown::escape(&l.title),
+            e.kind.name()
+        );
+        let mut header = String::from("| |");
+        let mut rule = String::from("|---|");
+        for b in &l.bodies {
+            let _ = write!(header, " {} |", markdown::cell(&b.name));
+            rule.push_str("---|");
+        }
+        let _ = writeln!(out, "{header}\n{rule}");
+        for (what, cells) in rows(l, &inputs) {
+            let cells: Vec<String> = cells.iter().map(|c| markdown::cell(c)).collect();
+            let _ = writeln!(out, "| {what} | {} |", cells.join(" | "));
+        }
+        let _ = writeln!(out, "\n{}\n", markdown::escape(&contact_line(l, &inputs)));
+        for (i, q) in questions(e.kind, &e.trace).iter().enumerate() {
+            let _ = writeln!(out, "{}. {}", i + 1, markdown::escape(q));
+        }
+        out.push('\n');
+    }
+    if answers {
+        out.push_str("# Answers\n\n");
+        for e in exercises {
+            let _ = writeln!(out, "## {}\n", markdown::escape(&e.lesson.title));
+            for (label, v) in short_answers(e.kind, &e.trace) {
+                let _ = writeln!(
+                    out,
+                    "- {} = {}",
+                    markdown::escape(label),
+                    markdown::escape(&fmt.value(v))
+                );
+            }
+            out.push('\n');
+            out.push_str(&markdown::contact(&e.trace, fmt, 3, None));
+        }
+    }
+    out.truncate(out.trim_end().len());
+    out.push('\n');
+    out
+}
+
+/// The sheet as a standalone LaTeX document.
+pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> String {
+    let inputs = Fmt::new(10);
+    let mut body = String::from("\\section*{Contact resolution exercises}\n");
+    let _ = writeln!(
+        body,
+        "Seed {} $\\cdot$ {} exercise(s) $\\cdot$ \\texttt{{{}}}\n\n{}",
+        r.seed,
+        exercises.len(),
+        crate::trace::latex::escape_text(&command(r, answers, "latex")),
+        prose(INTRO)
+    );
+    for e in exercises {
+        let l = &e.lesson;
+        let _ = writeln!(
+            body,
+            "\n\\subsection*{{{} ({})}}",
+            prose(&l.title),
+            e.kind.name()
+        );
+        let _ = writeln!(
+            body,
+            "\\begin{{center}}\n\\begin{{tabular}}{{l{}}}\n & {} \\\\\n\\hline",
+            "l".repeat(l.bodies.len()),
+            l.bodies
+                .iter()
+                .map(|b| prose(&b.name))
+                .collect::<Vec<_>>()
+                .join(" & ")
+        );
+        for (what, cells) in rows(l, &inputs) {
+            let cells: Vec<String> = cells.iter().map(|c| prose(c)).collect();
+            let _ = writeln!(body, "{} & {} \\\\", prose(what), cells.join(" & "));
+        }
+        let _ = writeln!(
+            body,
+            "\\end{{tabular}}\n\\end{{center}}\n{}",
+            prose(&contact_line(l, &inputs))
+        );
+        body.push_str("\\begin{enumerate}\n");
+        for q in questions(e.kind, &e.trace) {
+            let _ = writeln!(body, "\\item {}", prose(q));
+        }
+        body.push_str("\\end{enumerate}\n");
+    }
+    if answers {
+        body.push_str("\n\\clearpage\n\\section*{Answers}\n");
+        for e in exercises {
+            let _ = writeln!(body, "\n\\subsection*{{{}}}", prose(&e.lesson.title));
+            body.push_str("\\begin{itemize}\n");
+            for (label, v) in short_answers(e.kind, &e.trace) {
+                let _ = writeln!(body, "\\item {} $= {}$", prose(label), fmt.value_latex(v));
+            }
+            body.push_str("\\end{itemize}\n\n");
+            body.push_str(&latex::contact(&e.trace, fmt, 2));
+        }
+    }
+    latex::standalone(&body)
+}

@@ -1,0 +1,185 @@
+//! A worked solution as LaTeX: a standalone `article` with `amsmath`, or the
+//! body alone (`--fragment`). Stage formulas go in one `align*` each; notes,
+//! titles and summaries are prose with their maths set inline.
+
+use std::fmt::Write;
+
+use crate::format::Fmt;
+use crate::trace::latex::{escape_text, prose};
+use crate::trace::{Formula, Step, Trace};
+
+/// Packages a fragment needs; the standalone document loads them.
+pub const PACKAGES: &str = "\\usepackage{amsmath}\n\\usepackage{amssymb}";
+
+/// The formula as rows of an aligned block: `lhs &= rhs`, `&= numbers`,
+/// `&= result` (a row that repeats the previous one is left out).
+pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
+    let (lhs, rhs) = f.latex.split_once(" = ").unwrap_or((&f.latex, ""));
+    let mut right: Vec<String> = Vec::new();
+    if !rhs.trim().is_empty() {
+        right.push(rhs.trim().to_string());
+    }
+    if let Some(s) = &f.substituted_latex {
+        right.push(fmt.fill(s, step, true));
+    }
+    if let Some(r) = f.result.as_ref().and_then(|r| step.lookup(r)) {
+        let r = fmt.value_latex(r);
+        if right.last() != Some(&r) {
+            right.push(r);
+        }
+    }
+    let mut rows = Vec::new();
+    for (i, r) in right.iter().enumerate() {
+        if i == 0 {
+            rows.push(format!("{lhs} &= {r}"));
+        } else {
+            rows.push(format!("&= {r}"));
+        }
+    }
+    if rows.is_empty() {
+        rows.push(format!("{lhs} &"));
+    }
+    rows
+}
+
+/// Sectioning command for a depth: 0 section, 1 subsection, 2 subsubsection,
+/// deeper a run-in paragraph. Unnumbered: the text carries its own number.
+pub fn heading(depth: usize, text: &str) -> String {
+    let cmd = ["section", "subsection", "subsubsection", "paragraph"][depth.min(3)];
+    format!("\\{cmd}*{{{text}}}\n")
+}
+
+fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
+    fmt.fill_with(text, step, &prose, &|v| format!("${}$", fmt.value_latex(v)))
+}
+
+fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
+    out.push('\n');
+    out.push_str(&heading(depth, &format!("{n}. {}", prose(step.title))));
+    if let Some(why) = &step.skipped {
+        let _ = writeln!(out, "\\emph{{Skipped:}} {}", prose(why));
+        return;
+    }
+    let rows: Vec<String> = step
+        .formulas
+        .iter()
+        .map(|f| aligned_rows(f, step, fmt).join(" \\\\\n"))
+        .collect();
+    if !rows.is_empty() {
+        let _ = writeln!(
+            out,
+            "\\begin{{align*}}\n{}\n\\end{{align*}}",
+            rows.join(" \\\\[4pt]\n")
+        );
+    }
+    if !step.notes.is_empty() {
+        out.push_str("\\begin{itemize}\n");
+        for text in &step.notes {
+            let _ = writeln!(out, "\\item {}", note(text, step, fmt));
+        }
+        out.push_str("\\end{itemize}\n");
+    }
+}
+
+/// One contact: a heading at `depth`, every stage one deeper, the state
+/// after and the checks.
+pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
+    let mut out = heading(depth, &format!("Contact {}", prose(&trace.contact_label)));
+    for (i, step) in trace.stages.iter().enumerate() {
+        stage(&mut out, i + 1, step, fmt, depth + 1);
+    }
+    out.push('\n');
+    out.push_str(&heading(depth + 1, "After"));
+    out.push_str("\\begin{description}\n");
+    for (name, a) in &trace.after {
+        let v = |x: &[f64]| {
+            format!(
+                "({})",
+                x.iter()
+                    .map(|x| fmt.num_latex(*x))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        };
+        let q = a
+            .orientation
+            .iter()
+            .map(|x| fmt.num_latex(*x))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let _ = writeln!(
+            out,
+            "\\item[{}] position ${}$, orientation $[{q}]$,\\\\\n velocity ${}$, angular velocity ${}$.",
+            prose(name),
+            v(&a.position),
+            v(&a.velocity),
+            v(&a.angular_velocity)
+        );
+    }
+    out.push_str("\\end{description}\n");
+    if let Some(checks) = trace.stage("checks") {
+        out.push('\n');
+        out.push_str(&heading(depth + 1, "Verdicts"));
+        out.push_str("\\begin{itemize}\n");
+        for v in &trace.verdicts {
+            let mark = match v.passed {
+                Some(true) => "$\\checkmark$",
+                Some(false) => "$\\times$",
+                None => "$\\cdot$",
+            };
+            let _ = writeln!(
+                out,
+                "\\item[{mark}] {}: {}",
+                prose(&v.label),
+                note(&v.detail, checks, fmt)
+            );
+        }
+        out.push_str("\\end{itemize}\n");
+    }
+    out
+}
+
+/// The lesson's heading, source, summary and warnings.
+pub fn preamble(trace: &Trace, depth: usize) -> String {
+    let mut out = heading(depth, &prose(&trace.title));
+    let _ = write!(out, "Lesson \\texttt{{{}}}", escape_text(&trace.lesson));
+    if !trace.source.is_empty() {
+        let _ = write!(out, " --- {}", prose(&trace.source));
+    }
+    out.push_str(".\n");
+    if !trace.summary.trim().is_empty() {
+        let _ = writeln!(out, "\n{}", prose(trace.summary.trim()));
+    }
+    for w in &trace.warnings {
+        let _ = writeln!(out, "\n\\textbf{{Warning:}} {}", prose(w));
+    }
+    out
+}
+
+/// Wraps a body in a standalone article.
+pub fn standalone(body: &str) -> String {
+    format!(
+        "\\documentclass[11pt]{{article}}\n\\usepackage[a4paper,margin=2.2cm]{{geometry}}\n{PACKAGES}\n\\allowdisplaybreaks\n\\begin{{document}}\n{body}\\end{{document}}\n"
+    )
+}
+
+/// Every trace given (one per contact) after the lesson's preamble; a
+/// standalone document unless `fragment`.
+pub fn document(traces: &[Trace], fmt: &Fmt, fragment: bool) -> String {
+    let Some(first) = traces.first() else {
+        return String::new();
+    };
+    let mut body = preamble(first, 0);
+    for t in traces {
+        body.push('\n');
+        body.push_str(&contact(t, fmt, 1));
+    }
+    if fragment {
+        format!(
+            "% contact-lab worked solution; needs {}\n{body}",
+            PACKAGES.replace('\n', " ")
+        )
+    } else {
+        standalone(&body)
+    }
+}

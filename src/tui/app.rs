@@ -1,0 +1,494 @@
+//! The TUI's state and its update (TEA): keys become actions, actions change
+//! the state. Nothing here draws, and nothing computes physics: every number
+//! comes from [`crate::worked_solution`], called again after each edit.
+
+use std::cell::Cell;
+use std::path::PathBuf;
+
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+
+use super::event::{self, Action};
+use super::form::{Form, Outcome};
+use super::theme::Theme;
+use super::write::{self, WriteError};
+use crate::format::Fmt;
+use crate::lesson::{edit, Lesson};
+use crate::trace::{Trace, Value};
+
+/// A lesson as loaded, and as edited in this session.
+#[derive(Debug, Clone)]
+pub struct Entry {
+    pub pristine: Lesson,
+    pub lesson: Lesson,
+    /// What was changed, in order (`restitution 0.8 → 0.5`).
+    pub edits: Vec<String>,
+}
+
+/// The plane the picture shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Plane {
+    Xy,
+    Yz,
+    Zx,
+}
+
+impl Plane {
+    pub fn next(self) -> Self {
+        match self {
+            Plane::Xy => Plane::Yz,
+            Plane::Yz => Plane::Zx,
+            Plane::Zx => Plane::Xy,
+        }
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            Plane::Xy => "xy",
+            Plane::Yz => "yz",
+            Plane::Zx => "zx",
+        }
+    }
+    /// World axes drawn across and up.
+    pub fn axes(self) -> (usize, usize) {
+        match self {
+            Plane::Xy => (0, 1),
+            Plane::Yz => (1, 2),
+            Plane::Zx => (2, 0),
+        }
+    }
+}
+
+/// What has the keyboard.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Mode {
+    Normal,
+    Help,
+    Edit(Form),
+    /// Asking for the Markdown file name.
+    Write {
+        input: String,
+        error: Option<String>,
+    },
+    /// The file exists: overwrite it?
+    Confirm(PathBuf),
+}
+
+/// A one-line message in the key bar until the next key.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Status {
+    pub text: String,
+    pub error: bool,
+}
+
+#[derive(Debug, Clone)]
+pub struct App {
+    pub lessons: Vec<Entry>,
+    pub lesson: usize,
+    pub contact: usize,
+    /// 0 is the lesson overview; `i ≥ 1` is `trace.stages[i - 1]`.
+    pub page: usize,
+    pub trace: Trace,
+    /// The trace before the last edit: values that differ are marked.
+    pub baseline: Option<Trace>,
+    pub plane: Plane,
+    pub predict: bool,
+    /// Predict mode: results shown so far, per stage.
+    pub revealed: Vec<usize>,
+    /// Lines the stage panel is scrolled down.
+    pub scroll: u16,
+    /// How far the stage panel can scroll, as last drawn.
+    pub scroll_max: Cell<u16>,
+    /// The picture fills the right-hand side.
+    pub zoom: bool,
+    pub mode: Mode,
+    pub status: Option<Status>,
+    pub theme: Theme,
+    pub fmt: Fmt,
+    /// Where `w` writes.
+    pub write_dir: PathBuf,
+    pub quit: bool,
+}
+
+impl App {
+    /// Opens on `lessons[lesson]`, contact `contact` (both must exist).
+    pub fn new(lessons: Vec<Lesson>, lesson: usize, contact: usize, theme: Theme) -> Self {
+        assert!(
+            lesson < lessons.len() && contact < lessons[lesson].contacts.len(),
+            "App::new: lesson {lesson} contact {contact} out of range"
+        );
+        let lessons: Vec<Entry> = lessons
+            .into_iter()
+            .map(|l| Entry {
+                pristine: l.clone(),
+                lesson: l,
+                edits: vec![],
+            })
+            .collect();
+        let trace = crate::worked_solution(&lessons[lesson].lesson, contact);
+        let mut app = App {
+            lessons,
+            lesson,
+            contact,
+            page: 0,
+            revealed: vec![0; trace.stages.len()],
+            trace,
+            baseline: None,
+            plane: Plane::Xy,
+            predict: false,
+            scroll: 0,
+            scroll_max: Cell::new(0),
+            zoom: false,
+            mode: Mode::Normal,
+            status: None,
+            theme,
+            fmt: Fmt::new(6),
+            write_dir: PathBuf::from("."),
+            quit: false,
+        };
+        app.plane = app.natural_plane();
+        app
+    }
+
+    pub fn entry(&self) -> &Entry {
+        &self.lessons[self.lesson]
+    }
+
+    pub fn pages(&self) -> usize {
+        self.trace.stages.len() + 1
+    }
+
+    /// The stage on screen, `None` on the overview.
+    pub fn stage(&self) -> Option<usize> {
+        self.page.checked_sub(1)
+    }
+
+    /// Solves the current contact again and keeps the place.
+    fn recompute(&mut self) {
+        self.trace = crate::worked_solution(&self.entry().lesson, self.contact);
+        self.page = self.page.min(self.pages() - 1);
+        self.revealed = vec![0; self.trace.stages.len()];
+    }
+
+    /// The plane in which the scene moves: the one the velocities, normal and
+    /// arms lie in, xy when they all do.
+    fn natural_plane(&self) -> Plane {
+        let s = &self.trace.scene;
+        let mut weight = [0.0f64; 3];
+        let mut add = |v: [f64; 3]| {
+            for (w, x) in weight.iter_mut().zip(v) {
+                *w += x.abs();
+            }
+        };
+        add(s.normal);
+        for b in s.bodies.iter().filter(|b| b.slot > 0) {
+            add(b.velocity);
+            add(b.velocity_after);
+            add([0, 1, 2].map(|i| b.position[i] - s.point[i]));
+        }
+        let total: f64 = weight.iter().sum();
+        let flat = |axis: usize| weight[axis] <= 1e-9 * total;
+        if flat(2) || !(flat(0) || flat(1)) {
+            Plane::Xy
+        } else if flat(0) {
+            Plane::Yz
+        } else {
+            Plane::Zx
+        }
+    }
+
+    fn goto_lesson(&mut self, i: usize) {
+        self.lesson = i;
+        self.contact = 0;
+        self.page = 0;
+        self.baseline = None;
+        self.scroll = 0;
+        self.recompute();
+        self.plane = self.natural_plane();
+    }
+
+    fn goto_contact(&mut self, k: usize) {
+        self.contact = k;
+        self.baseline = None;
+        self.scroll = 0;
+        self.recompute();
+    }
+
+    fn goto_page(&mut self, page: usize) {
+        let page = page.min(self.pages() - 1);
+        if page != self.page {
+            self.scroll = 0;
+        }
+        self.page = page;
+    }
+
+    /// Predict mode: are some of the current stage's results still hidden?
+    pub fn hidden_here(&self) -> bool {
+        self.stage().is_some_and(|s| !self.revealed_all(s))
+    }
+
+    /// Whether stage `s` shows all its results (always, outside predict mode).
+    pub fn revealed_all(&self, s: usize) -> bool {
+        !self.predict
+            || self.trace.stages[s].skipped.is_some()
+            || self.revealed[s] >= self.trace.stages[s].formulas.len()
+    }
+
+    /// Whether the results of the stage `id` may be shown (in the picture
+    /// and the checks panel too).
+    pub fn shown(&self, id: &str) -> bool {
+        match self.trace.stages.iter().position(|s| s.id == id) {
+            Some(s) => self.revealed_all(s),
+            None => true,
+        }
+    }
+
+    /// Did value `name` of stage `id` change with the last edit?
+    pub fn changed(&self, id: &str, name: &str) -> bool {
+        let Some(base) = &self.baseline else {
+            return false;
+        };
+        let now = self.trace.stage(id).and_then(|s| s.lookup(name));
+        let then = base.stage(id).and_then(|s| s.lookup(name));
+        match (now, then) {
+            (Some(a), Some(b)) => !same(a, b),
+            (Some(_), None) => true,
+            _ => false,
+        }
+    }
+
+    /// Did any value of stage `s` change with the last edit?
+    pub fn stage_changed(&self, s: usize) -> bool {
+        let step = &self.trace.stages[s];
+        self.baseline.is_some()
+            && step
+                .values
+                .iter()
+                .chain(&step.inputs)
+                .any(|(n, _)| self.changed(step.id, n))
+    }
+
+    /// Handles one key press in whatever mode is active.
+    pub fn key(&mut self, key: KeyEvent) {
+        if key.kind != KeyEventKind::Press {
+            return;
+        }
+        self.status = None;
+        match std::mem::replace(&mut self.mode, Mode::Normal) {
+            Mode::Normal => {
+                if let Some(a) = event::action(key) {
+                    self.update(a);
+                }
+            }
+            Mode::Help => {
+                if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
+                    self.quit = true;
+                }
+            }
+            Mode::Edit(form) => self.edit_key(form, key),
+            Mode::Write { input, error } => self.write_key(input, error, key),
+            Mode::Confirm(path) => match key.code {
+                KeyCode::Char('y') | KeyCode::Char('Y') => self.write_to(path, true),
+                _ => {
+                    self.say(
+                        format!("not written: {} is unchanged", path.display()),
+                        false,
+                    );
+                }
+            },
+        }
+    }
+
+    /// The main screen's actions.
+    pub fn update(&mut self, action: Action) {
+        use Action::*;
+        match action {
+            NextStage => self.goto_page(self.page + 1),
+            PrevStage => self.goto_page(self.page.saturating_sub(1)),
+            Advance => {
+                if self.hidden_here() {
+                    let s = self.page - 1;
+                    self.revealed[s] += 1;
+                } else if self.page + 1 < self.pages() {
+                    self.goto_page(self.page + 1);
+                }
+            }
+            FirstStage => self.goto_page(0),
+            LastStage => self.goto_page(self.pages() - 1),
+            NextContact | PrevContact => {
+                let n = self.entry().lesson.contacts.len();
+                let k = if action == NextContact {
+                    (self.contact + 1) % n
+                } else {
+                    (self.contact + n - 1) % n
+                };
+                if n == 1 {
+                    self.say("this lesson has one contact".into(), false);
+                } else {
+                    self.goto_contact(k);
+                }
+            }
+            NextLesson => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
+            PrevLesson => {
+                let n = self.lessons.len();
+                self.goto_lesson((self.lesson + n - 1) % n)
+            }
+            ScrollDown => self.scroll = self.scroll.saturating_add(5).min(self.scroll_max.get()),
+            ScrollUp => self.scroll = self.scroll.min(self.scroll_max.get()).saturating_sub(5),
+            Edit => {
+                let fields = edit::fields(&self.entry().lesson, self.contact);
+                self.mode = Mode::Edit(Form::new(fields));
+            }
+            Reset => {
+                let e = &mut self.lessons[self.lesson];
+                if e.edits.is_empty() {
+                    self.say(
+                        "nothing to reset: the lesson has its file's values".into(),
+                        false,
+                    );
+                } else {
+                    e.lesson = e.pristine.clone();
+                    e.edits.clear();
+                    self.baseline = Some(self.trace.clone());
+                    self.recompute();
+                    self.say("reset to the lesson's values".into(), false);
+                }
+            }
+            Predict => {
+                self.predict = !self.predict;
+                self.revealed = vec![0; self.trace.stages.len()];
+                self.say(
+                    if self.predict {
+                        "predict mode: work out each result, then Space / Enter reveals it"
+                    } else {
+                        "predict mode off: every result shown"
+                    }
+                    .into(),
+                    false,
+                );
+            }
+            Plane => self.plane = self.plane.next(),
+            Zoom => self.zoom = !self.zoom,
+            Write => {
+                self.mode = Mode::Write {
+                    input: write::default_name(&self.trace),
+                    error: None,
+                }
+            }
+            Help => self.mode = Mode::Help,
+            Quit => self.quit = true,
+        }
+    }
+
+    fn say(&mut self, text: String, error: bool) {
+        self.status = Some(Status { text, error });
+    }
+
+    fn edit_key(&mut self, mut form: Form, key: KeyEvent) {
+        let lesson = &self.entry().lesson;
+        let k = self.contact;
+        let outcome = form.key(
+            key,
+            |f| edit::get(lesson, k, f),
+            |f| edit::next_choice(lesson, k, f),
+        );
+        match outcome {
+            Outcome::Stay => self.mode = Mode::Edit(form),
+            Outcome::Close => {}
+            Outcome::Set(i, text) => {
+                let field = form.fields[i].clone();
+                let entry = &mut self.lessons[self.lesson];
+                match edit::set(&mut entry.lesson, k, &field, &text) {
+                    Ok(said) => {
+                        let before = self.trace.clone();
+                        entry.edits.push(said.clone());
+                        self.recompute();
+                        let changed = count_changed(&before, &self.trace);
+                        self.baseline = Some(before);
+                        form.input = None;
+                        form.error = None;
+                        self.say(format!("{said}: {changed} values changed"), false);
+                    }
+                    Err(e) => form.error = Some(e),
+                }
+                self.mode = Mode::Edit(form);
+            }
+        }
+    }
+
+    fn write_key(&mut self, mut input: String, error: Option<String>, key: KeyEvent) {
+        match key.code {
+            KeyCode::Esc => self.say("not written".into(), false),
+            KeyCode::Enter if input.trim().is_empty() => {
+                self.mode = Mode::Write {
+                    input,
+                    error: Some("a file name, please".into()),
+                }
+            }
+            KeyCode::Enter => {
+                let path = self.write_dir.join(input.trim());
+                self.write_to(path, false)
+            }
+            code => {
+                match code {
+                    KeyCode::Backspace => {
+                        input.pop();
+                    }
+                    KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                        input.clear()
+                    }
+                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                        return self.say("not written".into(), false);
+                    }
+                    KeyCode::Char(c) => input.push(c),
+                    _ => {}
+                }
+                self.mode = Mode::Write { input, error };
+            }
+        }
+    }
+
+    fn write_to(&mut self, path: PathBuf, overwrite: bool) {
+        let text = write::markdown(&self.trace, &self.entry().edits, &self.fmt);
+        match write::write_atomic(&path, &text, overwrite) {
+            Ok(()) => self.say(format!("wrote {}", path.display()), false),
+            Err(WriteError::Exists(p)) => self.mode = Mode::Confirm(p),
+            Err(WriteError::Io(e)) => {
+                let input = path
+                    .file_name()
+                    .map(|n| n.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                self.mode = Mode::Write {
+                    input,
+                    error: Some(format!("cannot write: {e}")),
+                };
+            }
+        }
+    }
+}
+
+/// Values compare by their numbers (NaN equal to NaN, so it is not "changed").
+fn same(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Text(x), Value::Text(y)) => x == y,
+        _ => {
+            let (x, y) = (a.numbers(), b.numbers());
+            x.len() == y.len()
+                && x.iter()
+                    .zip(&y)
+                    .all(|(p, q)| p == q || (p.is_nan() && q.is_nan()))
+        }
+    }
+}
+
+/// Stage values (the JSON contract's) that differ between two traces.
+fn count_changed(before: &Trace, after: &Trace) -> usize {
+    after
+        .stages
+        .iter()
+        .map(|s| {
+            s.values
+                .iter()
+                .filter(|(n, v)| before.value(s.id, n).is_none_or(|old| !same(old, v)))
+                .count()
+        })
+        .sum()
+}

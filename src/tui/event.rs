@@ -1,0 +1,108 @@
+//! Terminal events, and the keys of the main screen as [`Action`]s.
+//! (The edit form and the write prompt read keys themselves: they take text.)
+
+use ratatui::crossterm::event::{
+    self, Event as CtEvent, KeyCode, KeyEvent, KeyEventKind, KeyModifiers,
+};
+
+/// What the main screen does with a key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    NextStage,
+    PrevStage,
+    /// Space / Enter: in predict mode reveal the next hidden result, else the next stage.
+    Advance,
+    FirstStage,
+    LastStage,
+    NextContact,
+    PrevContact,
+    NextLesson,
+    PrevLesson,
+    ScrollDown,
+    ScrollUp,
+    Edit,
+    Reset,
+    Predict,
+    Plane,
+    Zoom,
+    Write,
+    Help,
+    Quit,
+}
+
+/// Every key of the main screen: keys, action, what it does (help overlay and README).
+pub const KEYS: &[(&str, &str)] = &[
+    ("→ l", "next stage"),
+    ("← h", "previous stage"),
+    (
+        "Space Enter",
+        "next stage; in predict mode first reveal the next result",
+    ),
+    ("Home g / End G", "first / last stage"),
+    ("Tab / Shift-Tab", "next / previous contact"),
+    ("↓ j / ↑ k", "next / previous lesson"),
+    ("PgDn / PgUp", "scroll the stage panel"),
+    (
+        "e",
+        "edit restitution, friction, masses, velocities, … of this contact",
+    ),
+    ("r", "reset this lesson to its file's values"),
+    ("p", "predict mode: hide each result until Space reveals it"),
+    ("v", "view plane of the picture: xy → yz → zx"),
+    ("z", "picture full size / beside the stages"),
+    ("w", "write this worked solution to a Markdown file"),
+    ("?", "this help"),
+    ("q Esc Ctrl-C", "quit"),
+];
+
+/// The main screen's meaning of a key press, if any.
+pub fn action(key: KeyEvent) -> Option<Action> {
+    use Action::*;
+    if key.kind != KeyEventKind::Press {
+        return None;
+    }
+    if key.modifiers.contains(KeyModifiers::CONTROL) {
+        return matches!(key.code, KeyCode::Char('c')).then_some(Quit);
+    }
+    Some(match key.code {
+        KeyCode::Right | KeyCode::Char('l') => NextStage,
+        KeyCode::Left | KeyCode::Char('h') => PrevStage,
+        KeyCode::Char(' ') | KeyCode::Enter => Advance,
+        KeyCode::Home | KeyCode::Char('g') => FirstStage,
+        KeyCode::End | KeyCode::Char('G') => LastStage,
+        KeyCode::Tab => NextContact,
+        KeyCode::BackTab => PrevContact,
+        KeyCode::Down | KeyCode::Char('j') => NextLesson,
+        KeyCode::Up | KeyCode::Char('k') => PrevLesson,
+        KeyCode::PageDown => ScrollDown,
+        KeyCode::PageUp => ScrollUp,
+        KeyCode::Char('e') => Edit,
+        KeyCode::Char('r') => Reset,
+        KeyCode::Char('p') => Predict,
+        KeyCode::Char('v') => Plane,
+        KeyCode::Char('z') => Zoom,
+        KeyCode::Char('w') => Write,
+        KeyCode::Char('?') => Help,
+        KeyCode::Char('q') | KeyCode::Esc => Quit,
+        _ => return None,
+    })
+}
+
+/// A terminal event the app cares about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Event {
+    Key(KeyEvent),
+    /// The terminal changed size: draw again.
+    Resize,
+}
+
+/// Waits for the next key press or resize (other events are skipped).
+pub fn next() -> std::io::Result<Event> {
+    loop {
+        match event::read()? {
+            CtEvent::Key(k) if k.kind == KeyEventKind::Press => return Ok(Event::Key(k)),
+            CtEvent::Resize(..) => return Ok(Event::Resize),
+            _ => {}
+        }
+    }
+}

@@ -1,0 +1,126 @@
+//! The left column: lessons (with the contacts of the open one beneath it)
+//! and the stages of the contact, the current one marked, skipped ones dimmed
+//! with their reason.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, HighlightSpacing, List, ListItem, ListState, StatefulWidget};
+
+use super::app::App;
+use super::wrap::{truncate, width};
+
+/// A short name for the stage list (the panel shows the full title).
+fn short_title(id: &str, title: &str) -> String {
+    match id {
+        "contact_frame" => "Contact frame",
+        "unit_impulse" => "Unit impulse",
+        "desired_delta_velocity" => "Desired Δv",
+        "impulse" => "Impulse",
+        "friction_clamp" => "Friction",
+        "apply_impulse" => "Apply impulse",
+        "nonlinear_projection" => "Projection",
+        "orientation_update" => "Orientation",
+        "checks" => "Checks",
+        _ => title,
+    }
+    .to_string()
+}
+
+/// The reason of a skipped stage up to its colon: `no friction (μ = 0)`.
+fn short_reason(why: &str) -> &str {
+    why.split(':').next().unwrap_or(why).trim()
+}
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
+    let stages_height = (app.pages() as u16 + 2).min(area.height.saturating_sub(3));
+    let [lessons, stages] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(stages_height)]).areas(area);
+    render_lessons(app, lessons, buf);
+    render_stages(app, stages, buf);
+}
+
+fn render_lessons(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let w = area.width.saturating_sub(3) as usize;
+    let mut items = Vec::new();
+    let mut selected = 0;
+    for (i, e) in app.lessons.iter().enumerate() {
+        let edited = if e.edits.is_empty() { "" } else { " *" };
+        let here = i == app.lesson;
+        let mark = if here { "▾ " } else { "▸ " };
+        let style = if here { t.title() } else { Style::new() };
+        items.push(ListItem::new(Line::styled(
+            truncate(&format!("{mark}{}{edited}", e.lesson.id), w),
+            style,
+        )));
+        if here {
+            for k in 0..e.lesson.contacts.len() {
+                if k == app.contact {
+                    selected = items.len();
+                }
+                items.push(ListItem::new(Line::raw(truncate(
+                    &format!("  {}", e.lesson.contact_label(k)),
+                    w,
+                ))));
+            }
+        }
+    }
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(" Lessons ↑↓ ⇥ ", t.title()));
+    let list = List::new(items)
+        .block(block)
+        .highlight_style(t.selected())
+        .highlight_symbol("▶")
+        .highlight_spacing(HighlightSpacing::Always);
+    let mut state = ListState::default().with_selected(Some(selected));
+    StatefulWidget::render(list, area, buf, &mut state);
+}
+
+fn render_stages(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let w = area.width.saturating_sub(3) as usize;
+    let mut items = vec![ListItem::new(Line::raw(truncate("  0 Overview", w)))];
+    for (s, step) in app.trace.stages.iter().enumerate() {
+        let changed = app.stage_changed(s);
+        let gutter = if changed {
+            Span::styled("● ", t.changed())
+        } else if app.predict && !app.revealed_all(s) {
+            Span::styled("? ", t.hidden())
+        } else {
+            Span::raw("  ")
+        };
+        let name = format!("{} {}", s + 1, short_title(step.id, step.title));
+        let line = match &step.skipped {
+            Some(why) => {
+                // As much of the reason as fits; the panel shows all of it.
+                let room = w.saturating_sub(2);
+                let text = [
+                    format!("{name} – {}", short_reason(why)),
+                    format!("{name} · skipped"),
+                ]
+                .into_iter()
+                .find(|t| width(t) <= room)
+                .unwrap_or_else(|| truncate(&name, room));
+                Line::from(vec![gutter, Span::styled(text, t.dim())])
+            }
+            None => Line::from(vec![
+                gutter,
+                Span::raw(truncate(&name, w.saturating_sub(2))),
+            ]),
+        };
+        items.push(ListItem::new(line));
+    }
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(" Stages ←→ ", t.title()));
+    let list = List::new(items)
+        .block(block)
+        .highlight_style(t.selected())
+        .highlight_symbol("▶")
+        .highlight_spacing(HighlightSpacing::Always);
+    let mut state = ListState::default().with_selected(Some(app.page));
+    StatefulWidget::render(list, area, buf, &mut state);
+}

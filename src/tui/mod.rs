@@ -1,0 +1,80 @@
+//! The interactive terminal app (ratatui + crossterm), TEA style:
+//! [`app`] holds the state and its update, [`ui`] draws it, [`event`] reads
+//! the terminal. It reads only the trace: no physics here.
+
+pub mod app;
+pub mod event;
+pub mod form;
+mod lists;
+mod overlay;
+pub mod scene;
+mod stage;
+pub mod theme;
+pub mod ui;
+pub mod wrap;
+pub mod write;
+
+use crate::error::AppError;
+use crate::lesson::{embedded, Lesson};
+pub use app::App;
+pub use theme::Theme;
+
+/// The embedded lessons, plus `lesson` when it names a file; returns them
+/// and the index to open.
+pub fn lessons(lesson: Option<&str>) -> Result<(Vec<Lesson>, usize), AppError> {
+    let mut all: Vec<Lesson> = embedded::ids()
+        .into_iter()
+        .map(Lesson::load)
+        .collect::<Result<_, _>>()
+        .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
+    let at = match lesson {
+        None => all.iter().position(|l| l.id == "lecture-2").unwrap_or(0),
+        Some(name) => match all.iter().position(|l| l.id == name) {
+            Some(i) => i,
+            None => {
+                all.push(Lesson::load(name)?);
+                all.len() - 1
+            }
+        },
+    };
+    Ok((all, at))
+}
+
+/// The app on `lesson` (embedded id or path; lecture-2 when `None`) and contact `contact`.
+pub fn open(lesson: Option<&str>, contact: usize) -> Result<App, AppError> {
+    let (all, at) = lessons(lesson)?;
+    let n = all[at].contacts.len();
+    if contact >= n {
+        return Err(AppError::Usage(format!(
+            "--contact {contact}: lesson '{}' has {n} contact(s), numbered from 0",
+            all[at].id
+        )));
+    }
+    let mut app = App::new(all, at, contact, Theme::from_env());
+    app.write_dir = std::env::current_dir().unwrap_or_else(|_| ".".into());
+    Ok(app)
+}
+
+/// Runs the app until the user quits; the terminal is restored on return,
+/// on error and on panic (ratatui's hook).
+pub fn run(mut app: App) -> Result<(), AppError> {
+    let mut terminal = ratatui::try_init().map_err(|e| {
+        // Raw mode may be on although the alternate screen failed.
+        ratatui::restore();
+        AppError::Runtime(format!("cannot open the terminal: {e}"))
+    })?;
+    let result = run_loop(&mut terminal, &mut app);
+    ratatui::restore();
+    result.map_err(|e| AppError::Runtime(format!("terminal: {e}")))
+}
+
+fn run_loop(terminal: &mut ratatui::DefaultTerminal, app: &mut App) -> std::io::Result<()> {
+    while !app.quit {
+        terminal.draw(|f| f.render_widget(&*app, f.area()))?;
+        match event::next()? {
+            event::Event::Key(k) => app.key(k),
+            event::Event::Resize => {}
+        }
+    }
+    Ok(())
+}

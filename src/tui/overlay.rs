@@ -1,0 +1,193 @@
+//! Pop-ups drawn over the screen: help, the edit form, the write prompt and
+//! the overwrite question.
+
+use std::path::Path;
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{
+    Block, Clear, List, ListItem, ListState, Paragraph, StatefulWidget, Widget, Wrap,
+};
+
+use super::app::App;
+use super::event::KEYS;
+use super::form::Form;
+use super::wrap::{truncate, width, wrap};
+use crate::lesson::edit::{self, Kind};
+
+/// A `w × h` rectangle in the middle of `area` (clipped to it).
+fn centered(area: Rect, w: u16, h: u16) -> Rect {
+    let w = w.min(area.width);
+    let h = h.min(area.height);
+    Rect {
+        x: area.x + (area.width - w) / 2,
+        y: area.y + (area.height - h) / 2,
+        width: w,
+        height: h,
+    }
+}
+
+fn frame(app: &App, title: &str, area: Rect, buf: &mut Buffer) -> Rect {
+    Clear.render(area, buf);
+    let block = Block::bordered()
+        .border_style(app.theme.border_focus())
+        .title(Span::styled(title, app.theme.title()));
+    let inner = block.inner(area);
+    block.render(area, buf);
+    inner
+}
+
+pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let rect_w = 92.min(area.width.saturating_sub(2));
+    let text_w = rect_w.saturating_sub(3) as usize;
+    let kw = KEYS.iter().map(|(k, _)| width(k)).max().unwrap_or(0);
+    let mut lines: Vec<Line> = Vec::new();
+    for (k, what) in KEYS {
+        let wrapped = wrap(what, text_w.saturating_sub(kw + 2), 0);
+        for (i, piece) in wrapped.into_iter().enumerate() {
+            let key = if i == 0 { *k } else { "" };
+            lines.push(Line::from(vec![
+                Span::styled(format!(" {key:kw$}  "), t.key()),
+                Span::raw(piece),
+            ]));
+        }
+    }
+    for text in [
+        "Edit form: ↑↓ field, Enter edits (or cycles a choice), Enter sets, Esc goes back.",
+        "● changed by the last edit · ? results predict mode still hides",
+        "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
+    ] {
+        for piece in wrap(text, text_w, 0) {
+            lines.push(Line::styled(format!(" {piece}"), t.dim()));
+        }
+    }
+    let rect = centered(area, rect_w, lines.len() as u16 + 2);
+    let inner = frame(app, " Keys ", rect, buf);
+    Paragraph::new(lines).render(inner, buf);
+}
+
+pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let lesson = &app.entry().lesson;
+    let k = app.contact;
+    let rect = centered(
+        area,
+        72.min(area.width.saturating_sub(4)),
+        (form.fields.len() as u16 + 8).min(area.height.saturating_sub(2)),
+    );
+    let title = format!(" Edit contact {} ", lesson.contact_label(k));
+    let title = truncate(&title, rect.width.saturating_sub(4) as usize);
+    let inner = frame(app, &title, rect, buf);
+    let error_rows = form.error.as_deref().map_or(0, |e| {
+        wrap(&format!(" refused: {e}"), inner.width as usize, 0).len() as u16
+    });
+    let [list_area, input_area, help_area] = Layout::vertical([
+        Constraint::Fill(1),
+        Constraint::Length(1 + error_rows),
+        Constraint::Length(2),
+    ])
+    .areas(inner);
+    let lw = form
+        .fields
+        .iter()
+        .map(|f| f.label.chars().count())
+        .max()
+        .unwrap_or(0);
+    let items: Vec<ListItem> = form
+        .fields
+        .iter()
+        .map(|f| {
+            let value = edit::get(lesson, k, f);
+            let hint = match f.kind() {
+                Kind::Choice(_) => "  (Enter cycles)",
+                _ => "",
+            };
+            ListItem::new(Line::from(vec![
+                Span::raw(format!("{:lw$}  ", f.label)),
+                Span::styled(value, t.result()),
+                Span::styled(hint, t.dim()),
+            ]))
+        })
+        .collect();
+    let mut state = ListState::default().with_selected(Some(form.selected));
+    StatefulWidget::render(
+        List::new(items)
+            .highlight_style(t.selected())
+            .highlight_symbol("▶"),
+        list_area,
+        buf,
+        &mut state,
+    );
+    let field = &form.fields[form.selected.min(form.fields.len().saturating_sub(1))];
+    let mut lines = vec![];
+    if let Some(input) = &form.input {
+        let what = match field.kind() {
+            Kind::Vector => "x, y, z",
+            _ => "number",
+        };
+        lines.push(Line::from(vec![
+            Span::styled(format!(" {} ({what}) = ", field.label), t.key()),
+            Span::raw(input.clone()),
+            Span::styled("▏", t.key()),
+        ]));
+    }
+    if let Some(e) = &form.error {
+        lines.push(Line::styled(format!(" refused: {e}"), t.error()));
+    }
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .render(input_area, buf);
+    Paragraph::new(Line::styled(
+        " Enter edits; every stage is solved again at once. Values are checked as in a lesson file.",
+        t.dim(),
+    ))
+    .wrap(Wrap { trim: true })
+    .render(help_area, buf);
+}
+
+pub fn write_prompt(app: &App, input: &str, error: Option<&str>, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let rows = 4 + u16::from(error.is_some());
+    let rect = centered(area, 70.min(area.width.saturating_sub(4)), rows);
+    let inner = frame(app, " Write Markdown ", rect, buf);
+    let mut lines = vec![
+        Line::styled(format!(" into {}", app.write_dir.display()), t.dim()),
+        Line::from(vec![
+            Span::styled(" file: ", t.key()),
+            Span::raw(input.to_string()),
+            Span::styled("▏", t.key()),
+        ]),
+    ];
+    if let Some(e) = error {
+        lines.push(Line::styled(format!(" {e}"), t.error()));
+    }
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .render(inner, buf);
+}
+
+pub fn confirm(app: &App, path: &Path, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let w = 70.min(area.width.saturating_sub(4));
+    let name = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let mut lines: Vec<Line> = wrap(
+        &format!("{name} already exists."),
+        w.saturating_sub(3) as usize,
+        0,
+    )
+    .into_iter()
+    .map(|l| Line::raw(format!(" {l}")))
+    .collect();
+    lines.push(Line::from(vec![
+        Span::styled(" y", t.key()),
+        Span::raw(" overwrites it · any other key keeps it"),
+    ]));
+    let rect = centered(area, w, lines.len() as u16 + 2);
+    let inner = frame(app, " File exists ", rect, buf);
+    Paragraph::new(lines).render(inner, buf);
+}

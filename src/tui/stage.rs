@@ -1,0 +1,259 @@
+//! The stage panel: for the current stage each formula, the numbers put into
+//! it and the result (hidden in predict mode until revealed), then the notes;
+//! page 0 is the lesson's overview.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Alignment, Rect};
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget};
+
+use super::app::App;
+use super::wrap::{width, wrap};
+use crate::format::placeholders;
+use crate::trace::{Formula, Step};
+
+/// Gutter marking a line whose numbers changed with the last edit.
+const CHANGED: &str = "● ";
+const PLAIN: &str = "  ";
+
+/// One logical line before wrapping.
+struct Row {
+    text: String,
+    style: Style,
+    /// Continuation indent, in cells after the gutter.
+    indent: usize,
+    changed: bool,
+}
+
+impl Row {
+    fn new(text: impl Into<String>, style: Style) -> Self {
+        Row {
+            text: text.into(),
+            style,
+            indent: 2,
+            changed: false,
+        }
+    }
+}
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let (title, rows) = match app.stage() {
+        None => (" Overview ".to_string(), overview(app)),
+        Some(s) => {
+            let step = &app.trace.stages[s];
+            (
+                format!(" {}/{} {} ", s + 1, app.trace.stages.len(), step.title),
+                stage_rows(app, s),
+            )
+        }
+    };
+    let block = Block::bordered()
+        .border_style(t.border_focus())
+        .title(Span::styled(title, t.title()));
+    let inner = block.inner(area);
+    let text_width = (inner.width as usize).saturating_sub(PLAIN.len());
+    let mut lines: Vec<Line> = Vec::new();
+    for row in rows {
+        let gutter = if row.changed {
+            Span::styled(CHANGED, t.changed())
+        } else {
+            Span::raw(PLAIN)
+        };
+        let style = if row.changed {
+            row.style.patch(t.changed())
+        } else {
+            row.style
+        };
+        for (i, piece) in wrap(&row.text, text_width, row.indent)
+            .into_iter()
+            .enumerate()
+        {
+            let g = if i == 0 {
+                gutter.clone()
+            } else {
+                Span::raw(PLAIN)
+            };
+            lines.push(Line::from(vec![g, Span::styled(piece, style)]));
+        }
+    }
+    let overflow = (lines.len() as u16).saturating_sub(inner.height);
+    app.scroll_max.set(overflow);
+    let scroll = app.scroll.min(overflow);
+    let mut block = block;
+    if overflow > 0 {
+        let hint = if scroll < overflow {
+            format!(" ↓ {} more · PgDn ", overflow - scroll)
+        } else {
+            " PgUp ↑ ".to_string()
+        };
+        block =
+            block.title_bottom(Line::from(Span::styled(hint, t.dim())).alignment(Alignment::Right));
+    }
+    Paragraph::new(lines)
+        .scroll((scroll, 0))
+        .block(block)
+        .render(area, buf);
+}
+
+fn overview(app: &App) -> Vec<Row> {
+    let t = &app.theme;
+    let tr = &app.trace;
+    let lesson = &app.entry().lesson;
+    let f = &app.fmt;
+    let mut rows = vec![Row::new(tr.title.clone(), t.title())];
+    if !tr.source.is_empty() {
+        rows.push(Row::new(tr.source.clone(), t.dim()));
+    }
+    rows.push(Row::new(
+        format!("Contact {}", tr.contact_label),
+        t.formula(),
+    ));
+    rows.push(Row::new("", Style::new()));
+    for para in tr.summary.split("\n\n") {
+        rows.push(Row {
+            indent: 0,
+            ..Row::new(
+                para.split_whitespace().collect::<Vec<_>>().join(" "),
+                t.note(),
+            )
+        });
+        rows.push(Row::new("", Style::new()));
+    }
+    rows.push(Row::new("Bodies", t.title()));
+    for b in &lesson.bodies {
+        let shape = b
+            .shape
+            .map(|s| s.describe())
+            .unwrap_or_else(|| "no shape".into());
+        let text = if b.movable() {
+            format!(
+                "{}: m = {}, {shape}, v = ({}), ω = ({})",
+                b.name,
+                f.num(b.mass),
+                f.list(b.velocity.as_slice()),
+                f.list(b.angular_velocity.as_slice())
+            )
+        } else {
+            format!("{}: immovable (m = ∞), {shape}", b.name)
+        };
+        rows.push(Row {
+            indent: 4,
+            ..Row::new(format!("· {text}"), t.formula())
+        });
+    }
+    let edits = &app.entry().edits;
+    if !edits.is_empty() {
+        rows.push(Row::new("", Style::new()));
+        rows.push(Row::new("Edited (r resets)", t.warning()));
+        for e in edits {
+            rows.push(Row {
+                indent: 4,
+                ..Row::new(format!("· {e}"), t.warning())
+            });
+        }
+    }
+    for w in &tr.warnings {
+        rows.push(Row {
+            indent: 9,
+            ..Row::new(format!("warning: {w}"), t.warning())
+        });
+    }
+    rows.push(Row::new("", Style::new()));
+    rows.push(Row::new(
+        "→ or Space steps through the stages; ? lists every key.",
+        t.dim(),
+    ));
+    rows
+}
+
+/// The lines of a formula: `lhs = rhs`, `= numbers`, `= result`.
+fn formula_rows(app: &App, step: &Step, f: &Formula, hide_result: bool) -> Vec<Row> {
+    let t = &app.theme;
+    let fmt = &app.fmt;
+    let pad = width(&f.lhs) + 3;
+    let changed = |names: &[&str]| names.iter().any(|n| app.changed(step.id, n));
+    let mut rows = Vec::new();
+    let mut first = true;
+    let mut push = |text: String, style: Style, changed: bool| {
+        let prefix = if first {
+            format!("{} = ", f.lhs)
+        } else {
+            format!("{} = ", " ".repeat(pad - 3))
+        };
+        first = false;
+        rows.push(Row {
+            text: prefix + &text,
+            style,
+            indent: pad,
+            changed,
+        });
+    };
+    if !f.rhs.is_empty() {
+        push(f.rhs.clone(), t.formula(), false);
+    }
+    let mut last = None;
+    if let Some(s) = &f.substituted {
+        let text = fmt.fill(s, step, false);
+        last = Some(text.clone());
+        push(text, t.substituted(), changed(&placeholders(s)));
+    }
+    if let Some(name) = &f.result {
+        if let Some(v) = step.lookup(name) {
+            let text = fmt.value(v);
+            if hide_result {
+                push("?   (Space reveals)".into(), t.hidden(), false);
+            } else if last.as_ref() != Some(&text) {
+                push(text, t.result(), changed(&[name]));
+            }
+        }
+    }
+    rows
+}
+
+fn stage_rows(app: &App, s: usize) -> Vec<Row> {
+    let t = &app.theme;
+    let step = &app.trace.stages[s];
+    if let Some(why) = &step.skipped {
+        return vec![
+            Row::new(format!("Skipped: {why}"), t.dim()),
+            Row::new("", Style::new()),
+            Row::new(
+                "The contact does not need this stage, so the resolver does no work here.",
+                t.dim(),
+            ),
+        ];
+    }
+    let shown = if app.predict {
+        app.revealed[s].min(step.formulas.len())
+    } else {
+        step.formulas.len()
+    };
+    let mut rows = Vec::new();
+    for (i, f) in step.formulas.iter().enumerate() {
+        if i > shown {
+            break;
+        }
+        rows.extend(formula_rows(app, step, f, i == shown));
+    }
+    if shown < step.formulas.len() {
+        let left = step.formulas.len() - shown;
+        rows.push(Row::new("", Style::new()));
+        rows.push(Row::new(
+            format!("predict: {left} result(s) to go in this stage"),
+            t.hidden(),
+        ));
+        return rows;
+    }
+    if !step.notes.is_empty() {
+        rows.push(Row::new("", Style::new()));
+    }
+    for note in &step.notes {
+        rows.push(Row {
+            changed: placeholders(note).iter().any(|n| app.changed(step.id, n)),
+            ..Row::new(format!("· {}", app.fmt.fill(note, step, false)), t.note())
+        });
+    }
+    rows
+}

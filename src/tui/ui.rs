@@ -1,0 +1,216 @@
+//! The view: `impl Widget for &App` lays out the screen from the state alone
+//! (header, lessons and stages, stage panel, picture, checks, key bar) and
+//! puts the overlay of the active mode on top.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+
+use super::app::{App, Mode};
+use super::{lists, overlay, scene, stage};
+
+/// Below this the screen says so instead of drawing a squeezed layout.
+pub const MIN_WIDTH: u16 = 60;
+pub const MIN_HEIGHT: u16 = 18;
+
+impl Widget for &App {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
+            too_small(area, buf);
+            return;
+        }
+        let [top, body, bottom] = Layout::vertical([
+            Constraint::Length(1),
+            Constraint::Fill(1),
+            Constraint::Length(1),
+        ])
+        .areas(area);
+        header(self, top, buf);
+        key_bar(self, bottom, buf);
+        let wide = area.width >= 100;
+        let [left, right] = Layout::horizontal([
+            Constraint::Length(if wide { 28 } else { 22 }),
+            Constraint::Fill(1),
+        ])
+        .areas(body);
+        lists::render(self, left, buf);
+        if self.zoom {
+            scene::render(self, right, buf);
+        } else if wide {
+            // Stage panel | picture over checks.
+            let side = (right.width * 2 / 5).min(60);
+            let [panel, side] =
+                Layout::horizontal([Constraint::Fill(1), Constraint::Length(side)]).areas(right);
+            stage::render(self, panel, buf);
+            let [pic, checks] =
+                Layout::vertical([Constraint::Percentage(60), Constraint::Fill(1)]).areas(side);
+            scene::render(self, pic, buf);
+            render_checks(self, checks, buf);
+        } else {
+            // Stage panel over picture | checks.
+            let lower = (body.height * 9 / 20).max(8);
+            let [panel, low] =
+                Layout::vertical([Constraint::Fill(1), Constraint::Length(lower)]).areas(right);
+            stage::render(self, panel, buf);
+            let [pic, checks] =
+                Layout::horizontal([Constraint::Percentage(55), Constraint::Fill(1)]).areas(low);
+            scene::render(self, pic, buf);
+            render_checks(self, checks, buf);
+        }
+        match &self.mode {
+            Mode::Normal => {}
+            Mode::Help => overlay::help(self, area, buf),
+            Mode::Edit(form) => overlay::form(self, form, area, buf),
+            Mode::Write { input, error } => {
+                overlay::write_prompt(self, input, error.as_deref(), area, buf)
+            }
+            Mode::Confirm(path) => overlay::confirm(self, path, area, buf),
+        }
+    }
+}
+
+fn too_small(area: Rect, buf: &mut Buffer) {
+    let text = format!(
+        "Terminal too small: {}×{}. contact-lab needs at least {MIN_WIDTH}×{MIN_HEIGHT} (80×24 or more is best). Enlarge the window, or q to quit.",
+        area.width, area.height
+    );
+    Paragraph::new(text)
+        .wrap(Wrap { trim: true })
+        .render(area, buf);
+}
+
+fn header(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let tr = &app.trace;
+    let mut spans = vec![
+        Span::styled(" contact-lab ", t.selected()),
+        Span::styled(format!(" {} ", tr.lesson), t.title()),
+        Span::raw(format!("· {} · contact {}", tr.title, tr.contact_label)),
+    ];
+    if app.predict {
+        spans.push(Span::styled("  [predict]", t.hidden()));
+    }
+    if !app.entry().edits.is_empty() {
+        spans.push(Span::styled(
+            format!("  [edited ×{}]", app.entry().edits.len()),
+            t.warning(),
+        ));
+    }
+    Paragraph::new(Line::from(spans)).render(area, buf);
+}
+
+fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    if let Some(s) = &app.status {
+        let style = if s.error { t.error() } else { t.info() };
+        Paragraph::new(Line::styled(format!(" {}", s.text), style)).render(area, buf);
+        return;
+    }
+    let keys: &[(&str, &str)] = match app.mode {
+        Mode::Edit(ref f) if f.input.is_some() => {
+            &[("Enter", "set"), ("Esc", "cancel"), ("Ctrl-U", "clear")]
+        }
+        Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
+        Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
+        Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
+        Mode::Help => &[("any key", "closes this help")],
+        Mode::Normal => &[
+            ("←→", "stage"),
+            ("⇥", "contact"),
+            ("↑↓", "lesson"),
+            ("e", "edit"),
+            ("p", "predict"),
+            ("w", "write"),
+            ("v", "plane"),
+            ("z", "zoom"),
+            ("r", "reset"),
+            ("?", "help"),
+            ("q", "quit"),
+        ],
+    };
+    // Drop keys from the end (but never help and quit) until the bar fits.
+    let cost = |(k, w): &(&str, &str)| super::wrap::width(k) + super::wrap::width(w) + 3;
+    let split = if matches!(app.mode, Mode::Normal) {
+        keys.len() - 2
+    } else {
+        keys.len()
+    };
+    let (head, tail) = keys.split_at(split);
+    // The last item needs no trailing gap.
+    let mut room = (area.width as usize + 2).saturating_sub(tail.iter().map(cost).sum());
+    let mut shown: Vec<&(&str, &str)> = Vec::new();
+    for item in head {
+        if cost(item) > room {
+            break;
+        }
+        room -= cost(item);
+        shown.push(item);
+    }
+    shown.extend(tail);
+    let mut spans = vec![];
+    for (i, (k, what)) in shown.into_iter().enumerate() {
+        if i > 0 {
+            spans.push(Span::raw("  "));
+        }
+        spans.push(Span::styled(*k, t.key()));
+        spans.push(Span::raw(format!(" {what}")));
+    }
+    Paragraph::new(Line::from(spans)).render(area, buf);
+}
+
+fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(" Checks ", t.title()));
+    let lines: Vec<Line> = if !app.shown("checks") {
+        vec![Line::styled(
+            "Hidden in predict mode until the Checks stage is revealed.",
+            t.hidden(),
+        )]
+    } else {
+        let step = app.trace.stage("checks");
+        let rows: Vec<(&str, Style, String, String)> = app
+            .trace
+            .verdicts
+            .iter()
+            .map(|v| {
+                let (mark, style) = match v.passed {
+                    Some(true) => ("✓", t.pass()),
+                    Some(false) => ("✗", t.fail()),
+                    None => ("·", t.dim()),
+                };
+                let detail = match step {
+                    Some(s) => app.fmt.fill(&v.detail, s, false),
+                    None => v.detail.clone(),
+                };
+                (mark, style, v.label.clone(), detail)
+            })
+            .collect();
+        // With no room for every detail, the verdicts alone.
+        let inner = block.inner(area);
+        let needed: usize = rows
+            .iter()
+            .map(|(_, _, label, detail)| {
+                super::wrap::wrap(&format!("✓ {label}: {detail}"), inner.width as usize, 0).len()
+            })
+            .sum();
+        let details = needed <= inner.height as usize;
+        rows.into_iter()
+            .map(|(mark, style, label, detail)| {
+                let mut spans = vec![Span::styled(mark, style), Span::raw(format!(" {label}"))];
+                if details {
+                    spans.push(Span::raw(": "));
+                    spans.push(Span::styled(detail, t.dim()));
+                }
+                Line::from(spans)
+            })
+            .collect()
+    };
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .block(block)
+        .render(area, buf);
+}

@@ -1,0 +1,122 @@
+//! `w`: the worked solution as a Markdown file, written atomically (a temporary
+//! file in the same directory, then linked or renamed into place) and never
+//! over an existing file unless the user said so.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use crate::format::Fmt;
+use crate::render::markdown;
+use crate::trace::Trace;
+
+/// A file name for the trace: `lecture-2-contact-0.md`.
+pub fn default_name(trace: &Trace) -> String {
+    format!(
+        "{}-contact-{}.md",
+        crate::commands::file_stem(&trace.lesson),
+        trace.contact
+    )
+}
+
+/// The Markdown document of `render::markdown` for one contact, with the
+/// edits made in the TUI listed after the lesson's preamble.
+pub fn markdown(trace: &Trace, edits: &[String], fmt: &Fmt) -> String {
+    let mut out = markdown::preamble(trace, 1);
+    if !edits.is_empty() {
+        out.push_str("Edited in contact-lab (these differ from the lesson file):\n\n");
+        for e in edits {
+            out.push_str(&format!("- {}\n", markdown::escape(e)));
+        }
+        out.push('\n');
+    }
+    out.push_str(&markdown::contact(trace, fmt, 2, None));
+    out.truncate(out.trim_end().len());
+    out.push('\n');
+    out
+}
+
+/// Why a write did not happen.
+#[derive(Debug)]
+pub enum WriteError {
+    /// The file is there and `overwrite` was false: ask first.
+    Exists(PathBuf),
+    Io(String),
+}
+
+/// Writes `text` to `path` atomically. Without `overwrite`, an existing file
+/// is left alone and [`WriteError::Exists`] returned.
+pub fn write_atomic(path: &Path, text: &str, overwrite: bool) -> Result<(), WriteError> {
+    let io = |e: std::io::Error| WriteError::Io(format!("{}: {e}", path.display()));
+    if !overwrite && path.exists() {
+        return Err(WriteError::Exists(path.to_path_buf()));
+    }
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+    let tmp = dir.join(format!(
+        ".{}.{}.tmp",
+        name.unwrap_or_else(|| "contact-lab".into()),
+        std::process::id()
+    ));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp).map_err(io)?;
+        f.write_all(text.as_bytes()).map_err(io)?;
+        f.sync_all().map_err(io)?;
+        drop(f);
+        if overwrite {
+            return std::fs::rename(&tmp, path).map_err(io);
+        }
+        // A hard link fails if the name exists, so a file that appeared since
+        // the check above is still not replaced.
+        match std::fs::hard_link(&tmp, path) {
+            Ok(()) => Ok(()),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                Err(WriteError::Exists(path.to_path_buf()))
+            }
+            // A file system without hard links: rename (the check above stands).
+            Err(_) => std::fs::rename(&tmp, path).map_err(io),
+        }
+    })();
+    let _ = std::fs::remove_file(&tmp);
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("contact-lab-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn never_overwrites_without_asking() {
+        let d = dir("write");
+        let p = d.join("a.md");
+        write_atomic(&p, "one", false).unwrap();
+        assert!(matches!(
+            write_atomic(&p, "two", false),
+            Err(WriteError::Exists(_))
+        ));
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "one");
+        write_atomic(&p, "three", true).unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "three");
+        let left: Vec<_> = std::fs::read_dir(&d).unwrap().collect();
+        assert_eq!(left.len(), 1, "no temporary file left behind");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn missing_directory_is_an_error() {
+        let p = std::env::temp_dir().join("contact-lab-no-such-dir-xyz/a.md");
+        assert!(matches!(
+            write_atomic(&p, "x", false),
+            Err(WriteError::Io(_))
+        ));
+    }
+}

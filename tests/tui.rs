@@ -1,0 +1,464 @@
+//! The TUI driven by scripted keys into a `TestBackend` (gitui style): screen
+//! snapshots at 100×30 and 80×24, style assertions where highlighting
+//! matters, every lesson at every size without a panic, refused edits.
+
+mod common;
+
+use contact_lab::trace::Value;
+use contact_lab::tui::app::Mode;
+use contact_lab::tui::{self, App, Theme};
+use ratatui::backend::TestBackend;
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::style::{Color, Modifier};
+use ratatui::Terminal;
+
+const SIZES: [(u16, u16); 2] = [(100, 30), (80, 24)];
+
+fn app(lesson: &str, color: bool) -> App {
+    let (lessons, at) = tui::lessons(Some(lesson)).expect("lesson loads");
+    App::new(lessons, at, 0, Theme { color })
+}
+
+fn term(w: u16, h: u16) -> Terminal<TestBackend> {
+    Terminal::new(TestBackend::new(w, h)).unwrap()
+}
+
+fn draw(t: &mut Terminal<TestBackend>, app: &App) {
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+}
+
+fn key(app: &mut App, code: KeyCode) {
+    app.key(KeyEvent::new(code, KeyModifiers::NONE));
+}
+
+fn ctrl(app: &mut App, c: char) {
+    app.key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::CONTROL));
+}
+
+fn type_text(app: &mut App, text: &str) {
+    for c in text.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+/// Opens the edit form on the field labelled `label` and types `value`.
+fn edit(app: &mut App, label: &str, value: &str) {
+    key(app, KeyCode::Char('e'));
+    let Mode::Edit(form) = &app.mode else {
+        panic!("e opens the form")
+    };
+    let at = form
+        .fields
+        .iter()
+        .position(|f| f.label == label)
+        .unwrap_or_else(|| panic!("no field {label}"));
+    for _ in 0..at {
+        key(app, KeyCode::Down);
+    }
+    key(app, KeyCode::Enter);
+    ctrl(app, 'u');
+    type_text(app, value);
+    key(app, KeyCode::Enter);
+}
+
+fn snapshot(name: &str, t: &Terminal<TestBackend>) {
+    common::snapshot_settings().bind(|| insta::assert_snapshot!(name, t.backend()));
+}
+
+/// Row `y` of the buffer as text.
+fn row(buf: &Buffer, y: u16) -> String {
+    (0..buf.area.width).map(|x| buf[(x, y)].symbol()).collect()
+}
+
+/// Position of the first cell where `text` starts.
+fn find(buf: &Buffer, text: &str) -> (u16, u16) {
+    for y in 0..buf.area.height {
+        let r = row(buf, y);
+        if let Some(byte) = r.find(text) {
+            let x = r[..byte].chars().count() as u16;
+            return (x, y);
+        }
+    }
+    panic!("'{text}' is not on the screen:\n{}", buffer_text(buf));
+}
+
+fn buffer_text(buf: &Buffer) -> String {
+    (0..buf.area.height)
+        .map(|y| row(buf, y))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn impulse(app: &App) -> f64 {
+    match app.trace.value("impulse", "impulse_world") {
+        Some(Value::Vector(v)) => v[1],
+        other => panic!("impulse_world: {other:?}"),
+    }
+}
+
+#[test]
+fn step_through_every_stage_of_lecture_2() {
+    for (w, h) in SIZES {
+        let mut a = app("lecture-2", true);
+        let mut t = term(w, h);
+        for page in 0..a.pages() {
+            draw(&mut t, &a);
+            assert_eq!(a.page, page);
+            snapshot(&format!("tui_lecture-2_{w}x{h}_page{page}"), &t);
+            key(&mut a, KeyCode::Right);
+        }
+        assert_eq!(a.page, a.pages() - 1, "→ stops at the last stage");
+    }
+}
+
+#[test]
+fn editing_restitution_to_half_changes_the_impulse() {
+    for (w, h) in SIZES {
+        let mut a = app("lecture-2", true);
+        let mut t = term(w, h);
+        let before = impulse(&a);
+        edit(&mut a, "restitution", "0.5");
+        draw(&mut t, &a);
+        snapshot(&format!("tui_edit_restitution_form_{w}x{h}"), &t);
+        let after = impulse(&a);
+        // Δv = 1.5 · 1.25 instead of 1.8 · 1.25: the impulse scales by 1.5 / 1.8.
+        assert!(
+            (after / before - 1.5 / 1.8).abs() < 1e-12,
+            "{before} → {after}"
+        );
+        key(&mut a, KeyCode::Esc);
+        assert_eq!(a.mode, Mode::Normal);
+        for _ in 0..4 {
+            key(&mut a, KeyCode::Right);
+        }
+        draw(&mut t, &a);
+        snapshot(&format!("tui_edit_restitution_impulse_{w}x{h}"), &t);
+        // The changed result is marked and styled as changed.
+        let buf = t.backend().buffer();
+        let (x, y) = find(buf, "= 15.6114");
+        assert_eq!(buf[(x, y)].fg, Color::Yellow);
+        assert!(buf[(x, y)].modifier.contains(Modifier::UNDERLINED));
+        let mark = row(buf, y);
+        assert!(mark.contains('●'), "changed line has a marker: {mark}");
+        // r restores the lesson's values.
+        key(&mut a, KeyCode::Char('r'));
+        assert_eq!(impulse(&a), before);
+        assert!(a.entry().edits.is_empty());
+    }
+}
+
+#[test]
+fn refused_edits_keep_the_old_value() {
+    let mut a = app("lecture-2", true);
+    let trace = a.trace.clone();
+    let mut t = term(80, 24);
+    edit(&mut a, "cube: mass", "NaN");
+    draw(&mut t, &a);
+    snapshot("tui_edit_refused_nan_mass_80x24", &t);
+    let Mode::Edit(form) = &a.mode else {
+        panic!("the form stays open")
+    };
+    assert!(form.error.as_deref().unwrap().contains("mass must be > 0"));
+    assert_eq!(
+        form.input.as_deref(),
+        Some("NaN"),
+        "the typed text stays to correct"
+    );
+    for bad in ["-10", "0", "inf"] {
+        ctrl(&mut a, 'u');
+        type_text(&mut a, bad);
+        key(&mut a, KeyCode::Enter);
+        let Mode::Edit(form) = &a.mode else { panic!() };
+        assert!(form.error.is_some(), "mass {bad} is refused");
+    }
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Esc);
+    edit(&mut a, "restitution", "nan");
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Esc);
+    edit(&mut a, "cube: velocity", "1, NaN, 0");
+    let Mode::Edit(form) = &a.mode else { panic!() };
+    assert!(form.error.as_deref().unwrap().contains("finite"));
+    assert_eq!(a.entry().lesson.bodies[0].mass, 10.0);
+    assert_eq!(a.entry().lesson.contacts[0].restitution, 0.8);
+    assert!(a.entry().edits.is_empty());
+    assert_eq!(a.trace, trace, "nothing was solved again");
+}
+
+#[test]
+fn predict_mode_hides_results_until_revealed() {
+    for (w, h) in SIZES {
+        let mut a = app("lecture-2", true);
+        let mut t = term(w, h);
+        for _ in 0..3 {
+            key(&mut a, KeyCode::Right);
+        }
+        key(&mut a, KeyCode::Char('p'));
+        draw(&mut t, &a);
+        snapshot(&format!("tui_predict_hidden_{w}x{h}"), &t);
+        let buf = t.backend().buffer();
+        let (x, y) = find(buf, "= ?");
+        assert_eq!(
+            buf[(x + 2, y)].fg,
+            Color::Magenta,
+            "the hidden result stands out"
+        );
+        assert!(
+            !buffer_text(buf).contains("= -1.25"),
+            "q̇₁ · d̂ is not shown yet"
+        );
+        let _ = find(buf, "Hidden in predict mode");
+        // Space reveals one result at a time, then moves on.
+        key(&mut a, KeyCode::Char(' '));
+        key(&mut a, KeyCode::Char(' '));
+        draw(&mut t, &a);
+        snapshot(&format!("tui_predict_two_revealed_{w}x{h}"), &t);
+        let formulas = a.trace.stages[2].formulas.len();
+        for _ in 2..formulas {
+            key(&mut a, KeyCode::Char(' '));
+        }
+        assert_eq!(a.page, 3, "still on the stage until all is revealed");
+        key(&mut a, KeyCode::Char(' '));
+        assert_eq!(a.page, 4, "then Space moves on");
+    }
+}
+
+#[test]
+fn help_overlay_lists_every_key() {
+    for (w, h) in SIZES {
+        let mut a = app("lecture-2", true);
+        let mut t = term(w, h);
+        key(&mut a, KeyCode::Char('?'));
+        draw(&mut t, &a);
+        snapshot(&format!("tui_help_{w}x{h}"), &t);
+        let text = buffer_text(t.backend().buffer());
+        for (k, _) in contact_lab::tui::event::KEYS {
+            assert!(text.contains(k), "help lists {k}");
+        }
+        key(&mut a, KeyCode::Char('x'));
+        assert_eq!(a.mode, Mode::Normal, "any key closes help");
+        assert!(!a.quit);
+    }
+}
+
+#[test]
+fn highlighting_marks_the_current_stage_skipped_stages_and_results() {
+    let mut a = app("lecture-2", true);
+    let mut t = term(100, 30);
+    for _ in 0..4 {
+        key(&mut a, KeyCode::Right);
+    }
+    draw(&mut t, &a);
+    let buf = t.backend().buffer();
+    let (x, y) = find(buf, "4 Impulse");
+    assert!(
+        buf[(x, y)].modifier.contains(Modifier::REVERSED),
+        "current stage"
+    );
+    let (x, y) = find(buf, "5 Friction");
+    assert_eq!(buf[(x, y)].fg, Color::DarkGray, "skipped stage dimmed");
+    assert!(!buf[(x, y)].modifier.contains(Modifier::REVERSED));
+    let (x, y) = find(buf, "= 18.7337");
+    assert_eq!(buf[(x + 2, y)].fg, Color::Green, "result");
+    let (x, y) = find(buf, "✓");
+    assert_eq!(buf[(x, y)].fg, Color::Green, "passed check");
+}
+
+#[test]
+fn no_color_draws_without_colours() {
+    let mut a = app("two-boxes", false);
+    let mut t = term(100, 30);
+    for keys in [vec![], vec![KeyCode::End], vec![KeyCode::Char('?')]] {
+        for k in keys {
+            key(&mut a, k);
+        }
+        draw(&mut t, &a);
+        let buf = t.backend().buffer();
+        for cell in &buf.content {
+            assert_eq!(cell.fg, Color::Reset, "fg colour with NO_COLOR");
+            assert_eq!(cell.bg, Color::Reset, "bg colour with NO_COLOR");
+        }
+    }
+    // The current stage is still marked, by reversing.
+    key(&mut a, KeyCode::Esc);
+    draw(&mut t, &a);
+    let buf = t.backend().buffer();
+    let (x, y) = find(buf, "▶  9 Checks");
+    assert!(buf[(x + 3, y)].modifier.contains(Modifier::REVERSED));
+}
+
+#[test]
+fn every_lesson_draws_at_every_size_without_panic() {
+    let widths = [
+        1, 2, 3, 7, 20, 40, 59, 60, 61, 79, 80, 99, 100, 101, 140, 200,
+    ];
+    let heights = [1, 2, 3, 5, 10, 17, 18, 19, 23, 24, 30, 45, 60];
+    for lesson in common::all_lessons() {
+        let mut a = app(&lesson.id, true);
+        for k in 0..lesson.contacts.len() {
+            let mut t = term(1, 1);
+            for &w in &widths {
+                for &h in &heights {
+                    // Resize the same terminal, as a user would.
+                    t.backend_mut().resize(w, h);
+                    for page in [0, 1, a.pages() / 2, a.pages() - 1] {
+                        a.page = page;
+                        draw(&mut t, &a);
+                    }
+                    a.zoom = true;
+                    draw(&mut t, &a);
+                    a.zoom = false;
+                }
+            }
+            for mode in [KeyCode::Char('?'), KeyCode::Char('e'), KeyCode::Char('w')] {
+                key(&mut a, mode);
+                for (w, h) in [(1, 1), (60, 18), (200, 60), (80, 24)] {
+                    t.backend_mut().resize(w, h);
+                    draw(&mut t, &a);
+                }
+                key(&mut a, KeyCode::Esc);
+            }
+            for plane in 0..3 {
+                key(&mut a, KeyCode::Char('v'));
+                t.backend_mut().resize(80 + plane, 24);
+                draw(&mut t, &a);
+            }
+            key(&mut a, KeyCode::Tab);
+            assert_eq!(a.contact, (k + 1) % lesson.contacts.len());
+        }
+    }
+}
+
+#[test]
+fn too_small_says_so() {
+    let a = app("lecture-2", true);
+    let mut t = term(59, 24);
+    draw(&mut t, &a);
+    let text = buffer_text(t.backend().buffer());
+    assert!(text.contains("Terminal too small: 59×24"), "{text}");
+}
+
+#[test]
+fn keys_move_between_lessons_contacts_and_stages() {
+    let mut a = app("lecture-2", true);
+    key(&mut a, KeyCode::End);
+    assert_eq!(a.page, a.pages() - 1);
+    key(&mut a, KeyCode::Home);
+    assert_eq!(a.page, 0);
+    key(&mut a, KeyCode::Char('l'));
+    key(&mut a, KeyCode::Char('l'));
+    key(&mut a, KeyCode::Char('h'));
+    assert_eq!(a.page, 1);
+    key(&mut a, KeyCode::Down);
+    assert_eq!(a.trace.lesson, "lecture-3");
+    assert_eq!(a.page, 0, "a new lesson opens on its overview");
+    key(&mut a, KeyCode::Up);
+    key(&mut a, KeyCode::Up);
+    assert_eq!(a.trace.lesson, "lecture-1");
+    key(&mut a, KeyCode::Up);
+    let last = *contact_lab::lesson::embedded::ids().last().unwrap();
+    assert_eq!(a.trace.lesson, last, "wraps around");
+    let mut a = app("spinning-ball", true);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Tab);
+    assert_eq!((a.contact, a.trace.contact, a.page), (1, 1, 1));
+    key(&mut a, KeyCode::BackTab);
+    assert_eq!(a.contact, 0);
+    key(&mut a, KeyCode::Char('v'));
+    assert_eq!(a.plane.name(), "yz");
+    for quit in [
+        KeyEvent::new(KeyCode::Char('q'), KeyModifiers::NONE),
+        KeyEvent::new(KeyCode::Esc, KeyModifiers::NONE),
+        KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL),
+    ] {
+        let mut a = app("lecture-1", true);
+        a.key(quit);
+        assert!(a.quit, "{quit:?} quits");
+    }
+}
+
+#[test]
+fn write_makes_a_markdown_file_and_asks_before_overwriting() {
+    let dir = std::env::temp_dir().join(format!("contact-lab-tui-write-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut a = app("lecture-2", true);
+    a.write_dir = dir.clone();
+    let file = dir.join("lecture-2-contact-0.md");
+    key(&mut a, KeyCode::Char('w'));
+    key(&mut a, KeyCode::Enter);
+    let first = std::fs::read_to_string(&file).expect("written");
+    assert!(first.starts_with("# Cube hits the floor"));
+    assert!(first.contains("&= (0, 18.7337, 0)"), "{first}");
+    assert_eq!(
+        a.status.as_ref().unwrap().text,
+        format!("wrote {}", file.display())
+    );
+    // Edit, write again: the file exists, so the app asks; n keeps it.
+    edit(&mut a, "restitution", "0.5");
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('w'));
+    key(&mut a, KeyCode::Enter);
+    assert!(matches!(a.mode, Mode::Confirm(_)));
+    let mut t = term(80, 24);
+    draw(&mut t, &a);
+    snapshot("tui_write_confirm_80x24", &t);
+    key(&mut a, KeyCode::Char('n'));
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), first);
+    // y overwrites, and the file says what was edited.
+    key(&mut a, KeyCode::Char('w'));
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Char('y'));
+    let second = std::fs::read_to_string(&file).unwrap();
+    assert!(second.contains("- restitution 0.8 → 0.5"), "{second}");
+    assert!(second.contains("&= (0, 15.6114, 0)"), "{second}");
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 1, "no temporary file left: {names:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn without_a_terminal_the_bare_command_prints_the_lesson_list() {
+    let out = assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .assert()
+        .success();
+    let text = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
+    assert!(text.contains("lecture-2"), "{text}");
+}
+
+#[test]
+fn tui_subcommand_needs_a_terminal() {
+    assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(["tui", "lecture-2"])
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("the TUI needs a terminal"));
+    assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(["tui", "no-such-lesson"])
+        .assert()
+        .code(66);
+    assert_cmd::Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(["tui", "lecture-2", "--contact", "3"])
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("--contact 3"));
+}
+
+#[test]
+fn readme_lists_every_tui_key() {
+    let readme = include_str!("../README.md");
+    for (k, what) in contact_lab::tui::event::KEYS {
+        assert!(
+            readme.contains(&format!("| {k} | {what} |")),
+            "README lacks {k}"
+        );
+    }
+}
