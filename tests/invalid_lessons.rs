@@ -68,6 +68,7 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("two-immovable-bodies", 18, 10, "a contact needs at least one movable body"),
     ("unknown-body", 13, 11, "unknown body 'bal' (bodies: ball)"),
     ("unknown-body-after-non-ascii", 18, 19, "unknown body 'ballé' (bodies: bäll, ball)"),
+    ("unknown-body-with-escape", 13, 11, r"unknown body '\u{1b}]0;pwned\u{7}' (bodies: ball)"),
     ("unknown-field-typo", 16, 1, "unknown field `restitutoin`"),
     ("unknown-friction-model", 18, 18, "friction_model must be one of millington"),
     ("unknown-projection", 19, 14, "projection must be \"linear\" or \"nonlinear\", got \"quadratic\""),

@@ -56,6 +56,9 @@ impl LessonDiagnostic {
 
     /// Resolves every note against one text, which they share.
     pub fn resolve(path: &str, text: &str, notes: Vec<Note>) -> Vec<Self> {
+        if notes.is_empty() {
+            return Vec::new();
+        }
         let file = File::new(text);
         notes
             .into_iter()
