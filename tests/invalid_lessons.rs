@@ -53,6 +53,7 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("non-symmetric-tensor", 8, 11, "inertia tensor must be symmetric"),
     ("printed-contact-out-of-range", 19, 11, "printed entry names contact 3 but the lesson has 1"),
     ("printed-unknown-stage", 19, 9, "unknown stage \"impulses\""),
+    ("printed-where-with-escape", 22, 9, "where must not contain control characters (found U+001B)"),
     ("raw-escape-in-comment", 1, 77, "invalid comment character"),
     ("relaxation-above-one", 19, 14, "in [contact.settings]: relaxation must be in (0, 1], got 1.5"),
     ("relaxation-zero", 19, 14, "in [settings]: relaxation must be in (0, 1], got 0"),

@@ -114,8 +114,8 @@ impl Printed {
             value: raw.value.get_ref().clone(),
             component: raw.component,
             printed,
-            location: raw.location.clone(),
-            erratum: raw.erratum.clone(),
+            location: raw.location.get_ref().clone(),
+            erratum: raw.erratum.as_ref().map(|e| e.get_ref().clone()),
         })
     }
 }

@@ -97,8 +97,8 @@ pub struct RawPrinted {
     pub component: Option<usize>,
     pub printed: S<PrintedValue>,
     #[serde(rename = "where")]
-    pub location: String,
-    pub erratum: Option<String>,
+    pub location: S<String>,
+    pub erratum: Option<S<String>>,
 }
 
 /// A printed number keeps its text where given as a string (`"0.10"`), so its

@@ -660,6 +660,13 @@ impl Validator {
             );
             return None;
         }
+        // `check` prints these strings: no control characters.
+        let texts = [("value", Some(&raw.value)), ("where", Some(&raw.location))];
+        for (what, text) in texts.into_iter().chain([("erratum", raw.erratum.as_ref())]) {
+            if let Some(Err(e)) = text.map(|t| rules::text(t.get_ref())) {
+                self.err(text.map_or(0..0, |t| t.span()), format!("{what} {e}"));
+            }
+        }
         match Printed::from_raw(raw) {
             Ok(p) => Some(p),
             Err(note) => {
