@@ -12,6 +12,9 @@ pub enum AppError {
     /// Anything else that went wrong at run time (exit 1).
     #[error("{0}")]
     Runtime(String),
+    /// The output could not be written (exit 1).
+    #[error("cannot write output: {0}")]
+    Output(#[source] std::io::Error),
 }
 
 impl AppError {
@@ -20,8 +23,14 @@ impl AppError {
             AppError::Lesson(LessonError::Missing { .. }) => 66,
             AppError::Lesson(LessonError::Invalid { .. }) => 65,
             AppError::Usage(_) => 2,
-            AppError::Runtime(_) => 1,
+            AppError::Runtime(_) | AppError::Output(_) => 1,
         }
+    }
+
+    /// The reader of the output went away (`contact-lab … | head`): not a
+    /// failure to report, as for any Unix filter.
+    pub fn is_broken_pipe(&self) -> bool {
+        matches!(self, AppError::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
     }
 
     /// The message for stderr: invalid lessons get a snippet per error.

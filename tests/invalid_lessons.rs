@@ -322,3 +322,47 @@ fn command_line_misuse_exits_2_with_a_message() {
         assert!(!r.stderr.contains("panicked"), "{args:?}: {}", r.stderr);
     }
 }
+
+#[test]
+fn a_reader_that_goes_away_ends_the_output_quietly() {
+    // 100 KB of JSON, more than a pipe holds: the write after the reader
+    // has gone fails with a broken pipe, as `contact-lab … | head` does.
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+        .args([
+            "solve",
+            "extreme-normals",
+            "--all-contacts",
+            "--format",
+            "json",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("contact-lab runs");
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn an_unwritable_stderr_still_gives_the_exit_code() {
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let path = format!("{DIR}/negative-mass.toml");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["solve", &path])
+        .stderr(full)
+        .status()
+        .unwrap();
+    assert_eq!(
+        status.code(),
+        Some(65),
+        "eprint! panics (101) on a full stderr"
+    );
+}

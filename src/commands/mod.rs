@@ -79,7 +79,7 @@ pub(crate) fn file_stem(id: &str) -> String {
 }
 
 pub(crate) fn io(e: std::io::Error) -> AppError {
-    AppError::Runtime(format!("cannot write output: {e}"))
+    AppError::Output(e)
 }
 
 /// Loads a lesson, applies the command-line overrides and checks the contact index.
