@@ -366,3 +366,10 @@ fn an_unwritable_stderr_still_gives_the_exit_code() {
         "eprint! panics (101) on a full stderr"
     );
 }
+
+#[cfg(unix)]
+#[test]
+fn an_endless_file_is_refused_after_16_mib() {
+    let stderr = assert_invalid("/dev/zero", 1, 1, "the file is larger than 16 MiB");
+    assert!(stderr.len() < 1_000, "{stderr}");
+}

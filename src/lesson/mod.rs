@@ -11,6 +11,8 @@ pub mod source;
 pub mod syntax;
 pub mod validate;
 
+use std::io::Read;
+
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::{
@@ -93,8 +95,14 @@ impl Lesson {
         if let Some(text) = embedded::find(name) {
             return validate::parse(&embedded::origin(name), text);
         }
-        let path = std::path::Path::new(name);
-        let bytes = std::fs::read(path).map_err(|e| LessonError::Missing {
+        // At most MAX_BYTES + 1 bytes: `solve /dev/zero` must not read forever.
+        let read = std::fs::File::open(name).and_then(|file| {
+            let mut bytes = Vec::new();
+            file.take(validate::MAX_BYTES as u64 + 1)
+                .read_to_end(&mut bytes)?;
+            Ok(bytes)
+        });
+        let bytes = read.map_err(|e| LessonError::Missing {
             path: name.to_string(),
             reason: if e.kind() == std::io::ErrorKind::NotFound {
                 "no such file, and no embedded lesson has this id (see `contact-lab list`)".into()
@@ -102,6 +110,9 @@ impl Lesson {
                 e.to_string()
             },
         })?;
+        if bytes.len() > validate::MAX_BYTES {
+            return Err(validate::too_large(name));
+        }
         validate::parse_bytes(name, &bytes)
     }
 

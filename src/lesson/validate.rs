@@ -138,6 +138,21 @@ pub fn parse_bytes(origin: &str, bytes: &[u8]) -> Result<Lesson, LessonError> {
     }
 }
 
+/// Lesson files larger than this are refused unread (a lesson is a few KB).
+pub const MAX_BYTES: usize = 16 << 20;
+
+/// The error for a file larger than [`MAX_BYTES`].
+pub fn too_large(origin: &str) -> LessonError {
+    let note = Note::new(
+        format!(
+            "the file is larger than {} MiB: a lesson is a small TOML file",
+            MAX_BYTES >> 20
+        ),
+        0..0,
+    );
+    invalid(origin, "", vec![note])
+}
+
 /// At most this many errors of one file are reported; the rest are counted.
 pub const MAX_ERRORS: usize = 20;
 
