@@ -15,9 +15,22 @@ use crate::physics::{FrictionModel, ProjectionMethod, Settings};
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
 pub mod rules {
+    /// The largest magnitude an input may have. Stages multiply at most five
+    /// inputs together (m·v², I·ω², (p − q) × m v, …), so inputs within
+    /// ±10⁶⁰ keep every intermediate below f64's 1.8·10³⁰⁸: no stage can
+    /// overflow to inf, however a valid lesson is written.
+    pub const MAX_MAGNITUDE: f64 = 1e60;
+
+    /// Finite and within ±[`MAX_MAGNITUDE`].
+    pub fn in_range(x: f64) -> bool {
+        x.is_finite() && x.abs() <= MAX_MAGNITUDE
+    }
+
     pub fn finite(x: f64) -> Result<(), String> {
-        if x.is_finite() {
+        if in_range(x) {
             Ok(())
+        } else if x.is_finite() {
+            Err(format!("{x:e} is outside contact-lab's range of ±1e60 (larger inputs could overflow a stage)"))
         } else {
             Err(format!("must be a finite number, got {x}"))
         }
@@ -31,6 +44,10 @@ pub mod rules {
             Err(format!(
                 "mass {m:e} is too small: its inverse 1/m overflows a 64-bit float"
             ))
+        } else if m.is_finite() && !(in_range(m) && in_range(1.0 / m)) {
+            Err(format!(
+                "mass {m:e} is outside contact-lab's range of 1e-60 to 1e60 (use inf for an immovable body)"
+            ))
         } else {
             Ok(())
         }
@@ -43,8 +60,12 @@ pub mod rules {
         }
     }
     pub fn friction(mu: f64) -> Result<(), String> {
-        if mu.is_finite() && mu >= 0.0 {
+        if in_range(mu) && mu >= 0.0 {
             Ok(())
+        } else if mu.is_finite() && mu > 0.0 {
+            Err(format!(
+                "friction coefficient {mu:e} is outside contact-lab's range of 0 to 1e60"
+            ))
         } else {
             Err(format!(
                 "friction coefficient must be a finite number ≥ 0, got {mu}"
@@ -73,7 +94,7 @@ pub mod rules {
         }
     }
     pub fn velocity_limit(x: f64) -> Result<(), String> {
-        if x.is_finite() && x >= 0.0 {
+        if in_range(x) && x >= 0.0 {
             Ok(())
         } else {
             Err(format!(
@@ -82,7 +103,7 @@ pub mod rules {
         }
     }
     pub fn non_negative(x: f64) -> Result<(), String> {
-        if x.is_finite() && x >= 0.0 {
+        if in_range(x) && x >= 0.0 {
             Ok(())
         } else {
             Err(format!("must be a finite number ≥ 0, got {x}"))
@@ -105,7 +126,7 @@ pub mod rules {
         }
     }
     pub fn duration(x: f64) -> Result<(), String> {
-        if x.is_finite() && x > 0.0 {
+        if in_range(x) && x > 0.0 {
             Ok(())
         } else {
             Err(format!("duration must be a finite number > 0, got {x}"))
@@ -221,11 +242,16 @@ impl Validator {
             .get_ref()
             .iter()
             .zip(names)
-            .find(|(x, _)| !x.is_finite());
+            .find(|(x, _)| !rules::in_range(**x));
         if let Some((x, axis)) = bad {
+            let problem = if x.is_finite() {
+                format!("{x:e} is outside ±1e60")
+            } else {
+                format!("got {x}")
+            };
             self.err(
                 value.span(),
-                format!("{what}: every component must be a finite number, got {x} in {axis}"),
+                format!("{what}: every component must be a finite number within ±1e60, {problem} in {axis}"),
             );
         }
         *value.get_ref()
@@ -308,10 +334,15 @@ impl Validator {
         let errors_before = self.errors.len();
         let shape = raw.shape.as_ref().map(|s| *s.get_ref());
         if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
-            if s.dimensions().iter().any(|x| !x.is_finite() || *x <= 0.0) {
+            if s.dimensions()
+                .iter()
+                .any(|x| !rules::in_range(*x) || !rules::in_range(1.0 / x) || *x <= 0.0)
+            {
                 self.err(
                     span.clone(),
-                    format!("body '{name}': shape sizes must be finite and > 0"),
+                    format!(
+                        "body '{name}': shape sizes must be finite and > 0 (within 1e-60 to 1e60)"
+                    ),
                 );
             } else if s == Shape::HalfSpace && movable {
                 self.err(
@@ -450,10 +481,10 @@ impl Validator {
             .iter()
             .enumerate()
             .flat_map(|(r, row)| row.iter().enumerate().map(move |(c, x)| (r + 1, c + 1, *x)));
-        if let Some((r, c, x)) = cells.into_iter().find(|(_, _, x)| !x.is_finite()) {
+        if let Some((r, c, x)) = cells.into_iter().find(|(_, _, x)| !rules::in_range(*x)) {
             self.err(
                 t.span(),
-                format!("body '{name}': every inertia component must be a finite number, got {x} in row {r}, column {c}"),
+                format!("body '{name}': every inertia component must be a finite number within ±1e60, got {x} in row {r}, column {c}"),
             );
         }
         *t.get_ref()
