@@ -4,20 +4,13 @@
 mod common;
 
 use contact_lab::format::Fmt;
-use contact_lab::lesson::validate;
 use contact_lab::render;
 
 #[test]
 fn solve_text_and_json_of_every_lesson() {
     common::snapshot_settings().bind(|| {
         insta::glob!("../lessons", "**/*.toml", |path| {
-            let text = std::fs::read_to_string(path).unwrap();
-            let origin = path
-                .strip_prefix(env!("CARGO_MANIFEST_DIR"))
-                .unwrap_or(path)
-                .display()
-                .to_string();
-            let lesson = validate::parse(&origin, &text).expect("lesson is valid");
+            let lesson = common::lesson_file(path);
             let mut out_text = String::new();
             let mut out_json = String::new();
             for k in 0..lesson.contacts.len() {

@@ -23,11 +23,7 @@ fn verdict<'a>(t: &'a Trace, prefix: &str) -> Option<&'a Verdict> {
 }
 
 fn mark(v: Option<&Verdict>) -> &'static str {
-    match v.and_then(|v| v.passed) {
-        Some(true) => "✓",
-        Some(false) => "✗",
-        None => "–",
-    }
+    v.map_or("–", Verdict::mark)
 }
 
 /// Rows of (label, one cell per model).

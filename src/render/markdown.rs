@@ -125,11 +125,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
     if let Some(checks) = trace.stage("checks") {
         out.push_str(&heading(level + 1, "Verdicts"));
         for v in &trace.verdicts {
-            let mark = match v.passed {
-                Some(true) => "✓",
-                Some(false) => "✗",
-                None => "·",
-            };
+            let mark = v.mark();
             let _ = writeln!(
                 out,
                 "- {mark} {}: {}",

@@ -91,11 +91,7 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
         let _ = writeln!(out);
         let _ = writeln!(out, "Checks");
         for v in &trace.verdicts {
-            let mark = match v.passed {
-                Some(true) => "✓",
-                Some(false) => "✗",
-                None => "·",
-            };
+            let mark = v.mark();
             let _ = writeln!(
                 out,
                 "   {mark} {}: {}",

@@ -3,11 +3,13 @@
 
 mod build;
 pub mod latex;
+mod plane;
 mod scene;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 pub use build::build;
+pub use plane::Plane;
 pub use scene::{BodyView, SceneView, ShapeView};
 
 /// A value a stage takes in or produces.
@@ -114,6 +116,17 @@ pub struct Verdict {
     /// `None` for an informative measurement.
     pub passed: Option<bool>,
     pub detail: String,
+}
+
+impl Verdict {
+    /// ✓ passed, ✗ failed, · informs.
+    pub fn mark(&self) -> &'static str {
+        match self.passed {
+            Some(true) => "✓",
+            Some(false) => "✗",
+            None => "·",
+        }
+    }
 }
 
 /// A body's state after the contact is resolved.

@@ -24,38 +24,7 @@ pub struct Entry {
     pub edits: Vec<String>,
 }
 
-/// The plane the picture shows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Plane {
-    Xy,
-    Yz,
-    Zx,
-}
-
-impl Plane {
-    pub fn next(self) -> Self {
-        match self {
-            Plane::Xy => Plane::Yz,
-            Plane::Yz => Plane::Zx,
-            Plane::Zx => Plane::Xy,
-        }
-    }
-    pub fn name(self) -> &'static str {
-        match self {
-            Plane::Xy => "xy",
-            Plane::Yz => "yz",
-            Plane::Zx => "zx",
-        }
-    }
-    /// World axes drawn across and up.
-    pub fn axes(self) -> (usize, usize) {
-        match self {
-            Plane::Xy => (0, 1),
-            Plane::Yz => (1, 2),
-            Plane::Zx => (2, 0),
-        }
-    }
-}
+pub use crate::trace::Plane;
 
 /// What has the keyboard.
 #[derive(Debug, Clone, PartialEq)]

@@ -126,7 +126,7 @@ struct View {
 
 impl View {
     fn p(&self, v: Vector3<f64>) -> P {
-        let (a, b) = self.plane.axes();
+        let (a, b, _) = self.plane.axes();
         [v[a], v[b]]
     }
 }
@@ -346,7 +346,7 @@ fn picture(scene: &SceneView, view: &View, show: &Show) -> (Picture, [f64; 4]) {
     }
     // Spin about the axis out of the picture: an arc, counter-clockwise
     // for a positive component (the view axes are right-handed).
-    let out_axis = 3 - view.plane.axes().0 - view.plane.axes().1;
+    let out_axis = view.plane.axes().2;
     for b in &movers {
         let p = view.p(v3(b.position));
         let r = size(b.shape, extent);

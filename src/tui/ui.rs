@@ -177,11 +177,12 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
             .verdicts
             .iter()
             .map(|v| {
-                let (mark, style) = match v.passed {
-                    Some(true) => ("✓", t.pass()),
-                    Some(false) => ("✗", t.fail()),
-                    None => ("·", t.dim()),
+                let style = match v.passed {
+                    Some(true) => t.pass(),
+                    Some(false) => t.fail(),
+                    None => t.dim(),
                 };
+                let mark = v.mark();
                 let detail = match step {
                     Some(s) => app.fmt.fill(&v.detail, s, false),
                     None => v.detail.clone(),
