@@ -71,6 +71,11 @@ pub fn run(mut app: App) -> Result<(), AppError> {
 fn run_loop(terminal: &mut ratatui::DefaultTerminal, app: &mut App) -> std::io::Result<()> {
     while !app.quit {
         terminal.draw(|f| f.render_widget(&*app, f.area()))?;
+        // Test builds only: prove the terminal is restored when the app panics.
+        #[cfg(debug_assertions)]
+        if std::env::var_os("CONTACT_LAB_TEST_PANIC").is_some() {
+            panic!("CONTACT_LAB_TEST_PANIC: a deliberate panic after the first frame");
+        }
         match event::next()? {
             event::Event::Key(k) => app.key(k),
             event::Event::Resize => {}
