@@ -111,7 +111,16 @@ fn overview(app: &App) -> Vec<Row> {
         t.formula(),
     ));
     rows.push(Row::new("", Style::new()));
-    for para in tr.summary.split("\n\n") {
+    if app.predict && !tr.summary.is_empty() {
+        // The narrative quotes results: keep them for after the prediction.
+        rows.push(Row::new(
+            "(The lesson's narrative is hidden in predict mode: it quotes results.)",
+            t.dim(),
+        ));
+        rows.push(Row::new("", Style::new()));
+    }
+    let summary = if app.predict { "" } else { tr.summary.as_str() };
+    for para in summary.split("\n\n").filter(|p| !p.trim().is_empty()) {
         rows.push(Row {
             indent: 0,
             ..Row::new(
