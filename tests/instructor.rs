@@ -17,6 +17,20 @@ fn cli() -> Command {
     Command::cargo_bin("contact-lab").unwrap()
 }
 
+/// Runs the CLI with `args`, asserts success, returns stdout as text.
+fn stdout(args: &[&str]) -> String {
+    String::from_utf8(
+        cli()
+            .args(args)
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone(),
+    )
+    .unwrap()
+}
+
 /// Every LaTeX document the tool writes: each lesson's worked solution and
 /// exercise sheets of every kind.
 fn latex_documents() -> Vec<(String, String)> {
@@ -130,14 +144,7 @@ fn latex_is_structurally_valid() {
 
 #[test]
 fn latex_fragment_is_the_body_only() {
-    let out = cli()
-        .args(["solve", "lecture-2", "--format", "latex", "--fragment"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    let text = String::from_utf8(out).unwrap();
+    let text = stdout(&["solve", "lecture-2", "--format", "latex", "--fragment"]);
     assert!(!text.contains("\\documentclass") && !text.contains("\\begin{document}"));
     assert!(text.contains("\\begin{align*}"));
     latex_structure(&text).unwrap();
@@ -234,14 +241,7 @@ fn figure_writes_a_file_with_o_and_stdout_without() {
     svg_ok(&written, "figure -o");
     let leftovers: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
     assert_eq!(leftovers.len(), 1, "only the figure, no temporary file");
-    let stdout = cli()
-        .args(["figure", "lecture-2"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    assert_eq!(String::from_utf8(stdout).unwrap(), written);
+    assert_eq!(stdout(&["figure", "lecture-2"]), written);
     cli()
         .args(["figure", "lecture-2", "--plane", "yz"])
         .assert()
@@ -319,19 +319,14 @@ fn solve_format_combinations() {
         .args(["solve", "friction-cube", "--all-contacts", "--contact", "1"])
         .assert()
         .code(2);
-    let out = cli()
-        .args([
-            "solve",
-            "friction-cube",
-            "--all-contacts",
-            "--format",
-            "json",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = stdout(&[
+        "solve",
+        "friction-cube",
+        "--all-contacts",
+        "--format",
+        "json",
+    ])
+    .into_bytes();
     let all: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(all.as_array().map(Vec::len), Some(2));
 }
@@ -535,23 +530,17 @@ fn exercise_usage_errors() {
 
 #[test]
 fn exercise_sheet_has_questions_and_answers() {
-    let out = cli()
-        .args([
-            "exercise",
-            "--seed",
-            "1",
-            "--count",
-            "5",
-            "--answers",
-            "--format",
-            "md",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    let md = String::from_utf8(out).unwrap();
+    let md = stdout(&[
+        "exercise",
+        "--seed",
+        "1",
+        "--count",
+        "5",
+        "--answers",
+        "--format",
+        "md",
+    ]);
+
     assert_eq!(
         md.matches("\n## Exercise ").count(),
         10,
@@ -559,12 +548,5 @@ fn exercise_sheet_has_questions_and_answers() {
     );
     assert!(md.contains("# Answers"));
     assert!(md.contains("#### 1. Contact frame"));
-    let questions = cli()
-        .args(["exercise", "--seed", "1", "--count", "5"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    assert!(!String::from_utf8(questions).unwrap().contains("# Answers"));
+    assert!(!stdout(&["exercise", "--seed", "1", "--count", "5"]).contains("# Answers"));
 }
