@@ -10,10 +10,12 @@ pub mod body;
 pub mod checks;
 pub mod frame;
 pub mod problem;
+pub mod shape;
 pub mod solve;
 pub mod stages;
 
 pub use body::RigidBody;
+pub use shape::Shape;
 pub use problem::{ContactInput, FrictionModel, Problem, ProjectionMethod, Settings};
 pub use solve::{solve, Solution};
 

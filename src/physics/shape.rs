@@ -1,0 +1,227 @@
+//! Body shapes: inertia tensors, sizes, support points and surface distance.
+//!
+//! Dimensions are `f64` as read from a lesson; the float type of a run only
+//! matters for the state that changes. A half-space is the solid side of the
+//! plane through the body's position, opposite its world `normal`.
+
+use nalgebra::{Matrix3, Vector3};
+
+/// The shape of a body, in the body frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// Solid sphere.
+    Sphere { radius: f64 },
+    /// Thin-shelled sphere (same surface as a solid one, other inertia).
+    HollowSphere { radius: f64 },
+    /// Cuboid with full side lengths along the body axes.
+    Box { sides: [f64; 3] },
+    /// Solid cylinder, axis along body y.
+    Cylinder { radius: f64, height: f64 },
+    /// The plane through the body's position with unit world `normal`; the
+    /// solid side is opposite the normal. Immovable bodies only.
+    HalfSpace { normal: [f64; 3] },
+}
+
+impl Shape {
+    /// Body-frame inertia tensor of a body of mass `m` with this shape, or
+    /// `None` for a half-space (which only an immovable body may be).
+    pub fn inertia(&self, m: f64) -> Option<Matrix3<f64>> {
+        let diag = |a: f64, b: f64, c: f64| Some(Matrix3::from_diagonal(&[a, b, c].into()));
+        match *self {
+            // Solid sphere: I = 2/5 m r².
+            Shape::Sphere { radius: r } => {
+                let i = 0.4 * m * r * r;
+                diag(i, i, i)
+            }
+            // Hollow (thin-shelled) sphere: I = 2/3 m r².
+            Shape::HollowSphere { radius: r } => {
+                let i = 2.0 / 3.0 * m * r * r;
+                diag(i, i, i)
+            }
+            // Solid cuboid with sides x, y, z: I_xx = m/12 (y² + z²), …
+            Shape::Box { sides: [x, y, z] } => {
+                let k = m / 12.0;
+                diag(
+                    k * (y * y + z * z),
+                    k * (x * x + z * z),
+                    k * (x * x + y * y),
+                )
+            }
+            // Solid cylinder, axis along body y: I_yy = ½ m r², I_xx = I_zz = m/12 (3r² + h²).
+            Shape::Cylinder { radius, height } => {
+                let side = m / 12.0 * (3.0 * radius * radius + height * height);
+                diag(side, 0.5 * m * radius * radius, side)
+            }
+            Shape::HalfSpace { .. } => None,
+        }
+    }
+
+    /// Size numbers that must be positive and finite.
+    pub fn dimensions(&self) -> Vec<f64> {
+        match *self {
+            Shape::Sphere { radius } | Shape::HollowSphere { radius } => vec![radius],
+            Shape::Box { sides } => sides.to_vec(),
+            Shape::Cylinder { radius, height } => vec![radius, height],
+            Shape::HalfSpace { .. } => vec![],
+        }
+    }
+
+    /// True for shapes of finite size (everything but the half-space).
+    pub fn is_finite(&self) -> bool {
+        !matches!(self, Shape::HalfSpace { .. })
+    }
+
+    /// Radius of the smallest sphere about the centre that holds the shape
+    /// (`None` for a half-space): the bound the broad phase uses.
+    pub fn bounding_radius(&self) -> Option<f64> {
+        match *self {
+            Shape::Sphere { radius } | Shape::HollowSphere { radius } => Some(radius),
+            Shape::Box { sides } => {
+                Some(0.5 * (sides[0].powi(2) + sides[1].powi(2) + sides[2].powi(2)).sqrt())
+            }
+            Shape::Cylinder { radius, height } => Some(radius.hypot(height / 2.0)),
+            Shape::HalfSpace { .. } => None,
+        }
+    }
+
+    /// Half side lengths of a box, `None` for other shapes.
+    pub fn half_extents(&self) -> Option<Vector3<f64>> {
+        match *self {
+            Shape::Box { sides } => Some(Vector3::from(sides) / 2.0),
+            _ => None,
+        }
+    }
+
+    /// The body-frame point of the shape farthest along body-frame `direction`
+    /// (the support mapping), `None` for a half-space.
+    pub fn support(&self, direction: &Vector3<f64>) -> Option<Vector3<f64>> {
+        let sign = |x: f64| if x < 0.0 { -1.0 } else { 1.0 };
+        match *self {
+            Shape::Sphere { radius } | Shape::HollowSphere { radius } => {
+                let n = direction.norm();
+                Some(if n > 0.0 {
+                    direction * (radius / n)
+                } else {
+                    Vector3::new(radius, 0.0, 0.0)
+                })
+            }
+            Shape::Box { sides } => Some(Vector3::new(
+                sign(direction.x) * sides[0] / 2.0,
+                sign(direction.y) * sides[1] / 2.0,
+                sign(direction.z) * sides[2] / 2.0,
+            )),
+            Shape::Cylinder { radius, height } => {
+                let radial = direction.x.hypot(direction.z);
+                let (x, z) = if radial > 0.0 {
+                    (direction.x * radius / radial, direction.z * radius / radial)
+                } else {
+                    (radius, 0.0)
+                };
+                Some(Vector3::new(x, sign(direction.y) * height / 2.0, z))
+            }
+            Shape::HalfSpace { .. } => None,
+        }
+    }
+
+    /// Signed distance from a body-frame point to the surface (negative
+    /// inside). For a half-space the point is taken relative to the plane's
+    /// point and measured along its normal.
+    pub fn surface_distance(&self, local: &Vector3<f64>) -> f64 {
+        // Distance to a box of half sizes h given |local| − h per axis.
+        let boxed = |d: &[f64]| {
+            let outside = d.iter().map(|x| x.max(0.0).powi(2)).sum::<f64>().sqrt();
+            let inside = d.iter().copied().fold(f64::NEG_INFINITY, f64::max).min(0.0);
+            outside + inside
+        };
+        match *self {
+            Shape::Sphere { radius } | Shape::HollowSphere { radius } => local.norm() - radius,
+            Shape::Box { sides } => {
+                let d: Vec<f64> = (0..3).map(|i| local[i].abs() - sides[i] / 2.0).collect();
+                boxed(&d)
+            }
+            Shape::Cylinder { radius, height } => {
+                let radial = local.x.hypot(local.z) - radius;
+                boxed(&[radial, local.y.abs() - height / 2.0])
+            }
+            Shape::HalfSpace { normal } => local.dot(&Vector3::from(normal)),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inertia_formulas() {
+        let cube = Shape::Box { sides: [12.0; 3] };
+        assert_eq!(cube.inertia(10.0).unwrap()[(0, 0)], 240.0);
+        let ball = Shape::Sphere { radius: 6.0 };
+        assert!((ball.inertia(20.0).unwrap()[(1, 1)] - 288.0).abs() < 1e-12);
+        let shell = Shape::HollowSphere { radius: 3.0 };
+        assert!((shell.inertia(3.0).unwrap()[(2, 2)] - 18.0).abs() < 1e-12);
+        let can = Shape::Cylinder {
+            radius: 1.0,
+            height: 2.0,
+        };
+        let i = can.inertia(12.0).unwrap();
+        assert!((i[(1, 1)] - 6.0).abs() < 1e-12 && (i[(0, 0)] - 7.0).abs() < 1e-12);
+        assert!(Shape::HalfSpace {
+            normal: [0.0, 1.0, 0.0]
+        }
+        .inertia(1.0)
+        .is_none());
+    }
+
+    #[test]
+    fn support_points_lie_on_the_surface_and_farthest_along_the_direction() {
+        let shapes = [
+            Shape::Sphere { radius: 2.0 },
+            Shape::Box {
+                sides: [2.0, 4.0, 6.0],
+            },
+            Shape::Cylinder {
+                radius: 1.5,
+                height: 3.0,
+            },
+        ];
+        let dirs = [
+            Vector3::new(1.0, 0.3, -0.2),
+            Vector3::new(-0.4, -1.0, 0.7),
+            Vector3::new(0.0, 0.0, 1.0),
+        ];
+        for shape in shapes {
+            for d in dirs {
+                let s = shape.support(&d).unwrap();
+                assert!(shape.surface_distance(&s).abs() < 1e-12, "{shape:?} {d}");
+                // No vertex of a fine sample of the surface lies farther along d.
+                let bound = shape.bounding_radius().unwrap();
+                assert!(s.norm() <= bound + 1e-12);
+                assert!(s.dot(&d) >= -1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn distance_to_the_surface() {
+        let cube = Shape::Box { sides: [12.0; 3] };
+        assert!(cube.surface_distance(&Vector3::new(6.0, 6.0, 0.0)).abs() < 1e-12);
+        assert!((cube.surface_distance(&Vector3::new(0.0, 8.0, 0.0)) - 2.0).abs() < 1e-12);
+        assert!((cube.surface_distance(&Vector3::zeros()) + 6.0).abs() < 1e-12);
+        let ball = Shape::Sphere { radius: 2.0 };
+        assert!((ball.surface_distance(&Vector3::new(0.0, 1.0, 0.0)) + 1.0).abs() < 1e-12);
+        let floor = Shape::HalfSpace {
+            normal: [0.0, 1.0, 0.0],
+        };
+        assert_eq!(floor.surface_distance(&Vector3::new(3.0, -0.5, 1.0)), -0.5);
+    }
+
+    #[test]
+    fn bounding_radius_holds_every_corner() {
+        let b = Shape::Box {
+            sides: [2.0, 4.0, 4.0],
+        };
+        assert!((b.bounding_radius().unwrap() - 3.0).abs() < 1e-12);
+        assert_eq!(b.half_extents().unwrap(), Vector3::new(1.0, 2.0, 2.0));
+    }
+}
