@@ -159,7 +159,7 @@ pub fn cube_on_floor(rng: &mut SplitMix64, kind: Kind) -> Scene {
             BodySpec {
                 name: "cube",
                 mass,
-                shape: Shape::Box([side; 3]),
+                shape: Shape::Box { sides: [side; 3] },
                 position,
                 orientation: Some(q),
                 velocity,
@@ -168,7 +168,9 @@ pub fn cube_on_floor(rng: &mut SplitMix64, kind: Kind) -> Scene {
             BodySpec {
                 name: "floor",
                 mass: f64::INFINITY,
-                shape: Shape::HalfSpace,
+                shape: Shape::HalfSpace {
+                    normal: [0.0, 1.0, 0.0],
+                },
                 position: [point[0], round4(point[1] + pen), 0.0],
                 orientation: None,
                 velocity: [0.0; 3],
@@ -192,9 +194,9 @@ fn direction(rng: &mut SplitMix64, upward: bool) -> [f64; 3] {
 
 fn sphere_shape(rng: &mut SplitMix64, radius: f64) -> Shape {
     if rng.coin() {
-        Shape::Sphere(radius)
+        Shape::Sphere { radius }
     } else {
-        Shape::HollowSphere(radius)
+        Shape::HollowSphere { radius }
     }
 }
 
@@ -303,7 +305,7 @@ pub fn cube_on_sphere(rng: &mut SplitMix64, kind: Kind) -> Scene {
             BodySpec {
                 name: "cube",
                 mass,
-                shape: Shape::Box([side; 3]),
+                shape: Shape::Box { sides: [side; 3] },
                 position: p1,
                 orientation: Some(q),
                 velocity,
@@ -312,7 +314,7 @@ pub fn cube_on_sphere(rng: &mut SplitMix64, kind: Kind) -> Scene {
             BodySpec {
                 name: "sphere",
                 mass: heavy,
-                shape: Shape::Sphere(radius),
+                shape: Shape::Sphere { radius },
                 position: p2,
                 orientation: None,
                 velocity: [0.0; 3],
@@ -350,15 +352,15 @@ fn list(xs: &[f64]) -> String {
 
 fn shape(s: &Shape) -> String {
     match s {
-        Shape::Sphere(r) => format!("{{ sphere = {} }}", num(*r)),
-        Shape::HollowSphere(r) => format!("{{ hollow_sphere = {} }}", num(*r)),
-        Shape::Box(b) => format!("{{ box = {} }}", list(b)),
+        Shape::Sphere { radius: r } => format!("{{ sphere = {} }}", num(*r)),
+        Shape::HollowSphere { radius: r } => format!("{{ hollow_sphere = {} }}", num(*r)),
+        Shape::Box { sides: b } => format!("{{ box = {} }}", list(b)),
         Shape::Cylinder { radius, height } => format!(
             "{{ cylinder = {{ radius = {}, height = {} }} }}",
             num(*radius),
             num(*height)
         ),
-        Shape::HalfSpace => "\"half_space\"".into(),
+        Shape::HalfSpace { .. } => "\"half_space\"".into(),
     }
 }
 

@@ -113,12 +113,12 @@ fn short_answers(kind: Kind, t: &Trace) -> Vec<(&'static str, &Value)> {
 
 fn shape(s: &Option<Shape>) -> String {
     match s {
-        Some(Shape::Box([x, y, z])) if x == y && y == z => format!("cube, sides {x}"),
-        Some(Shape::Box([x, y, z])) => format!("box {x} × {y} × {z}"),
-        Some(Shape::Sphere(r)) => format!("solid sphere, r = {r}"),
-        Some(Shape::HollowSphere(r)) => format!("hollow sphere, r = {r}"),
+        Some(Shape::Box { sides: [x, y, z] }) if x == y && y == z => format!("cube, sides {x}"),
+        Some(Shape::Box { sides: [x, y, z] }) => format!("box {x} × {y} × {z}"),
+        Some(Shape::Sphere { radius: r }) => format!("solid sphere, r = {r}"),
+        Some(Shape::HollowSphere { radius: r }) => format!("hollow sphere, r = {r}"),
         Some(Shape::Cylinder { radius, height }) => format!("cylinder, r = {radius}, h = {height}"),
-        Some(Shape::HalfSpace) => "half-space".into(),
+        Some(Shape::HalfSpace { .. }) => "half-space".into(),
         None => "–".into(),
     }
 }

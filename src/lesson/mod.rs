@@ -15,11 +15,12 @@ use std::io::Read;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
+pub use crate::physics::Shape;
 use crate::physics::{
-    c, ContactInput, FrictionModel, Problem, ProjectionMethod, Real, RigidBody, Settings,
+    c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
+    ProjectionMethod, Real, RigidBody, StepParams, World,
 };
 pub use printed::Printed;
-pub use shape::Shape;
 pub use source::{LessonDiagnostic, LessonError};
 
 /// A validated lesson: every number finite, every reference resolved.
@@ -34,6 +35,8 @@ pub struct Lesson {
     pub bodies: Vec<BodyDef>,
     pub contacts: Vec<ContactDef>,
     pub printed: Vec<Printed>,
+    /// The lesson's `[settings]` table (defaults where absent).
+    pub settings: Settings,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
 }
@@ -77,7 +80,44 @@ pub struct ContactDef {
     pub static_friction: f64,
     pub dynamic_friction: f64,
     pub friction_model: FrictionModel,
-    pub settings: Settings<f64>,
+    /// `[settings]` with this contact's `settings` table over it.
+    pub settings: Settings,
+}
+
+/// The `[settings]` table of a lesson file, as validated: a contact's
+/// parameters plus the last frame's duration (which the world gives the step).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    pub velocity_limit: f64,
+    pub angular_limit: f64,
+    pub relaxation: f64,
+    pub duration: f64,
+    pub projection: ProjectionMethod,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        let contact = ContactParams::<f64>::default();
+        Settings {
+            velocity_limit: contact.velocity_limit,
+            angular_limit: contact.angular_limit,
+            relaxation: contact.relaxation,
+            duration: StepParams::<f64>::default().duration,
+            projection: contact.projection,
+        }
+    }
+}
+
+impl Settings {
+    /// The contact's share of the settings, in float type `T`.
+    pub fn contact_params<T: Real>(&self) -> ContactParams<T> {
+        ContactParams {
+            velocity_limit: c(self.velocity_limit),
+            angular_limit: c(self.angular_limit),
+            relaxation: c(self.relaxation),
+            projection: self.projection,
+        }
+    }
 }
 
 /// Command-line or TUI overrides applied to every contact before solving.
@@ -178,48 +218,70 @@ impl Lesson {
         moved.problem(k)
     }
 
-    /// The physics input of contact `k`, in float type `T`. Immovable bodies
-    /// become empty slots.
+    /// The physics input of contact `k`, in float type `T`: a view of the
+    /// lesson's world. Immovable bodies become empty slots.
     pub fn problem<T: Real>(&self, k: usize) -> Problem<T> {
-        let def = &self.contacts[k];
-        let body = |i: Option<usize>| {
-            let b = &self.bodies[i?];
-            if !b.movable() {
-                return None;
-            }
-            let inertia = b.inertia.unwrap_or_else(Matrix3::identity);
-            let inverse = inertia.try_inverse().unwrap_or_else(Matrix3::zeros);
-            Some(RigidBody {
-                mass: c(b.mass),
-                inverse_mass: c(1.0 / b.mass),
+        self.world::<T>().problem(k)
+    }
+
+    /// The lesson as a world of bodies by id (the same indices as `bodies`)
+    /// and contacts between them, in float type `T`.
+    pub fn world<T: Real>(&self) -> World<T> {
+        let bodies = self.bodies.iter().map(BodyDef::body).collect();
+        let contacts = self
+            .contacts
+            .iter()
+            .map(|def| Contact {
+                body1: BodyId(def.bodies.0),
+                body2: def.bodies.1.map(BodyId),
+                input: ContactInput {
+                    point: def.point.map(c),
+                    normal: def.normal.map(c),
+                    penetration: c(def.penetration),
+                    restitution: c(def.restitution),
+                    static_friction: c(def.static_friction),
+                    dynamic_friction: c(def.dynamic_friction),
+                    friction_model: def.friction_model,
+                    settings: def.settings.contact_params(),
+                },
+                duration: (def.settings.duration != self.settings.duration)
+                    .then(|| c(def.settings.duration)),
+            })
+            .collect();
+        World {
+            bodies,
+            contacts,
+            step: StepParams {
+                duration: c(self.settings.duration),
+            },
+        }
+    }
+}
+
+impl BodyDef {
+    /// The physics body, in float type `T`.
+    fn body<T: Real>(&self) -> Body<T> {
+        let position = self.position.map(c);
+        let orientation = Quaternion::from(self.orientation.coords.map(c));
+        if !self.movable() {
+            return Body::immovable(position, orientation, self.shape);
+        }
+        let inertia = self.inertia.unwrap_or_else(Matrix3::identity);
+        let inverse = inertia.try_inverse().unwrap_or_else(Matrix3::zeros);
+        Body {
+            state: RigidBody {
+                mass: c(self.mass),
+                inverse_mass: c(1.0 / self.mass),
                 inertia_body: inertia.map(c),
                 inverse_inertia_body: inverse.map(c),
-                position: b.position.map(c),
-                orientation: Quaternion::from(b.orientation.coords.map(c)),
-                velocity: b.velocity.map(c),
-                angular_velocity: b.angular_velocity.map(c),
-                acceleration: b.acceleration.map(c),
-            })
-        };
-        let s = def.settings;
-        Problem {
-            bodies: [body(Some(def.bodies.0)), body(def.bodies.1)],
-            contact: ContactInput {
-                point: def.point.map(c),
-                normal: def.normal.map(c),
-                penetration: c(def.penetration),
-                restitution: c(def.restitution),
-                static_friction: c(def.static_friction),
-                dynamic_friction: c(def.dynamic_friction),
-                friction_model: def.friction_model,
-                settings: Settings {
-                    velocity_limit: c(s.velocity_limit),
-                    angular_limit: c(s.angular_limit),
-                    relaxation: c(s.relaxation),
-                    duration: c(s.duration),
-                    projection: s.projection,
-                },
+                position,
+                orientation,
+                velocity: self.velocity.map(c),
+                angular_velocity: self.angular_velocity.map(c),
+                acceleration: self.acceleration.map(c),
             },
+            shape: self.shape,
+            movable: true,
         }
     }
 }

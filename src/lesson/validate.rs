@@ -9,8 +9,9 @@ use super::printed::Printed;
 use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
+use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
-use crate::physics::{FrictionModel, ProjectionMethod, Settings};
+use crate::physics::{FrictionModel, ProjectionMethod};
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
@@ -316,6 +317,7 @@ impl Validator {
             bodies,
             contacts,
             printed,
+            settings: defaults,
             warnings: Vec::new(),
         }
     }
@@ -332,7 +334,7 @@ impl Validator {
         );
         let movable = mass.is_finite() && rules::mass(mass).is_ok();
         let errors_before = self.errors.len();
-        let shape = raw.shape.as_ref().map(|s| *s.get_ref());
+        let shape: Option<Shape> = raw.shape.as_ref().map(|s| Shape::from(*s.get_ref()));
         if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
             if s.dimensions()
                 .iter()
@@ -344,7 +346,7 @@ impl Validator {
                         "body '{name}': shape sizes must be finite and > 0 (within 1e-60 to 1e60)"
                     ),
                 );
-            } else if s == Shape::HalfSpace && movable {
+            } else if !s.is_finite() && movable {
                 self.err(
                     span,
                     format!("body '{name}': a half-space must be immovable (mass = inf)"),
@@ -368,7 +370,7 @@ impl Validator {
                         Note::new(
                             format!(
                                 "body '{name}': the inertia tensor given differs from the {}: given {}, the shape gives {}; the given tensor is used",
-                                shape.map(|s| s.describe()).unwrap_or_default(),
+                                shape.as_ref().map(super::shape::describe).unwrap_or_default(),
                                 tensor(t),
                                 tensor(&s)
                             ),
@@ -382,7 +384,7 @@ impl Validator {
             (Some((t, _)), None) => Some(*t),
             (None, Some(s)) => Some(s),
             (None, None) => {
-                if movable && shape != Some(Shape::HalfSpace) {
+                if movable && shape.is_none_or(|s| s.is_finite()) {
                     self.err(
                         raw.name.span(),
                         format!("body '{name}' needs an `inertia` tensor or a `shape`"),
@@ -531,7 +533,7 @@ impl Validator {
         }
     }
 
-    fn settings(&mut self, raw: &RawSettings, base: Settings<f64>, table: &str) -> Settings<f64> {
+    fn settings(&mut self, raw: &RawSettings, base: Settings, table: &str) -> Settings {
         let mut s = base;
         let what = format!("in {table}");
         if let Some(x) = &raw.velocity_limit {
@@ -566,7 +568,7 @@ impl Validator {
         raw: &RawContact,
         (by_name, raw_bodies): (&HashMap<&str, usize>, &[RawBody]),
         bodies: &[BodyDef],
-        defaults: Settings<f64>,
+        defaults: Settings,
     ) -> ContactDef {
         if let Some(n) = &raw.name {
             if let Err(e) = rules::name(n.get_ref()) {

@@ -11,7 +11,7 @@ use crate::physics::checks::CheckKind;
 use crate::physics::solve::{Skip, Solution};
 use crate::physics::stages::friction::FrictionIssue;
 use crate::physics::stages::*;
-use crate::physics::{FrictionModel, Problem, ProjectionMethod};
+use crate::physics::{FrictionModel, Problem, ProjectionMethod, StageId};
 
 const SUB: [&str; 2] = ["₁", "₂"];
 
@@ -85,11 +85,11 @@ struct B {
 }
 
 impl B {
-    fn new(id: &'static str, title: &'static str) -> Self {
+    fn new(id: StageId) -> Self {
         B {
             step: Step {
                 id,
-                title,
+                title: id.title(),
                 skipped: None,
                 formulas: vec![],
                 inputs: vec![],
@@ -196,7 +196,7 @@ impl Ctx<'_> {
     }
 
     fn contact_frame(&self) -> Step {
-        let mut b = B::new("contact_frame", "Contact frame");
+        let mut b = B::new(StageId::ContactFrame);
         let f = &self.s.frame;
         let c = &self.lesson.contacts[self.k];
         let d = f.normal();
@@ -259,7 +259,7 @@ impl Ctx<'_> {
     }
 
     fn unit_impulse(&self) -> Step {
-        let mut b = B::new("unit_impulse", "Velocity change per unit impulse");
+        let mut b = B::new(StageId::UnitImpulse);
         let u = &self.s.unit;
         let d = self.s.frame.normal();
         b.input("d", d);
@@ -371,7 +371,7 @@ impl Ctx<'_> {
     }
 
     fn desired(&self) -> Step {
-        let mut b = B::new("desired_delta_velocity", "Desired change in velocity");
+        let mut b = B::new(StageId::DesiredDeltaVelocity);
         let dv = &self.s.desired;
         let d = self.s.frame.normal();
         b.input("d", d);
@@ -427,7 +427,7 @@ impl Ctx<'_> {
                 b.input(format!("a{n}"), self.body(i).acceleration);
                 acc.push(format!("{}{{a{n}}}", if i == 1 { "− " } else { "" }));
             }
-            b.input("duration", self.problem.contact.settings.duration);
+            b.input("duration", self.problem.duration);
             b.f(
                 "v_acc",
                 "(a₁ − a₂)·d̂ Δt",
@@ -465,7 +465,7 @@ impl Ctx<'_> {
     }
 
     fn impulse(&self) -> Step {
-        let mut b = B::new("impulse", "Impulse");
+        let mut b = B::new(StageId::Impulse);
         let Some(g) = &self.s.impulse else {
             return b.skipped(skip_reason(Skip::Separating));
         };
@@ -540,8 +540,8 @@ impl Ctx<'_> {
     }
 
     fn friction(&self) -> Step {
-        let mut b = B::new("friction_clamp", "Friction clamp");
-        if let Some(skip) = self.s.skip("friction_clamp") {
+        let mut b = B::new(StageId::FrictionClamp);
+        if let Some(skip) = self.s.skip(StageId::FrictionClamp) {
             return b.skipped(skip_reason(skip));
         }
         let f = self.s.friction.as_ref().expect("friction ran");
@@ -644,7 +644,7 @@ impl Ctx<'_> {
     }
 
     fn apply(&self) -> Step {
-        let mut b = B::new("apply_impulse", "Applying the impulse");
+        let mut b = B::new(StageId::ApplyImpulse);
         let Some(a) = &self.s.applied else {
             return b.skipped(skip_reason(Skip::Separating));
         };
@@ -730,7 +730,7 @@ impl Ctx<'_> {
     }
 
     fn projection(&self) -> Step {
-        let mut b = B::new("nonlinear_projection", "Resolving interpenetration");
+        let mut b = B::new(StageId::NonlinearProjection);
         let Some(p) = &self.s.projection else {
             return b.skipped(skip_reason(Skip::NoPenetration));
         };
@@ -901,9 +901,9 @@ impl Ctx<'_> {
     }
 
     fn orientation(&self) -> Step {
-        let mut b = B::new("orientation_update", "Orientation update");
+        let mut b = B::new(StageId::OrientationUpdate);
         let Some(o) = &self.s.orientation else {
-            return match self.s.skip("orientation_update") {
+            return match self.s.skip(StageId::OrientationUpdate) {
                 Some(Skip::NoPenetration) => {
                     b.skipped("no penetration (d_pen ≤ 0): no projection, so no body turns")
                 }
@@ -976,7 +976,7 @@ impl Ctx<'_> {
     }
 
     fn checks(&self) -> Step {
-        let mut b = B::new("checks", "Checks");
+        let mut b = B::new(StageId::Checks);
         for item in &self.s.checks.items {
             for (name, v) in &item.values {
                 b.value(name.clone(), *v);

@@ -5,8 +5,11 @@ mod build;
 pub mod latex;
 mod plane;
 mod scene;
+mod stage_names;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
+
+use crate::physics::StageId;
 
 pub use build::build;
 pub use plane::Plane;
@@ -82,7 +85,7 @@ pub struct Formula {
 /// One stage of the worked solution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Step {
-    pub id: &'static str,
+    pub id: StageId,
     pub title: &'static str,
     /// Why the stage did not run, when it did not.
     pub skipped: Option<String>,
@@ -157,7 +160,7 @@ pub struct Trace {
 
 impl Trace {
     pub fn stage(&self, id: &str) -> Option<&Step> {
-        self.stages.iter().find(|s| s.id == id)
+        self.stages.iter().find(|s| s.id.json_name() == id)
     }
 
     /// A stage's named value.

@@ -71,12 +71,12 @@ pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Scen
             let slot = slots.iter().position(|s| *s == Some(index));
             let after = slot.and_then(|s| solution.after(&problem, s));
             let shape = match b.shape {
-                Some(Shape::Sphere(r)) | Some(Shape::HollowSphere(r)) => {
+                Some(Shape::Sphere { radius: r }) | Some(Shape::HollowSphere { radius: r }) => {
                     ShapeView::Sphere { radius: r }
                 }
-                Some(Shape::Box(sides)) => ShapeView::Box { sides },
+                Some(Shape::Box { sides }) => ShapeView::Box { sides },
                 Some(Shape::Cylinder { radius, height }) => ShapeView::Cylinder { radius, height },
-                Some(Shape::HalfSpace) => ShapeView::HalfSpace,
+                Some(Shape::HalfSpace { .. }) => ShapeView::HalfSpace,
                 None => ShapeView::Marker,
             };
             BodyView {

@@ -53,7 +53,7 @@ pub fn desired_delta_velocity<T: Real>(
             acceleration += b.acceleration * Problem::<T>::sign(i);
         }
     }
-    let velocity_from_acceleration = acceleration.dot(&d) * contact.settings.duration;
+    let velocity_from_acceleration = acceleration.dot(&d) * problem.duration;
 
     // Lower the restitution: a slow (resting) contact does not bounce.
     let restitution_limited = v_s.abs() < contact.settings.velocity_limit;

@@ -4,7 +4,7 @@ use nalgebra::{Quaternion, Vector3};
 
 use super::checks::{run_checks, CheckInputs, Checks};
 use super::stages::*;
-use super::{Problem, Real};
+use super::{Problem, Real, StageId};
 
 /// Every stage record of one resolved contact. A stage the contact does not
 /// need is `None`; [`Solution::skip`] says why.
@@ -54,10 +54,7 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
         .as_ref()
         .filter(|_| contact.has_friction())
         .map(|g| friction_clamp(problem, &frame, &unit, &desired, g));
-    let final_impulse = friction
-        .as_ref()
-        .map(|f| f.impulse_world)
-        .or(impulse.as_ref().map(|g| g.impulse_world));
+    let final_impulse = final_impulse_world(impulse.as_ref(), friction.as_ref());
     let applied = final_impulse.map(|g| apply_impulse(problem, &frame, &g));
     let projection =
         (contact.penetration > T::zero()).then(|| nonlinear_projection(problem, &frame));
@@ -88,17 +85,19 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
 }
 
 impl<T: Real> Solution<T> {
-    /// The reason a stage was skipped, by stage id; `None` when it ran.
-    pub fn skip(&self, stage: &str) -> Option<Skip> {
+    /// The reason a stage was skipped; `None` when it ran.
+    pub fn skip(&self, stage: StageId) -> Option<Skip> {
         match stage {
-            "impulse" | "apply_impulse" if self.impulse.is_none() => Some(Skip::Separating),
-            "friction_clamp" if self.friction.is_none() => Some(if self.impulse.is_none() {
+            StageId::Impulse | StageId::ApplyImpulse if self.impulse.is_none() => {
+                Some(Skip::Separating)
+            }
+            StageId::FrictionClamp if self.friction.is_none() => Some(if self.impulse.is_none() {
                 Skip::Separating
             } else {
                 Skip::NoFriction
             }),
-            "nonlinear_projection" if self.projection.is_none() => Some(Skip::NoPenetration),
-            "orientation_update" if self.orientation.is_none() => {
+            StageId::NonlinearProjection if self.projection.is_none() => Some(Skip::NoPenetration),
+            StageId::OrientationUpdate if self.orientation.is_none() => {
                 Some(if self.projection.is_none() {
                     Skip::NoPenetration
                 } else {
@@ -111,10 +110,33 @@ impl<T: Real> Solution<T> {
 
     /// The impulse actually applied (after the friction clamp), world space.
     pub fn final_impulse_world(&self) -> Option<Vector3<T>> {
+        final_impulse_world(self.impulse.as_ref(), self.friction.as_ref())
+    }
+
+    /// The impulse actually applied, contact space.
+    pub fn final_impulse_contact(&self) -> Option<Vector3<T>> {
         self.friction
             .as_ref()
-            .map(|f| f.impulse_world)
-            .or(self.impulse.as_ref().map(|g| g.impulse_world))
+            .map(|f| f.impulse_contact)
+            .or(self.impulse.as_ref().map(|g| g.impulse_contact))
+    }
+
+    /// Whether the contact sticks or slides, when friction ran.
+    pub fn regime(&self) -> Option<FrictionRegime> {
+        self.friction.as_ref().map(|f| f.regime)
+    }
+
+    /// True when the contact is closing, so an impulse is applied.
+    pub fn closing(&self) -> bool {
+        self.impulse.is_some()
+    }
+
+    /// κ(M) of the friction matrix, when the 3×3 system was solved.
+    pub fn condition_number(&self) -> Option<T> {
+        self.impulse
+            .as_ref()
+            .and_then(|g| g.solve.as_ref())
+            .map(|s| s.condition_number)
     }
 
     /// State of body slot `i` after velocity and position resolution.
@@ -132,15 +154,12 @@ impl<T: Real> Solution<T> {
     }
 }
 
-/// The stage ids in order (GUIDE §4).
-pub const STAGE_IDS: [&str; 9] = [
-    "contact_frame",
-    "unit_impulse",
-    "desired_delta_velocity",
-    "impulse",
-    "friction_clamp",
-    "apply_impulse",
-    "nonlinear_projection",
-    "orientation_update",
-    "checks",
-];
+/// The impulse applied: the friction clamp's when it ran, else the impulse stage's.
+fn final_impulse_world<T: Real>(
+    impulse: Option<&Impulse<T>>,
+    friction: Option<&FrictionClamp<T>>,
+) -> Option<Vector3<T>> {
+    friction
+        .map(|f| f.impulse_world)
+        .or(impulse.map(|g| g.impulse_world))
+}
