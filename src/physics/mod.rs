@@ -12,6 +12,7 @@ pub mod body;
 pub mod contact;
 pub mod params;
 pub mod shape;
+pub mod step;
 pub mod world;
 
 pub use body::RigidBody;

@@ -3,8 +3,12 @@
 //!
 //! - [`ContactParams`]: how ONE contact is resolved (per contact, overridable);
 //! - [`StepParams`]: what belongs to a time step (the frame's duration);
-//! - [`ResolverParams`]: how a SET of contacts is resolved together.
+//! - [`ResolverParams`]: how a SET of contacts is resolved together;
+//! - [`WorldParams`], [`SleepParams`]: the forces and sleep of a simulation.
 
+use nalgebra::Vector3;
+
+use super::step::SleepMode;
 use super::{c, Real};
 
 /// How friction is modelled.
@@ -180,5 +184,53 @@ impl ResolverParams {
     pub fn velocity_limit(&self, contacts: usize) -> usize {
         self.velocity_iterations
             .unwrap_or(8usize.saturating_mul(contacts))
+    }
+}
+
+/// The forces of a simulated world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WorldParams<T: Real> {
+    /// Uniform acceleration of every movable body (default: (0, −9.81, 0) m/s²).
+    pub gravity: Vector3<T>,
+    /// Fraction of linear velocity kept per second, (0, 1]: trades energy
+    /// lost for stability (default: 0.99; 1 = no damping).
+    pub linear_damping: T,
+    /// Fraction of angular velocity kept per second, (0, 1] (default: 0.99).
+    pub angular_damping: T,
+}
+
+impl<T: Real> Default for WorldParams<T> {
+    fn default() -> Self {
+        WorldParams {
+            gravity: Vector3::new(T::zero(), c(-9.81), T::zero()),
+            linear_damping: c(0.99),
+            angular_damping: c(0.99),
+        }
+    }
+}
+
+/// When bodies stop being simulated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SleepParams<T: Real> {
+    /// Whether bodies may sleep: trades the cost of simulating resting bodies
+    /// for the risk of freezing one that should still move (default: true).
+    pub enabled: bool,
+    /// Motion (recency-weighted `v·v + ω·ω`) below which a body sleeps
+    /// (default: 0.3, the reference engine's).
+    pub epsilon: T,
+    /// Per body, as the lecture; or per island of touching bodies (default: body).
+    pub mode: SleepMode,
+    /// Island mode: how long every body of an island must have been slow (default: 0.5 s).
+    pub island_time: T,
+}
+
+impl<T: Real> Default for SleepParams<T> {
+    fn default() -> Self {
+        SleepParams {
+            enabled: true,
+            epsilon: c(0.3),
+            mode: SleepMode::Body,
+            island_time: c(0.5),
+        }
     }
 }
