@@ -15,10 +15,11 @@ use std::io::Read;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
+use crate::physics::params::BoxBoxMode;
 pub use crate::physics::Shape;
 use crate::physics::{
     c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
-    ProjectionMethod, Real, RigidBody, StepParams, World,
+    ProjectionMethod, Real, RigidBody, SleepParams, StepParams, World, WorldParams,
 };
 pub use printed::Printed;
 pub use source::{LessonDiagnostic, LessonError};
@@ -37,6 +38,8 @@ pub struct Lesson {
     pub printed: Vec<Printed>,
     /// The lesson's `[settings]` table (defaults where absent).
     pub settings: Settings,
+    /// Time stepping, when the lesson has `[world]`, `[step]` or `[sleep]`.
+    pub simulation: Option<Simulation>,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
 }
@@ -82,6 +85,65 @@ pub struct ContactDef {
     pub friction_model: FrictionModel,
     /// `[settings]` with this contact's `settings` table over it.
     pub settings: Settings,
+}
+
+/// Restitution and friction of the contacts generated for a body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    pub restitution: f64,
+    pub static_friction: f64,
+    pub dynamic_friction: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            restitution: 0.0,
+            static_friction: 0.0,
+            dynamic_friction: 0.0,
+        }
+    }
+}
+
+impl Material {
+    /// The coefficients of a contact between two bodies, as Box2D combines
+    /// them: restitution the larger, friction the geometric mean √(μ₁μ₂).
+    pub fn combine(&self, other: &Material) -> Material {
+        Material {
+            restitution: self.restitution.max(other.restitution),
+            static_friction: (self.static_friction * other.static_friction).sqrt(),
+            dynamic_friction: (self.dynamic_friction * other.dynamic_friction).sqrt(),
+        }
+    }
+}
+
+/// What `simulate` needs beyond the bodies: forces, the step, sleep, and the
+/// coefficients of generated contacts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Simulation {
+    pub world: WorldParams<f64>,
+    pub box_box: BoxBoxMode,
+    /// `[world]`'s coefficients, the default of every body.
+    pub material: Material,
+    /// Each body's coefficients (the same indices as `Lesson::bodies`).
+    pub materials: Vec<Material>,
+    pub dt: f64,
+    pub steps: u64,
+    pub sleep: SleepParams<f64>,
+}
+
+impl Default for Simulation {
+    fn default() -> Self {
+        Simulation {
+            world: WorldParams::default(),
+            box_box: BoxBoxMode::default(),
+            material: Material::default(),
+            materials: Vec::new(),
+            dt: 1.0 / 60.0,
+            steps: 600,
+            sleep: SleepParams::default(),
+        }
+    }
 }
 
 /// The `[settings]` table of a lesson file, as validated: a contact's

@@ -18,7 +18,10 @@ pub mod world;
 pub use body::RigidBody;
 pub use contact::{checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
-pub use params::{ContactParams, FrictionModel, ProjectionMethod, StepParams};
+pub use params::{
+    ContactParams, FrictionModel, ProjectionMethod, ResolverParams, SleepParams, StepParams,
+    WorldParams,
+};
 pub use shape::Shape;
 pub use world::{Body, BodyId, Contact, World};
 

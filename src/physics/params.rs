@@ -234,3 +234,30 @@ impl<T: Real> Default for SleepParams<T> {
         }
     }
 }
+
+/// Which contacts a pair of boxes generates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum BoxBoxMode {
+    /// One point–face or edge–edge contact, as the reference engine: cheap,
+    /// but a box resting on a box rocks on one point.
+    Single,
+    /// The reference face clipped against the incident face, up to 4 points:
+    /// costs more, stacks stand (default).
+    #[default]
+    Manifold,
+}
+
+impl BoxBoxMode {
+    pub fn name(self) -> &'static str {
+        match self {
+            BoxBoxMode::Single => "single",
+            BoxBoxMode::Manifold => "manifold",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [BoxBoxMode::Single, BoxBoxMode::Manifold]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}

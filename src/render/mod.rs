@@ -1,5 +1,6 @@
 //! Renderers: each reads a [`Trace`](crate::trace::Trace) and shows it.
 
+pub mod chart;
 pub mod check;
 pub mod compare;
 pub mod json;
