@@ -9,6 +9,14 @@ use crate::physics::params::BoxBoxMode;
 use crate::physics::step::SleepMode;
 use crate::physics::Shape;
 
+/// `restitution`, `friction`, `static_friction`, `dynamic_friction` as written.
+type MaterialFields<'a> = (
+    &'a Option<S<f64>>,
+    &'a Option<S<f64>>,
+    &'a Option<S<f64>>,
+    &'a Option<S<f64>>,
+);
+
 /// The most steps a lesson may ask for (a longer run is a loop, not a lesson).
 pub const MAX_STEPS: i64 = 10_000_000;
 
@@ -111,12 +119,7 @@ impl Validator {
         &mut self,
         table: &str,
         base: Material,
-        (restitution, friction, mu_s, mu_d): (
-            &Option<S<f64>>,
-            &Option<S<f64>>,
-            &Option<S<f64>>,
-            &Option<S<f64>>,
-        ),
+        (restitution, friction, mu_s, mu_d): MaterialFields,
     ) -> Material {
         let mut m = base;
         let what = format!("{table} ");

@@ -147,7 +147,7 @@ mod tests {
                 slow_for: 0.0,
             };
             let still = body(0.0);
-            let steps = (1.0 / dt as f64).round() as usize;
+            let steps = (1.0 / dt).round() as usize;
             for _ in 0..steps {
                 update_motion(&mut s, &still, 0.2, dt);
             }
