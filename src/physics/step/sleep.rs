@@ -140,7 +140,7 @@ mod tests {
 
     #[test]
     fn the_average_has_a_one_second_half_life_at_any_frame_rate() {
-        for dt in [1.0 / 30.0, 1.0 / 60.0, 1.0 / 240.0] {
+        for dt in [1.0_f64 / 30.0, 1.0 / 60.0, 1.0 / 240.0] {
             let mut s = SleepState {
                 awake: true,
                 motion: 1.0,
