@@ -16,6 +16,7 @@ use std::io::Read;
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::params::BoxBoxMode;
+pub use crate::physics::params::Material;
 pub use crate::physics::Shape;
 use crate::physics::{
     c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
@@ -85,36 +86,6 @@ pub struct ContactDef {
     pub friction_model: FrictionModel,
     /// `[settings]` with this contact's `settings` table over it.
     pub settings: Settings,
-}
-
-/// Restitution and friction of the contacts generated for a body.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Material {
-    pub restitution: f64,
-    pub static_friction: f64,
-    pub dynamic_friction: f64,
-}
-
-impl Default for Material {
-    fn default() -> Self {
-        Material {
-            restitution: 0.0,
-            static_friction: 0.0,
-            dynamic_friction: 0.0,
-        }
-    }
-}
-
-impl Material {
-    /// The coefficients of a contact between two bodies, as Box2D combines
-    /// them: restitution the larger, friction the geometric mean √(μ₁μ₂).
-    pub fn combine(&self, other: &Material) -> Material {
-        Material {
-            restitution: self.restitution.max(other.restitution),
-            static_friction: (self.static_friction * other.static_friction).sqrt(),
-            dynamic_friction: (self.dynamic_friction * other.dynamic_friction).sqrt(),
-        }
-    }
 }
 
 /// What `simulate` needs beyond the bodies: forces, the step, sleep, and the

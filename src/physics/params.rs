@@ -261,3 +261,34 @@ impl BoxBoxMode {
             .find(|m| m.name() == name)
     }
 }
+
+/// Restitution and friction of the contacts generated for a body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    pub restitution: f64,
+    pub static_friction: f64,
+    pub dynamic_friction: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            restitution: 0.0,
+            static_friction: 0.0,
+            dynamic_friction: 0.0,
+        }
+    }
+}
+
+impl Material {
+    /// The coefficients of a contact between two bodies, as Box2D combines
+    /// them: restitution the larger, friction the geometric mean √(μ₁μ₂).
+    pub fn combine(&self, other: &Material) -> Material {
+        Material {
+            restitution: self.restitution.max(other.restitution),
+            static_friction: (self.static_friction * other.static_friction).sqrt(),
+            dynamic_friction: (self.dynamic_friction * other.dynamic_friction).sqrt(),
+        }
+    }
+}
+
