@@ -2,6 +2,7 @@
 
 pub mod check;
 pub mod compare;
+pub mod figure;
 pub mod json;
 pub mod latex;
 pub mod markdown;
