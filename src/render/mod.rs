@@ -3,6 +3,7 @@
 pub mod chart;
 pub mod check;
 pub mod compare;
+pub mod figure;
 pub mod json;
 pub mod latex;
 pub mod markdown;

@@ -13,7 +13,7 @@ use crate::physics::StageId;
 
 pub use build::build;
 pub use plane::Plane;
-pub use scene::{BodyView, SceneView, ShapeView};
+pub use scene::{BodyView, ContactView, SceneView};
 
 /// A value a stage takes in or produces.
 #[derive(Debug, Clone, PartialEq)]
