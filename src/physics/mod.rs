@@ -8,6 +8,7 @@
 
 pub mod body;
 pub mod checks;
+pub mod exact;
 pub mod frame;
 pub mod problem;
 pub mod shape;
