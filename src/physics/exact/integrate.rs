@@ -114,7 +114,7 @@ fn finish<T: Real>(mut run: Run<T>) -> Result<ImpactOutcome<T>, ExactError> {
     run.close();
     let u0 = run.input.u0;
     let p = run.p;
-    let (p_c, w_c) = run.compression.unwrap_or((p.x, run.w_n));
+    let (p_c, w_c) = run.compression.unwrap_or((p.x, T::zero()));
     let energy_change = p.dot(&u0) + c::<T>(0.5) * p.dot(&(run.k * p));
     let outcome = ImpactOutcome {
         law: run.input.law,
@@ -123,7 +123,7 @@ fn finish<T: Real>(mut run: Run<T>) -> Result<ImpactOutcome<T>, ExactError> {
         velocity: run.u(),
         compression_pn: p_c,
         work_compression: w_c,
-        work_restitution: run.w_n - w_c,
+        work_restitution: run.w_n,
         work_friction: run.w_t,
         energy_change,
         phases: run.phases,

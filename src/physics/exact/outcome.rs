@@ -109,8 +109,11 @@ pub enum Regime {
     Frictionless,
     /// Stuck from the first impulse to the last.
     SticksThroughout,
-    /// Slipped in one constant direction throughout (or started slipping from rest).
+    /// Slipped in one constant direction throughout.
     SlidesThroughout,
+    /// At rest tangentially at first, could not stick, and slipped along the
+    /// consistent direction throughout.
+    StartsSliding,
     /// Slipped in one direction, halted and stuck.
     HaltsAndSticks,
     /// Slipped, halted and slipped again (reversed or, in 3D, resumed elsewhere).
@@ -126,6 +129,7 @@ impl Regime {
             Regime::Frictionless => "frictionless",
             Regime::SticksThroughout => "sticks throughout",
             Regime::SlidesThroughout => "slides throughout",
+            Regime::StartsSliding => "starts sliding",
             Regime::HaltsAndSticks => "halts and sticks",
             Regime::Reverses => "reverses",
             Regime::Rotating => "rotating direction",
@@ -188,6 +192,8 @@ impl<T: Real> ImpactOutcome<T> {
             )
         }) {
             Regime::Reverses
+        } else if has(&|k| matches!(k, PhaseKind::SlipStarts { .. })) {
+            Regime::StartsSliding
         } else if has(&|k| matches!(k, PhaseKind::SlipHalts)) {
             Regime::HaltsAndSticks
         } else if has(&|k| matches!(k, PhaseKind::Sticks { .. })) {

@@ -49,7 +49,9 @@ pub(super) struct Run<'a, T: Real> {
     pub mu_d: T,
     /// Impulse so far (contact space).
     pub p: Vector3<T>,
-    /// Work of the normal impulse and of friction so far.
+    /// Work of the normal impulse in the current phase (compression, then
+    /// restitution: reset at maximum compression, so that W_r = −e² W_c is
+    /// tested without cancellation when e is small) and of friction so far.
     pub w_n: T,
     pub w_t: T,
     /// `(P_c, W_c)` once maximum compression has passed.
@@ -113,7 +115,7 @@ impl<'a, T: Real> Run<'a, T> {
         self.samples.push(Sample {
             p: self.p,
             u,
-            work_normal: self.w_n,
+            work_normal: self.w_n + self.compression.map_or(T::zero(), |(_, w_c)| w_c),
         });
     }
 
@@ -155,9 +157,11 @@ impl<'a, T: Real> Run<'a, T> {
         });
     }
 
-    /// Maximum compression: record P_c and W_c, split the open phase there.
+    /// Maximum compression: record P_c and W_c, split the open phase there;
+    /// W_n counts restitution work from here on.
     pub fn mark_compression(&mut self) {
         self.compression = Some((self.p.x, self.w_n));
+        self.w_n = T::zero();
         let kind = self.close();
         self.instant(PhaseKind::MaxCompression);
         if let Some(mut kind) = kind {
@@ -173,7 +177,7 @@ impl<'a, T: Real> Run<'a, T> {
         -self.input.restitution * self.input.u0.x
     }
 
-    /// The law's end condition as `g ≥ 0`, for a state (P, W_n) after
+    /// The law's end condition as `g ≥ 0`, for a state (P, W_r) after
     /// maximum compression; `None` before it.
     pub fn termination_g(&self, p: &Vector3<T>, w_n: T) -> Option<T> {
         let (p_c, w_c) = self.compression?;
@@ -181,7 +185,7 @@ impl<'a, T: Real> Run<'a, T> {
         Some(match self.input.law {
             RestitutionLaw::Newton => self.u_at(p).x - self.newton_target(),
             RestitutionLaw::Poisson => p.x - (T::one() + e) * p_c,
-            RestitutionLaw::Stronge => w_n - (T::one() - e * e) * w_c,
+            RestitutionLaw::Stronge => w_n + e * e * w_c,
         })
     }
 
@@ -250,9 +254,9 @@ impl<'a, T: Real> Run<'a, T> {
             }
             RestitutionLaw::Poisson => Some((T::one() + e) * p_c - self.p.x),
             RestitutionLaw::Stronge => {
-                // W(δ) = W_n + u_n δ + ½ a_n δ² reaches (1 − e²) W_c: the smaller
+                // W_r(δ) = W_r + u_n δ + ½ a_n δ² reaches −e² W_c: the smaller
                 // positive root of ½ a_n δ² + u_n δ − D = 0, in the stable form.
-                let gap = (T::one() - e * e) * w_c - self.w_n;
+                let gap = -e * e * w_c - self.w_n;
                 if gap <= T::zero() {
                     return Some(T::zero());
                 }
@@ -266,17 +270,24 @@ impl<'a, T: Real> Run<'a, T> {
         }
     }
 
-    /// δ at which |u_t| reaches 0 while slipping along s: the minimum of
-    /// `|u_t + δ a_t|`, when the slip is decelerating and that minimum is zero
-    /// (within the halt threshold, plus rtol of |u_t|).
+    /// δ at which slip along s halts. With friction, where the slip speed
+    /// along s reaches zero, `u_t·s + δ a_t·s = 0`, when it is decelerating:
+    /// friction along s must never act past that point, where it would push
+    /// the slip instead of opposing it. (Along an invariant direction u_t ∥ s;
+    /// a direction settled from the integration leaves a perpendicular part of
+    /// at most the halt threshold, which counts as zero.) Without kinetic
+    /// friction (μ_d = 0) u_t moves on a straight line, and halts only if the
+    /// line passes through zero (within the threshold, plus rtol of |u_t|).
     fn halt_delta(&self, s: &Vector2<T>, u: &Vector3<T>, a: &Vector3<T>) -> Option<T> {
         let (ut, at) = (tangential(u), tangential(a));
-        let decelerating = ut.dot(&at) < T::zero() && (self.mu_d <= T::zero() || s.dot(&at) < T::zero());
-        if !decelerating {
+        if self.mu_d > T::zero() {
+            let rate = at.dot(s);
+            return (rate < T::zero()).then(|| ut.dot(s).max(T::zero()) / -rate);
+        }
+        if ut.dot(&at) >= T::zero() {
             return None;
         }
         let delta = -ut.dot(&at) / at.norm_squared();
-        // A direction settled from the integration is aligned with u_t to rtol only.
         let miss = self.h_stop + c::<T>(2.0) * self.input.tolerance.rtol * ut.norm();
         ((ut + at * delta).norm() <= miss).then_some(delta)
     }

@@ -165,3 +165,50 @@ fn bad_input_is_an_error_not_nan() {
     ));
 }
 
+
+/// Regression: a turning slip that settles just before halting. The closed
+/// form along the settled direction must halt where the slip along it
+/// reaches zero; it once slid on through zero, friction pushing the slip,
+/// and Poisson's law "gained" 0.92 of the collision energy.
+#[test]
+fn settled_slip_halts_instead_of_sliding_through_zero() {
+    let k = Matrix3::new(
+        1.7388473034424412,
+        0.46624820818838675,
+        0.31564866177941586,
+        0.46624820818838675,
+        5.0401475104662286,
+        0.21562849646371895,
+        0.31564866177941586,
+        0.21562849646371895,
+        4.5829779216123985,
+    );
+    let u0 = Vector3::new(-1.599163920814278, -1.2476511142127649, -0.5735371569467951);
+    let mut input = ImpactInput {
+        k,
+        u0,
+        static_friction: 0.5913564399965539,
+        dynamic_friction: 0.5913564399965539,
+        restitution: 0.8333086997745995,
+        law: RestitutionLaw::Poisson,
+        tolerance: Tolerance::default(),
+    };
+    let settled = integrate(&input).unwrap();
+    input.tolerance.always_integrate = true;
+    let forced = integrate(&input).unwrap();
+    assert!(settled.work_friction <= 0.0 && settled.energy_change < 0.0);
+    assert!(settled.phases.iter().any(|p| p.kind == PhaseKind::SlipHalts));
+    assert!(settled.velocity.yz().norm() < 1e-9, "ends stuck: {}", settled.velocity);
+    let diff = (settled.impulse - forced.impulse).norm() / forced.impulse.norm();
+    assert!(diff < 1e-9, "{diff:e}");
+}
+
+/// Stronge's end with a tiny e: W_r = −e² W_c is accumulated from maximum
+/// compression on, not as the difference of two nearly equal totals.
+#[test]
+fn stronge_with_tiny_restitution_stays_exact() {
+    let e = 7.3e-6;
+    let o = integrate(&input(Vector3::new(-1e-3, 0.0, 0.0), 0.0, e, RestitutionLaw::Stronge)).unwrap();
+    let closed = (1.0 + e) * 1e-3 / 2.5;
+    assert!((o.impulse.x - closed).abs() <= 1e-15 * closed, "{:e}", o.impulse.x / closed - 1.0);
+}
