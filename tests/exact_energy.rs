@@ -41,7 +41,7 @@ fn kane_lesson_by_law() {
     // at u = (−e u_n0, 0), the one-shot's target: integrating changes nothing
     // and the +21 % stays. Poisson and Stronge end the restitution earlier
     // (the sticking rod's normal velocity rises slowly) and dissipate.
-    let (newton, one_shot, regime) = gain["newton"];
+    let (newton, one_shot, _) = gain["newton"];
     assert!(one_shot > 0.2 && one_shot < 0.22, "the lesson's +21 %: {one_shot}");
     assert!((newton - one_shot).abs() < 1e-12, "integrated Newton = one-shot: {newton}");
     for law in ["newton", "poisson", "stronge"] {
