@@ -341,4 +341,10 @@ fn f32_follows_f64() {
         let rel = relative(&o32.impulse.cast::<f64>(), &o64.impulse);
         assert!(rel < 1e-3, "{law:?}: {rel:e}");
     }
+    // And from a lesson, through the stages in f32.
+    let lesson = Lesson::load("friction-cube").unwrap();
+    let x64 = exact_impact(&lesson.problem::<f64>(0), RestitutionLaw::Stronge).unwrap();
+    let x32 = exact_impact(&lesson.problem_centred::<f32>(0), RestitutionLaw::Stronge).unwrap();
+    let rel = relative(&x32.impulse_world.cast::<f64>(), &x64.impulse_world);
+    assert!(rel < 1e-5, "{rel:e}");
 }
