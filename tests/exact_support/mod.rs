@@ -3,7 +3,6 @@
 #![allow(dead_code)]
 
 use contact_lab::exercise::rng::SplitMix64;
-use contact_lab::physics::frame::contact_basis;
 use contact_lab::physics::{ContactInput, FrictionModel, Problem, RigidBody, Settings};
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
@@ -154,11 +153,6 @@ pub fn contact_velocity(p: &Problem<f64>) -> Vector3<f64> {
         }
     }
     u
-}
-
-/// The contact basis of a normal (for building contact-space data by hand).
-pub fn basis(normal: &Vector3<f64>) -> Matrix3<f64> {
-    contact_basis(normal).0
 }
 
 /// Rotation about z by `angle` as a `[w, x, y, z]` quaternion.

@@ -9,7 +9,7 @@ use crate::physics::stages::{
     apply_impulse, contact_frame, desired_delta_velocity, unit_impulse, AppliedImpulse,
     ContactFrame,
 };
-use crate::physics::{solve, Problem, Real};
+use crate::physics::{c, solve, Problem, Real};
 
 /// The integrated impact of one contact, with the one-shot answer beside it.
 #[derive(Debug, Clone, PartialEq)]
@@ -79,7 +79,7 @@ impl<T: Real> ExactImpact<T> {
 }
 
 fn gains<T: Real>(before: T, after: T) -> bool {
-    after - before > crate::physics::checks::tolerance::<T>() * before.abs()
+    after - before > T::default_epsilon() * c::<T>(1e4) * before.abs()
 }
 
 /// Integrates the impact of `problem`'s contact under `law`, with the default tolerance.
