@@ -10,6 +10,7 @@
 
 pub mod body;
 pub mod contact;
+pub mod exact;
 pub mod params;
 pub mod shape;
 pub mod step;
