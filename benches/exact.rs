@@ -6,8 +6,10 @@
 use std::hint::black_box;
 
 use contact_lab::lesson::Lesson;
-use contact_lab::physics::exact::{exact_impact, integrate, ImpactInput, RestitutionLaw, Tolerance};
-use contact_lab::physics::{solve, ContactInput, FrictionModel, Problem, RigidBody, ContactParams};
+use contact_lab::physics::exact::{
+    exact_impact, integrate, ImpactInput, RestitutionLaw, Tolerance,
+};
+use contact_lab::physics::{solve, ContactInput, ContactParams, FrictionModel, Problem, RigidBody};
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
@@ -63,7 +65,9 @@ fn bench(c: &mut Criterion) {
     for (name, problem) in cases {
         let mut group = c.benchmark_group(name);
         group.bench_function("one_shot", |b| b.iter(|| solve(black_box(&problem))));
-        let input = exact_impact(&problem, RestitutionLaw::Poisson).unwrap().input;
+        let input = exact_impact(&problem, RestitutionLaw::Poisson)
+            .unwrap()
+            .input;
         for law in RestitutionLaw::ALL {
             let input = ImpactInput {
                 law,

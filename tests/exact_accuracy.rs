@@ -15,7 +15,12 @@ struct Errors {
     residual: Vec<f64>,
 }
 
-fn measure(family: Family, n: usize, seed: u64, compare: impl Fn(&ImpactInput<f64>) -> ImpactInput<f64>) -> Errors {
+fn measure(
+    family: Family,
+    n: usize,
+    seed: u64,
+    compare: impl Fn(&ImpactInput<f64>) -> ImpactInput<f64>,
+) -> Errors {
     let mut rng = SplitMix64::new(seed);
     let mut out = Errors {
         impulse: Vec::new(),
@@ -27,7 +32,8 @@ fn measure(family: Family, n: usize, seed: u64, compare: impl Fn(&ImpactInput<f6
             let x = exact_impact(&problem, law).unwrap();
             let reference = integrate(&compare(&x.input)).unwrap();
             let o = &x.outcome;
-            out.impulse.push((o.impulse - reference.impulse).norm() / reference.impulse.norm());
+            out.impulse
+                .push((o.impulse - reference.impulse).norm() / reference.impulse.norm());
             let scale = collision_energy(&x.input.k, &x.input.u0);
             out.residual.push(o.energy_residual() / scale);
         }
@@ -90,7 +96,8 @@ fn planar_closed_forms_through_the_integrator() {
             let x = exact_impact(&problem, law).unwrap();
             assert_ne!(x.outcome.regime(), Regime::Rotating);
             let integrated = integrate(&forced(&x.input)).unwrap();
-            e.impulse.push((integrated.impulse - x.outcome.impulse).norm() / x.outcome.impulse.norm());
+            e.impulse
+                .push((integrated.impulse - x.outcome.impulse).norm() / x.outcome.impulse.norm());
             let scale = collision_energy(&x.input.k, &x.input.u0);
             e.residual.push(integrated.energy_residual() / scale);
         }

@@ -42,11 +42,25 @@ fn kane_lesson_by_law() {
     // and the +21 % stays. Poisson and Stronge end the restitution earlier
     // (the sticking rod's normal velocity rises slowly) and dissipate.
     let (newton, one_shot, _) = gain["newton"];
-    assert!(one_shot > 0.2 && one_shot < 0.22, "the lesson's +21 %: {one_shot}");
-    assert!((newton - one_shot).abs() < 1e-12, "integrated Newton = one-shot: {newton}");
+    assert!(
+        one_shot > 0.2 && one_shot < 0.22,
+        "the lesson's +21 %: {one_shot}"
+    );
+    assert!(
+        (newton - one_shot).abs() < 1e-12,
+        "integrated Newton = one-shot: {newton}"
+    );
     for law in ["newton", "poisson", "stronge"] {
         assert_eq!(gain[law].2, Regime::HaltsAndSticks, "{law}");
     }
-    assert!(gain["poisson"].0 < -0.3, "Poisson dissipates: {}", gain["poisson"].0);
-    assert!(gain["stronge"].0 < -0.2, "Stronge dissipates: {}", gain["stronge"].0);
+    assert!(
+        gain["poisson"].0 < -0.3,
+        "Poisson dissipates: {}",
+        gain["poisson"].0
+    );
+    assert!(
+        gain["stronge"].0 < -0.2,
+        "Stronge dissipates: {}",
+        gain["stronge"].0
+    );
 }

@@ -10,7 +10,7 @@ use contact_lab::lesson::Lesson;
 use contact_lab::physics::exact::{
     exact_impact, integrate, ExactError, ImpactInput, Regime, RestitutionLaw, Tolerance,
 };
-use contact_lab::physics::{solve, ContactInput, FrictionModel, Problem, RigidBody, ContactParams};
+use contact_lab::physics::{solve, ContactInput, ContactParams, FrictionModel, Problem, RigidBody};
 use exact_support::{about_z, collision_energy, contact, spd, uniform, Family};
 use nalgebra::{Matrix3, Vector3};
 use proptest::prelude::*;
@@ -19,7 +19,13 @@ fn relative(a: &Vector3<f64>, b: &Vector3<f64>) -> f64 {
     (a - b).norm() / b.norm().max(1e-300)
 }
 
-fn kernel(k: Matrix3<f64>, u0: Vector3<f64>, mu: (f64, f64), e: f64, law: RestitutionLaw) -> ImpactInput<f64> {
+fn kernel(
+    k: Matrix3<f64>,
+    u0: Vector3<f64>,
+    mu: (f64, f64),
+    e: f64,
+    law: RestitutionLaw,
+) -> ImpactInput<f64> {
     ImpactInput {
         k,
         u0,
@@ -52,7 +58,11 @@ fn frictionless_lessons_all_laws_equal_the_closed_form() {
                 let closed = -(1.0 + problem.contact.restitution) * u0.x / kk[(0, 0)];
                 let p = exact.outcome.impulse;
                 let id = format!("{} #{k} {law:?}", lesson.id);
-                assert!((p.x - closed).abs() <= 1e-14 * closed, "{id}: {} vs {closed}", p.x);
+                assert!(
+                    (p.x - closed).abs() <= 1e-14 * closed,
+                    "{id}: {} vs {closed}",
+                    p.x
+                );
                 assert_eq!((p.y, p.z), (0.0, 0.0), "{id}");
                 assert_eq!(exact.outcome.regime(), Regime::Frictionless, "{id}");
                 // The one-shot applies the same impulse where it uses the same
@@ -101,7 +111,9 @@ fn sticking_from_the_start_equals_the_one_shot_on_lessons() {
             let g = one_shot.final_impulse_world().unwrap();
             let rel = relative(&exact.impulse_world, &g);
             assert!(rel < 1e-12, "{id} #{k} {law:?}: {rel:e}");
-            assert!(exact.outcome.velocity.y.abs() < 1e-12 && exact.outcome.velocity.z.abs() < 1e-12);
+            assert!(
+                exact.outcome.velocity.y.abs() < 1e-12 && exact.outcome.velocity.z.abs() < 1e-12
+            );
         }
     }
     assert!(sticking >= 9, "only {sticking} sticking cases");
@@ -167,8 +179,18 @@ fn ball_on_a_rough_floor() {
     let (m, radius) = (2.0, 0.5);
     let moment = 0.4 * m * radius * radius;
     for (v, w, mu, e) in [
-        (Vector3::new(1.0, -3.0, 0.5), Vector3::new(2.0, 0.0, -4.0), 0.5, 0.6), // halts, rolls
-        (Vector3::new(4.0, -1.0, -2.0), Vector3::new(0.0, 1.0, 3.0), 0.1, 0.8), // slides throughout
+        (
+            Vector3::new(1.0, -3.0, 0.5),
+            Vector3::new(2.0, 0.0, -4.0),
+            0.5,
+            0.6,
+        ), // halts, rolls
+        (
+            Vector3::new(4.0, -1.0, -2.0),
+            Vector3::new(0.0, 1.0, 3.0),
+            0.1,
+            0.8,
+        ), // slides throughout
     ] {
         let problem = Problem {
             bodies: [
@@ -211,14 +233,21 @@ fn ball_on_a_rough_floor() {
         for law in RestitutionLaw::ALL {
             let exact = exact_impact(&problem, law).unwrap();
             assert_eq!(exact.outcome.regime(), regime, "{law:?}");
-            assert!(relative(&exact.impulse_world, &expected) < 1e-14, "{law:?}: {} vs {expected}", exact.impulse_world);
+            assert!(
+                relative(&exact.impulse_world, &expected) < 1e-14,
+                "{law:?}: {} vs {expected}",
+                exact.impulse_world
+            );
             let after = exact.applied.bodies[0].as_ref().unwrap();
             let spin = w + r.cross(&expected) / moment;
             assert!((after.v - (v + expected / m)).norm() < 1e-14);
             assert!((after.w - spin).norm() < 1e-13);
             if regime == Regime::HaltsAndSticks {
                 let rolling = after.v + after.w.cross(&r);
-                assert!(rolling.x.abs() < 1e-14 && rolling.z.abs() < 1e-14, "rolls: {rolling}");
+                assert!(
+                    rolling.x.abs() < 1e-14 && rolling.z.abs() < 1e-14,
+                    "rolls: {rolling}"
+                );
             }
         }
     }
@@ -265,14 +294,22 @@ fn rod_on_a_rough_floor_slips_back() {
     };
     let exact = exact_impact(&problem, RestitutionLaw::Poisson).unwrap();
     assert_eq!(exact.outcome.regime(), Regime::Reverses);
-    assert!((exact.impulse_world - Vector3::new(0.1, 0.6, 0.0)).norm() < 1e-14, "{}", exact.impulse_world);
+    assert!(
+        (exact.impulse_world - Vector3::new(0.1, 0.6, 0.0)).norm() < 1e-14,
+        "{}",
+        exact.impulse_world
+    );
     let after = exact.applied.bodies[0].as_ref().unwrap();
     assert!((after.v - Vector3::new(0.65, -0.4, 0.0)).norm() < 1e-14);
     assert!((after.w.z + 1.5 * h).abs() < 1e-14, "{}", after.w);
     let r = Vector3::new(-h, -h, 0.0);
     assert!((after.v + after.w.cross(&r) - Vector3::new(-0.1, 0.35, 0.0)).norm() < 1e-14);
     // The energy bookkeeping: bodies' kinetic energy change = P·u0 + ½PᵀKP = −0.1725.
-    assert!((exact.energy_change() + 0.1725).abs() < 1e-14, "{}", exact.energy_change());
+    assert!(
+        (exact.energy_change() + 0.1725).abs() < 1e-14,
+        "{}",
+        exact.energy_change()
+    );
 }
 
 /// The bodies' energy change equals the kernel's ΔE = P·u0 + ½PᵀKP.
@@ -280,13 +317,20 @@ fn rod_on_a_rough_floor_slips_back() {
 fn bodies_energy_change_matches_the_kernel() {
     let mut rng = SplitMix64::new(15);
     for i in 0..300 {
-        let family = [Family::General, Family::Planar, Family::AtRest { planar: false }][i % 3];
+        let family = [
+            Family::General,
+            Family::Planar,
+            Family::AtRest { planar: false },
+        ][i % 3];
         let problem = contact(&mut rng, family);
         for law in RestitutionLaw::ALL {
             let exact = exact_impact(&problem, law).unwrap();
             let scale = collision_energy(&exact.input.k, &exact.input.u0);
             let diff = exact.energy_change() - exact.outcome.energy_change;
-            assert!(diff.abs() < 1e-10 * (scale + exact.energy_before), "{i} {law:?}: {diff:e}");
+            assert!(
+                diff.abs() < 1e-10 * (scale + exact.energy_before),
+                "{i} {law:?}: {diff:e}"
+            );
         }
     }
 }
@@ -299,27 +343,46 @@ fn newton_that_halts_and_sticks_is_the_one_shot() {
     let problem = Lesson::load("friction-cube").unwrap().problem::<f64>(0);
     let exact = exact_impact(&problem, RestitutionLaw::Newton).unwrap();
     assert_eq!(exact.outcome.regime(), Regime::HaltsAndSticks);
-    assert!(exact.impulse_difference_relative() < 1e-12, "{:e}", exact.impulse_difference_relative());
+    assert!(
+        exact.impulse_difference_relative() < 1e-12,
+        "{:e}",
+        exact.impulse_difference_relative()
+    );
     for law in [RestitutionLaw::Poisson, RestitutionLaw::Stronge] {
         let other = exact_impact(&problem, law).unwrap();
-        assert!(other.impulse_difference_relative() > 1e-3, "{law:?} differs from the one-shot");
+        assert!(
+            other.impulse_difference_relative() > 1e-3,
+            "{law:?} differs from the one-shot"
+        );
     }
 }
 
 #[test]
 fn budget_exceeded_is_an_error_not_nan() {
     let k = Matrix3::new(2.5, -1.5, 0.3, -1.5, 2.5, 0.2, 0.3, 0.2, 4.0);
-    let mut input = kernel(k, Vector3::new(-1.0, 0.5, 0.4), (0.3, 0.3), 0.5, RestitutionLaw::Stronge);
+    let mut input = kernel(
+        k,
+        Vector3::new(-1.0, 0.5, 0.4),
+        (0.3, 0.3),
+        0.5,
+        RestitutionLaw::Stronge,
+    );
     assert!(integrate(&input).is_ok());
     input.tolerance.max_steps = 5;
     let err = integrate(&input).unwrap_err();
-    assert!(matches!(err, ExactError::BudgetExceeded { budget: 5, .. }), "{err:?}");
+    assert!(
+        matches!(err, ExactError::BudgetExceeded { budget: 5, .. }),
+        "{err:?}"
+    );
     assert!(err.to_string().contains("budget of 5 steps"), "{err}");
     let mut overflow = input.clone();
     overflow.tolerance.max_steps = 10_000;
     overflow.u0 *= 1e300;
     overflow.k *= 1e300;
-    assert!(integrate(&overflow).is_err(), "1e300 overflows: an error, not inf or NaN");
+    assert!(
+        integrate(&overflow).is_err(),
+        "1e300 overflows: an error, not inf or NaN"
+    );
 }
 
 /// The kernel is generic: f32 follows f64 to its default tolerance.

@@ -68,7 +68,10 @@ fn one_shot_against_exact_by_regime() {
         let sticks = after.yz().norm() <= 1e-9 * first.input.u0.norm();
         let mut impulses = Vec::new();
         for (l, law) in RestitutionLaw::ALL.into_iter().enumerate() {
-            let input = ImpactInput { law, ..first.input.clone() };
+            let input = ImpactInput {
+                law,
+                ..first.input.clone()
+            };
             let o = integrate(&input).unwrap();
             let row = table.entry((l, o.regime())).or_default();
             let error = (one_shot - o.impulse).norm() / o.impulse.norm();
@@ -84,7 +87,11 @@ fn one_shot_against_exact_by_regime() {
             impulses.push((o.impulse, o.regime()));
         }
         let (poisson, stronge) = (impulses[1], impulses[2]);
-        let linear = [Regime::SticksThroughout, Regime::SlidesThroughout, Regime::StartsSliding];
+        let linear = [
+            Regime::SticksThroughout,
+            Regime::SlidesThroughout,
+            Regime::StartsSliding,
+        ];
         if linear.contains(&poisson.1) {
             let diff = (poisson.0 - stronge.0).norm() / poisson.0.norm();
             poisson_stronge_constant = poisson_stronge_constant.max(diff);
@@ -99,7 +106,11 @@ fn one_shot_against_exact_by_regime() {
         // Sticking throughout, every law is the one-shot sticking impulse.
         let sticks = row(l, Regime::SticksThroughout).expect("sticking cases");
         assert!(sticks.errors.len() > 500);
-        assert!(max(&sticks.errors) < 1e-12, "law {l}: {:e}", max(&sticks.errors));
+        assert!(
+            max(&sticks.errors) < 1e-12,
+            "law {l}: {:e}",
+            max(&sticks.errors)
+        );
         assert!(sticks.evals.iter().all(|&n| n == 0), "closed form");
     }
     // Newton that ends stuck ends at u = (−e u_n0, 0): the one-shot sticking impulse.
@@ -113,7 +124,11 @@ fn one_shot_against_exact_by_regime() {
     for l in 0..3 {
         let slides = row(l, Regime::SlidesThroughout).expect("sliding cases");
         assert!(slides.clamped.len() > 500);
-        assert!(max(&slides.clamped) < 1e-12, "law {l}: {:e}", max(&slides.clamped));
+        assert!(
+            max(&slides.clamped) < 1e-12,
+            "law {l}: {:e}",
+            max(&slides.clamped)
+        );
         assert!(slides.one_shot_sticks > 0 && max(&slides.errors) > 1e-2);
     }
     // Elsewhere the one-shot is wrong by more than round-off in most cases.
@@ -127,14 +142,27 @@ fn one_shot_against_exact_by_regime() {
         let numerical = r.evals.iter().any(|&n| n > 0);
         assert_eq!(numerical, *regime == Regime::Rotating, "{regime:?}");
     }
-    assert!(poisson_stronge_constant < 1e-12, "{poisson_stronge_constant:e}");
+    assert!(
+        poisson_stronge_constant < 1e-12,
+        "{poisson_stronge_constant:e}"
+    );
     // Stronge's law never gains energy (ΔE = (1 − e²) W_c + W_t ≤ 0). Newton's
     // does (Kane 1984; Stronge 1991), and only once slip has halted: with the
     // normal velocity linear in P_n throughout, all three laws coincide.
     // Poisson's gains none here.
-    let gains = |l: usize| -> usize { table.iter().filter(|((m, _), _)| *m == l).map(|(_, r)| r.gains).sum() };
+    let gains = |l: usize| -> usize {
+        table
+            .iter()
+            .filter(|((m, _), _)| *m == l)
+            .map(|(_, r)| r.gains)
+            .sum()
+    };
     assert!(gains(0) > 0);
-    for regime in [Regime::SticksThroughout, Regime::SlidesThroughout, Regime::StartsSliding] {
+    for regime in [
+        Regime::SticksThroughout,
+        Regime::SlidesThroughout,
+        Regime::StartsSliding,
+    ] {
         assert_eq!(row(0, regime).unwrap().gains, 0, "{regime:?}");
     }
     assert_eq!(gains(1), 0);
@@ -145,7 +173,18 @@ fn print_table(table: &BTreeMap<(usize, Regime), Row>, n: usize) {
     println!("one-shot impulse P₁ against the integrated impulse P, {n} random contacts");
     println!(
         "{:8} {:19} {:>6} {:>6} | {:>9} {:>9} | {:>9} {:>9} {:>9} | {:>5} | {:>6} {:>6}",
-        "law", "regime", "cases", "1-stk", "ΔP med", "ΔP max", "ΔE med", "ΔE min", "ΔE max", "gains", "evals", "max"
+        "law",
+        "regime",
+        "cases",
+        "1-stk",
+        "ΔP med",
+        "ΔP max",
+        "ΔE med",
+        "ΔE min",
+        "ΔE max",
+        "gains",
+        "evals",
+        "max"
     );
     for ((l, regime), row) in table {
         let mut errors = row.errors.clone();

@@ -3,7 +3,7 @@
 #![allow(dead_code)]
 
 use contact_lab::exercise::rng::SplitMix64;
-use contact_lab::physics::{ContactInput, FrictionModel, Problem, RigidBody, ContactParams};
+use contact_lab::physics::{ContactInput, ContactParams, FrictionModel, Problem, RigidBody};
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 /// Uniform in [lo, hi).
@@ -32,7 +32,9 @@ pub fn rotation(rng: &mut SplitMix64) -> UnitQuaternion<f64> {
 /// A random symmetric positive-definite matrix with condition number up to ~1e3.
 pub fn spd(rng: &mut SplitMix64) -> Matrix3<f64> {
     let r = rotation(rng).to_rotation_matrix().into_inner();
-    let d = Matrix3::from_diagonal(&Vector3::from_fn(|_, _| 10f64.powf(uniform(rng, -1.5, 1.5))));
+    let d = Matrix3::from_diagonal(&Vector3::from_fn(|_, _| {
+        10f64.powf(uniform(rng, -1.5, 1.5))
+    }));
     let k = r * d * r.transpose();
     (k + k.transpose()) * 0.5
 }

@@ -90,7 +90,9 @@ pub struct ImpactInput<T: Real> {
 pub enum ExactError {
     #[error("impact integration: {what} is not finite")]
     NonFinite { what: &'static str },
-    #[error("impact integration: the collision matrix K is not symmetric positive-definite ({reason})")]
+    #[error(
+        "impact integration: the collision matrix K is not symmetric positive-definite ({reason})"
+    )]
     NotPositiveDefinite { reason: &'static str },
     #[error("impact integration: {what} = {value} is outside {range}")]
     OutOfRange {
@@ -125,9 +127,7 @@ pub(super) fn validate<T: Real>(input: &ImpactInput<T>) -> Result<Matrix3<T>, Ex
         ("e", input.restitution, "[0, 1]"),
     ];
     for (what, value, range) in coefficients {
-        let bad = !value.is_finite()
-            || value < T::zero()
-            || (what == "e" && value > T::one());
+        let bad = !value.is_finite() || value < T::zero() || (what == "e" && value > T::one());
         if bad {
             let value = to_f64(value);
             return Err(if value.is_finite() {

@@ -130,10 +130,18 @@ fn finish<T: Real>(mut run: Run<T>) -> Result<ImpactOutcome<T>, ExactError> {
         samples: run.samples,
         cost: run.cost,
     };
-    let finite = outcome.impulse.iter().chain(outcome.velocity.iter()).all(|x| x.is_finite())
-        && [energy_change, outcome.work_restitution, outcome.work_friction]
-            .iter()
-            .all(|x| x.is_finite());
+    let finite = outcome
+        .impulse
+        .iter()
+        .chain(outcome.velocity.iter())
+        .all(|x| x.is_finite())
+        && [
+            energy_change,
+            outcome.work_restitution,
+            outcome.work_friction,
+        ]
+        .iter()
+        .all(|x| x.is_finite());
     if finite {
         Ok(outcome)
     } else {

@@ -129,6 +129,10 @@ mod tests {
         // The estimate is of the fourth-order solution's error: larger than
         // the fifth-order one's, and of the order h⁵/1000.
         let fifth = (t.y[0] - exact).abs();
-        assert!(t.error[0].abs() > fifth && t.error[0].abs() < 1e-6, "{}", t.error[0]);
+        assert!(
+            t.error[0].abs() > fifth && t.error[0].abs() < 1e-6,
+            "{}",
+            t.error[0]
+        );
     }
 }

@@ -60,12 +60,18 @@ impl<T: Real> Norm<T> {
             sum += r * r;
         };
         for i in 0..5 {
-            add(err[i], self.atol[i] + self.rtol * y[i].abs().max(y1[i].abs()));
+            add(
+                err[i],
+                self.atol[i] + self.rtol * y[i].abs().max(y1[i].abs()),
+            );
         }
         let (u, u1) = (run.u_at(&impulse(y)), run.u_at(&impulse(y1)));
         let du = run.k * impulse(err);
         for i in 1..3 {
-            add(du[i], self.atol_ut + self.rtol_ut * u[i].abs().max(u1[i].abs()));
+            add(
+                du[i],
+                self.atol_ut + self.rtol_ut * u[i].abs().max(u1[i].abs()),
+            );
         }
         (sum / c(7.0)).sqrt()
     }

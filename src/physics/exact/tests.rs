@@ -78,8 +78,16 @@ fn rod_slip_reverses_closed_form() {
     assert!(close(newton.impulse.x, 0.4 + 2.0 / 7.0, 1e-15));
     assert!(close(newton.velocity.x, 0.5, 1e-15));
     let stronge = integrate(&input(u0, 0.5, 0.5, RestitutionLaw::Stronge)).unwrap();
-    assert!(close(stronge.impulse.x, 0.4 + (0.0425f64 / 0.875).sqrt(), 1e-15));
-    assert!(close(stronge.work_restitution, -0.25 * stronge.work_compression, 1e-14));
+    assert!(close(
+        stronge.impulse.x,
+        0.4 + (0.0425f64 / 0.875).sqrt(),
+        1e-15
+    ));
+    assert!(close(
+        stronge.work_restitution,
+        -0.25 * stronge.work_compression,
+        1e-14
+    ));
 }
 
 /// μ = 0.8 ≥ τ = 0.6: slip halts and sticks. u0 = (−1, 0.7): du/dP_n =
@@ -114,9 +122,17 @@ fn integrator_reproduces_the_planar_closed_forms() {
             let forced = integrate(&forced).unwrap();
             let diff = (forced.impulse - exact.impulse).norm() / exact.impulse.norm();
             assert!(diff < 1e-9, "{law:?} {u0}: {diff:e}");
-            assert_eq!(forced.regime(), Regime::Rotating, "forced counts as integrated");
+            assert_eq!(
+                forced.regime(),
+                Regime::Rotating,
+                "forced counts as integrated"
+            );
             assert!(forced.cost.accepted_steps > 0);
-            assert!(forced.energy_residual() < 1e-9, "{}", forced.energy_residual());
+            assert!(
+                forced.energy_residual() < 1e-9,
+                "{}",
+                forced.energy_residual()
+            );
         }
     }
 }
@@ -132,8 +148,13 @@ fn zero_restitution_ends_at_maximum_compression() {
 
 #[test]
 fn separating_contact_gets_no_impulse() {
-    let o = integrate(&input(Vector3::new(0.5, 1.0, 0.0), 0.5, 0.5, RestitutionLaw::Poisson))
-        .unwrap();
+    let o = integrate(&input(
+        Vector3::new(0.5, 1.0, 0.0),
+        0.5,
+        0.5,
+        RestitutionLaw::Poisson,
+    ))
+    .unwrap();
     assert!(!o.closing);
     assert_eq!(o.impulse, Vector3::zeros());
     assert_eq!(o.regime(), Regime::Separating);
@@ -141,7 +162,12 @@ fn separating_contact_gets_no_impulse() {
 
 #[test]
 fn bad_input_is_an_error_not_nan() {
-    let base = input(Vector3::new(-1.0, 0.5, 0.2), 0.5, 0.5, RestitutionLaw::Stronge);
+    let base = input(
+        Vector3::new(-1.0, 0.5, 0.2),
+        0.5,
+        0.5,
+        RestitutionLaw::Stronge,
+    );
     let mut nan = base.clone();
     nan.u0.y = f64::NAN;
     assert_eq!(integrate(&nan), Err(ExactError::NonFinite { what: "u0" }));
@@ -164,7 +190,6 @@ fn bad_input_is_an_error_not_nan() {
         Err(ExactError::OutOfRange { what: "e", .. })
     ));
 }
-
 
 /// Regression: a turning slip that settles just before halting. The closed
 /// form along the settled direction must halt where the slip along it
@@ -197,8 +222,15 @@ fn settled_slip_halts_instead_of_sliding_through_zero() {
     input.tolerance.always_integrate = true;
     let forced = integrate(&input).unwrap();
     assert!(settled.work_friction <= 0.0 && settled.energy_change < 0.0);
-    assert!(settled.phases.iter().any(|p| p.kind == PhaseKind::SlipHalts));
-    assert!(settled.velocity.yz().norm() < 1e-9, "ends stuck: {}", settled.velocity);
+    assert!(settled
+        .phases
+        .iter()
+        .any(|p| p.kind == PhaseKind::SlipHalts));
+    assert!(
+        settled.velocity.yz().norm() < 1e-9,
+        "ends stuck: {}",
+        settled.velocity
+    );
     let diff = (settled.impulse - forced.impulse).norm() / forced.impulse.norm();
     assert!(diff < 1e-9, "{diff:e}");
 }
@@ -208,7 +240,17 @@ fn settled_slip_halts_instead_of_sliding_through_zero() {
 #[test]
 fn stronge_with_tiny_restitution_stays_exact() {
     let e = 7.3e-6;
-    let o = integrate(&input(Vector3::new(-1e-3, 0.0, 0.0), 0.0, e, RestitutionLaw::Stronge)).unwrap();
+    let o = integrate(&input(
+        Vector3::new(-1e-3, 0.0, 0.0),
+        0.0,
+        e,
+        RestitutionLaw::Stronge,
+    ))
+    .unwrap();
     let closed = (1.0 + e) * 1e-3 / 2.5;
-    assert!((o.impulse.x - closed).abs() <= 1e-15 * closed, "{:e}", o.impulse.x / closed - 1.0);
+    assert!(
+        (o.impulse.x - closed).abs() <= 1e-15 * closed,
+        "{:e}",
+        o.impulse.x / closed - 1.0
+    );
 }
