@@ -145,7 +145,12 @@ pub struct Verdict {
 impl Verdict {
     /// ✓ passed, ✗ failed, · informs.
     pub fn mark(&self) -> &'static str {
-        match self.passed {
+        Verdict::mark_of(self.passed)
+    }
+
+    /// The mark of a check that passed (`Some(true)`), failed or informs (`None`).
+    pub fn mark_of(passed: Option<bool>) -> &'static str {
+        match passed {
             Some(true) => "✓",
             Some(false) => "✗",
             None => "·",

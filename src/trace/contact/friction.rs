@@ -7,6 +7,14 @@ use crate::physics::stages::FrictionRegime;
 use crate::physics::{FrictionModel, StageId};
 use crate::trace::Step;
 
+/// The regime's JSON value: `"static"` (sticks) or `"dynamic"` (slides).
+pub fn regime_name(regime: FrictionRegime) -> &'static str {
+    match regime {
+        FrictionRegime::Static => "static",
+        FrictionRegime::Dynamic => "dynamic",
+    }
+}
+
 /// The regime, the Coulomb limit and the impulse after the clamp.
 pub fn friction(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::FrictionClamp);
@@ -22,12 +30,8 @@ pub fn friction(c: &SolvedContact) -> Step {
     b.input("sticking_normal", g.impulse_contact.x);
     b.input("desired", c.solution.desired.desired);
     b.input("contact_to_world", c.solution.frame.contact_to_world);
-    let regime = match f.regime {
-        FrictionRegime::Static => "static",
-        FrictionRegime::Dynamic => "dynamic",
-    };
     b.value("model", f.model.name());
-    b.value("regime", regime);
+    b.value("regime", regime_name(f.regime));
     let (decided_by, sized_by) = match (f.model, f.regime) {
         (FrictionModel::KineticDirection, _) => ("none (always sliding)", "dynamic_friction"),
         (_, FrictionRegime::Static) => ("static_friction", "none (the sticking impulse)"),

@@ -26,7 +26,7 @@ pub use builder::SolvedContact;
 pub use checks::{check_values, checks, verdicts};
 pub use contact_frame::contact_frame;
 pub use desired_velocity::desired_velocity;
-pub use friction::friction;
+pub use friction::{friction, regime_name};
 pub use impulse::impulse;
 pub use orientation::orientation;
 pub use projection::projection;
