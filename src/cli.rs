@@ -35,7 +35,8 @@ pub enum Command {
     /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
     Figure(FigureArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
-    Check(CheckArgs),
+    #[command(name = "check")]
+    Errata(ErrataArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
@@ -150,18 +151,18 @@ pub struct FigureArgs {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CheckFormat {
+pub enum ErrataFormat {
     Text,
     Json,
 }
 
 #[derive(Debug, Clone, Args)]
-pub struct CheckArgs {
+pub struct ErrataArgs {
     /// Lesson ids or paths (default: every embedded lesson).
     pub lessons: Vec<String>,
     /// Output format.
-    #[arg(long, short, value_enum, default_value_t = CheckFormat::Text)]
-    pub format: CheckFormat,
+    #[arg(long, short, value_enum, default_value_t = ErrataFormat::Text)]
+    pub format: ErrataFormat,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -4,9 +4,9 @@
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
 //! show ([`render`]). [`lesson`] reads scenes; [`commands`] wires the CLI.
 
-pub mod check;
 pub mod cli;
 pub mod commands;
+pub mod errata;
 pub mod error;
 pub mod exercise;
 pub mod format;

@@ -4,7 +4,7 @@
 //! and every check of the solution passes.
 
 pub mod rng;
-pub mod scene;
+pub mod setup;
 pub mod sheet;
 
 use crate::lesson::{validate, Lesson};
@@ -12,7 +12,7 @@ use crate::physics::stages::FrictionRegime;
 use crate::physics::{solve, Solution};
 use crate::trace::Trace;
 use rng::SplitMix64;
-use scene::Scene;
+use setup::Setup;
 
 /// What an exercise practises.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -97,16 +97,16 @@ pub fn suits(kind: Kind, lesson: &Lesson, t: &Trace) -> bool {
     fits(kind, lesson, &solve(&lesson.problem::<f64>(t.contact)))
 }
 
-fn draw(rng: &mut SplitMix64, kind: Kind) -> Scene {
+fn draw(rng: &mut SplitMix64, kind: Kind) -> Setup {
     let family = match kind {
         Kind::Penetration => rng.pick(&[0, 2]),
         Kind::Frictionless => rng.pick(&[0, 1, 2]),
         Kind::StaticFriction | Kind::DynamicFriction => rng.pick(&[0, 1]),
     };
     match family {
-        0 => scene::cube_on_floor(rng, kind),
-        1 => scene::two_spheres(rng, kind),
-        _ => scene::cube_on_sphere(rng, kind),
+        0 => setup::cube_on_floor(rng, kind),
+        1 => setup::two_spheres(rng, kind),
+        _ => setup::cube_on_sphere(rng, kind),
     }
 }
 
@@ -115,8 +115,8 @@ fn exercise(seed: u64, number: usize, sub_seed: u64, kind: Kind) -> Result<Exerc
     let mut rng = SplitMix64::new(sub_seed);
     let id = format!("exercise-{seed}-{number}");
     for _ in 0..ATTEMPTS {
-        let scene = draw(&mut rng, kind);
-        let title = format!("Exercise {number}: {}", scene.title);
+        let setup = draw(&mut rng, kind);
+        let title = format!("Exercise {number}: {}", setup.title);
         let source = format!(
             "contact-lab exercise --seed {seed}, exercise {number} ({})",
             kind.name()
@@ -125,7 +125,7 @@ fn exercise(seed: u64, number: usize, sub_seed: u64, kind: Kind) -> Result<Exerc
             "A generated {} exercise; numbers are given to at most four decimals.",
             kind.name()
         );
-        let toml = scene.toml(&id, &title, &source, &summary);
+        let toml = setup.toml(&id, &title, &source, &summary);
         let lesson = validate::parse(&format!("{id}.toml"), &toml)
             .map_err(|e| format!("a generated lesson does not validate: {e}\n{toml}"))?;
         let solution = solve(&lesson.problem::<f64>(0));
