@@ -2,7 +2,12 @@
 //! (Millington's impulse-based resolver).
 //!
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
-//! show ([`render`]). [`lesson`] reads scenes; [`commands`] wires the CLI.
+//! show ([`render`], [`tui`]). [`lesson`] reads scenes; [`commands`] wires
+//! the CLI; [`errata`] compares the lectures' printed numbers with the
+//! computed ones; [`exercise`] draws exercises. One contact lives in
+//! `physics::contact` and is described stage by stage in `trace::contact`;
+//! sets of contacts and time steps go beside them. The JSON contract and the
+//! exit codes are in `docs/`.
 
 pub mod cli;
 pub mod commands;

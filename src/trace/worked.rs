@@ -45,3 +45,41 @@ pub fn build(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Trace {
         scene: scene(lesson, k, solution),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_lesson_contact_names_its_slots_label_and_written_facts() {
+        let lesson = Lesson::load("lecture-2").unwrap();
+        let names = ContactNames::of_lesson(&lesson, 0);
+        assert_eq!(names.bodies, [Some("cube".into()), Some("floor".into())]);
+        assert_eq!(names.label, lesson.contact_label(0));
+        assert_eq!(names.slot_names(), lesson.contact_body_names(0));
+        assert_eq!(names.written.normal_length, 1.0);
+        assert!(
+            names.written.shape_inertia[0].is_some(),
+            "the cube has a shape"
+        );
+        assert_eq!(
+            names.written.shape_inertia[0],
+            lesson.bodies[0].shape_inertia
+        );
+        // The floor is immovable: no shape tensor, whatever its shape.
+        assert_eq!(names.written.shape_inertia[1], None);
+    }
+
+    #[test]
+    fn the_trace_is_the_contact_builders_plus_the_lesson() {
+        let lesson = Lesson::load("friction-cube").unwrap();
+        let problem = lesson.problem::<f64>(1);
+        let solution = crate::physics::solve(&problem);
+        let t = build(&lesson, 1, &solution);
+        let names = ContactNames::of_lesson(&lesson, 1);
+        assert_eq!(t.stages, contact::build(&problem, &solution, &names));
+        assert_eq!(t.contact_label, names.label);
+        assert_eq!(t.after.len(), 1);
+        assert_eq!(t.verdicts.len(), solution.checks.items.len());
+    }
+}
