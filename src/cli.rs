@@ -8,7 +8,7 @@ Examples:
   contact-lab tui lecture-2 --contact 0             the app, opened on one contact
   contact-lab list                                  the embedded lessons
   contact-lab solve lecture-2                       the lecture's second worked example
-  contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
+  contact-lab solve lecture-2 --format json         the same as JSON (docs/json.md)
   contact-lab solve my-scene.toml --contact 1 --digits 4
   contact-lab solve spinning-ball -c 1 --compare-friction
   contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
@@ -17,7 +17,8 @@ Examples:
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab exercise --seed 1 --count 5 --answers --format md
 
-Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing.";
+Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing
+(when each is returned: docs/exit-codes.md).";
 
 #[derive(Debug, Parser)]
 #[command(name = "contact-lab", version, about = "Step-by-step rigid-body contact resolution (Millington's impulse-based resolver)", after_help = EXAMPLES)]
@@ -35,7 +36,8 @@ pub enum Command {
     /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
     Figure(FigureArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
-    Check(CheckArgs),
+    #[command(name = "check")]
+    Errata(ErrataArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
@@ -150,18 +152,18 @@ pub struct FigureArgs {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CheckFormat {
+pub enum ErrataFormat {
     Text,
     Json,
 }
 
 #[derive(Debug, Clone, Args)]
-pub struct CheckArgs {
+pub struct ErrataArgs {
     /// Lesson ids or paths (default: every embedded lesson).
     pub lessons: Vec<String>,
     /// Output format.
-    #[arg(long, short, value_enum, default_value_t = CheckFormat::Text)]
-    pub format: CheckFormat,
+    #[arg(long, short, value_enum, default_value_t = ErrataFormat::Text)]
+    pub format: ErrataFormat,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -1,6 +1,6 @@
 //! What each subcommand does: load, solve, render, write.
 
-mod check;
+mod errata;
 mod exercise;
 mod figure;
 mod list;
@@ -30,7 +30,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::List) => list::list(out),
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
-        Some(Command::Check(args)) => check::check(&args, out),
+        Some(Command::Errata(args)) => errata::errata(&args, out),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
     }
 }

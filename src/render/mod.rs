@@ -1,8 +1,8 @@
 //! Renderers: each reads a [`Trace`](crate::trace::Trace) and shows it.
 
 pub mod chart;
-pub mod check;
 pub mod compare;
+pub mod errata;
 pub mod figure;
 pub mod json;
 pub mod latex;
