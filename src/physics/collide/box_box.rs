@@ -1,0 +1,230 @@
+//! Box–box contact by the separating axis test on 15 axes (3 face axes of
+//! each box, 9 edge cross products), as the reference engine's `boxAndBox`;
+//! one contact (single mode) or the clipped face manifold.
+
+use nalgebra::Vector3;
+
+use super::clip::{clip_incident, manifold, Reference};
+use super::{c, vertex, BoxBoxMode, ContactPoint, Feature, Pose, Real, Side};
+
+/// The axis of least overlap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Axis {
+    FaceA(usize),
+    FaceB(usize),
+    /// Edge of A along axis i crossed with an edge of B along axis j.
+    Edge(usize, usize),
+}
+
+/// Result of the separating axis test for overlapping boxes.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Overlap<T: Real> {
+    pub axis: Axis,
+    /// Unit axis oriented from B toward A.
+    pub normal: Vector3<T>,
+    /// Overlap of the two projections on the axis: r_A + r_B − |d·L|.
+    pub depth: T,
+}
+
+/// Edge pairs with |a_i × b_j|² below this are (nearly) parallel: their cross
+/// product is no reliable axis, and the face axes already cover them.
+const PARALLEL_SQUARED: f64 = 1e-6;
+/// An edge axis replaces the best face axis only when shallower by 5 % (plus
+/// a round-off margin), so that resting faces keep face contacts.
+const EDGE_BIAS: f64 = 0.95;
+
+/// Separating axis test: `None` when an axis separates the boxes by more than
+/// `tol`, else the axis of least overlap (face axes preferred, A's first).
+pub(super) fn separating_axis<T: Real>(
+    ha: &Vector3<T>,
+    pa: &Pose<T>,
+    hb: &Vector3<T>,
+    pb: &Pose<T>,
+    tol: T,
+) -> Option<Overlap<T>> {
+    let d = pa.position - pb.position;
+    let (a, b) = ([0, 1, 2].map(|k| pa.axis(k)), [0, 1, 2].map(|k| pb.axis(k)));
+    // Overlap on unit axis L: Σ h_A,k |a_k·L| + Σ h_B,k |b_k·L| − |d·L|.
+    let overlap = |l: &Vector3<T>| {
+        let radius = |h: &Vector3<T>, axes: &[Vector3<T>; 3]| {
+            (0..3).fold(T::zero(), |sum, k| sum + h[k] * axes[k].dot(l).abs())
+        };
+        radius(ha, &a) + radius(hb, &b) - d.dot(l).abs()
+    };
+    let mut face: Option<(Axis, Vector3<T>, T)> = None;
+    let faces = (0..3).map(|i| (Axis::FaceA(i), a[i])).chain((0..3).map(|j| (Axis::FaceB(j), b[j])));
+    for (axis, l) in faces {
+        let depth = overlap(&l);
+        if depth < -tol {
+            return None;
+        }
+        if face.is_none_or(|(_, _, best)| depth < best) {
+            face = Some((axis, l, depth));
+        }
+    }
+    let mut edge: Option<(Axis, Vector3<T>, T)> = None;
+    for i in 0..3 {
+        for j in 0..3 {
+            let l = a[i].cross(&b[j]);
+            let length_squared = l.norm_squared();
+            if length_squared < c::<T>(PARALLEL_SQUARED) {
+                continue;
+            }
+            let l = l / length_squared.sqrt();
+            let depth = overlap(&l);
+            if depth < -tol {
+                return None;
+            }
+            if edge.is_none_or(|(_, _, best)| depth < best) {
+                edge = Some((Axis::Edge(i, j), l, depth));
+            }
+        }
+    }
+    let (mut axis, mut l, mut depth) = face?;
+    if let Some((edge_axis, edge_l, edge_depth)) = edge {
+        // Round-off margin: a few thousand ulps of the boxes' size.
+        let size = ha.amax().max(hb.amax());
+        let margin = size * T::default_epsilon() * c::<T>(4096.0);
+        if edge_depth < depth - (T::one() - c::<T>(EDGE_BIAS)) * depth.abs() - margin {
+            (axis, l, depth) = (edge_axis, edge_l, edge_depth);
+        }
+    }
+    let normal = if d.dot(&l) < T::zero() { -l } else { l };
+    Some(Overlap { axis, normal, depth })
+}
+
+/// Box A (half sides `ha`) against box B (`hb`).
+pub(super) fn box_box<T: Real>(
+    ha: &Vector3<T>,
+    pa: &Pose<T>,
+    hb: &Vector3<T>,
+    pb: &Pose<T>,
+    mode: BoxBoxMode,
+    tol: T,
+    out: &mut Vec<ContactPoint<T>>,
+) {
+    let Some(overlap) = separating_axis(ha, pa, hb, pb, tol) else {
+        return;
+    };
+    // Reference face: its box, the other (incident) box, and the face's
+    // outward normal, which points from the reference box toward the other.
+    let (reference, incident, hi) = match overlap.axis {
+        Axis::Edge(i, j) => {
+            out.push(edge_edge(ha, pa, i, hb, pb, j, &overlap));
+            return;
+        }
+        Axis::FaceA(i) => (face(ha, pa, i, -overlap.normal, Side::A), pb, hb),
+        Axis::FaceB(j) => (face(hb, pb, j, overlap.normal, Side::B), pa, ha),
+    };
+    if mode == BoxBoxMode::Manifold {
+        let polygon = clip_incident(&reference, incident, hi);
+        if manifold(&reference, &polygon, &overlap.normal, tol, out) > 0 {
+            return;
+        }
+    }
+    out.push(point_face(&reference, incident, hi, &overlap));
+}
+
+fn face<'a, T: Real>(
+    h: &'a Vector3<T>,
+    pose: &'a Pose<T>,
+    axis: usize,
+    outward: Vector3<T>,
+    side: Side,
+) -> Reference<'a, T> {
+    let sign = if pose.axis(axis).dot(&outward) < T::zero() { -T::one() } else { T::one() };
+    Reference { pose, h, axis, sign, side }
+}
+
+/// Single mode, face axis: the incident box's vertex deepest through the
+/// reference face (its support point against the outward normal), midway
+/// between it and the face, with the overlap on the axis as penetration.
+/// The reference engine takes that vertex even when it lies beside the face
+/// (an edge across the face, or a box hanging over the face's edge); then the
+/// deepest point of the clipped incident face is taken instead.
+fn point_face<T: Real>(
+    reference: &Reference<'_, T>,
+    incident: &Pose<T>,
+    hi: &Vector3<T>,
+    overlap: &Overlap<T>,
+) -> ContactPoint<T> {
+    let outward = reference.pose.axis(reference.axis) * reference.sign;
+    // Bit k set (+h_k) unless axis k points along the outward normal.
+    let index = (0..3).fold(0u8, |bits, k| {
+        let plus = incident.axis(k).dot(&outward) <= T::zero();
+        bits | (u8::from(plus) << k)
+    });
+    let local = reference.pose.to_local(&incident.to_world(&vertex(hi, index)));
+    let slack = reference.h.amax() * T::default_epsilon() * c::<T>(4096.0);
+    let beside = (0..3)
+        .filter(|&k| k != reference.axis)
+        .any(|k| local[k].abs() > reference.h[k] + slack);
+    let deepest = if beside {
+        let polygon = clip_incident(reference, incident, hi);
+        let depth = |p: &&Vector3<T>| reference.depth(p);
+        let inside = polygon.iter().filter(|p| reference.holds(p, T::zero()));
+        inside.reduce(|best, p| if depth(&p) > depth(&best) { p } else { best }).copied()
+    } else {
+        None
+    };
+    if let Some(p) = deepest {
+        return reference.contact(&p, &overlap.normal, overlap.depth);
+    }
+    // The face is `depth` beyond the vertex along the outward normal.
+    let mut mid = local;
+    mid[reference.axis] += reference.sign * overlap.depth * c::<T>(0.5);
+    ContactPoint {
+        point: reference.pose.to_world(&mid),
+        normal: overlap.normal,
+        penetration: overlap.depth,
+        feature: Feature::VertexFace {
+            face: reference.side,
+            axis: reference.axis as u8,
+            vertex: index,
+        },
+    }
+}
+
+/// Edge–edge: A's edge along axis i nearest B and B's edge along axis j
+/// nearest A; the contact point is midway between their closest points.
+fn edge_edge<T: Real>(
+    ha: &Vector3<T>,
+    pa: &Pose<T>,
+    i: usize,
+    hb: &Vector3<T>,
+    pb: &Pose<T>,
+    j: usize,
+    overlap: &Overlap<T>,
+) -> ContactPoint<T> {
+    let n = overlap.normal;
+    // Midpoint of a box's edge along `axis`, on the box's side toward `towards`.
+    let edge_middle = |h: &Vector3<T>, pose: &Pose<T>, axis: usize, towards: Vector3<T>| {
+        let local = Vector3::from_fn(|k, _| match k {
+            k if k == axis => T::zero(),
+            k if pose.axis(k).dot(&towards) < T::zero() => -h[k],
+            k => h[k],
+        });
+        pose.to_world(&local)
+    };
+    let (ma, mb) = (edge_middle(ha, pa, i, -n), edge_middle(hb, pb, j, n));
+    let (da, db) = (pa.axis(i), pb.axis(j));
+    // Closest points ma + s·da, mb + t·db of the two segments (lines first,
+    // then clamped to the edges): s = (e f − a·r)/(1 − e²), t = f + s e with
+    // r = ma − mb, e = da·db, f = db·r.
+    let r = ma - mb;
+    let (e, f, g) = (da.dot(&db), db.dot(&r), da.dot(&r));
+    let clamp = |x: T, h: T| x.max(-h).min(h);
+    let s = clamp((e * f - g) / (T::one() - e * e), ha[i]);
+    let t = clamp(f + s * e, hb[j]);
+    let s = clamp(t * e - g, ha[i]);
+    let (on_a, on_b) = (ma + da * s, mb + db * t);
+    ContactPoint {
+        point: (on_a + on_b) * c::<T>(0.5),
+        normal: n,
+        penetration: overlap.depth,
+        feature: Feature::EdgeEdge {
+            axis_a: i as u8,
+            axis_b: j as u8,
+        },
+    }
+}
