@@ -29,8 +29,8 @@ fn unit_box_flat_on_the_floor_touches_at_its_four_bottom_corners() {
     for k in &out {
         assert_eq!(k.normal, Vector3::y());
         assert!((k.penetration - 0.01).abs() < 1e-12);
-        // Midway between the corner (y = −0.01) and the floor.
-        assert!((k.point.y + 0.005).abs() < 1e-12);
+        // At the corner, 0.01 below the floor.
+        assert!((k.point.y + 0.01).abs() < 1e-12);
         assert!((k.point.x.abs() - 0.5).abs() < 1e-12 && (k.point.z.abs() - 0.5).abs() < 1e-12);
         assert!(matches!(k.feature, Feature::VertexPlane { cuboid: Side::A, vertex } if vertex & 2 == 0));
     }
@@ -45,7 +45,7 @@ fn unit_box_on_an_edge_gives_two_contacts_and_on_a_corner_one() {
     assert_eq!(out.len(), 2);
     for (k, z) in out.iter().zip([-0.5, 0.5]) {
         assert!((k.penetration - 0.01).abs() < 1e-12);
-        assert!(close(&k.point, &Vector3::new(0.3, -0.005, z)), "{:?}", k.point);
+        assert!(close(&k.point, &Vector3::new(0.3, -0.01, z)), "{:?}", k.point);
     }
     check_pair((&CUBE, &cube), (&FLOOR, &floor()), BoxBoxMode::Single, 0.0);
 
@@ -55,7 +55,7 @@ fn unit_box_on_an_edge_gives_two_contacts_and_on_a_corner_one() {
     let out = collide_all((&CUBE, &cube), (&FLOOR, &floor()), BoxBoxMode::Single);
     assert_eq!(out.len(), 1);
     assert!((out[0].penetration - 0.01).abs() < 1e-12);
-    assert!(close(&out[0].point, &Vector3::new(1.0, -0.005, 2.0)));
+    assert!(close(&out[0].point, &Vector3::new(1.0, -0.01, 2.0)));
     assert_eq!(out[0].feature, Feature::VertexPlane { cuboid: Side::A, vertex: 7 });
 }
 
@@ -81,7 +81,8 @@ fn box_on_a_box_face_to_face_gives_four_manifold_points_or_one_single() {
     for (k, (c, e)) in manifold.iter().zip(corners.iter().zip(expected)) {
         assert_eq!(k.normal, Vector3::y());
         assert!((k.penetration - 0.02).abs() < 1e-12);
-        assert!((k.point.y - 0.49).abs() < 1e-12);
+        // The cube's corners (the incident face), 0.02 below the slab's top.
+        assert!((k.point.y - 0.48).abs() < 1e-12);
         assert!((c.0 - e.0).abs() < 1e-12 && (c.1 - e.1).abs() < 1e-12, "{c:?} vs {e:?}");
         assert!(matches!(k.feature, Feature::FaceFace { axis: 1, .. }));
     }
@@ -89,7 +90,9 @@ fn box_on_a_box_face_to_face_gives_four_manifold_points_or_one_single() {
     assert_eq!(single.len(), 1);
     assert_eq!(single[0].normal, Vector3::y());
     assert!((single[0].penetration - 0.02).abs() < 1e-12);
-    assert!(manifold.iter().any(|k| close(&k.point, &single[0].point)));
+    // One corner of the cube, midway between it and the slab's top.
+    let corner = single[0].point - Vector3::new(0.0, 0.01, 0.0);
+    assert!(manifold.iter().any(|k| close(&k.point, &corner)), "{:?}", single[0]);
     assert!(matches!(single[0].feature, Feature::VertexFace { axis: 1, .. }));
     for mode in [BoxBoxMode::Single, BoxBoxMode::Manifold] {
         check_pair((&CUBE, &above), (&slab, &below), mode, 0.0);
@@ -218,4 +221,29 @@ fn moving_a_along_the_normal_by_the_penetration_separates() {
     assert!(collide_all((&CUBE, &away), (&ball, &ball_pose), BoxBoxMode::Single).is_empty());
     let short = moved(&cube, &(out[0].normal * (out[0].penetration - 1e-6)));
     assert_eq!(collide_all((&CUBE, &short), (&ball, &ball_pose), BoxBoxMode::Single).len(), 1);
+}
+
+#[test]
+fn a_long_edge_across_a_face_touches_where_it_crosses_the_face() {
+    // B: a 1×1×6 bar turned 45° about z, its bottom edge (along z) 0.01
+    // into the top face of cube A. The reference engine's point–face vertex
+    // is an end of that edge, at z = ±3, beside the unit face; the contact
+    // is taken where the edge crosses the face instead.
+    let bar = Shape::Box { sides: [1.0, 1.0, 6.0] };
+    let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), FRAC_PI_4);
+    let bar_pose = pose([0.0, 0.5 + SQRT_2 / 2.0 - 0.01, 0.0], turn);
+    let cube = pose([0.0, 0.0, 0.0], UnitQuaternion::identity());
+    let single = collide_all((&CUBE, &cube), (&bar, &bar_pose), BoxBoxMode::Single);
+    assert_eq!(single.len(), 1);
+    assert_eq!(single[0].feature, Feature::FaceFace { reference: Side::A, axis: 1 });
+    assert_eq!(single[0].normal, -Vector3::y());
+    assert!((single[0].penetration - 0.01).abs() < 1e-12);
+    assert!((single[0].point.x.abs() < 1e-12) && (single[0].point.y - 0.49).abs() < 1e-12);
+    assert!((single[0].point.z.abs() - 0.5).abs() < 1e-12, "{:?}", single[0].point);
+    let manifold = collide_all((&CUBE, &cube), (&bar, &bar_pose), BoxBoxMode::Manifold);
+    assert_eq!(manifold.len(), 2);
+    assert!((manifold[0].point.z + manifold[1].point.z).abs() < 1e-12);
+    for mode in [BoxBoxMode::Single, BoxBoxMode::Manifold] {
+        check_pair((&CUBE, &cube), (&bar, &bar_pose), mode, 0.0);
+    }
 }

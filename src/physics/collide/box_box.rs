@@ -82,9 +82,9 @@ pub(super) fn separating_axis<T: Real>(
     }
     let (mut axis, mut l, mut depth) = face?;
     if let Some((edge_axis, edge_l, edge_depth)) = edge {
-        // Round-off margin: a few thousand ulps of the boxes' size.
+        // Round-off margin: 64 ulps of the boxes' size.
         let size = ha.amax().max(hb.amax());
-        let margin = size * T::default_epsilon() * c::<T>(4096.0);
+        let margin = size * T::default_epsilon() * c::<T>(64.0);
         if edge_depth < depth - (T::one() - c::<T>(EDGE_BIAS)) * depth.abs() - margin {
             (axis, l, depth) = (edge_axis, edge_l, edge_depth);
         }
@@ -226,5 +226,56 @@ fn edge_edge<T: Real>(
             axis_a: i as u8,
             axis_b: j as u8,
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::UnitQuaternion;
+    use std::f64::consts::{FRAC_PI_4, SQRT_2};
+
+    /// Unit cubes: A turned 45° about x (bottom edge along x) above B turned
+    /// 45° about z (top edge along z), the edges `e` deep.
+    fn crossing(e: f64) -> Option<Overlap<f64>> {
+        let a = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_4);
+        let b = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), FRAC_PI_4);
+        let h = Vector3::repeat(0.5);
+        let pa = Pose::from_unit(Vector3::new(0.0, SQRT_2 - e, 0.0), &a);
+        let pb = Pose::from_unit(Vector3::zeros(), &b);
+        separating_axis(&h, &pa, &h, &pb, 0.0)
+    }
+
+    #[test]
+    fn an_edge_axis_wins_only_when_clearly_shallower_than_the_best_face() {
+        // Overlap on the best face axis (A's y): √2/4 + e·√2/2; on x × z: e.
+        let face = |e: f64| SQRT_2 / 4.0 + e * SQRT_2 / 2.0;
+        let deep = crossing(1.0).unwrap();
+        assert_eq!(deep.axis, Axis::Edge(0, 2));
+        assert!((deep.depth - 1.0).abs() < 1e-12 && 1.0 < 0.95 * face(1.0));
+        // At e = 1.1 the edge axis is still the shallower (1.1 < 1.131), but
+        // by less than 5 %: the face axis is kept, as for resting faces.
+        let deeper = crossing(1.1).unwrap();
+        assert_eq!(deeper.axis, Axis::FaceA(1));
+        assert!((deeper.depth - face(1.1)).abs() < 1e-12);
+        assert!((deeper.normal - Vector3::new(0.0, 1.0, 1.0).normalize()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn separated_by_an_edge_axis_alone() {
+        assert!(crossing(-1e-9).is_none());
+        assert_eq!(crossing(1e-9).unwrap().axis, Axis::Edge(0, 2));
+    }
+
+    #[test]
+    fn parallel_edges_are_skipped_and_aligned_boxes_meet_on_a_face() {
+        // Axis-aligned: every cross product is zero or a face axis.
+        let h: Vector3<f64> = Vector3::new(1.0, 0.5, 2.0);
+        let pa = Pose::at(Vector3::new(0.3, 0.0, 0.0));
+        let pb = Pose::at(Vector3::new(0.0, 0.9, 0.1));
+        let overlap = separating_axis(&h, &pa, &h, &pb, 0.0).unwrap();
+        assert_eq!(overlap.axis, Axis::FaceA(1));
+        assert_eq!(overlap.normal, -Vector3::y());
+        assert!((overlap.depth - 0.1).abs() < 1e-15);
     }
 }

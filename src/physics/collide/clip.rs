@@ -62,13 +62,11 @@ impl<T: Real> Reference<'_, T> {
         depth >= -tol && depth <= self.h[self.axis] + self.h[self.axis]
     }
 
-    /// The contact for a reference-frame point of the incident face: midway
-    /// between it and the face, `x + ½·depth·s·e_i`, in world coordinates.
+    /// The contact at a reference-frame point of the incident face (the
+    /// point itself: on the incident box, `depth` inside the reference box).
     pub fn contact(&self, local: &Vector3<T>, normal: &Vector3<T>, penetration: T) -> ContactPoint<T> {
-        let mut mid = *local;
-        mid[self.axis] += self.sign * self.depth(local) * c::<T>(0.5);
         ContactPoint {
-            point: self.pose.to_world(&mid),
+            point: self.pose.to_world(local),
             normal: *normal,
             penetration,
             feature: Feature::FaceFace {

@@ -9,9 +9,16 @@
 //!   the separating-axis test's axis).
 //! - `penetration` is the overlap along `normal`, ≥ 0 (it is negative, the
 //!   gap, only when [`Options::tolerance`] asks for contacts that are near).
-//! - `point` lies **midway between the two surfaces** along the normal: A's
-//!   deepest point into B is `point − ½·penetration·normal` and B's deepest
-//!   point into A is `point + ½·penetration·normal`.
+//! - `point` lies on or between the two surfaces. A contact between the two
+//!   deepest features (sphere–sphere, sphere–plane, box–sphere, box–box
+//!   vertex–face and edge–edge) lies **midway between the surfaces** along
+//!   the normal: A's deepest point into B is `point − ½·penetration·normal`
+//!   and B's deepest point into A is `point + ½·penetration·normal`. A point
+//!   of a contact set (box or cylinder on a plane, the box–box manifold) is
+//!   the penetrating point itself: a vertex or rim point below the plane, a
+//!   point of the incident face below the reference face — on its own body's
+//!   surface, `penetration` deep in the other. (Midway would leave the body
+//!   at every point but the deepest.)
 //! - [`Feature`] says what touched, for a trace to explain.
 //!
 //! Pairs: sphere–sphere, sphere–half-space, box–half-space (every vertex at or
@@ -195,7 +202,9 @@ impl Feature {
 /// One generated contact point between bodies A (1) and B (2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactPoint<T: Real> {
-    /// Midway between the two surfaces along the normal.
+    /// On or between the surfaces: midway between them along the normal, or
+    /// for a point of a contact set (`VertexPlane`, `RimPlane`, `FaceFace`)
+    /// the penetrating point itself.
     pub point: Vector3<T>,
     /// Unit, from B toward A.
     pub normal: Vector3<T>,

@@ -1,6 +1,7 @@
 //! Contacts with a half-space: sphere, box (every vertex at or below the
 //! plane) and cylinder (rim points). The shape is body A, the half-space B, so
-//! the normal is the plane's normal.
+//! the normal is the plane's normal. A sphere's contact lies midway between
+//! the surfaces; a vertex's or rim point's at that point.
 
 use nalgebra::Vector3;
 
@@ -115,7 +116,10 @@ pub(super) fn cylinder_plane<T: Real>(
 }
 
 /// A body point `at` `height` above the plane: a contact when at or below
-/// (within the tolerance), midway between the point and the plane.
+/// (within the tolerance), at the point itself. (Midway between it and the
+/// plane, as the reference engine puts it, would leave the body for every
+/// vertex but the deepest: moving along n enters a box only at its support
+/// vertex.)
 fn push_below<T: Real>(
     at: Vector3<T>,
     height: T,
@@ -127,7 +131,7 @@ fn push_below<T: Real>(
     let penetration = -height;
     if penetration >= -tol {
         out.push(ContactPoint {
-            point: at + n * (penetration * c::<T>(0.5)),
+            point: at,
             normal: *n,
             penetration,
             feature,
