@@ -32,7 +32,9 @@ fn unit_box_flat_on_the_floor_touches_at_its_four_bottom_corners() {
         // At the corner, 0.01 below the floor.
         assert!((k.point.y + 0.01).abs() < 1e-12);
         assert!((k.point.x.abs() - 0.5).abs() < 1e-12 && (k.point.z.abs() - 0.5).abs() < 1e-12);
-        assert!(matches!(k.feature, Feature::VertexPlane { cuboid: Side::A, vertex } if vertex & 2 == 0));
+        assert!(
+            matches!(k.feature, Feature::VertexPlane { cuboid: Side::A, vertex } if vertex & 2 == 0)
+        );
     }
     check_pair((&CUBE, &cube), (&FLOOR, &floor()), BoxBoxMode::Single, 0.0);
 }
@@ -45,7 +47,11 @@ fn unit_box_on_an_edge_gives_two_contacts_and_on_a_corner_one() {
     assert_eq!(out.len(), 2);
     for (k, z) in out.iter().zip([-0.5, 0.5]) {
         assert!((k.penetration - 0.01).abs() < 1e-12);
-        assert!(close(&k.point, &Vector3::new(0.3, -0.01, z)), "{:?}", k.point);
+        assert!(
+            close(&k.point, &Vector3::new(0.3, -0.01, z)),
+            "{:?}",
+            k.point
+        );
     }
     check_pair((&CUBE, &cube), (&FLOOR, &floor()), BoxBoxMode::Single, 0.0);
 
@@ -56,7 +62,13 @@ fn unit_box_on_an_edge_gives_two_contacts_and_on_a_corner_one() {
     assert_eq!(out.len(), 1);
     assert!((out[0].penetration - 0.01).abs() < 1e-12);
     assert!(close(&out[0].point, &Vector3::new(1.0, -0.01, 2.0)));
-    assert_eq!(out[0].feature, Feature::VertexPlane { cuboid: Side::A, vertex: 7 });
+    assert_eq!(
+        out[0].feature,
+        Feature::VertexPlane {
+            cuboid: Side::A,
+            vertex: 7
+        }
+    );
 }
 
 #[test]
@@ -65,12 +77,20 @@ fn floor_first_flips_the_normal_and_keeps_the_points() {
     let out = collide_all((&FLOOR, &floor()), (&CUBE, &cube), BoxBoxMode::Single);
     assert_eq!(out.len(), 4);
     assert!(out.iter().all(|k| k.normal == -Vector3::y()));
-    assert!(matches!(out[0].feature, Feature::VertexPlane { cuboid: Side::B, .. }));
+    assert!(matches!(
+        out[0].feature,
+        Feature::VertexPlane {
+            cuboid: Side::B,
+            ..
+        }
+    ));
 }
 
 #[test]
 fn box_on_a_box_face_to_face_gives_four_manifold_points_or_one_single() {
-    let slab = Shape::Box { sides: [4.0, 1.0, 4.0] };
+    let slab = Shape::Box {
+        sides: [4.0, 1.0, 4.0],
+    };
     let below = pose([0.0, 0.0, 0.0], UnitQuaternion::identity());
     let above = pose([0.2, 0.98, -0.1], UnitQuaternion::identity());
     let manifold = collide_all((&CUBE, &above), (&slab, &below), BoxBoxMode::Manifold);
@@ -83,7 +103,10 @@ fn box_on_a_box_face_to_face_gives_four_manifold_points_or_one_single() {
         assert!((k.penetration - 0.02).abs() < 1e-12);
         // The cube's corners (the incident face), 0.02 below the slab's top.
         assert!((k.point.y - 0.48).abs() < 1e-12);
-        assert!((c.0 - e.0).abs() < 1e-12 && (c.1 - e.1).abs() < 1e-12, "{c:?} vs {e:?}");
+        assert!(
+            (c.0 - e.0).abs() < 1e-12 && (c.1 - e.1).abs() < 1e-12,
+            "{c:?} vs {e:?}"
+        );
         assert!(matches!(k.feature, Feature::FaceFace { axis: 1, .. }));
     }
     let single = collide_all((&CUBE, &above), (&slab, &below), BoxBoxMode::Single);
@@ -92,8 +115,15 @@ fn box_on_a_box_face_to_face_gives_four_manifold_points_or_one_single() {
     assert!((single[0].penetration - 0.02).abs() < 1e-12);
     // One corner of the cube, midway between it and the slab's top.
     let corner = single[0].point - Vector3::new(0.0, 0.01, 0.0);
-    assert!(manifold.iter().any(|k| close(&k.point, &corner)), "{:?}", single[0]);
-    assert!(matches!(single[0].feature, Feature::VertexFace { axis: 1, .. }));
+    assert!(
+        manifold.iter().any(|k| close(&k.point, &corner)),
+        "{:?}",
+        single[0]
+    );
+    assert!(matches!(
+        single[0].feature,
+        Feature::VertexFace { axis: 1, .. }
+    ));
     for mode in [BoxBoxMode::Single, BoxBoxMode::Manifold] {
         check_pair((&CUBE, &above), (&slab, &below), mode, 0.0);
     }
@@ -118,12 +148,22 @@ fn crossing_edges_give_one_edge_edge_contact_between_the_edges() {
         let out = collide_all((&CUBE, &a), (&CUBE, &b), mode);
         assert_eq!(out.len(), 1, "{mode:?}");
         let k = out[0];
-        assert_eq!(k.feature, Feature::EdgeEdge { axis_a: 0, axis_b: 2 });
+        assert_eq!(
+            k.feature,
+            Feature::EdgeEdge {
+                axis_a: 0,
+                axis_b: 2
+            }
+        );
         assert!((k.normal - Vector3::y()).norm() < 1e-12);
         assert!((k.penetration - 0.02).abs() < 1e-12);
         // A's edge runs along x (x = 0.1 ± 0.5) at z = 0, B's along z
         // (z = 0.2 ± 0.5) at x = 0: they cross above x = z = 0, 0.02 apart.
-        assert!(close(&k.point, &Vector3::new(0.0, SQRT_2 / 2.0 - 0.01, 0.0)), "{:?}", k.point);
+        assert!(
+            close(&k.point, &Vector3::new(0.0, SQRT_2 / 2.0 - 0.01, 0.0)),
+            "{:?}",
+            k.point
+        );
         check_pair((&CUBE, &a), (&CUBE, &b), mode, 0.0);
     }
 }
@@ -135,7 +175,10 @@ fn edges_apart_give_nothing_though_every_face_axis_overlaps() {
     assert!(out.is_empty(), "{out:?}");
     // A contact margin of 0.03 reports the gap as a negative penetration.
     let mut near = Vec::new();
-    let options = contact_lab::physics::collide::Options { box_box: BoxBoxMode::Single, tolerance: 0.03 };
+    let options = contact_lab::physics::collide::Options {
+        box_box: BoxBoxMode::Single,
+        tolerance: 0.03,
+    };
     contact_lab::physics::collide::collide_with((&CUBE, &a), (&CUBE, &b), &options, &mut near);
     assert_eq!(near.len(), 1);
     assert!((near[0].penetration + 0.02).abs() < 1e-12);
@@ -146,7 +189,10 @@ fn separated_pairs_give_nothing() {
     let ball = Shape::Sphere { radius: 0.5 };
     let far = pose([3.0, 0.0, 0.0], UnitQuaternion::identity());
     let here = pose([0.0, 0.6, 0.0], UnitQuaternion::identity());
-    let turned = pose([0.0, 1.8, 0.0], UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 0.3));
+    let turned = pose(
+        [0.0, 1.8, 0.0],
+        UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 0.3),
+    );
     let cases: [(&Shape, &Pose<f64>, &Shape, &Pose<f64>); 6] = [
         (&ball, &here, &ball, &far),
         (&ball, &here, &CUBE, &far),
@@ -157,7 +203,10 @@ fn separated_pairs_give_nothing() {
     ];
     for (sa, pa, sb, pb) in cases {
         for mode in [BoxBoxMode::Single, BoxBoxMode::Manifold] {
-            assert!(collide_all((sa, pa), (sb, pb), mode).is_empty(), "{sa:?} {sb:?}");
+            assert!(
+                collide_all((sa, pa), (sb, pb), mode).is_empty(),
+                "{sa:?} {sb:?}"
+            );
             assert!(collide_all((sb, pb), (sa, pa), mode).is_empty());
         }
     }
@@ -174,16 +223,33 @@ fn sphere_in_a_box_corner_and_a_box_on_a_ball() {
     let s = std::f64::consts::FRAC_1_SQRT_2;
     assert!((out[0].normal - Vector3::new(s, s, 0.0)).norm() < 1e-15);
     assert!((out[0].penetration - (1.0 - s)).abs() < 1e-15);
-    assert_eq!(out[0].feature, Feature::SphereBox { sphere: Side::A, part: BoxPart::Edge });
+    assert_eq!(
+        out[0].feature,
+        Feature::SphereBox {
+            sphere: Side::A,
+            part: BoxPart::Edge
+        }
+    );
     check_pair((&ball, &ball_pose), (&CUBE, &cube), BoxBoxMode::Single, 0.0);
 }
 
 #[test]
 fn cylinders_meet_only_half_spaces() {
-    let can = Shape::Cylinder { radius: 0.5, height: 1.0 };
+    let can = Shape::Cylinder {
+        radius: 0.5,
+        height: 1.0,
+    };
     let upright = pose([0.0, 0.45, 0.0], UnitQuaternion::identity());
-    assert_eq!(collide_all((&can, &upright), (&FLOOR, &floor()), BoxBoxMode::Single).len(), 4);
-    check_pair((&can, &upright), (&FLOOR, &floor()), BoxBoxMode::Single, 0.0);
+    assert_eq!(
+        collide_all((&can, &upright), (&FLOOR, &floor()), BoxBoxMode::Single).len(),
+        4
+    );
+    check_pair(
+        (&can, &upright),
+        (&FLOOR, &floor()),
+        BoxBoxMode::Single,
+        0.0,
+    );
     let inside = pose([0.0, 0.5, 0.0], UnitQuaternion::identity());
     for other in [CUBE, Shape::Sphere { radius: 1.0 }, can] {
         assert!(collide_all((&can, &upright), (&other, &inside), BoxBoxMode::Manifold).is_empty());
@@ -194,9 +260,17 @@ fn cylinders_meet_only_half_spaces() {
 #[test]
 fn single_precision_gives_the_same_contacts() {
     let (a, b) = crossing(0.02, [0.1, 0.2]);
-    let cast = |p: &Pose<f64>| Pose::<f32> { position: p.position.cast(), rotation: p.rotation.cast() };
+    let cast = |p: &Pose<f64>| Pose::<f32> {
+        position: p.position.cast(),
+        rotation: p.rotation.cast(),
+    };
     let mut out32: Vec<ContactPoint<f32>> = Vec::new();
-    collide((&CUBE, &cast(&a)), (&CUBE, &cast(&b)), BoxBoxMode::Single, &mut out32);
+    collide(
+        (&CUBE, &cast(&a)),
+        (&CUBE, &cast(&b)),
+        BoxBoxMode::Single,
+        &mut out32,
+    );
     let out64 = collide_all((&CUBE, &a), (&CUBE, &b), BoxBoxMode::Single);
     assert_eq!(out32.len(), 1);
     assert_eq!(out32[0].feature, out64[0].feature);
@@ -204,7 +278,12 @@ fn single_precision_gives_the_same_contacts() {
     assert!((f64::from(out32[0].penetration) - 0.02).abs() < 1e-6);
     let cube = cast(&pose([0.0, 0.49, 0.0], UnitQuaternion::identity()));
     out32.clear();
-    collide((&CUBE, &cube), (&FLOOR, &cast(&floor())), BoxBoxMode::Manifold, &mut out32);
+    collide(
+        (&CUBE, &cube),
+        (&FLOOR, &cast(&floor())),
+        BoxBoxMode::Manifold,
+        &mut out32,
+    );
     assert_eq!(out32.len(), 4);
 }
 
@@ -220,7 +299,10 @@ fn moving_a_along_the_normal_by_the_penetration_separates() {
     let away = moved(&cube, &(out[0].normal * (out[0].penetration + 1e-9)));
     assert!(collide_all((&CUBE, &away), (&ball, &ball_pose), BoxBoxMode::Single).is_empty());
     let short = moved(&cube, &(out[0].normal * (out[0].penetration - 1e-6)));
-    assert_eq!(collide_all((&CUBE, &short), (&ball, &ball_pose), BoxBoxMode::Single).len(), 1);
+    assert_eq!(
+        collide_all((&CUBE, &short), (&ball, &ball_pose), BoxBoxMode::Single).len(),
+        1
+    );
 }
 
 #[test]
@@ -229,17 +311,29 @@ fn a_long_edge_across_a_face_touches_where_it_crosses_the_face() {
     // into the top face of cube A. The reference engine's point–face vertex
     // is an end of that edge, at z = ±3, beside the unit face; the contact
     // is taken where the edge crosses the face instead.
-    let bar = Shape::Box { sides: [1.0, 1.0, 6.0] };
+    let bar = Shape::Box {
+        sides: [1.0, 1.0, 6.0],
+    };
     let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), FRAC_PI_4);
     let bar_pose = pose([0.0, 0.5 + SQRT_2 / 2.0 - 0.01, 0.0], turn);
     let cube = pose([0.0, 0.0, 0.0], UnitQuaternion::identity());
     let single = collide_all((&CUBE, &cube), (&bar, &bar_pose), BoxBoxMode::Single);
     assert_eq!(single.len(), 1);
-    assert_eq!(single[0].feature, Feature::FaceFace { reference: Side::A, axis: 1 });
+    assert_eq!(
+        single[0].feature,
+        Feature::FaceFace {
+            reference: Side::A,
+            axis: 1
+        }
+    );
     assert_eq!(single[0].normal, -Vector3::y());
     assert!((single[0].penetration - 0.01).abs() < 1e-12);
     assert!((single[0].point.x.abs() < 1e-12) && (single[0].point.y - 0.49).abs() < 1e-12);
-    assert!((single[0].point.z.abs() - 0.5).abs() < 1e-12, "{:?}", single[0].point);
+    assert!(
+        (single[0].point.z.abs() - 0.5).abs() < 1e-12,
+        "{:?}",
+        single[0].point
+    );
     let manifold = collide_all((&CUBE, &cube), (&bar, &bar_pose), BoxBoxMode::Manifold);
     assert_eq!(manifold.len(), 2);
     assert!((manifold[0].point.z + manifold[1].point.z).abs() < 1e-12);

@@ -15,7 +15,9 @@ use proptest::prelude::*;
 
 fn unit_quaternion() -> impl Strategy<Value = UnitQuaternion<f64>> {
     prop::array::uniform4(-1.0..1.0f64)
-        .prop_filter("non-degenerate", |q| q.iter().map(|x| x * x).sum::<f64>() > 1e-3)
+        .prop_filter("non-degenerate", |q| {
+            q.iter().map(|x| x * x).sum::<f64>() > 1e-3
+        })
         .prop_map(|q| UnitQuaternion::new_normalize(Quaternion::new(q[0], q[1], q[2], q[3])))
 }
 
@@ -68,7 +70,8 @@ fn sample_inside(a: (&Shape, &Pose<f64>), b: (&Shape, &Pose<f64>)) -> bool {
     steps.iter().any(|&x| {
         steps.iter().any(|&y| {
             steps.iter().any(|&z| {
-                let p = a.1.position + axes[0] * (x * h.x) + axes[1] * (y * h.y) + axes[2] * (z * h.z);
+                let p =
+                    a.1.position + axes[0] * (x * h.x) + axes[1] * (y * h.y) + axes[2] * (z * h.z);
                 surface_distance(b, &p) < -1e-9
             })
         })
@@ -247,7 +250,12 @@ fn brute_force(bounds: &[Option<Aabb<f64>>], half_spaces: &[usize]) -> Vec<(usiz
             }
         }
         if a.is_some() {
-            pairs.extend(half_spaces.iter().filter(|&&h| h != i).map(|&h| (i.min(h), i.max(h))));
+            pairs.extend(
+                half_spaces
+                    .iter()
+                    .filter(|&&h| h != i)
+                    .map(|&h| (i.min(h), i.max(h))),
+            );
         }
     }
     pairs.sort_unstable();
@@ -257,14 +265,24 @@ fn brute_force(bounds: &[Option<Aabb<f64>>], half_spaces: &[usize]) -> Vec<(usiz
 
 #[test]
 fn generator_skips_immovable_pairs_and_shapeless_bodies() {
-    let floor = Shape::HalfSpace { normal: [0.0, 1.0, 0.0] };
+    let floor = Shape::HalfSpace {
+        normal: [0.0, 1.0, 0.0],
+    };
     let ball = Shape::Sphere { radius: 0.5 };
-    let wall = Shape::Box { sides: [1.0, 1.0, 1.0] };
+    let wall = Shape::Box {
+        sides: [1.0, 1.0, 1.0],
+    };
     // 0 floor (immovable), 1 ball resting on it, 2 no shape, 3 and 4 two
     // immovable boxes sunk into the floor and into each other.
     let shapes = [Some(floor), Some(ball), None, Some(wall), Some(wall)];
-    let poses = [[0.0, 0.0, 0.0], [0.0, 0.49, 0.0], [0.0, 0.49, 0.0], [5.0, 0.4, 0.0], [5.5, 0.4, 0.0]]
-        .map(|p| Pose::at(Vector3::from(p)));
+    let poses = [
+        [0.0, 0.0, 0.0],
+        [0.0, 0.49, 0.0],
+        [0.0, 0.49, 0.0],
+        [5.0, 0.4, 0.0],
+        [5.5, 0.4, 0.0],
+    ]
+    .map(|p| Pose::at(Vector3::from(p)));
     let movable = [false, true, true, false, false];
     let mut generator = ContactGenerator::<f64>::new();
     let mut out = Vec::new();
@@ -278,13 +296,21 @@ fn generator_skips_immovable_pairs_and_shapeless_bodies() {
 
 #[test]
 fn generator_sweep_and_brute_force_agree_on_a_pile() {
-    let mut shapes = vec![Some(Shape::HalfSpace { normal: [0.0, 1.0, 0.0] })];
+    let mut shapes = vec![Some(Shape::HalfSpace {
+        normal: [0.0, 1.0, 0.0],
+    })];
     let mut poses = vec![Pose::at(Vector3::zeros())];
     let turn = UnitQuaternion::from_euler_angles(0.3, 0.2, 0.1);
     for i in 0..150 {
-        let (x, z, y) = ((i % 5) as f64 * 0.9, (i / 5 % 5) as f64 * 0.9, (i / 25) as f64 * 0.9 + 0.48);
+        let (x, z, y) = (
+            (i % 5) as f64 * 0.9,
+            (i / 5 % 5) as f64 * 0.9,
+            (i / 25) as f64 * 0.9 + 0.48,
+        );
         shapes.push(Some(if i % 3 == 0 {
-            Shape::Box { sides: [0.9, 0.8, 1.0] }
+            Shape::Box {
+                sides: [0.9, 0.8, 1.0],
+            }
         } else {
             Shape::Sphere { radius: 0.5 }
         }));

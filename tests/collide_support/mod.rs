@@ -91,14 +91,20 @@ pub fn check_pair(
     let back = collide_all(b, a, mode);
     assert_eq!(back.len(), out.len(), "swapped count");
     for (k, j) in out.iter().zip(&back) {
-        assert!((k.point - j.point).norm() <= 1e-12 * scale(a.0, b.0), "{k:?} {j:?}");
+        assert!(
+            (k.point - j.point).norm() <= 1e-12 * scale(a.0, b.0),
+            "{k:?} {j:?}"
+        );
         assert!((k.normal + j.normal).norm() <= 1e-12, "{k:?} {j:?}");
         assert_eq!(k.penetration, j.penetration);
         assert_eq!(k.feature.swapped(), j.feature);
     }
     if let Some(first) = out.first() {
         let n = first.normal;
-        assert!(out.iter().all(|k| (k.normal - n).norm() < 1e-12), "one normal per pair");
+        assert!(
+            out.iter().all(|k| (k.normal - n).norm() < 1e-12),
+            "one normal per pair"
+        );
         // Boxes: the single contact's penetration is the overlap on the axis
         // (a manifold point's own depth may be less).
         let both_boxes = matches!((a.0, b.0), (Shape::Box { .. }, Shape::Box { .. }));
@@ -110,7 +116,10 @@ pub fn check_pair(
         assert!(out.iter().all(|k| k.penetration <= depth + eps));
         let away = moved(a.1, &(n * (depth + 1e-7 * scale(a.0, b.0))));
         let after = collide_all((a.0, &away), b, mode);
-        assert!(after.is_empty(), "still touching after moving A by {depth}: {after:?}");
+        assert!(
+            after.is_empty(),
+            "still touching after moving A by {depth}: {after:?}"
+        );
     }
     out
 }

@@ -52,7 +52,9 @@ pub(super) fn separating_axis<T: Real>(
         radius(ha, &a) + radius(hb, &b) - d.dot(l).abs()
     };
     let mut face: Option<(Axis, Vector3<T>, T)> = None;
-    let faces = (0..3).map(|i| (Axis::FaceA(i), a[i])).chain((0..3).map(|j| (Axis::FaceB(j), b[j])));
+    let faces = (0..3)
+        .map(|i| (Axis::FaceA(i), a[i]))
+        .chain((0..3).map(|j| (Axis::FaceB(j), b[j])));
     for (axis, l) in faces {
         let depth = overlap(&l);
         if depth < -tol {
@@ -63,9 +65,9 @@ pub(super) fn separating_axis<T: Real>(
         }
     }
     let mut edge: Option<(Axis, Vector3<T>, T)> = None;
-    for i in 0..3 {
-        for j in 0..3 {
-            let l = a[i].cross(&b[j]);
+    for (i, ai) in a.iter().enumerate() {
+        for (j, bj) in b.iter().enumerate() {
+            let l = ai.cross(bj);
             let length_squared = l.norm_squared();
             if length_squared < c::<T>(PARALLEL_SQUARED) {
                 continue;
@@ -90,7 +92,11 @@ pub(super) fn separating_axis<T: Real>(
         }
     }
     let normal = if d.dot(&l) < T::zero() { -l } else { l };
-    Some(Overlap { axis, normal, depth })
+    Some(Overlap {
+        axis,
+        normal,
+        depth,
+    })
 }
 
 /// Box A (half sides `ha`) against box B (`hb`).
@@ -132,8 +138,18 @@ fn face<'a, T: Real>(
     outward: Vector3<T>,
     side: Side,
 ) -> Reference<'a, T> {
-    let sign = if pose.axis(axis).dot(&outward) < T::zero() { -T::one() } else { T::one() };
-    Reference { pose, h, axis, sign, side }
+    let sign = if pose.axis(axis).dot(&outward) < T::zero() {
+        -T::one()
+    } else {
+        T::one()
+    };
+    Reference {
+        pose,
+        h,
+        axis,
+        sign,
+        side,
+    }
 }
 
 /// Single mode, face axis: the incident box's vertex deepest through the
@@ -154,7 +170,9 @@ fn point_face<T: Real>(
         let plus = incident.axis(k).dot(&outward) <= T::zero();
         bits | (u8::from(plus) << k)
     });
-    let local = reference.pose.to_local(&incident.to_world(&vertex(hi, index)));
+    let local = reference
+        .pose
+        .to_local(&incident.to_world(&vertex(hi, index)));
     let slack = reference.h.amax() * T::default_epsilon() * c::<T>(4096.0);
     let beside = (0..3)
         .filter(|&k| k != reference.axis)
@@ -163,7 +181,9 @@ fn point_face<T: Real>(
         let polygon = clip_incident(reference, incident, hi);
         let depth = |p: &&Vector3<T>| reference.depth(p);
         let inside = polygon.iter().filter(|p| reference.holds(p, T::zero()));
-        inside.reduce(|best, p| if depth(&p) > depth(&best) { p } else { best }).copied()
+        inside
+            .reduce(|best, p| if depth(&p) > depth(&best) { p } else { best })
+            .copied()
     } else {
         None
     };

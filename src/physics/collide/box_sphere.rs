@@ -33,10 +33,19 @@ pub(super) fn box_sphere<T: Real>(
         // Inside: the nearest face, first axis on ties; its outward normal o.
         let depth = |k: usize| h[k] - q[k].abs();
         let axis = (1..3).fold(0, |best, k| if depth(k) < depth(best) { k } else { best });
-        let sign = if q[axis] < T::zero() { -T::one() } else { T::one() };
+        let sign = if q[axis] < T::zero() {
+            -T::one()
+        } else {
+            T::one()
+        };
         let outward = Vector3::from_fn(|k, _| if k == axis { sign } else { T::zero() });
         let face_depth = depth(axis);
-        (-outward, r + face_depth, q + outward * face_depth, BoxPart::Inside)
+        (
+            -outward,
+            r + face_depth,
+            q + outward * face_depth,
+            BoxPart::Inside,
+        )
     } else {
         let towards_box = closest - q;
         let distance = towards_box.norm();
@@ -68,7 +77,14 @@ mod tests {
     fn run(q: [f64; 3], r: f64) -> Vec<ContactPoint<f64>> {
         let h = Vector3::new(1.0, 2.0, 3.0);
         let mut out = Vec::new();
-        box_sphere(&h, &Pose::at(Vector3::zeros()), r, &Pose::at(q.into()), 0.0, &mut out);
+        box_sphere(
+            &h,
+            &Pose::at(Vector3::zeros()),
+            r,
+            &Pose::at(q.into()),
+            0.0,
+            &mut out,
+        );
         out
     }
 
@@ -78,17 +94,35 @@ mod tests {
         assert_eq!(face[0].normal, -Vector3::x());
         assert!((face[0].penetration - 0.5).abs() < 1e-15);
         assert!((face[0].point - Vector3::new(0.75, 0.0, 0.0)).norm() < 1e-15);
-        assert!(matches!(face[0].feature, Feature::SphereBox { part: BoxPart::Face, .. }));
+        assert!(matches!(
+            face[0].feature,
+            Feature::SphereBox {
+                part: BoxPart::Face,
+                ..
+            }
+        ));
 
         let edge = run([2.0, 3.0, 0.0], 1.5);
         let s = std::f64::consts::FRAC_1_SQRT_2;
         assert!((edge[0].normal - Vector3::new(-s, -s, 0.0)).norm() < 1e-15);
         assert!((edge[0].penetration - (1.5 - 2f64.sqrt())).abs() < 1e-15);
-        assert!(matches!(edge[0].feature, Feature::SphereBox { part: BoxPart::Edge, .. }));
+        assert!(matches!(
+            edge[0].feature,
+            Feature::SphereBox {
+                part: BoxPart::Edge,
+                ..
+            }
+        ));
 
         let corner = run([2.0, 3.0, 4.0], 1.8);
         assert!((corner[0].penetration - (1.8 - 3f64.sqrt())).abs() < 1e-15);
-        assert!(matches!(corner[0].feature, Feature::SphereBox { part: BoxPart::Vertex, .. }));
+        assert!(matches!(
+            corner[0].feature,
+            Feature::SphereBox {
+                part: BoxPart::Vertex,
+                ..
+            }
+        ));
 
         assert!(run([2.0, 3.0, 4.0], 1.7).is_empty());
         assert!(run([2.6, 0.0, 0.0], 1.5).is_empty());
@@ -102,7 +136,13 @@ mod tests {
         assert!((out[0].penetration - 0.75).abs() < 1e-15);
         // Box face at y = 2, sphere's deepest point 1.25: midway 1.625.
         assert!((out[0].point - Vector3::new(0.1, 1.625, 0.5)).norm() < 1e-15);
-        assert!(matches!(out[0].feature, Feature::SphereBox { part: BoxPart::Inside, .. }));
+        assert!(matches!(
+            out[0].feature,
+            Feature::SphereBox {
+                part: BoxPart::Inside,
+                ..
+            }
+        ));
     }
 
     #[test]
@@ -112,7 +152,14 @@ mod tests {
         let h = Vector3::new(1.0, 2.0, 3.0);
         // Body x is world y: the +x face is at world y = 1.
         let mut out = Vec::new();
-        box_sphere(&h, &cuboid, 1.0, &Pose::at(Vector3::new(10.0, 1.5, 0.0)), 0.0, &mut out);
+        box_sphere(
+            &h,
+            &cuboid,
+            1.0,
+            &Pose::at(Vector3::new(10.0, 1.5, 0.0)),
+            0.0,
+            &mut out,
+        );
         assert!((out[0].normal + Vector3::y()).norm() < 1e-15);
         assert!((out[0].penetration - 0.5).abs() < 1e-15);
     }

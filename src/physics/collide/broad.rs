@@ -30,12 +30,15 @@ impl<T: Real> Aabb<T> {
             Shape::Sphere { radius } | Shape::HollowSphere { radius } => Vector3::repeat(c(radius)),
             // Half extent along world axis k: Σ_j |R_kj| h_j.
             Shape::Box { sides } => Vector3::from_fn(|k, _| {
-                (0..3).fold(T::zero(), |sum, j| sum + r[(k, j)].abs() * c::<T>(sides[j] / 2.0))
+                (0..3).fold(T::zero(), |sum, j| {
+                    sum + r[(k, j)].abs() * c::<T>(sides[j] / 2.0)
+                })
             }),
             // Axis a = body y: |a_k| h/2 + radius·√(1 − a_k²) (the cap discs).
             Shape::Cylinder { radius, height } => Vector3::from_fn(|k, _| {
                 let a = r[(k, 1)];
-                a.abs() * c::<T>(height / 2.0) + c::<T>(radius) * (T::one() - a * a).max(T::zero()).sqrt()
+                a.abs() * c::<T>(height / 2.0)
+                    + c::<T>(radius) * (T::one() - a * a).max(T::zero()).sqrt()
             }),
             Shape::HalfSpace { .. } => return None,
         };
@@ -79,7 +82,10 @@ impl BroadPhase {
         let count = bounds.iter().flatten().count();
         let coherent = axis == self.axis
             && self.entries.len() == count
-            && self.entries.iter().all(|e| bounds.get(e.2).is_some_and(Option::is_some));
+            && self
+                .entries
+                .iter()
+                .all(|e| bounds.get(e.2).is_some_and(Option::is_some));
         if coherent {
             for entry in &mut self.entries {
                 let b = bounds[entry.2].as_ref().expect("checked above");
@@ -87,11 +93,16 @@ impl BroadPhase {
             }
         } else {
             self.entries.clear();
-            let finite = bounds.iter().enumerate().filter_map(|(i, b)| Some((i, b.as_ref()?)));
-            self.entries.extend(finite.map(|(i, b)| (to_f64(b.min[axis]), to_f64(b.max[axis]), i)));
+            let finite = bounds
+                .iter()
+                .enumerate()
+                .filter_map(|(i, b)| Some((i, b.as_ref()?)));
+            self.entries
+                .extend(finite.map(|(i, b)| (to_f64(b.min[axis]), to_f64(b.max[axis]), i)));
             self.axis = axis;
         }
-        self.entries.sort_unstable_by(|p, q| p.0.total_cmp(&q.0).then(p.2.cmp(&q.2)));
+        self.entries
+            .sort_unstable_by(|p, q| p.0.total_cmp(&q.0).then(p.2.cmp(&q.2)));
         // Sweep: each box meets the later boxes that start before it ends.
         for (k, &(_, end, i)) in self.entries.iter().enumerate() {
             for &(start, _, j) in &self.entries[k + 1..] {
@@ -173,13 +184,23 @@ mod tests {
     use nalgebra::UnitQuaternion;
 
     fn cube(x: f64, y: f64) -> Option<Aabb<f64>> {
-        Some(Aabb::around(&Vector3::new(x, y, 0.0), &Vector3::repeat(0.5)))
+        Some(Aabb::around(
+            &Vector3::new(x, y, 0.0),
+            &Vector3::repeat(0.5),
+        ))
     }
 
     #[test]
     fn sweep_finds_touching_and_overlapping_boxes_only() {
         // 0–1 touch on x, 1–2 overlap, 3 is far, 4 has no shape, 5 is a floor.
-        let bounds = [cube(0.0, 0.0), cube(1.0, 0.0), cube(1.5, 0.2), cube(9.0, 0.0), None, None];
+        let bounds = [
+            cube(0.0, 0.0),
+            cube(1.0, 0.0),
+            cube(1.5, 0.2),
+            cube(9.0, 0.0),
+            None,
+            None,
+        ];
         let mut out = Vec::new();
         candidate_pairs(&bounds, &[5], &mut out);
         assert_eq!(out, [(0, 1), (0, 5), (1, 2), (1, 5), (2, 5), (3, 5)]);
@@ -201,14 +222,31 @@ mod tests {
     fn bounds_of_turned_shapes() {
         let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_4);
         let pose = Pose::from_unit(Vector3::zeros(), &turn);
-        let b = Aabb::of(&Shape::Box { sides: [2.0, 2.0, 4.0] }, &pose, 0.0).unwrap();
+        let b = Aabb::of(
+            &Shape::Box {
+                sides: [2.0, 2.0, 4.0],
+            },
+            &pose,
+            0.0,
+        )
+        .unwrap();
         assert!((b.max - Vector3::new(2f64.sqrt(), 2f64.sqrt(), 2.0)).norm() < 1e-15);
         // A cylinder lying along world −x after a quarter turn about z.
         let side = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
         let lying = Pose::from_unit(Vector3::zeros(), &side);
-        let can = Shape::Cylinder { radius: 0.5, height: 3.0 };
+        let can = Shape::Cylinder {
+            radius: 0.5,
+            height: 3.0,
+        };
         let b = Aabb::of(&can, &lying, 0.1).unwrap();
         assert!((b.max - Vector3::new(1.6, 0.6, 0.6)).norm() < 1e-12);
-        assert!(Aabb::of(&Shape::HalfSpace { normal: [0.0, 1.0, 0.0] }, &pose, 0.0).is_none());
+        assert!(Aabb::of(
+            &Shape::HalfSpace {
+                normal: [0.0, 1.0, 0.0]
+            },
+            &pose,
+            0.0
+        )
+        .is_none());
     }
 }

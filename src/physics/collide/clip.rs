@@ -64,7 +64,12 @@ impl<T: Real> Reference<'_, T> {
 
     /// The contact at a reference-frame point of the incident face (the
     /// point itself: on the incident box, `depth` inside the reference box).
-    pub fn contact(&self, local: &Vector3<T>, normal: &Vector3<T>, penetration: T) -> ContactPoint<T> {
+    pub fn contact(
+        &self,
+        local: &Vector3<T>,
+        normal: &Vector3<T>,
+        penetration: T,
+    ) -> ContactPoint<T> {
         ContactPoint {
             point: self.pose.to_world(local),
             normal: *normal,
@@ -87,9 +92,19 @@ pub(super) fn clip_incident<T: Real>(
     // Outward normal of the reference face, and the incident axis most along it.
     let outward = reference.pose.axis(reference.axis) * reference.sign;
     let dots = Vector3::from_fn(|k, _| incident.axis(k).dot(&outward));
-    let j = (1..3).fold(0, |best, k| if dots[k].abs() > dots[best].abs() { k } else { best });
+    let j = (1..3).fold(0, |best, k| {
+        if dots[k].abs() > dots[best].abs() {
+            k
+        } else {
+            best
+        }
+    });
     // The incident face facing the reference box: its normal against `outward`.
-    let face_sign = if dots[j] > T::zero() { -T::one() } else { T::one() };
+    let face_sign = if dots[j] > T::zero() {
+        -T::one()
+    } else {
+        T::one()
+    };
     let (u, v) = ((j + 1) % 3, (j + 2) % 3);
     let mut polygon = Polygon::new();
     for (su, sv) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)] {
@@ -179,7 +194,11 @@ fn reduce<T: Real>(
     let added = |k: usize| {
         let edges = [(first, second), (second, third), (third, first)];
         edges.iter().fold(T::zero(), |sum, &(a, b)| {
-            let outside = if turn < T::zero() { cross(a, b, k) } else { -cross(a, b, k) };
+            let outside = if turn < T::zero() {
+                cross(a, b, k)
+            } else {
+                -cross(a, b, k)
+            };
             sum + outside.max(T::zero())
         })
     };
@@ -204,7 +223,12 @@ mod tests {
 
     #[test]
     fn sutherland_hodgman_cuts_a_square_corner() {
-        let square = polygon(&[[1.0, 0.0, 1.0], [-1.0, 0.0, 1.0], [-1.0, 0.0, -1.0], [1.0, 0.0, -1.0]]);
+        let square = polygon(&[
+            [1.0, 0.0, 1.0],
+            [-1.0, 0.0, 1.0],
+            [-1.0, 0.0, -1.0],
+            [1.0, 0.0, -1.0],
+        ]);
         // Keep x ≤ 0.5: the square loses a strip, 4 points remain.
         let cut = clip_plane(&square, 0, 1.0, 0.5);
         assert_eq!(cut.len, 4);

@@ -31,9 +31,9 @@
 //! The broad phase ([`broad`]) finds candidate pairs; [`scene::ContactGenerator`]
 //! runs both phases over a set of bodies.
 
-pub mod broad;
 mod box_box;
 mod box_sphere;
+pub mod broad;
 mod clip;
 mod plane;
 pub mod scene;
@@ -146,7 +146,11 @@ pub enum Feature {
     /// A cylinder's rim point at or below a half-space: cap 0 is at body
     /// −y, cap 1 at +y; `quarter` 0 is the rim point deepest below the plane,
     /// 1–3 the points a quarter turn apart from it.
-    RimPlane { cylinder: Side, cap: u8, quarter: u8 },
+    RimPlane {
+        cylinder: Side,
+        cap: u8,
+        quarter: u8,
+    },
     /// A vertex of one box on face `axis` of the box on side `face`
     /// (the reference engine's point–face contact).
     VertexFace { face: Side, axis: u8, vertex: u8 },
@@ -357,9 +361,10 @@ fn narrow<T: Real>(
             Shape::Sphere { radius: r1 } | Shape::HollowSphere { radius: r1 },
             Shape::Sphere { radius: r2 } | Shape::HollowSphere { radius: r2 },
         ) => sphere::sphere_sphere(c(r1), pa, c(r2), pb, tol, out),
-        (Shape::Sphere { radius } | Shape::HollowSphere { radius }, Shape::HalfSpace { normal }) => {
-            plane::sphere_plane(c(radius), pa, &plane_normal(&normal), pb, tol, out)
-        }
+        (
+            Shape::Sphere { radius } | Shape::HollowSphere { radius },
+            Shape::HalfSpace { normal },
+        ) => plane::sphere_plane(c(radius), pa, &plane_normal(&normal), pb, tol, out),
         // Cylinder with box, sphere or cylinder; two half-spaces: not yet.
         _ => {}
     }

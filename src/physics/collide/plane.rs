@@ -150,12 +150,26 @@ mod tests {
     fn sphere_below_its_radius() {
         let mut out = Vec::new();
         let floor = Pose::at(Vector3::new(0.0, 1.0, 0.0));
-        sphere_plane(2.0, &Pose::at(Vector3::new(5.0, 2.5, 0.0)), &UP, &floor, 0.0, &mut out);
+        sphere_plane(
+            2.0,
+            &Pose::at(Vector3::new(5.0, 2.5, 0.0)),
+            &UP,
+            &floor,
+            0.0,
+            &mut out,
+        );
         assert_eq!(out.len(), 1);
         assert!((out[0].penetration - 0.5).abs() < 1e-15);
         // Sphere bottom at y = 0.5, plane at 1: midway 0.75, under the centre.
         assert!((out[0].point - Vector3::new(5.0, 0.75, 0.0)).norm() < 1e-15);
-        sphere_plane(2.0, &Pose::at(Vector3::new(5.0, 3.01, 0.0)), &UP, &floor, 0.0, &mut out);
+        sphere_plane(
+            2.0,
+            &Pose::at(Vector3::new(5.0, 3.01, 0.0)),
+            &UP,
+            &floor,
+            0.0,
+            &mut out,
+        );
         assert_eq!(out.len(), 1);
     }
 
@@ -170,7 +184,9 @@ mod tests {
         // Standing on its cap, sunk 0.01: four rim points at depth 0.01.
         let standing = count(Pose::at(Vector3::new(0.0, 0.99, 0.0)));
         assert_eq!(standing.len(), 4);
-        assert!(standing.iter().all(|k| (k.penetration - 0.01).abs() < 1e-12));
+        assert!(standing
+            .iter()
+            .all(|k| (k.penetration - 0.01).abs() < 1e-12));
         // Lying on its side (axis along x), sunk 0.01: one point on each cap rim.
         let side = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
         let lying = count(Pose::from_unit(Vector3::new(0.0, 0.49, 0.0), &side));

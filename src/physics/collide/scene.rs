@@ -74,12 +74,14 @@ impl<T: Real> ContactGenerator<T> {
             if let Some(Shape::HalfSpace { .. }) = shape {
                 self.half_spaces.push(i);
             }
-            self.bounds.push(shape.as_ref().and_then(|s| Aabb::of(s, pose, margin)));
+            self.bounds
+                .push(shape.as_ref().and_then(|s| Aabb::of(s, pose, margin)));
         }
         if self.brute_force {
             all_pairs(&self.bounds, &self.half_spaces, &mut self.pairs);
         } else {
-            self.broad.candidate_pairs(&self.bounds, &self.half_spaces, &mut self.pairs);
+            self.broad
+                .candidate_pairs(&self.bounds, &self.half_spaces, &mut self.pairs);
         }
         for &(i, j) in &self.pairs {
             let (body1, body2) = match (movable[i], movable[j]) {
@@ -91,7 +93,12 @@ impl<T: Real> ContactGenerator<T> {
                 continue;
             };
             self.points.clear();
-            collide_with((s1, &poses[body1]), (s2, &poses[body2]), options, &mut self.points);
+            collide_with(
+                (s1, &poses[body1]),
+                (s2, &poses[body2]),
+                options,
+                &mut self.points,
+            );
             out.extend(self.points.iter().map(|&contact| BodyContact {
                 body1,
                 body2,

@@ -85,7 +85,10 @@ mod tests {
     #[test]
     fn tolerance_reports_a_near_gap() {
         let mut out: Vec<ContactPoint<f64>> = Vec::new();
-        let (pa, pb) = (Pose::at(Vector3::new(0.0, 2.1, 0.0)), Pose::at(Vector3::zeros()));
+        let (pa, pb) = (
+            Pose::at(Vector3::new(0.0, 2.1, 0.0)),
+            Pose::at(Vector3::zeros()),
+        );
         sphere_sphere(1.0, &pa, 1.0, &pb, 0.05, &mut out);
         assert!(out.is_empty());
         sphere_sphere(1.0, &pa, 1.0, &pb, 0.2, &mut out);
