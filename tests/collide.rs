@@ -341,3 +341,44 @@ fn a_long_edge_across_a_face_touches_where_it_crosses_the_face() {
         check_pair((&CUBE, &cube), (&bar, &bar_pose), mode, 0.0);
     }
 }
+
+#[test]
+fn generated_contacts_agree_with_the_lessons_written_ones() {
+    use contact_lab::lesson::Lesson;
+    use contact_lab::physics::collide::{ContactGenerator, Options};
+    use contact_lab::physics::BodyId;
+    let generate = |id: &str, box_box: BoxBoxMode, tolerance: f64| {
+        let world = Lesson::load(id).unwrap().world::<f64>();
+        let mut out = Vec::new();
+        let options = Options { box_box, tolerance };
+        ContactGenerator::new().generate_world(&world.bodies, &options, &mut out);
+        (world, out)
+    };
+    // lecture-2: the turned cube's lowest edge just touches the floor (the
+    // lesson's numbers are rounded to 4 decimals: a gap of 4.5e-4 remains).
+    // The lesson's one contact is the edge's middle; generation gives its ends.
+    let (world, out) = generate("lecture-2", BoxBoxMode::Single, 1e-3);
+    let written = &world.contacts[0].input;
+    assert_eq!(out.len(), 2);
+    for (k, z) in out.iter().zip([-6.0, 6.0]) {
+        assert_eq!((k.body1, k.body2), (BodyId(0), BodyId(1)));
+        assert_eq!(k.contact.normal, written.normal);
+        assert!((k.contact.point - written.point - Vector3::new(0.0, 0.0, z)).norm() < 1e-3);
+        assert!(k.contact.penetration.abs() < 5e-4);
+    }
+    assert!(generate("lecture-2", BoxBoxMode::Single, 0.0).1.is_empty());
+    // two-boxes: the written normal and penetration, 4 points across the face.
+    let (world, out) = generate("two-boxes", BoxBoxMode::Manifold, 0.0);
+    let written = &world.contacts[0].input;
+    assert_eq!(out.len(), 4);
+    for k in &out {
+        assert!((k.contact.normal - written.normal).norm() < 1e-12);
+        assert!((k.contact.penetration - written.penetration).abs() < 1e-12);
+    }
+    // lecture-1: the two balls' line of centres is the written normal (to the
+    // lesson's 4 decimals); with equal radii the point is the written one.
+    let (world, out) = generate("lecture-1", BoxBoxMode::Single, 0.0);
+    let written = &world.contacts[0].input;
+    assert!((out[0].contact.normal - written.normal).norm() < 1e-4);
+    assert!((out[0].contact.point - written.point).norm() < 1e-12);
+}

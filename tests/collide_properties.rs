@@ -9,7 +9,7 @@ use contact_lab::physics::collide::{
     candidate_pairs, collide, Aabb, BoxBoxMode, BroadPhase, ContactGenerator, Feature, Options,
     Pose,
 };
-use contact_lab::physics::Shape;
+use contact_lab::physics::{BodyId, Shape};
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
@@ -288,7 +288,7 @@ fn generator_skips_immovable_pairs_and_shapeless_bodies() {
     let mut out = Vec::new();
     generator.generate(&shapes, &poses, &movable, &Options::default(), &mut out);
     assert_eq!(out.len(), 1, "{out:?}");
-    assert_eq!((out[0].body1, out[0].body2), (1, 0));
+    assert_eq!((out[0].body1, out[0].body2), (BodyId(1), BodyId(0)));
     assert_eq!(out[0].contact.normal, Vector3::y());
     assert!((out[0].contact.penetration - 0.01).abs() < 1e-12);
     assert!(generator.pairs().contains(&(3, 4)));
@@ -327,8 +327,8 @@ fn generator_sweep_and_brute_force_agree_on_a_pile() {
     // Every contact agrees with the pair's own generation.
     for k in a.iter().step_by(7) {
         let pair = collide_all(
-            (shapes[k.body1].as_ref().unwrap(), &poses[k.body1]),
-            (shapes[k.body2].as_ref().unwrap(), &poses[k.body2]),
+            (shapes[k.body1.0].as_ref().unwrap(), &poses[k.body1.0]),
+            (shapes[k.body2.0].as_ref().unwrap(), &poses[k.body2.0]),
             BoxBoxMode::Manifold,
         );
         assert!(pair.contains(&k.contact));

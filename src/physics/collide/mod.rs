@@ -46,6 +46,11 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 use super::{c, Real, Shape};
 
+/// How many points a box–box pair generates (`[world] box_box`): `Single`, one
+/// point–face or edge–edge contact as the reference engine; `Manifold`
+/// (default), the clipped faces, up to 4 points.
+pub use super::params::BoxBoxMode;
+
 /// Where a body is and how it is turned. `rotation` is the rotation matrix of
 /// the orientation quaternion `[w, x, y, z]`: its columns are the body's axes
 /// in world coordinates, so `world = position + rotation · local`.
@@ -215,16 +220,6 @@ pub struct ContactPoint<T: Real> {
     /// Overlap along the normal (≥ 0; the gap, negative, only within a tolerance).
     pub penetration: T,
     pub feature: Feature,
-}
-
-/// How many points a box–box pair generates.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum BoxBoxMode {
-    /// One point–face or edge–edge contact, as the reference engine.
-    Single,
-    /// The reference face clipped against the incident face: up to 4 points.
-    #[default]
-    Manifold,
 }
 
 /// Choices of the narrow phase.

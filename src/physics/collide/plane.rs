@@ -128,7 +128,7 @@ fn push_below<T: Real>(
     feature: Feature,
     out: &mut Vec<ContactPoint<T>>,
 ) {
-    let penetration = -height;
+    let penetration = T::zero() - height; // not −0 for a point on the plane
     if penetration >= -tol {
         out.push(ContactPoint {
             point: at,

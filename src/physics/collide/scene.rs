@@ -3,14 +3,15 @@
 
 use super::broad::{all_pairs, Aabb, BroadPhase};
 use super::{c, collide_with, ContactPoint, Options, Pose, Real, Shape};
+use crate::physics::{Body, BodyId};
 
 /// A generated contact between bodies `body1` and `body2` (indices into the
-/// slices given to [`ContactGenerator::generate`]); the normal points from
-/// body 2 toward body 1.
+/// slices given to [`ContactGenerator::generate`], or into the world's
+/// bodies); the normal points from body 2 toward body 1.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyContact<T: Real> {
-    pub body1: usize,
-    pub body2: usize,
+    pub body1: BodyId,
+    pub body2: BodyId,
     pub contact: ContactPoint<T>,
 }
 
@@ -25,6 +26,10 @@ pub struct ContactGenerator<T: Real> {
     half_spaces: Vec<usize>,
     pairs: Vec<(usize, usize)>,
     points: Vec<ContactPoint<T>>,
+    /// A world's bodies as slices (for `generate_world`).
+    shapes: Vec<Option<Shape>>,
+    poses: Vec<Pose<T>>,
+    movable: Vec<bool>,
 }
 
 impl<T: Real> Default for ContactGenerator<T> {
@@ -36,6 +41,9 @@ impl<T: Real> Default for ContactGenerator<T> {
             half_spaces: Vec::new(),
             pairs: Vec::new(),
             points: Vec::new(),
+            shapes: Vec::new(),
+            poses: Vec::new(),
+            movable: Vec::new(),
         }
     }
 }
@@ -100,11 +108,36 @@ impl<T: Real> ContactGenerator<T> {
                 &mut self.points,
             );
             out.extend(self.points.iter().map(|&contact| BodyContact {
-                body1,
-                body2,
+                body1: BodyId(body1),
+                body2: BodyId(body2),
                 contact,
             }));
         }
+    }
+
+    /// [`generate`](Self::generate) for a world's bodies (their shapes,
+    /// positions, orientations and movable flags).
+    pub fn generate_world(
+        &mut self,
+        bodies: &[Body<T>],
+        options: &Options<T>,
+        out: &mut Vec<BodyContact<T>>,
+    ) {
+        let (mut shapes, mut poses, mut movable) = (
+            std::mem::take(&mut self.shapes),
+            std::mem::take(&mut self.poses),
+            std::mem::take(&mut self.movable),
+        );
+        shapes.clear();
+        poses.clear();
+        movable.clear();
+        for body in bodies {
+            shapes.push(body.shape);
+            poses.push(Pose::new(body.state.position, &body.state.orientation));
+            movable.push(body.movable);
+        }
+        self.generate(&shapes, &poses, &movable, options, out);
+        (self.shapes, self.poses, self.movable) = (shapes, poses, movable);
     }
 
     /// The candidate pairs of the last [`generate`](Self::generate).
