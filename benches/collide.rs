@@ -6,7 +6,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use contact_lab::physics::collide::{
-    collide, BoxBoxMode, ContactGenerator, ContactPoint, Options, Pose,
+    all_pairs, collide, Aabb, BoxBoxMode, BroadPhase, ContactGenerator, ContactPoint, Options, Pose,
 };
 use contact_lab::physics::Shape;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -147,6 +147,29 @@ fn pile(n: usize) -> (Vec<Option<Shape>>, Vec<Pose<f64>>, Vec<bool>) {
     (shapes, poses, movable)
 }
 
+/// The broad phase alone on a pile's bounds: sort and sweep (state kept from
+/// call to call) against testing all pairs.
+fn broad(c: &mut Criterion) {
+    let mut group = c.benchmark_group("broad");
+    for n in [50, 200, 1000, 2000] {
+        let (shapes, poses, _) = pile(n);
+        let bounds: Vec<Option<Aabb<f64>>> = shapes
+            .iter()
+            .zip(&poses)
+            .map(|(s, p)| Aabb::of(s.as_ref().unwrap(), p, 0.0))
+            .collect();
+        let mut out = Vec::new();
+        let mut sweep = BroadPhase::new();
+        group.bench_with_input(BenchmarkId::new("sweep", n), &n, |b, _| {
+            b.iter(|| sweep.candidate_pairs(black_box(&bounds), &[0], &mut out))
+        });
+        group.bench_with_input(BenchmarkId::new("all_pairs", n), &n, |b, _| {
+            b.iter(|| all_pairs(black_box(&bounds), &[0], &mut out))
+        });
+    }
+    group.finish();
+}
+
 fn scenes(c: &mut Criterion) {
     let mut group = c.benchmark_group("pile");
     for n in [50, 200, 1000, 2000] {
@@ -176,6 +199,6 @@ fn scenes(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).measurement_time(Duration::from_secs(2)).warm_up_time(Duration::from_millis(500));
-    targets = pairs, scenes
+    targets = pairs, broad, scenes
 }
 criterion_main!(benches);

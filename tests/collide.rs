@@ -382,3 +382,22 @@ fn generated_contacts_agree_with_the_lessons_written_ones() {
     assert!((out[0].contact.normal - written.normal).norm() < 1e-4);
     assert!((out[0].contact.point - written.point).norm() < 1e-12);
 }
+
+#[test]
+fn coincident_centres_push_along_y_and_still_flip_when_swapped() {
+    let (small, big) = (Shape::Sphere { radius: 0.5 }, Shape::Sphere { radius: 1.0 });
+    let here = pose([1.0, 2.0, 3.0], UnitQuaternion::identity());
+    let out = check_pair((&small, &here), (&big, &here), BoxBoxMode::Single, 0.0);
+    assert_eq!(out.len(), 1);
+    assert_eq!(out[0].normal.y.abs(), 1.0);
+    assert_eq!(out[0].penetration, 1.5);
+    // (Two equal bodies at one pose cannot be told apart: swapping them
+    // changes nothing, so that one case keeps its normal.)
+    let twins = collide_all((&CUBE, &here), (&CUBE, &here), BoxBoxMode::Single);
+    assert_eq!(
+        twins,
+        collide_all((&CUBE, &here), (&CUBE, &here), BoxBoxMode::Single)
+    );
+    assert_eq!(twins[0].normal, Vector3::x());
+    assert_eq!(twins[0].penetration, 1.0);
+}
