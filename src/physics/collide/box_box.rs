@@ -35,6 +35,11 @@ const EDGE_BIAS: f64 = 0.95;
 
 /// Separating axis test: `None` when an axis separates the boxes by more than
 /// `tol`, else the axis of least overlap (face axes preferred, A's first).
+///
+/// On a unit axis L the boxes overlap by r_A + r_B − |d·L|, with
+/// r = Σ h_k |axis_k·L| and d = x_A − x_B. Everything is taken in A's frame,
+/// where A's axes are e_i, B's axes the columns of C = AᵀB and d is t = Aᵀd
+/// (Gottschalk's OBB test; Ericson, Real-Time Collision Detection, 4.4.1).
 pub(super) fn separating_axis<T: Real>(
     ha: &Vector3<T>,
     pa: &Pose<T>,
@@ -43,54 +48,74 @@ pub(super) fn separating_axis<T: Real>(
     tol: T,
 ) -> Option<Overlap<T>> {
     let d = pa.position - pb.position;
-    let (a, b) = ([0, 1, 2].map(|k| pa.axis(k)), [0, 1, 2].map(|k| pb.axis(k)));
-    // Overlap on unit axis L: Σ h_A,k |a_k·L| + Σ h_B,k |b_k·L| − |d·L|.
-    let overlap = |l: &Vector3<T>| {
-        let radius = |h: &Vector3<T>, axes: &[Vector3<T>; 3]| {
-            (0..3).fold(T::zero(), |sum, k| sum + h[k] * axes[k].dot(l).abs())
-        };
-        radius(ha, &a) + radius(hb, &b) - d.dot(l).abs()
+    let rot = pa.rotation.tr_mul(&pb.rotation);
+    let abs = rot.abs();
+    let t = pa.rotation.tr_mul(&d);
+    let mut best: Option<(Axis, T)> = None;
+    let mut keep = |axis: Axis, depth: T| {
+        if best.is_none_or(|(_, least)| depth < least) {
+            best = Some((axis, depth));
+        }
+        depth >= -tol
     };
-    let mut face: Option<(Axis, Vector3<T>, T)> = None;
-    let faces = (0..3)
-        .map(|i| (Axis::FaceA(i), a[i]))
-        .chain((0..3).map(|j| (Axis::FaceB(j), b[j])));
-    for (axis, l) in faces {
-        let depth = overlap(&l);
-        if depth < -tol {
+    for i in 0..3 {
+        // L = A's axis i: r_A = h_A,i, r_B = Σ_k h_B,k |C_ik|, d·L = t_i.
+        let rb = hb.dot(&abs.row(i).transpose());
+        if !keep(Axis::FaceA(i), ha[i] + rb - t[i].abs()) {
             return None;
         }
-        if face.is_none_or(|(_, _, best)| depth < best) {
-            face = Some((axis, l, depth));
+    }
+    for j in 0..3 {
+        // L = B's axis j: r_A = Σ_k h_A,k |C_kj|, r_B = h_B,j, d·L = t·C_j.
+        let ra = ha.dot(&abs.column(j));
+        if !keep(Axis::FaceB(j), ra + hb[j] - t.dot(&rot.column(j)).abs()) {
+            return None;
         }
     }
-    let mut edge: Option<(Axis, Vector3<T>, T)> = None;
-    for (i, ai) in a.iter().enumerate() {
-        for (j, bj) in b.iter().enumerate() {
-            let l = ai.cross(bj);
-            let length_squared = l.norm_squared();
+    let face = best?;
+    best = None;
+    let mut keep = |axis: Axis, depth: T| {
+        if best.is_none_or(|(_, least)| depth < least) {
+            best = Some((axis, depth));
+        }
+        depth >= -tol
+    };
+    for i in 0..3 {
+        let (i1, i2) = ((i + 1) % 3, (i + 2) % 3);
+        for j in 0..3 {
+            let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
+            // L = e_i × C_j, |L|² = C_i1j² + C_i2j²: skip (nearly) parallel edges.
+            let length_squared = rot[(i1, j)] * rot[(i1, j)] + rot[(i2, j)] * rot[(i2, j)];
             if length_squared < c::<T>(PARALLEL_SQUARED) {
                 continue;
             }
-            let l = l / length_squared.sqrt();
-            let depth = overlap(&l);
-            if depth < -tol {
+            // Unnormalised: r_A = h_A,i1 |C_i2j| + h_A,i2 |C_i1j|,
+            // r_B = h_B,j1 |C_ij2| + h_B,j2 |C_ij1|, d·L = t_i2 C_i1j − t_i1 C_i2j.
+            let ra = ha[i1] * abs[(i2, j)] + ha[i2] * abs[(i1, j)];
+            let rb = hb[j1] * abs[(i, j2)] + hb[j2] * abs[(i, j1)];
+            let dl = t[i2] * rot[(i1, j)] - t[i1] * rot[(i2, j)];
+            if !keep(
+                Axis::Edge(i, j),
+                (ra + rb - dl.abs()) / length_squared.sqrt(),
+            ) {
                 return None;
-            }
-            if edge.is_none_or(|(_, _, best)| depth < best) {
-                edge = Some((Axis::Edge(i, j), l, depth));
             }
         }
     }
-    let (mut axis, mut l, mut depth) = face?;
-    if let Some((edge_axis, edge_l, edge_depth)) = edge {
+    let (mut axis, mut depth) = face;
+    if let Some((edge_axis, edge_depth)) = best {
         // Round-off margin: 64 ulps of the boxes' size.
         let size = ha.amax().max(hb.amax());
         let margin = size * T::default_epsilon() * c::<T>(64.0);
         if edge_depth < depth - (T::one() - c::<T>(EDGE_BIAS)) * depth.abs() - margin {
-            (axis, l, depth) = (edge_axis, edge_l, edge_depth);
+            (axis, depth) = (edge_axis, edge_depth);
         }
     }
+    let l = match axis {
+        Axis::FaceA(i) => pa.axis(i),
+        Axis::FaceB(j) => pb.axis(j),
+        Axis::Edge(i, j) => pa.axis(i).cross(&pb.axis(j)).normalize(),
+    };
     let normal = if d.dot(&l) < T::zero() { -l } else { l };
     Some(Overlap {
         axis,
