@@ -89,16 +89,14 @@ pub(super) fn clip_incident<T: Real>(
     incident: &Pose<T>,
     hi: &Vector3<T>,
 ) -> Polygon<T> {
-    // Outward normal of the reference face, and the incident axis most along it.
-    let outward = reference.pose.axis(reference.axis) * reference.sign;
-    let dots = Vector3::from_fn(|k, _| incident.axis(k).dot(&outward));
-    let j = (1..3).fold(0, |best, k| {
-        if dots[k].abs() > dots[best].abs() {
-            k
-        } else {
-            best
-        }
-    });
+    // The incident box in the reference frame: its axes are the columns of
+    // C = R_refᵀ R_inc, its centre o = R_refᵀ (x_inc − x_ref).
+    let rel = reference.pose.rotation.tr_mul(&incident.rotation);
+    let origin = reference.pose.to_local(&incident.position);
+    // The incident axis most along the reference face's outward normal
+    // s·e_i: incident axis k · outward = s·C_ik.
+    let dots = rel.row(reference.axis).transpose() * reference.sign;
+    let j = dots.iamax();
     // The incident face facing the reference box: its normal against `outward`.
     let face_sign = if dots[j] > T::zero() {
         -T::one()
@@ -112,36 +110,43 @@ pub(super) fn clip_incident<T: Real>(
         corner[j] = face_sign * hi[j];
         corner[u] = c::<T>(su) * hi[u];
         corner[v] = c::<T>(sv) * hi[v];
-        polygon.push(reference.pose.to_local(&incident.to_world(&corner)));
+        polygon.push(origin + rel * corner);
     }
+    let mut spare = Polygon::new();
     for k in (0..3).filter(|&k| k != reference.axis) {
         for s in [T::one(), -T::one()] {
-            polygon = clip_plane(&polygon, k, s, reference.h[k]);
+            clip_plane(&polygon, k, s, reference.h[k], &mut spare);
+            std::mem::swap(&mut polygon, &mut spare);
         }
     }
     polygon
 }
 
-/// Sutherland–Hodgman against one plane: keeps the part where `s·x_k ≤ limit`.
-fn clip_plane<T: Real>(input: &Polygon<T>, k: usize, s: T, limit: T) -> Polygon<T> {
-    let mut output = Polygon::new();
-    for idx in 0..input.len {
-        let p = input.points[idx];
-        let q = input.points[(idx + 1) % input.len];
+/// Sutherland–Hodgman against one plane: `output` is the part of `input`
+/// where `s·x_k ≤ limit`.
+fn clip_plane<T: Real>(input: &Polygon<T>, k: usize, s: T, limit: T, output: &mut Polygon<T>) {
+    output.len = 0;
+    let Some(&last) = input.iter().last() else {
+        return;
+    };
+    // Each edge p → q, starting with the closing edge last → first.
+    let mut p = last;
+    for &q in input.iter() {
         let (dp, dq) = (s * p[k] - limit, s * q[k] - limit);
-        if dp <= T::zero() {
-            output.push(p);
-        }
         if (dp < T::zero() && dq > T::zero()) || (dp > T::zero() && dq < T::zero()) {
             output.push(p + (q - p) * (dp / (dp - dq)));
         }
+        if dq <= T::zero() {
+            output.push(q);
+        }
+        p = q;
     }
-    output
 }
 
 /// Appends the clipped points at most `tol` above the reference face (and not
-/// through the box), at most 4 (the deepest, the one farthest from it, then those spanning the largest
-/// area), each with its own depth. Returns how many were added.
+/// through the box), at most 4 (the deepest, the one farthest from it, then
+/// those spanning the largest area), each with its own depth. Returns how
+/// many were added.
 pub(super) fn manifold<T: Real>(
     reference: &Reference<'_, T>,
     polygon: &Polygon<T>,
@@ -230,13 +235,17 @@ mod tests {
             [1.0, 0.0, -1.0],
         ]);
         // Keep x ≤ 0.5: the square loses a strip, 4 points remain.
-        let cut = clip_plane(&square, 0, 1.0, 0.5);
+        let mut cut = Polygon::new();
+        clip_plane(&square, 0, 1.0, 0.5, &mut cut);
         assert_eq!(cut.len, 4);
         assert!(cut.iter().all(|p| p.x <= 0.5));
-        // Keep −x ≤ 2: untouched.
-        assert_eq!(clip_plane(&square, 0, -1.0, 2.0).len, 4);
+        assert_eq!(cut.iter().filter(|p| p.x == 0.5).count(), 2);
+        // Keep −x ≤ 2: untouched, in order.
+        clip_plane(&square, 0, -1.0, 2.0, &mut cut);
+        assert_eq!(cut.points[..4], square.points[..4]);
         // Keep x ≤ −3: nothing.
-        assert_eq!(clip_plane(&square, 0, 1.0, -3.0).len, 0);
+        clip_plane(&square, 0, 1.0, -3.0, &mut cut);
+        assert_eq!(cut.len, 0);
     }
 
     #[test]

@@ -319,9 +319,9 @@ fn kind(shape: &Shape) -> Kind {
 /// equal bodies at one pose have no order: swapping them changes nothing.
 fn precedes<T: Real>(x: (&Shape, &Pose<T>), y: (&Shape, &Pose<T>)) -> bool {
     use std::cmp::Ordering;
-    let keys = x.1.position.iter().zip(y.1.position.iter());
-    let keys = keys.chain(x.1.rotation.iter().zip(y.1.rotation.iter()));
-    for (p, q) in keys {
+    let (px, py) = (x.1.position.as_slice(), y.1.position.as_slice());
+    let (rx, ry) = (x.1.rotation.as_slice(), y.1.rotation.as_slice());
+    for (p, q) in px.iter().zip(py).chain(rx.iter().zip(ry)) {
         match p.partial_cmp(q) {
             Some(Ordering::Less) => return true,
             Some(Ordering::Greater) => return false,
