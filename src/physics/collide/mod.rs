@@ -169,7 +169,9 @@ pub enum Feature {
     /// Edge along axis `axis_a` of box A crossing edge along `axis_b` of box B.
     EdgeEdge { axis_a: u8, axis_b: u8 },
     /// A point of the other box's face clipped against face `axis` of the
-    /// reference box on side `reference` (manifold mode).
+    /// reference box on side `reference`: a manifold point, or in single mode
+    /// the deepest such point when the reference engine's vertex lies beside
+    /// the face (its penetration is then the overlap on the axis).
     FaceFace { reference: Side, axis: u8 },
 }
 
