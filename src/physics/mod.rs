@@ -9,6 +9,7 @@
 //!   stepping, micro-collisions, sleep) and `exact/` (impact integration).
 
 pub mod body;
+pub mod collide;
 pub mod contact;
 pub mod exact;
 pub mod params;
