@@ -1,6 +1,7 @@
 //! The trace: one description of a worked solution, built from the stage
 //! records. Renderers (text, JSON, Markdown, LaTeX, SVG, TUI) read only this.
 
+mod acceleration;
 mod build;
 pub mod latex;
 mod plane;
@@ -11,6 +12,7 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::StageId;
 
+pub use acceleration::note_planar_acceleration;
 pub use build::build;
 pub use plane::Plane;
 pub use scene::{BodyView, SceneView, ShapeView};
