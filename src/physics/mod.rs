@@ -11,13 +11,16 @@
 pub mod body;
 pub mod contact;
 pub mod params;
+pub mod resolver;
 pub mod shape;
 pub mod world;
 
 pub use body::RigidBody;
 pub use contact::{checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
-pub use params::{ContactParams, FrictionModel, ProjectionMethod, StepParams};
+pub use params::{
+    ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, StepParams,
+};
 pub use shape::Shape;
 pub use world::{Body, BodyId, Contact, World};
 

@@ -56,7 +56,11 @@ pub fn relative_acceleration<T: Real>(accelerations: [Option<Vector3<T>>; 2]) ->
 }
 
 /// `v_acc = (a₁ − a₂)·d Δt`, the normal velocity one frame of acceleration built up.
-pub fn velocity_from_acceleration<T: Real>(acceleration: &Vector3<T>, d: &Vector3<T>, duration: T) -> T {
+pub fn velocity_from_acceleration<T: Real>(
+    acceleration: &Vector3<T>,
+    d: &Vector3<T>,
+    duration: T,
+) -> T {
     acceleration.dot(d) * duration
 }
 
