@@ -16,11 +16,13 @@
 //! body → contacts adjacency). Each iteration is reported to an
 //! [`Observer`]; [`Silent`] reports nowhere.
 
+pub mod checks;
 pub mod heap;
 pub mod indexed;
 pub mod observer;
 pub mod position;
 pub mod prepare;
+pub mod row;
 pub mod scan;
 pub mod velocity;
 

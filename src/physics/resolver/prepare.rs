@@ -1,19 +1,22 @@
 //! Prepare every contact once (the reference engine's `calculateInternals`):
 //! basis, arms r, world inverse inertia, contact velocity, desired Δv, and
 //! what projection and impulse need that does not change while the phases
-//! run. As in the reference engine, r and I⁻¹ are NOT refreshed after a body
+//! run, with the single-contact stages' own functions (each body's I⁻¹ is
+//! computed once, not once per contact). As in the reference engine, r and I⁻¹ are NOT refreshed after a body
 //! moves: both phases use the geometry as prepared.
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
+use crate::physics::frame::contact_basis;
 use crate::physics::params::RestitutionFrom;
 use crate::physics::stages::desired_velocity::{
-    applied_restitution, desired_from, desired_toward_bounce,
+    acceleration_terms, applied_restitution, contact_velocity, desired_from, desired_toward_bounce,
+    relative_acceleration,
 };
 use crate::physics::stages::projection::{
     projection_inertia, total_projection_inertia, ProjectionInertia,
 };
-use crate::physics::stages::{contact_frame, desired_delta_velocity, unit_impulse};
+use crate::physics::stages::unit_impulse::{body_unit_response, combine_unit_responses};
 use crate::physics::{BodyId, FrictionModel, Real, World};
 
 /// A movable body as the resolver moves it.
@@ -41,22 +44,24 @@ pub struct FrictionData<T: Real> {
     pub matrix: Matrix3<T>,
 }
 
-/// One contact with the resolver's bookkeeping.
+/// One contact with the resolver's bookkeeping. The fields an update reads
+/// come first (`repr(C)` keeps them together in memory).
 #[derive(Debug, Clone, PartialEq)]
+#[repr(C)]
 pub struct ResolverContact<T: Real> {
+    /// The bookkeeping penetration, updated linearly as bodies move.
+    pub penetration: T,
+    /// Desired Δv along the normal, recomputed when `velocity` changes.
+    pub desired: T,
     /// Resolver body index of body 1 and body 2; `None` for the world or an immovable body.
     pub bodies: [Option<usize>; 2],
     pub normal: Vector3<T>,
-    /// Columns d, t0, t1.
-    pub basis: Matrix3<T>,
     /// `r = q − p` of each slot at prepare (zero for an empty slot).
     pub r: [Vector3<T>; 2],
-    /// The bookkeeping penetration, updated linearly as bodies move.
-    pub penetration: T,
     /// The bookkeeping contact velocity (contact space), updated linearly.
     pub velocity: Vector3<T>,
-    /// Desired Δv along the normal, recomputed when `velocity` changes.
-    pub desired: T,
+    /// Columns d, t0, t1.
+    pub basis: Matrix3<T>,
     /// `v_s` at prepare (restitution from the initial velocity uses it).
     pub initial_velocity: T,
     /// `(a₁ − a₂)·d Δt`.
@@ -153,48 +158,74 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> 
         }
     }
     let mut friction = Vec::new();
-    let contacts: Vec<ResolverContact<T>> = (0..world.contacts.len())
-        .map(|k| {
-            let problem = world.problem(k);
-            let contact = &problem.contact;
-            let frame = contact_frame(&problem);
-            let with_matrix = contact.has_friction();
-            let unit = unit_impulse(&problem, &frame, with_matrix);
-            let desired = desired_delta_velocity(&problem, &frame);
-            let d = frame.normal();
-            let projection = [0, 1].map(|i| {
-                let u = unit.bodies[i].as_ref()?;
-                Some(projection_inertia(
-                    u.inverse_mass,
-                    &u.inverse_inertia_world,
-                    &frame.r[i]?,
+    let contacts: Vec<ResolverContact<T>> = world
+        .contacts
+        .iter()
+        .map(|contact| {
+            let input = &contact.input;
+            let slots = contact.slots().map(|id| index[id?.0]);
+            let body =
+                |i: usize| slots[i].map(|b| (&bodies[b], &world.bodies[bodies[b].id.0].state));
+            // Contact frame (stage 1): basis and arms.
+            let (basis, _) = contact_basis(&input.normal);
+            let d = input.normal;
+            let r = [0, 1].map(|i| body(i).map(|(b, _)| input.point - b.position));
+            // Velocity change per unit impulse (stage 2), from the bodies' prepared I⁻¹.
+            let with_matrix = input.has_friction();
+            let responses = [0, 1].map(|i| {
+                let (b, _) = body(i)?;
+                Some(body_unit_response(
+                    b.inverse_mass,
+                    b.inverse_inertia_world,
+                    r[i]?,
                     &d,
-                    &contact.settings,
+                    with_matrix,
                 ))
             });
-            let slots = world.contacts[k].slots().map(|id| index[id?.0]);
+            let projection = [0, 1].map(|i| {
+                let (b, _) = body(i)?;
+                Some(projection_inertia(
+                    b.inverse_mass,
+                    &b.inverse_inertia_world,
+                    &r[i]?,
+                    &d,
+                    &input.settings,
+                ))
+            });
+            let unit = combine_unit_responses(responses, &basis, with_matrix);
+            // Contact velocity and the acceleration terms (stage 3).
+            let point_velocity = [0, 1].map(|i| {
+                let (_, state) = body(i)?;
+                Some(state.point_velocity(&r[i]?))
+            });
+            let acceleration =
+                relative_acceleration([0, 1].map(|i| body(i).map(|(_, s)| s.acceleration)));
+            let duration = contact.duration.unwrap_or(world.step.duration);
+            let (velocity_from_acceleration, planar) =
+                acceleration_terms(&acceleration, &basis, duration);
+            let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
             let friction_index = unit.matrix.map(|matrix| {
                 friction.push(FrictionData {
-                    model: contact.friction_model,
-                    static_friction: contact.static_friction,
-                    dynamic_friction: contact.dynamic_friction,
+                    model: input.friction_model,
+                    static_friction: input.static_friction,
+                    dynamic_friction: input.dynamic_friction,
                     matrix,
                 });
                 friction.len() - 1
             });
             let mut c = ResolverContact {
+                penetration: input.penetration,
+                desired: T::zero(),
                 bodies: slots,
                 normal: d,
-                basis: frame.contact_to_world,
-                r: frame.r.map(|r| r.unwrap_or_else(Vector3::zeros)),
-                penetration: contact.penetration,
-                velocity: desired.contact_velocity,
-                desired: desired.desired,
-                initial_velocity: desired.contact_velocity.x,
-                velocity_from_acceleration: desired.velocity_from_acceleration,
-                restitution: contact.restitution,
-                velocity_limit: contact.settings.velocity_limit,
-                relaxation: contact.settings.relaxation,
+                r: r.map(|r| r.unwrap_or_else(Vector3::zeros)),
+                velocity,
+                basis,
+                initial_velocity: velocity.x,
+                velocity_from_acceleration,
+                restitution: input.restitution,
+                velocity_limit: input.settings.velocity_limit,
+                relaxation: input.settings.relaxation,
                 total_inertia: total_projection_inertia(&projection),
                 projection,
                 unit_total: unit.total,

@@ -75,6 +75,39 @@ pub fn planar_from_acceleration<T: Real>(
     planar
 }
 
+/// `(q̇₁ − q̇₂, Cᵀ(q̇₁ − q̇₂) + planar)`: the contact velocity in world and in
+/// contact coordinates from each slot's point velocity `ω × r + v`, with the
+/// planar acceleration term added where it is non-zero.
+pub fn contact_velocity<T: Real>(
+    point_velocity: &[Option<Vector3<T>>; 2],
+    contact_to_world: &Matrix3<T>,
+    planar: &Vector3<T>,
+) -> (Vector3<T>, Vector3<T>) {
+    let world = point_velocity[0].unwrap_or_else(Vector3::zeros)
+        - point_velocity[1].unwrap_or_else(Vector3::zeros);
+    let mut contact = contact_to_world.transpose() * world;
+    if *planar != Vector3::zeros() {
+        contact += planar;
+    }
+    (world, contact)
+}
+
+/// `(v_acc, planar)` of a contact from `a₁ − a₂`: both zero without acceleration.
+pub fn acceleration_terms<T: Real>(
+    acceleration: &Vector3<T>,
+    contact_to_world: &Matrix3<T>,
+    duration: T,
+) -> (T, Vector3<T>) {
+    let d = contact_to_world.column(0).into_owned();
+    let v_acc = velocity_from_acceleration(acceleration, &d, duration);
+    let planar = if *acceleration == Vector3::zeros() {
+        Vector3::zeros()
+    } else {
+        planar_from_acceleration(acceleration, contact_to_world, duration)
+    };
+    (v_acc, planar)
+}
+
 /// Restitution as applied: 0 when the closing speed |v_s| is below the velocity limit.
 /// Returns `(c, limited)`.
 pub fn applied_restitution<T: Real>(v_s: T, restitution: T, velocity_limit: T) -> (T, bool) {
@@ -102,25 +135,17 @@ pub fn desired_delta_velocity<T: Real>(
     frame: &ContactFrame<T>,
 ) -> DesiredVelocity<T> {
     let contact = &problem.contact;
-    let d = frame.normal();
     let point_velocity =
         [0, 1].map(|i| Some(problem.bodies[i].as_ref()?.point_velocity(&frame.r[i]?)));
-    let contact_velocity_world = point_velocity[0].unwrap_or_else(Vector3::zeros)
-        - point_velocity[1].unwrap_or_else(Vector3::zeros);
-    let mut contact_velocity = frame.to_contact(&contact_velocity_world);
-
     let acceleration =
         relative_acceleration([0, 1].map(|i| problem.bodies[i].as_ref().map(|b| b.acceleration)));
-    let velocity_from_acceleration =
-        velocity_from_acceleration(&acceleration, &d, problem.duration);
-    let planar_from_acceleration = if acceleration == Vector3::zeros() {
-        Vector3::zeros()
-    } else {
-        planar_from_acceleration(&acceleration, &frame.contact_to_world, problem.duration)
-    };
-    if planar_from_acceleration != Vector3::zeros() {
-        contact_velocity += planar_from_acceleration;
-    }
+    let (velocity_from_acceleration, planar_from_acceleration) =
+        acceleration_terms(&acceleration, &frame.contact_to_world, problem.duration);
+    let (contact_velocity_world, contact_velocity) = contact_velocity(
+        &point_velocity,
+        &frame.contact_to_world,
+        &planar_from_acceleration,
+    );
     let v_s = contact_velocity.x;
 
     let (restitution, restitution_limited) =
