@@ -18,7 +18,7 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 pub use crate::physics::Shape;
 use crate::physics::{
     c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
-    ProjectionMethod, Real, RigidBody, StepParams, World,
+    ProjectionMethod, Real, ResolverParams, RigidBody, StepParams, World,
 };
 pub use printed::Printed;
 pub use source::{LessonDiagnostic, LessonError};
@@ -37,6 +37,8 @@ pub struct Lesson {
     pub printed: Vec<Printed>,
     /// The lesson's `[settings]` table (defaults where absent).
     pub settings: Settings,
+    /// How `resolve` resolves the contacts together (`[settings]`, defaults where absent).
+    pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
 }
@@ -127,6 +129,7 @@ pub struct Overrides {
     pub projection: Option<ProjectionMethod>,
     pub relaxation: Option<f64>,
     pub angular_limit: Option<f64>,
+    pub velocity_limit: Option<f64>,
 }
 
 impl Lesson {
@@ -193,6 +196,9 @@ impl Lesson {
             }
             if let Some(a) = o.angular_limit {
                 contact.settings.angular_limit = a;
+            }
+            if let Some(v) = o.velocity_limit {
+                contact.settings.velocity_limit = v;
             }
         }
     }

@@ -5,5 +5,6 @@ pub mod compare;
 pub mod json;
 pub mod latex;
 pub mod markdown;
+pub mod resolve;
 pub mod svg;
 pub mod text;

@@ -5,6 +5,7 @@ mod acceleration;
 mod build;
 pub mod latex;
 mod plane;
+pub mod resolver;
 mod scene;
 mod stage_names;
 

@@ -11,6 +11,8 @@ use nalgebra::Vector3;
 /// the stage record of the nonlinear projection (`position` is the body's new position).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PositionMoves<T: Real> {
+    /// The resolver body of each slot (`None`: the world or an immovable body).
+    pub slots: [Option<usize>; 2],
     pub bodies: [Option<BodyProjection<T>>; 2],
     /// New orientation of each moved body (normalised), where it turned.
     pub orientations: [Option<nalgebra::Quaternion<T>>; 2],
@@ -19,6 +21,8 @@ pub struct PositionMoves<T: Real> {
 /// The impulse one velocity iteration applied.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VelocityImpulse<T: Real> {
+    /// The resolver body of each slot (`None`: the world or an immovable body).
+    pub slots: [Option<usize>; 2],
     /// The impulse applied, contact space (after any friction clamp).
     pub impulse_contact: Vector3<T>,
     pub impulse_world: Vector3<T>,

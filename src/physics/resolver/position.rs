@@ -25,6 +25,7 @@ pub fn take<T: Real>(
 ) -> PositionMoves<T> {
     let depth = penetration * c.relaxation;
     let mut moves = PositionMoves {
+        slots: c.bodies,
         bodies: [None, None],
         orientations: [None, None],
     };

@@ -21,7 +21,8 @@ fn spread(i: usize, salt: u64) -> f64 {
 }
 
 /// `n` spheres (radius 0.5, mass 1) in a row along x, each sunk 0.005–0.05
-/// into the floor and overlapping its neighbours by 0.005–0.04, falling at
+/// into the floor and overlapping its neighbours by about 0.005–0.04 (the
+/// normal between neighbours is along their line of centres), falling at
 /// 1–1.5 and drifting along the row: `n` floor contacts and `n − 1` contacts
 /// between neighbours (2n − 1 in all), in the order floor 0, pair 0–1,
 /// floor 1, pair 1–2, …. Frictionless; restitution 0.3 on the floor, 0.5
@@ -92,14 +93,20 @@ pub fn sphere_row<T: Real>(n: usize) -> World<T> {
             0.3,
         ));
         if i + 1 < n {
-            // Normal from body 2 (sphere i) toward body 1 (sphere i + 1).
-            let mid = 0.5 * (centres[i] + centres[i + 1]);
+            // Normal from body 2 (sphere i) toward body 1 (sphere i + 1),
+            // along the line of centres; the point midway between them.
+            let (a, b) = (
+                [centres[i], radius - sink[i]],
+                [centres[i + 1], radius - sink[i + 1]],
+            );
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let length = (dx * dx + dy * dy).sqrt();
             contacts.push(contact(
                 i + 1,
                 Some(i),
-                [mid, radius - sink[i], 0.0],
-                [1.0, 0.0, 0.0],
-                overlap[i],
+                [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.0],
+                [dx / length, dy / length, 0.0],
+                2.0 * radius - length,
                 0.5,
             ));
         }

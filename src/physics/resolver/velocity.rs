@@ -67,6 +67,7 @@ pub fn take<T: Real>(
         changes[i] = Some(change);
     }
     VelocityImpulse {
+        slots: c.bodies,
         impulse_contact,
         impulse_world,
         regime,
