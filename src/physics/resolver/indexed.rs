@@ -1,9 +1,14 @@
 //! The indexed resolver: the same contacts in the same order as the scan
-//! ([`super::scan`]), found with a priority queue (largest value first,
-//! lowest index on ties) and updated through the body → contacts adjacency,
+//! ([`super::scan`]), found with a priority queue (a tournament tree:
+//! largest value first, lowest index on ties, [`super::queue`]) and updated
+//! through the body → contacts adjacency,
 //! so an iteration touches only the contacts of the bodies it moved. The
 //! per-contact steps are the scan's own functions, so the results are
 //! bit-identical. Nothing is allocated per iteration.
+//!
+//! A value that stays at or below epsilon is not replayed in the queue: it
+//! can never be taken, and the queue's stale entry for it is at or below
+//! epsilon too, so the first contact above epsilon is still exact.
 
 use super::observer::Observer;
 use super::{position, velocity, Phase, PhaseOutcome, Resolver};
@@ -33,16 +38,16 @@ pub fn position_phase<T: Real, O: Observer<T>>(
     obs: &mut O,
 ) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(Phase::Position);
-    let mut heap = std::mem::take(&mut r.heap);
-    heap.fill(r.contacts.iter().map(|c| c.penetration));
+    let mut queue = std::mem::take(&mut r.queue);
+    queue.fill(r.contacts.iter().map(|c| c.penetration));
     let mut used = 0;
     while used < limit {
-        let Some((k, penetration)) = heap.top().filter(|(_, v)| *v > epsilon) else {
+        let Some((k, penetration)) = queue.top().filter(|(_, v)| *v > epsilon) else {
             break;
         };
         obs.before_position(used, k, &r.bodies);
         let taken = r.contacts[k].bodies;
-        let moves = position::take(&r.contacts[k], penetration, &mut r.bodies);
+        let moves = position::take(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
         obs.position_taken(used, k, penetration, &moves);
         r.stamp += 1;
         let stamp = r.stamp;
@@ -50,12 +55,14 @@ pub fn position_phase<T: Real, O: Observer<T>>(
             let c = &mut r.contacts[j];
             let from = c.penetration;
             c.penetration = position::updated_penetration(c, &taken, &moves);
-            heap.update(j, c.penetration);
+            if !(from <= epsilon && c.penetration <= epsilon) {
+                queue.update(j, c.penetration);
+            }
             obs.penetration_updated(j, from, c.penetration);
         });
         used += 1;
     }
-    r.heap = heap;
+    r.queue = queue;
     r.finish(Phase::Position, used, obs)
 }
 
@@ -65,17 +72,17 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
 ) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(Phase::Velocity);
     let from = r.params.restitution_from;
-    let mut heap = std::mem::take(&mut r.heap);
-    heap.fill(r.contacts.iter().map(|c| c.desired));
+    let mut queue = std::mem::take(&mut r.queue);
+    queue.fill(r.contacts.iter().map(|c| c.desired));
     let mut used = 0;
     while used < limit {
-        let Some((k, desired)) = heap.top().filter(|(_, v)| *v > epsilon) else {
+        let Some((k, desired)) = queue.top().filter(|(_, v)| *v > epsilon) else {
             break;
         };
         obs.before_velocity(used, k, &r.bodies);
         let taken = r.contacts[k].bodies;
-        let friction = r.contacts[k].friction.map(|f| &r.friction[f]);
-        let impulse = velocity::take(&r.contacts[k], friction, &mut r.bodies);
+        let friction = r.setups[k].friction.map(|f| &r.friction[f]);
+        let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
         obs.velocity_taken(used, k, desired, &impulse);
         r.stamp += 1;
         let stamp = r.stamp;
@@ -84,11 +91,13 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
             let before = c.desired;
             c.velocity = velocity::updated_velocity(c, &taken, &impulse);
             c.desired = super::desired_of(c, from);
-            heap.update(j, c.desired);
+            if !(before <= epsilon && c.desired <= epsilon) {
+                queue.update(j, c.desired);
+            }
             obs.desired_updated(j, before, c.desired);
         });
         used += 1;
     }
-    r.heap = heap;
+    r.queue = queue;
     r.finish(Phase::Velocity, used, obs)
 }

@@ -17,21 +17,23 @@
 //! [`Observer`]; [`Silent`] reports nowhere.
 
 pub mod checks;
-pub mod heap;
 pub mod indexed;
 pub mod observer;
 pub mod position;
 pub mod prepare;
+pub mod queue;
 pub mod row;
 pub mod scan;
 pub mod velocity;
 
 pub use observer::{Observer, PositionMoves, Silent, VelocityImpulse};
-pub use prepare::{desired_of, Adjacency, FrictionData, Prepared, ResolverBody, ResolverContact};
+pub use prepare::{
+    desired_of, Adjacency, ContactSetup, FrictionData, Prepared, ResolverBody, ResolverContact,
+};
 
 use crate::physics::params::ResolverParams;
 use crate::physics::{c, Real, World};
-use heap::IndexedHeap;
+use queue::TournamentTree;
 
 /// Which of the two implementations runs the phases.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -90,10 +92,11 @@ pub struct PhaseOutcome<T: Real> {
 pub struct Resolver<T: Real> {
     pub bodies: Vec<ResolverBody<T>>,
     pub contacts: Vec<ResolverContact<T>>,
+    pub setups: Vec<ContactSetup<T>>,
     pub friction: Vec<FrictionData<T>>,
     pub adjacency: Adjacency,
     pub params: ResolverParams,
-    heap: IndexedHeap<T>,
+    queue: TournamentTree<T>,
     stamps: Vec<usize>,
     stamp: usize,
     /// The largest value of each phase before it ran.
@@ -106,6 +109,7 @@ impl<T: Real> Resolver<T> {
         let prepare::Prepared {
             bodies,
             contacts,
+            setups,
             friction,
             adjacency,
         } = prepare::prepare(world, params.restitution_from);
@@ -113,10 +117,11 @@ impl<T: Real> Resolver<T> {
         Resolver {
             bodies,
             contacts,
+            setups,
             friction,
             adjacency,
             params: *params,
-            heap: IndexedHeap::with_capacity(n),
+            queue: TournamentTree::with_capacity(n),
             stamps: vec![0; n],
             stamp: 0,
             before: [T::zero(); 2],

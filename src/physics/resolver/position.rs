@@ -9,7 +9,7 @@
 use nalgebra::Vector3;
 
 use super::observer::PositionMoves;
-use super::{ResolverBody, ResolverContact};
+use super::{ContactSetup, ResolverBody, ResolverContact};
 use crate::physics::stages::orientation::add_scaled_rotation;
 use crate::physics::stages::projection::body_projection;
 use crate::physics::{Problem, Real};
@@ -20,17 +20,18 @@ use crate::physics::{Problem, Real};
 /// `setOrientation` does).
 pub fn take<T: Real>(
     c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
     penetration: T,
     bodies: &mut [ResolverBody<T>],
 ) -> PositionMoves<T> {
-    let depth = penetration * c.relaxation;
+    let depth = penetration * setup.relaxation;
     let mut moves = PositionMoves {
         slots: c.bodies,
         bodies: [None, None],
         orientations: [None, None],
     };
     for i in 0..2 {
-        let (Some(b), Some(inertia)) = (c.bodies[i], c.projection[i].as_ref()) else {
+        let (Some(b), Some(inertia)) = (c.bodies[i], setup.projection[i].as_ref()) else {
             continue;
         };
         let body = &mut bodies[b];
@@ -38,7 +39,7 @@ pub fn take<T: Real>(
             inertia,
             Problem::<T>::sign(i),
             depth,
-            c.total_inertia,
+            setup.total_inertia,
             &c.normal,
             &body.position,
         );

@@ -33,7 +33,7 @@ pub fn position_phase<T: Real, O: Observer<T>>(
         };
         obs.before_position(used, k, &r.bodies);
         let taken = r.contacts[k].bodies;
-        let moves = position::take(&r.contacts[k], penetration, &mut r.bodies);
+        let moves = position::take(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
         obs.position_taken(used, k, penetration, &moves);
         for (j, c) in r.contacts.iter_mut().enumerate() {
             if position::shares_body(c, &taken) {
@@ -60,8 +60,8 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
         };
         obs.before_velocity(used, k, &r.bodies);
         let taken = r.contacts[k].bodies;
-        let friction = r.contacts[k].friction.map(|f| &r.friction[f]);
-        let impulse = velocity::take(&r.contacts[k], friction, &mut r.bodies);
+        let friction = r.setups[k].friction.map(|f| &r.friction[f]);
+        let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
         obs.velocity_taken(used, k, desired, &impulse);
         for (j, c) in r.contacts.iter_mut().enumerate() {
             if position::shares_body(c, &taken) {

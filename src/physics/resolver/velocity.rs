@@ -9,7 +9,7 @@
 use nalgebra::Vector3;
 
 use super::observer::VelocityImpulse;
-use super::{FrictionData, ResolverBody, ResolverContact};
+use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
 use crate::physics::stages::apply_impulse::body_velocity_change;
 use crate::physics::stages::friction::{clamp, ClampInputs};
 use crate::physics::stages::impulse::impulse_contact;
@@ -19,6 +19,7 @@ use crate::physics::{FrictionModel, Problem, Real};
 /// applied to its bodies.
 pub fn take<T: Real>(
     c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
     friction: Option<&FrictionData<T>>,
     bodies: &mut [ResolverBody<T>],
 ) -> VelocityImpulse<T> {
@@ -26,7 +27,7 @@ pub fn take<T: Real>(
     let (g, _) = impulse_contact(
         c.desired,
         &c.velocity,
-        c.unit_total,
+        setup.unit_total,
         friction.map(|f| &f.matrix),
         sticking,
     );
@@ -40,10 +41,10 @@ pub fn take<T: Real>(
                 impulse_contact: g,
                 contact_velocity: c.velocity,
                 desired: c.desired,
-                total: c.unit_total,
+                total: setup.unit_total,
                 matrix: Some(&f.matrix),
                 // The normal impulse that meets Δv (the closed form's j without acceleration).
-                closed_form_j: c.desired / c.unit_total,
+                closed_form_j: c.desired / setup.unit_total,
                 contact_to_world: &c.basis,
             });
             (clamped.impulse_contact, Some(clamped.regime))
