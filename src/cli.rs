@@ -13,6 +13,9 @@ Examples:
   contact-lab solve spinning-ball -c 1 --compare-friction
   contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
   contact-lab solve friction-cube --all-contacts --format md --figures figs > friction.md
+  contact-lab resolve box-four-corners              every contact resolved together, iteration by iteration
+  contact-lab resolve sphere-row --format json --log --repeat 5
+  contact-lab resolve box-four-corners --show position:2   the worked solution of that iteration's contact
   contact-lab figure lecture-2 -o lecture-2.svg     the contact as a slide-ready picture
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab exercise --seed 1 --count 5 --answers --format md
@@ -33,6 +36,8 @@ pub enum Command {
     List,
     /// Print the worked solution of one contact (or all: --all-contacts).
     Solve(SolveArgs),
+    /// Resolve every contact of a lesson together: position phase, then velocity phase.
+    Resolve(ResolveArgs),
     /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
     Figure(FigureArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
@@ -93,6 +98,9 @@ pub struct ModelArgs {
     /// Max angular move as a multiple of |r⊥| (inf = no limit).
     #[arg(long, allow_negative_numbers = true)]
     pub angular_limit: Option<f64>,
+    /// Restitution is 0 below this closing speed (the reference engine: 0.25).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_limit: Option<f64>,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -211,4 +219,103 @@ pub struct ExerciseArgs {
     /// Significant digits of the answers.
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ResolveFormat {
+    Text,
+    Json,
+    /// Markdown: headings and tables.
+    #[value(alias = "markdown")]
+    Md,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ImplementationArg {
+    /// The lecture's loop: scan every contact twice per iteration.
+    Scan,
+    /// A priority queue and the body → contacts adjacency (same result, faster).
+    Indexed,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RestitutionFromArg {
+    /// The contact velocity when the contact is taken (the reference engine).
+    Current,
+    /// The contact velocity before the velocity phase began (Box2D v3).
+    Initial,
+}
+
+/// `--show position:K` or `--show velocity:K`: iteration K of that phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Show {
+    pub velocity: bool,
+    pub iteration: usize,
+}
+
+fn parse_show(s: &str) -> Result<Show, String> {
+    let bad =
+        || format!("expected position:K or velocity:K (K an iteration number from 0), got '{s}'");
+    let (phase, k) = s.split_once(':').ok_or_else(bad)?;
+    let iteration = k.trim().parse().map_err(|_| bad())?;
+    match phase.trim() {
+        "position" => Ok(Show {
+            velocity: false,
+            iteration,
+        }),
+        "velocity" => Ok(Show {
+            velocity: true,
+            iteration,
+        }),
+        _ => Err(bad()),
+    }
+}
+
+/// The resolver's settings; each overrides the lesson's `[settings]`.
+#[derive(Debug, Clone, Args)]
+pub struct ResolverArgs {
+    /// Most position-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
+    #[arg(long)]
+    pub position_iterations: Option<u64>,
+    /// Most velocity-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
+    #[arg(long)]
+    pub velocity_iterations: Option<u64>,
+    /// Penetrations at or below this are left alone (default: the lesson's, else 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    pub position_epsilon: Option<f64>,
+    /// Desired Δv at or below this is left alone (default: the lesson's, else 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_epsilon: Option<f64>,
+    /// Which contact velocity restitution is applied to (default: the lesson's, else current).
+    #[arg(long, value_enum)]
+    pub restitution_from: Option<RestitutionFromArg>,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ResolveArgs {
+    /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
+    pub lesson: String,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = ResolveFormat::Text)]
+    pub format: ResolveFormat,
+    /// JSON: include every iteration (`log`); text and Markdown always show them.
+    #[arg(long)]
+    pub log: bool,
+    /// Time the resolver N times and report the fastest run's phases (JSON `seconds`).
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=10000))]
+    pub repeat: u32,
+    /// The single-contact worked solution of the contact taken at iteration K
+    /// of a phase, with the bodies as they are at that moment.
+    #[arg(long, value_name = "PHASE:K", value_parser = parse_show)]
+    pub show: Option<Show>,
+    /// Which implementation runs the phases (both give the same result).
+    #[arg(long, value_enum, default_value_t = ImplementationArg::Indexed)]
+    pub implementation: ImplementationArg,
+    /// Significant digits of human formats (JSON always carries full f64).
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
+    #[command(flatten)]
+    pub model: ModelArgs,
 }

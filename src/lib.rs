@@ -24,5 +24,7 @@ pub mod tui;
 /// Solves contact `k` of `lesson` in f64 and describes it.
 pub fn worked_solution(lesson: &lesson::Lesson, k: usize) -> trace::Trace {
     let solution = physics::solve(&lesson.problem::<f64>(k));
-    trace::build(lesson, k, &solution)
+    let mut trace = trace::build(lesson, k, &solution);
+    trace::note_planar_acceleration(&mut trace, &solution);
+    trace
 }

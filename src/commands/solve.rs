@@ -87,7 +87,40 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         }
         Format::Latex => render::latex::document(&traces, &fmt, args.fragment),
     };
+    let text = if args.all_contacts && lesson.contacts.len() > 1 {
+        alone_note(&text, &lesson.id, args.format)
+    } else {
+        text
+    };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// `--all-contacts` solves each contact alone, from the scene as given: say so
+/// at the top of the output (JSON keeps its contract) and point to `resolve`.
+fn alone_note(text: &str, id: &str, format: Format) -> String {
+    let note = format!(
+        "Each contact below is solved alone, from the scene as given: the results are \
+         independent of each other. To resolve the contacts together, in order, each \
+         resolution updating the others, run `contact-lab resolve {id}`."
+    );
+    match format {
+        Format::Json => text.to_string(),
+        Format::Text => format!("{note}\n\n{text}"),
+        Format::Md => format!("> {}\n\n{text}", render::markdown::escape(&note)),
+        Format::Latex => {
+            let para = format!(
+                "\\noindent\\emph{{{}}}\n\n",
+                crate::trace::latex::escape_text(&note.replace('`', ""))
+            );
+            match text.find("\\begin{document}\n") {
+                Some(at) => {
+                    let at = at + "\\begin{document}\n".len();
+                    format!("{}{para}{}", &text[..at], &text[at..])
+                }
+                None => format!("{para}{text}"),
+            }
+        }
+    }
 }
 
 /// Writes one SVG per contact into `dir`; returns the links to them.

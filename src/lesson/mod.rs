@@ -20,7 +20,8 @@ pub use crate::physics::params::Material;
 pub use crate::physics::Shape;
 use crate::physics::{
     c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
-    ProjectionMethod, Real, RigidBody, SleepParams, StepParams, World, WorldParams,
+    ProjectionMethod, Real, ResolverParams, RigidBody, SleepParams, StepParams, World,
+    WorldParams,
 };
 pub use printed::Printed;
 pub use source::{LessonDiagnostic, LessonError};
@@ -41,6 +42,8 @@ pub struct Lesson {
     pub settings: Settings,
     /// Time stepping, when the lesson has `[world]`, `[step]` or `[sleep]`.
     pub simulation: Option<Simulation>,
+    /// How `resolve` resolves the contacts together (`[settings]`, defaults where absent).
+    pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
 }
@@ -160,6 +163,7 @@ pub struct Overrides {
     pub projection: Option<ProjectionMethod>,
     pub relaxation: Option<f64>,
     pub angular_limit: Option<f64>,
+    pub velocity_limit: Option<f64>,
 }
 
 impl Lesson {
@@ -226,6 +230,9 @@ impl Lesson {
             }
             if let Some(a) = o.angular_limit {
                 contact.settings.angular_limit = a;
+            }
+            if let Some(v) = o.velocity_limit {
+                contact.settings.velocity_limit = v;
             }
         }
     }

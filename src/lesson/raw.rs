@@ -130,6 +130,12 @@ pub struct RawSettings {
     pub relaxation: Option<S<f64>>,
     pub duration: Option<S<f64>>,
     pub projection: Option<S<String>>,
+    /// The resolver's settings (the lesson's `[settings]` only, not a contact's).
+    pub position_iterations: Option<S<i64>>,
+    pub velocity_iterations: Option<S<i64>>,
+    pub position_epsilon: Option<S<f64>>,
+    pub velocity_epsilon: Option<S<f64>>,
+    pub restitution_from: Option<S<String>>,
 }
 
 #[derive(Debug, Deserialize)]

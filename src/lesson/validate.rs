@@ -13,7 +13,7 @@ use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
 use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
-use crate::physics::{FrictionModel, ProjectionMethod};
+use crate::physics::{FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom};
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
@@ -128,6 +128,29 @@ pub mod rules {
             Err(format!("relaxation must be in (0, 1], got {x}"))
         }
     }
+    /// The most iterations a resolver phase may be given.
+    pub const MAX_ITERATIONS: i64 = 1_000_000_000;
+
+    /// An iteration limit: a whole number from 0 to 10⁹.
+    pub fn iterations(name: &str, n: i64) -> Result<(), String> {
+        if (0..=MAX_ITERATIONS).contains(&n) {
+            Ok(())
+        } else {
+            Err(format!(
+                "{name} must be a whole number from 0 to 10⁹ (1000000000), got {n}"
+            ))
+        }
+    }
+
+    /// A resolver epsilon: finite and ≥ 0.
+    pub fn epsilon(name: &str, x: f64) -> Result<(), String> {
+        if in_range(x) && x >= 0.0 {
+            Ok(())
+        } else {
+            Err(format!("{name} must be a finite number ≥ 0, got {x}"))
+        }
+    }
+
     pub fn duration(x: f64) -> Result<(), String> {
         if in_range(x) && x > 0.0 {
             Ok(())
@@ -302,6 +325,7 @@ impl Validator {
             );
         }
         let defaults = self.settings(&raw.settings, Settings::default(), "[settings]");
+        let resolver = self.resolver(&raw.settings);
         let contacts = raw
             .contacts
             .iter()
@@ -326,6 +350,7 @@ impl Validator {
             printed,
             settings: defaults,
             simulation,
+            resolver,
             warnings: Vec::new(),
         }
     }
@@ -572,6 +597,89 @@ impl Validator {
         s
     }
 
+    /// The resolver's settings of the lesson's `[settings]` table.
+    fn resolver(&mut self, raw: &RawSettings) -> ResolverParams {
+        let mut p = ResolverParams::default();
+        let iterations = |v: &mut Self, name: &str, x: &Option<S<i64>>| {
+            let x = x.as_ref()?;
+            match rules::iterations(name, *x.get_ref()) {
+                Ok(()) => Some(*x.get_ref() as usize),
+                Err(e) => {
+                    v.err(x.span(), format!("in [settings]: {e}"));
+                    None
+                }
+            }
+        };
+        p.position_iterations = iterations(self, "position_iterations", &raw.position_iterations);
+        p.velocity_iterations = iterations(self, "velocity_iterations", &raw.velocity_iterations);
+        for (name, x, out) in [
+            (
+                "position_epsilon",
+                &raw.position_epsilon,
+                &mut p.position_epsilon,
+            ),
+            (
+                "velocity_epsilon",
+                &raw.velocity_epsilon,
+                &mut p.velocity_epsilon,
+            ),
+        ] {
+            if let Some(x) = x {
+                match rules::epsilon(name, *x.get_ref()) {
+                    Ok(()) => *out = *x.get_ref(),
+                    Err(e) => self.err(x.span(), format!("in [settings]: {e}")),
+                }
+            }
+        }
+        if let Some(r) = &raw.restitution_from {
+            match RestitutionFrom::from_name(r.get_ref()) {
+                Some(m) => p.restitution_from = m,
+                None => self.err(
+                    r.span(),
+                    format!(
+                        "in [settings]: restitution_from must be \"current\" or \"initial\", got \"{}\"",
+                        r.get_ref()
+                    ),
+                ),
+            }
+        }
+        p
+    }
+
+    /// A contact's `settings` table cannot hold the resolver's (scene-wide) settings.
+    fn no_resolver_settings(&mut self, raw: &RawSettings) {
+        let spans = [
+            (
+                "position_iterations",
+                raw.position_iterations.as_ref().map(|x| x.span()),
+            ),
+            (
+                "velocity_iterations",
+                raw.velocity_iterations.as_ref().map(|x| x.span()),
+            ),
+            (
+                "position_epsilon",
+                raw.position_epsilon.as_ref().map(|x| x.span()),
+            ),
+            (
+                "velocity_epsilon",
+                raw.velocity_epsilon.as_ref().map(|x| x.span()),
+            ),
+            (
+                "restitution_from",
+                raw.restitution_from.as_ref().map(|x| x.span()),
+            ),
+        ];
+        for (name, span) in spans {
+            if let Some(span) = span {
+                self.err(
+                    span,
+                    format!("{name} is a setting of the whole scene: put it in the lesson's [settings], not in a contact's settings"),
+                );
+            }
+        }
+    }
+
     fn contact(
         &mut self,
         raw: &RawContact,
@@ -684,7 +792,10 @@ impl Validator {
             }),
         };
         let settings = match &raw.settings {
-            Some(s) => self.settings(s, defaults, "[contact.settings]"),
+            Some(s) => {
+                self.no_resolver_settings(s);
+                self.settings(s, defaults, "[contact.settings]")
+            }
             None => defaults,
         };
         ContactDef {

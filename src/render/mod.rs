@@ -7,5 +7,6 @@ pub mod figure;
 pub mod json;
 pub mod latex;
 pub mod markdown;
+pub mod resolve;
 pub mod svg;
 pub mod text;

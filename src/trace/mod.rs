@@ -9,8 +9,10 @@
 //! - `stage_names`: each stage's title and short label.
 
 pub mod contact;
+mod acceleration;
 pub mod latex;
 mod plane;
+pub mod resolver;
 mod scene;
 mod stage_names;
 mod worked;
@@ -19,6 +21,7 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::StageId;
 
+pub use acceleration::note_planar_acceleration;
 pub use plane::Plane;
 pub use scene::{BodyView, ContactView, SceneView};
 pub use worked::build;

@@ -49,6 +49,28 @@ pub struct FrictionClamp<T: Real> {
     pub issue: Option<FrictionIssue>,
 }
 
+/// What the clamp needs, by value: the resolver fills it from its bookkeeping,
+/// the stage from the problem and the earlier stages.
+#[derive(Debug, Clone)]
+pub struct ClampInputs<'a, T: Real> {
+    pub model: FrictionModel,
+    pub static_friction: T,
+    pub dynamic_friction: T,
+    /// The impulse before the clamp (contact space).
+    pub impulse_contact: Vector3<T>,
+    /// Contact velocity (contact space).
+    pub contact_velocity: Vector3<T>,
+    /// Desired Δv along the normal.
+    pub desired: T,
+    /// `Δq̇_t`, for the frictionless fallback.
+    pub total: T,
+    /// The 3×3 contact-space matrix `M` (built with friction).
+    pub matrix: Option<&'a nalgebra::Matrix3<T>>,
+    /// The normal impulse `j` the kinetic-direction model scales by.
+    pub closed_form_j: T,
+    pub contact_to_world: &'a nalgebra::Matrix3<T>,
+}
+
 pub fn friction_clamp<T: Real>(
     problem: &Problem<T>,
     frame: &ContactFrame<T>,
@@ -57,11 +79,27 @@ pub fn friction_clamp<T: Real>(
     impulse: &Impulse<T>,
 ) -> FrictionClamp<T> {
     let contact = &problem.contact;
-    let (mu_s, mu_d) = (contact.static_friction, contact.dynamic_friction);
-    let g = impulse.impulse_contact;
-    let v = desired.contact_velocity;
-    let mut out = FrictionClamp {
+    clamp(ClampInputs {
         model: contact.friction_model,
+        static_friction: contact.static_friction,
+        dynamic_friction: contact.dynamic_friction,
+        impulse_contact: impulse.impulse_contact,
+        contact_velocity: desired.contact_velocity,
+        desired: desired.desired,
+        total: unit.total,
+        matrix: unit.matrix.as_ref(),
+        closed_form_j: impulse.closed_form_j,
+        contact_to_world: &frame.contact_to_world,
+    })
+}
+
+/// The clamp of each friction model on an impulse (see the module comment).
+pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
+    let (mu_s, mu_d) = (input.static_friction, input.dynamic_friction);
+    let g = input.impulse_contact;
+    let v = input.contact_velocity;
+    let mut out = FrictionClamp {
+        model: input.model,
         regime: FrictionRegime::Static,
         planar: T::zero(),
         limit: T::zero(),
@@ -69,29 +107,32 @@ pub fn friction_clamp<T: Real>(
         direction: Vector3::zeros(),
         normal_per_unit: T::zero(),
         impulse_contact: g,
-        impulse_world: impulse.impulse_world,
+        impulse_world: input.contact_to_world * g,
         solve: None,
         issue: None,
     };
-    match contact.friction_model {
+    match input.model {
         FrictionModel::Millington => {
             out.planar = (g.y * g.y + g.z * g.z).sqrt();
             out.limit = mu_s * g.x;
             if out.planar > out.limit {
                 out.regime = FrictionRegime::Dynamic;
                 out.sized_by = Some(mu_d);
-                let m = unit.matrix.unwrap_or_else(nalgebra::Matrix3::identity);
+                let m = input
+                    .matrix
+                    .copied()
+                    .unwrap_or_else(nalgebra::Matrix3::identity);
                 let (uy, uz) = (g.y / out.planar, g.z / out.planar);
                 let per_unit = m[(0, 0)] + mu_d * (m[(0, 1)] * uy + m[(0, 2)] * uz);
                 out.direction = Vector3::new(T::zero(), uy, uz);
                 out.normal_per_unit = per_unit;
                 if per_unit > T::zero() {
-                    let gn = desired.desired / per_unit;
+                    let gn = input.desired / per_unit;
                     out.impulse_contact = Vector3::new(gn, mu_d * gn * uy, mu_d * gn * uz);
                 } else {
                     out.issue = Some(FrictionIssue::Jamming);
                     out.impulse_contact =
-                        Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
+                        Vector3::new(input.desired / input.total, T::zero(), T::zero());
                 }
             }
         }
@@ -101,9 +142,9 @@ pub fn friction_clamp<T: Real>(
             if out.planar > out.limit {
                 out.regime = FrictionRegime::Dynamic;
                 out.sized_by = Some(mu_d);
-                if let Some(m) = unit.matrix {
-                    let rhs = Vector3::new(desired.desired, -mu_d * v.y, -mu_d * v.z);
-                    let (solved, solve) = solve_matrix(&m, rhs);
+                if let Some(m) = input.matrix {
+                    let rhs = Vector3::new(input.desired, -mu_d * v.y, -mu_d * v.z);
+                    let (solved, solve) = solve_matrix(m, rhs);
                     if let Some(solved) = solved {
                         out.impulse_contact = solved;
                     }
@@ -112,7 +153,7 @@ pub fn friction_clamp<T: Real>(
             }
         }
         FrictionModel::KineticDirection => {
-            let j = impulse.closed_form_j;
+            let j = input.closed_form_j;
             let slide = (v.y * v.y + v.z * v.z).sqrt();
             out.limit = mu_d * j;
             // t is undefined when nothing slides; ε-relative test against the normal speed.
@@ -129,6 +170,6 @@ pub fn friction_clamp<T: Real>(
             }
         }
     }
-    out.impulse_world = frame.to_world(&out.impulse_contact);
+    out.impulse_world = input.contact_to_world * out.impulse_contact;
     out
 }

@@ -89,6 +89,34 @@ pub fn closed_form_j<T: Real>(
     -(T::one() + desired.restitution) * desired.contact_velocity_world.dot(&n) / denominator
 }
 
+/// The impulse in contact coordinates for a desired Δv and contact velocity:
+/// `(Δv / Δq̇_t, 0, 0)`, or with a sticking friction model the impulse
+/// `M⁻¹ (Δv, −v_y, −v_z)` that removes all sliding (frictionless impulse if
+/// `M` cannot be solved). The resolver calls this with its own bookkeeping.
+pub fn impulse_contact<T: Real>(
+    desired: T,
+    contact_velocity: &Vector3<T>,
+    total: T,
+    matrix: Option<&Matrix3<T>>,
+    sticking: bool,
+) -> (Vector3<T>, Option<MatrixSolve<T>>) {
+    let normal_only = Vector3::new(desired / total, T::zero(), T::zero());
+    match (sticking, matrix) {
+        (true, Some(m)) => {
+            let v = contact_velocity;
+            let rhs = Vector3::new(desired, -v.y, -v.z);
+            let (g, solve) = solve_matrix(m, rhs);
+            (g.unwrap_or(normal_only), Some(solve))
+        }
+        _ => (normal_only, None),
+    }
+}
+
+/// Whether the contact's friction model starts from the sticking impulse.
+pub fn sticking_model<T: Real>(contact: &crate::physics::ContactInput<T>) -> bool {
+    contact.has_friction() && contact.friction_model != FrictionModel::KineticDirection
+}
+
 pub fn impulse<T: Real>(
     problem: &Problem<T>,
     frame: &ContactFrame<T>,
@@ -96,17 +124,13 @@ pub fn impulse<T: Real>(
     desired: &DesiredVelocity<T>,
 ) -> Impulse<T> {
     let normal_only = Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
-    let sticking = problem.contact.has_friction()
-        && problem.contact.friction_model != FrictionModel::KineticDirection;
-    let (impulse_contact, solve) = match (sticking, unit.matrix) {
-        (true, Some(m)) => {
-            let v = desired.contact_velocity;
-            let rhs = Vector3::new(desired.desired, -v.y, -v.z);
-            let (g, solve) = solve_matrix(&m, rhs);
-            (g.unwrap_or(normal_only), Some(solve))
-        }
-        _ => (normal_only, None),
-    };
+    let (impulse_contact, solve) = impulse_contact(
+        desired.desired,
+        &desired.contact_velocity,
+        unit.total,
+        unit.matrix.as_ref(),
+        sticking_model(&problem.contact),
+    );
     let closed_form_j = closed_form_j(problem, frame, desired);
     let scale = closed_form_j.abs().max(T::min_value().unwrap_or(T::zero()));
     let closed_form_relative_difference = if scale > T::zero() {

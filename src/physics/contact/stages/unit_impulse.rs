@@ -39,32 +39,40 @@ pub struct UnitImpulse<T: Real> {
     pub matrix: Option<Matrix3<T>>,
 }
 
-pub fn unit_impulse<T: Real>(
-    problem: &Problem<T>,
-    frame: &ContactFrame<T>,
+/// One body's response to a unit impulse along `d`, from its inverse mass,
+/// world inverse inertia and arm `r` (the resolver calls this with the values
+/// it prepared).
+pub fn body_unit_response<T: Real>(
+    inverse_mass: T,
+    inverse_inertia_world: Matrix3<T>,
+    r: Vector3<T>,
+    d: &Vector3<T>,
+    with_matrix: bool,
+) -> BodyUnitResponse<T> {
+    let torque = r.cross(d);
+    let rotation = inverse_inertia_world * torque;
+    let velocity = rotation.cross(&r);
+    let skew_r = skew(&r);
+    let angular_matrix_world = with_matrix.then(|| -(skew_r * inverse_inertia_world * skew_r));
+    BodyUnitResponse {
+        inverse_mass,
+        inverse_inertia_world,
+        torque_per_unit_impulse: torque,
+        rotation_per_unit_impulse: rotation,
+        velocity_per_unit_impulse: velocity,
+        angular: velocity.dot(d),
+        skew_r,
+        angular_matrix_world,
+    }
+}
+
+/// The two bodies' responses summed: `Δq̇_t` and, with friction, the
+/// contact-space matrix `M = Cᵀ(Σ −[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
+pub fn combine_unit_responses<T: Real>(
+    bodies: [Option<BodyUnitResponse<T>>; 2],
+    contact_to_world: &Matrix3<T>,
     with_matrix: bool,
 ) -> UnitImpulse<T> {
-    let d = frame.normal();
-    let bodies = [0, 1].map(|i| {
-        let body = problem.bodies[i].as_ref()?;
-        let r = frame.r[i]?;
-        let inverse_inertia_world = body.inverse_inertia_world();
-        let torque = r.cross(&d);
-        let rotation = inverse_inertia_world * torque;
-        let velocity = rotation.cross(&r);
-        let skew_r = skew(&r);
-        let angular_matrix_world = with_matrix.then(|| -(skew_r * inverse_inertia_world * skew_r));
-        Some(BodyUnitResponse {
-            inverse_mass: body.inverse_mass,
-            inverse_inertia_world,
-            torque_per_unit_impulse: torque,
-            rotation_per_unit_impulse: rotation,
-            velocity_per_unit_impulse: velocity,
-            angular: velocity.dot(&d),
-            skew_r,
-            angular_matrix_world,
-        })
-    });
     let linear = bodies
         .iter()
         .flatten()
@@ -76,7 +84,7 @@ pub fn unit_impulse<T: Real>(
             .flatten()
             .filter_map(|b| b.angular_matrix_world)
             .fold(Matrix3::zeros(), |s, m| s + m);
-        let c = frame.contact_to_world;
+        let c = contact_to_world;
         c.transpose() * world * c + Matrix3::identity() * linear
     });
     UnitImpulse {
@@ -85,4 +93,24 @@ pub fn unit_impulse<T: Real>(
         total,
         matrix,
     }
+}
+
+pub fn unit_impulse<T: Real>(
+    problem: &Problem<T>,
+    frame: &ContactFrame<T>,
+    with_matrix: bool,
+) -> UnitImpulse<T> {
+    let d = frame.normal();
+    let bodies = [0, 1].map(|i| {
+        let body = problem.bodies[i].as_ref()?;
+        let r = frame.r[i]?;
+        Some(body_unit_response(
+            body.inverse_mass,
+            body.inverse_inertia_world(),
+            r,
+            &d,
+            with_matrix,
+        ))
+    });
+    combine_unit_responses(bodies, &frame.contact_to_world, with_matrix)
 }
