@@ -40,6 +40,8 @@ pub enum Command {
     Resolve(ResolveArgs),
     /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
     Figure(FigureArgs),
+    /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
+    Simulate(SimulateArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
     #[command(name = "check")]
     Errata(ErrataArgs),
@@ -318,4 +320,75 @@ pub struct ResolveArgs {
     pub resolver: ResolverArgs,
     #[command(flatten)]
     pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RunFormat {
+    Text,
+    Json,
+    /// A film strip of the scene and charts of energy, penetration and awake bodies.
+    Svg,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BoxBoxArg {
+    Single,
+    Manifold,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SleepModeArg {
+    Body,
+    Island,
+}
+
+/// Options of `simulate`: each overrides the lesson's value.
+#[derive(Debug, Clone, Args)]
+pub struct SimulateArgs {
+    /// Embedded scene id (see `contact-lab list`) or path to a lesson file with [world] or [step].
+    pub lesson: String,
+    /// How long to run, in seconds of simulated time.
+    #[arg(long, conflicts_with = "steps", allow_negative_numbers = true)]
+    pub seconds: Option<f64>,
+    /// How many steps to run (default: the lesson's [step] steps).
+    #[arg(long)]
+    pub steps: Option<u64>,
+    /// The time step in seconds (default: the lesson's [step] dt).
+    #[arg(long, allow_negative_numbers = true)]
+    pub dt: Option<f64>,
+    /// Record one step in every K (the last step is always recorded).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = RunFormat::Text)]
+    pub format: RunFormat,
+    /// Significant digits of the text table.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// The plane of the film strip (svg).
+    #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
+    pub plane: PlaneArg,
+    /// Gravity as x,y,z in m/s².
+    #[arg(long, value_delimiter = ',', num_args = 3, allow_negative_numbers = true)]
+    pub gravity: Option<Vec<f64>>,
+    /// Fraction of linear and angular velocity kept per second, (0, 1].
+    #[arg(long, allow_negative_numbers = true)]
+    pub damping: Option<f64>,
+    /// Bodies never sleep.
+    #[arg(long)]
+    pub no_sleep: bool,
+    /// Sleep per body (the lecture) or per island of touching bodies.
+    #[arg(long, value_enum)]
+    pub sleep_mode: Option<SleepModeArg>,
+    /// Contacts between boxes: single (the reference engine's one point) or manifold (up to 4).
+    #[arg(long, value_enum)]
+    pub box_box: Option<BoxBoxArg>,
+    /// Switch off acceleration compensation (micro-collisions): watch a resting box vibrate.
+    #[arg(long)]
+    pub no_compensation: bool,
+    /// Closing speed below which restitution is 0 (0 switches it off).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_limit: Option<f64>,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
 }

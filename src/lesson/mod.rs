@@ -16,6 +16,7 @@ use std::io::Read;
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::params::BoxBoxMode;
+use crate::physics::step::SimParams;
 pub use crate::physics::params::Material;
 pub use crate::physics::Shape;
 use crate::physics::{
@@ -101,6 +102,13 @@ pub struct Simulation {
     pub material: Material,
     /// Each body's coefficients (the same indices as `Lesson::bodies`).
     pub materials: Vec<Material>,
+    /// Closing speed below which generated contacts do not bounce
+    /// (`[world] velocity_limit`, default 0.25 as the reference engine).
+    pub velocity_limit: f64,
+    /// The lecture's micro-collisions: one step of acceleration is not bounced back.
+    pub acceleration_compensation: bool,
+    /// Friction model of generated contacts (`[world] friction_model`).
+    pub friction_model: FrictionModel,
     pub dt: f64,
     pub steps: u64,
     pub sleep: SleepParams<f64>,
@@ -113,10 +121,33 @@ impl Default for Simulation {
             box_box: BoxBoxMode::default(),
             material: Material::default(),
             materials: Vec::new(),
+            velocity_limit: 0.25,
+            acceleration_compensation: true,
+            friction_model: FrictionModel::Millington,
             dt: 1.0 / 60.0,
             steps: 600,
             sleep: SleepParams::default(),
         }
+    }
+}
+
+impl Lesson {
+    /// The parameters of the lesson's simulation: its scene tables, with the
+    /// `[settings]` of every generated contact (velocity limit from `[world]`).
+    pub fn sim_params(&self) -> Option<SimParams<f64>> {
+        let sim = self.simulation.as_ref()?;
+        let mut contact = self.settings.contact_params::<f64>();
+        contact.velocity_limit = sim.velocity_limit;
+        Some(SimParams {
+            dt: sim.dt,
+            world: sim.world,
+            sleep: sim.sleep,
+            resolver: self.resolver,
+            contact,
+            acceleration_compensation: sim.acceleration_compensation,
+            box_box: sim.box_box,
+            friction_model: sim.friction_model,
+        })
     }
 }
 

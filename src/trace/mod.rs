@@ -13,6 +13,7 @@ mod acceleration;
 pub mod latex;
 mod plane;
 pub mod resolver;
+pub mod run;
 mod scene;
 mod stage_names;
 mod worked;

@@ -60,6 +60,21 @@ impl Validator {
                     ),
                 }
             }
+            if let Some(v) = &w.velocity_limit {
+                sim.velocity_limit = self.rule("[world] velocity_limit", v, rules::velocity_limit);
+            }
+            if let Some(m) = &w.friction_model {
+                match crate::physics::FrictionModel::from_name(m.get_ref()) {
+                    Some(model) => sim.friction_model = model,
+                    None => self.err(
+                        m.span(),
+                        format!("[world] friction_model must be one of millington, kinetic-direction, velocity-scaling; got \"{}\"", m.get_ref()),
+                    ),
+                }
+            }
+            if let Some(a) = &w.acceleration_compensation {
+                sim.acceleration_compensation = *a.get_ref();
+            }
             sim.material = self.material(
                 "[world]",
                 Material::default(),

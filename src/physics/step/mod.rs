@@ -5,7 +5,9 @@
 
 pub mod energy;
 pub mod integrate;
+pub mod simulation;
 pub mod sleep;
 
 pub use integrate::{integrate, Loads};
+pub use simulation::{BlowUp, Event, SimParams, Simulation, StepReport};
 pub use sleep::{SleepMode, SleepState};
