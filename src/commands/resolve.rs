@@ -15,7 +15,10 @@ use crate::physics::{ResolverParams, RestitutionFrom, World};
 use crate::render::resolve::{self, Seconds};
 
 /// The lesson's resolver settings with the command line's over them.
-pub(crate) fn params(lesson: &ResolverParams, a: &ResolverArgs) -> Result<ResolverParams, AppError> {
+pub(crate) fn params(
+    lesson: &ResolverParams,
+    a: &ResolverArgs,
+) -> Result<ResolverParams, AppError> {
     let mut p = *lesson;
     for (flag, value, out) in [
         (

@@ -16,7 +16,11 @@ use crate::trace::run::RunTrace;
 /// The most steps one command runs.
 const MAX_STEPS: u64 = 10_000_000;
 
-pub fn simulate(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
+pub fn simulate(
+    args: &SimulateArgs,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<(), AppError> {
     let lesson = Lesson::load(&args.lesson)?;
     warn(&lesson, err);
     let (mut sim, steps) = simulation(&lesson, args)?;
@@ -46,7 +50,8 @@ pub fn simulate(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -
     let text = match args.format {
         RunFormat::Text => run::text(&trace, &Fmt::new(args.digits as usize)),
         RunFormat::Json => {
-            let mut s = serde_json::to_string_pretty(&run::json(&trace)).map_err(|e| AppError::Runtime(e.to_string()))?;
+            let mut s = serde_json::to_string_pretty(&run::json(&trace))
+                .map_err(|e| AppError::Runtime(e.to_string()))?;
             s.push('\n');
             s
         }
@@ -56,7 +61,10 @@ pub fn simulate(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -
 }
 
 /// The simulation a lesson and the command line describe, and how many steps to run.
-pub fn simulation(lesson: &Lesson, args: &SimulateArgs) -> Result<(Simulation<f64>, u64), AppError> {
+pub fn simulation(
+    lesson: &Lesson,
+    args: &SimulateArgs,
+) -> Result<(Simulation<f64>, u64), AppError> {
     let Some(scene) = &lesson.simulation else {
         return Err(AppError::Usage(format!(
             "{} is not a scene: it has no [world], [step] or [sleep] table, so nothing says how to step it (its contacts are solved by `solve` and `resolve`)",
@@ -67,7 +75,9 @@ pub fn simulation(lesson: &Lesson, args: &SimulateArgs) -> Result<(Simulation<f6
     let mut p = lesson.sim_params().unwrap_or_default();
     if let Some(dt) = args.dt {
         if !(dt.is_finite() && dt > 0.0 && dt <= 1e6) {
-            return usage(&format!("--dt must be a finite number of seconds > 0, got {dt}"));
+            return usage(&format!(
+                "--dt must be a finite number of seconds > 0, got {dt}"
+            ));
         }
         p.dt = dt;
     }
@@ -79,7 +89,9 @@ pub fn simulation(lesson: &Lesson, args: &SimulateArgs) -> Result<(Simulation<f6
     }
     if let Some(d) = args.damping {
         if !(d > 0.0 && d <= 1.0) {
-            return usage(&format!("--damping is the fraction of velocity kept per second, in (0, 1]; got {d}"));
+            return usage(&format!(
+                "--damping is the fraction of velocity kept per second, in (0, 1]; got {d}"
+            ));
         }
         p.world.linear_damping = d;
         p.world.angular_damping = d;
@@ -104,7 +116,9 @@ pub fn simulation(lesson: &Lesson, args: &SimulateArgs) -> Result<(Simulation<f6
     }
     if let Some(v) = args.velocity_limit {
         if !(v.is_finite() && v >= 0.0) {
-            return usage(&format!("--velocity-limit must be a finite speed ≥ 0, got {v}"));
+            return usage(&format!(
+                "--velocity-limit must be a finite speed ≥ 0, got {v}"
+            ));
         }
         p.contact.velocity_limit = v;
     }
@@ -117,7 +131,10 @@ pub fn simulation(lesson: &Lesson, args: &SimulateArgs) -> Result<(Simulation<f6
             }
             let n = (t / p.dt).round();
             if n > MAX_STEPS as f64 {
-                return usage(&format!("--seconds {t} at dt = {} is over {MAX_STEPS} steps", p.dt));
+                return usage(&format!(
+                    "--seconds {t} at dt = {} is over {MAX_STEPS} steps",
+                    p.dt
+                ));
             }
             n as u64
         }

@@ -16,13 +16,12 @@ use std::io::Read;
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::params::BoxBoxMode;
-use crate::physics::step::SimParams;
 pub use crate::physics::params::Material;
+use crate::physics::step::SimParams;
 pub use crate::physics::Shape;
 use crate::physics::{
     c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
-    ProjectionMethod, Real, ResolverParams, RigidBody, SleepParams, StepParams, World,
-    WorldParams,
+    ProjectionMethod, Real, ResolverParams, RigidBody, SleepParams, StepParams, World, WorldParams,
 };
 pub use printed::Printed;
 pub use source::{LessonDiagnostic, LessonError};
@@ -109,6 +108,8 @@ pub struct Simulation {
     pub acceleration_compensation: bool,
     /// Friction model of generated contacts (`[world] friction_model`).
     pub friction_model: FrictionModel,
+    /// Gap below which contacts are generated (`[world] contact_margin`, m).
+    pub contact_margin: f64,
     pub dt: f64,
     pub steps: u64,
     pub sleep: SleepParams<f64>,
@@ -124,6 +125,7 @@ impl Default for Simulation {
             velocity_limit: 0.25,
             acceleration_compensation: true,
             friction_model: FrictionModel::Millington,
+            contact_margin: 0.005,
             dt: 1.0 / 60.0,
             steps: 600,
             sleep: SleepParams::default(),
@@ -147,6 +149,7 @@ impl Lesson {
             acceleration_compensation: sim.acceleration_compensation,
             box_box: sim.box_box,
             friction_model: sim.friction_model,
+            contact_margin: sim.contact_margin,
         })
     }
 }
@@ -324,6 +327,7 @@ impl Lesson {
             contacts,
             step: StepParams {
                 duration: c(self.settings.duration),
+                ..StepParams::default()
             },
         }
     }

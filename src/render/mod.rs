@@ -7,7 +7,7 @@ pub mod figure;
 pub mod json;
 pub mod latex;
 pub mod markdown;
-pub mod run;
 pub mod resolve;
+pub mod run;
 pub mod svg;
 pub mod text;

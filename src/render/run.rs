@@ -32,7 +32,13 @@ pub fn text(run: &RunTrace, fmt: &Fmt) -> String {
     for f in &run.frames {
         while next_event < run.events.len() && run.events[next_event].step <= f.step {
             let e = &run.events[next_event];
-            let _ = writeln!(out, "        · t = {} s (step {}): {}", fmt.num(e.time), e.step, e.text);
+            let _ = writeln!(
+                out,
+                "        · t = {} s (step {}): {}",
+                fmt.num(e.time),
+                e.step,
+                e.text
+            );
             next_event += 1;
         }
         let _ = writeln!(
@@ -50,7 +56,13 @@ pub fn text(run: &RunTrace, fmt: &Fmt) -> String {
         );
     }
     for e in &run.events[next_event..] {
-        let _ = writeln!(out, "        · t = {} s (step {}): {}", fmt.num(e.time), e.step, e.text);
+        let _ = writeln!(
+            out,
+            "        · t = {} s (step {}): {}",
+            fmt.num(e.time),
+            e.step,
+            e.text
+        );
     }
     if let Some(why) = &run.stopped {
         let _ = writeln!(out, "\nstopped: {why}");
@@ -137,7 +149,12 @@ pub fn svg(run: &RunTrace, plane: Plane) -> String {
             series: vec![
                 series("kinetic", 0, &|f| f.kinetic_energy, Mark::Line),
                 series("potential", 1, &|f| f.potential_energy, Mark::Line),
-                series("total", 2, &|f| f.kinetic_energy + f.potential_energy, Mark::Line),
+                series(
+                    "total",
+                    2,
+                    &|f| f.kinetic_energy + f.potential_energy,
+                    Mark::Line,
+                ),
             ],
             ..Chart::default()
         },
@@ -145,7 +162,12 @@ pub fn svg(run: &RunTrace, plane: Plane) -> String {
             title: "Deepest penetration".into(),
             x_label: "t (s)".into(),
             y_label: "m".into(),
-            series: vec![series("before resolution", 0, &|f| f.max_penetration, Mark::Line)],
+            series: vec![series(
+                "before resolution",
+                0,
+                &|f| f.max_penetration,
+                Mark::Line,
+            )],
             ..Chart::default()
         },
         Chart {
@@ -157,7 +179,10 @@ pub fn svg(run: &RunTrace, plane: Plane) -> String {
         },
     ];
     for (i, chart) in charts.iter().enumerate() {
-        chart.draw(&mut out, (24.0, 90.0 + STRIP + 230.0 * i as f64, WIDTH - 48.0, 220.0));
+        chart.draw(
+            &mut out,
+            (24.0, 90.0 + STRIP + 230.0 * i as f64, WIDTH - 48.0, 220.0),
+        );
     }
     out.push_str("</svg>\n");
     out
@@ -170,13 +195,25 @@ fn film_strip(out: &mut String, run: &RunTrace, plane: Plane) {
     }
     let n = run.frames.len().min(6);
     let picks: Vec<&Frame> = (0..n)
-        .map(|i| &run.frames[if n == 1 { 0 } else { i * (run.frames.len() - 1) / (n - 1) }])
+        .map(|i| {
+            &run.frames[if n == 1 {
+                0
+            } else {
+                i * (run.frames.len() - 1) / (n - 1)
+            }]
+        })
         .collect();
     // One scale for all panels: the bounds of every finite body in every pick.
-    let (mut lo, mut hi) = ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
+    let (mut lo, mut hi) = (
+        (f64::INFINITY, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
     for f in &picks {
         for (i, b) in f.bodies.iter().enumerate() {
-            let Some(o) = run.shapes[i].as_ref().and_then(|s| outline(s, b.position, b.orientation, plane)) else {
+            let Some(o) = run.shapes[i]
+                .as_ref()
+                .and_then(|s| outline(s, b.position, b.orientation, plane))
+            else {
                 continue;
             };
             for p in o.silhouette.points() {
@@ -237,7 +274,10 @@ fn film_strip(out: &mut String, run: &RunTrace, plane: Plane) {
             }
         }
         for (i, b) in f.bodies.iter().enumerate() {
-            let Some(o) = run.shapes[i].as_ref().and_then(|s| outline(s, b.position, b.orientation, plane)) else {
+            let Some(o) = run.shapes[i]
+                .as_ref()
+                .and_then(|s| outline(s, b.position, b.orientation, plane))
+            else {
                 continue;
             };
             let fill = if !run.movable[i] {
@@ -247,7 +287,11 @@ fn film_strip(out: &mut String, run: &RunTrace, plane: Plane) {
             } else {
                 "#EEEEEE"
             };
-            let dash = if run.movable[i] && !b.awake { r#" stroke-dasharray="4 3""# } else { "" };
+            let dash = if run.movable[i] && !b.awake {
+                r#" stroke-dasharray="4 3""#
+            } else {
+                ""
+            };
             match &o.silhouette {
                 Silhouette::Polygon(p) => {
                     let pts: Vec<String> = p
@@ -275,7 +319,10 @@ fn film_strip(out: &mut String, run: &RunTrace, plane: Plane) {
         }
         for (q, _) in &f.contact_points {
             let (x, y) = page(plane.project(*q));
-            let _ = writeln!(out, r##"<circle cx="{x:.1}" cy="{y:.1}" r="2.5" fill="#D55E00"/>"##);
+            let _ = writeln!(
+                out,
+                r##"<circle cx="{x:.1}" cy="{y:.1}" r="2.5" fill="#D55E00"/>"##
+            );
         }
     }
 }

@@ -8,8 +8,8 @@
 //! - `scene`: what a picture of the contact needs ([`SceneView`]);
 //! - `stage_names`: each stage's title and short label.
 
-pub mod contact;
 mod acceleration;
+pub mod contact;
 pub mod latex;
 mod plane;
 pub mod resolver;
