@@ -141,7 +141,7 @@ pub fn show(
     for b in &moment.bodies {
         let def = &mut at.bodies[b.id.0];
         def.position = b.position;
-        def.orientation = b.orientation.normalize();
+        def.orientation = b.unit_orientation();
         def.velocity = b.velocity;
         def.angular_velocity = b.angular_velocity;
     }
