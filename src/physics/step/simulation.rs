@@ -154,6 +154,8 @@ pub struct Simulation<T: Real> {
     pub time: f64,
     generator: ContactGenerator<T>,
     generated: Vec<BodyContact<T>>,
+    /// The resolver, kept so its storage is reused from step to step.
+    resolver: Option<Resolver<T>>,
     /// Touching pairs of the last step and whether they slid.
     touching: Vec<(BodyId, Option<BodyId>, bool)>,
     /// The energy scale blow-ups are measured against.
@@ -175,6 +177,7 @@ impl<T: Real> Simulation<T> {
             time: 0.0,
             generator: ContactGenerator::new(),
             generated: Vec::new(),
+            resolver: None,
             touching: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
@@ -238,8 +241,15 @@ impl<T: Real> Simulation<T> {
         }
         let closing_before = self.normal_velocities();
         // 4. Resolve the contacts together.
-        let (resolver, [position, velocity]) =
-            Resolver::resolve(&self.world, &p.resolver, Implementation::Indexed, observer);
+        let resolver = match &mut self.resolver {
+            Some(r) => {
+                r.prepare_again(&self.world, &p.resolver);
+                r
+            }
+            none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
+        };
+        let position = resolver.position_phase(Implementation::Indexed, observer);
+        let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         resolver.write_back(&mut self.world);
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
