@@ -13,7 +13,11 @@ fn simulate(path: &std::path::Path, args: &[&str]) -> String {
         .args(args)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     String::from_utf8(out.stdout).unwrap()
 }
 
@@ -45,7 +49,10 @@ fn simulate_text_and_json_of_every_scene() {
             let scene = lesson.simulation.as_ref().unwrap();
             let half_second = ((0.5 / scene.dt).round() as u64).max(1).to_string();
             let second = ((1.0 / scene.dt).round() as u64).max(1).to_string();
-            insta::assert_snapshot!("simulate_text", simulate(path, &["--every", &half_second, "--digits", "5"]));
+            insta::assert_snapshot!(
+                "simulate_text",
+                simulate(path, &["--every", &half_second, "--digits", "5"])
+            );
             insta::assert_snapshot!(
                 "simulate_json",
                 rounded(&simulate(path, &["--every", &second, "--format", "json"]))
