@@ -8,7 +8,7 @@ Examples:
   contact-lab tui lecture-2 --contact 0             the app, opened on one contact
   contact-lab list                                  the embedded lessons
   contact-lab solve lecture-2                       the lecture's second worked example
-  contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
+  contact-lab solve lecture-2 --format json         the same as JSON (docs/json.md)
   contact-lab solve my-scene.toml --contact 1 --digits 4
   contact-lab solve spinning-ball -c 1 --compare-friction
   contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
@@ -20,7 +20,8 @@ Examples:
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab exercise --seed 1 --count 5 --answers --format md
 
-Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing.";
+Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing
+(when each is returned: docs/exit-codes.md).";
 
 #[derive(Debug, Parser)]
 #[command(name = "contact-lab", version, about = "Step-by-step rigid-body contact resolution (Millington's impulse-based resolver)", after_help = EXAMPLES)]
@@ -39,8 +40,11 @@ pub enum Command {
     Resolve(ResolveArgs),
     /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
     Figure(FigureArgs),
+    /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
+    Simulate(SimulateArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
-    Check(CheckArgs),
+    #[command(name = "check")]
+    Errata(ErrataArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
@@ -158,18 +162,18 @@ pub struct FigureArgs {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CheckFormat {
+pub enum ErrataFormat {
     Text,
     Json,
 }
 
 #[derive(Debug, Clone, Args)]
-pub struct CheckArgs {
+pub struct ErrataArgs {
     /// Lesson ids or paths (default: every embedded lesson).
     pub lessons: Vec<String>,
     /// Output format.
-    #[arg(long, short, value_enum, default_value_t = CheckFormat::Text)]
-    pub format: CheckFormat,
+    #[arg(long, short, value_enum, default_value_t = ErrataFormat::Text)]
+    pub format: ErrataFormat,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -316,4 +320,80 @@ pub struct ResolveArgs {
     pub resolver: ResolverArgs,
     #[command(flatten)]
     pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RunFormat {
+    Text,
+    Json,
+    /// A film strip of the scene and charts of energy, penetration and awake bodies.
+    Svg,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BoxBoxArg {
+    Single,
+    Manifold,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SleepModeArg {
+    Body,
+    Island,
+}
+
+/// Options of `simulate`: each overrides the lesson's value.
+#[derive(Debug, Clone, Args)]
+pub struct SimulateArgs {
+    /// Embedded scene id (see `contact-lab list`) or path to a lesson file with [world] or [step].
+    pub lesson: String,
+    /// How long to run, in seconds of simulated time.
+    #[arg(long, conflicts_with = "steps", allow_negative_numbers = true)]
+    pub seconds: Option<f64>,
+    /// How many steps to run (default: the lesson's [step] steps).
+    #[arg(long)]
+    pub steps: Option<u64>,
+    /// The time step in seconds (default: the lesson's [step] dt).
+    #[arg(long, allow_negative_numbers = true)]
+    pub dt: Option<f64>,
+    /// Record one step in every K (the last step is always recorded).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = RunFormat::Text)]
+    pub format: RunFormat,
+    /// Significant digits of the text table.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// The plane of the film strip (svg).
+    #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
+    pub plane: PlaneArg,
+    /// Gravity as x,y,z in m/s².
+    #[arg(
+        long,
+        value_delimiter = ',',
+        num_args = 3,
+        allow_negative_numbers = true
+    )]
+    pub gravity: Option<Vec<f64>>,
+    /// Fraction of linear and angular velocity kept per second, (0, 1].
+    #[arg(long, allow_negative_numbers = true)]
+    pub damping: Option<f64>,
+    /// Bodies never sleep.
+    #[arg(long)]
+    pub no_sleep: bool,
+    /// Sleep per body (the lecture) or per island of touching bodies.
+    #[arg(long, value_enum)]
+    pub sleep_mode: Option<SleepModeArg>,
+    /// Contacts between boxes: single (the reference engine's one point) or manifold (up to 4).
+    #[arg(long, value_enum)]
+    pub box_box: Option<BoxBoxArg>,
+    /// Switch off acceleration compensation (micro-collisions): watch a resting box vibrate.
+    #[arg(long)]
+    pub no_compensation: bool,
+    /// Closing speed below which restitution is 0 (0 switches it off).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_limit: Option<f64>,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
 }

@@ -2,11 +2,16 @@
 //! (Millington's impulse-based resolver).
 //!
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
-//! show ([`render`]). [`lesson`] reads scenes; [`commands`] wires the CLI.
+//! show ([`render`], [`tui`]). [`lesson`] reads scenes; [`commands`] wires
+//! the CLI; [`errata`] compares the lectures' printed numbers with the
+//! computed ones; [`exercise`] draws exercises. One contact lives in
+//! `physics::contact` and is described stage by stage in `trace::contact`;
+//! sets of contacts and time steps go beside them. The JSON contract and the
+//! exit codes are in `docs/`.
 
-pub mod check;
 pub mod cli;
 pub mod commands;
+pub mod errata;
 pub mod error;
 pub mod exercise;
 pub mod format;

@@ -1,4 +1,4 @@
-//! Bad lesson files through the binary (GUIDE §6, the "bottom" style): every
+//! Bad lesson files through the binary (as bottom tests its invalid configs): every
 //! file in `tests/invalid_lessons/` exits 65, names `FILE:LINE:COLUMN` and a
 //! specific message, writes nothing to stdout and does not panic. Also very
 //! long files (generated), a missing file (66) and command-line misuse (2).

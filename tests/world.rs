@@ -28,7 +28,12 @@ fn every_lesson_becomes_a_world_with_the_same_bodies_and_contacts() {
             let problem = world.problem(k);
             for (slot, id) in contact.slots().into_iter().enumerate() {
                 let movable = id.is_some_and(|id| world.body(id).movable);
-                assert_eq!(problem.bodies[slot].is_some(), movable, "{} #{k}", lesson.id);
+                assert_eq!(
+                    problem.bodies[slot].is_some(),
+                    movable,
+                    "{} #{k}",
+                    lesson.id
+                );
             }
             assert_eq!(problem.duration, def.settings.duration);
             assert_eq!(problem.contact.settings.relaxation, def.settings.relaxation);
@@ -65,6 +70,9 @@ fn skipped_stages_are_named_by_typed_ids() {
     assert!(s.skip(StageId::Impulse).is_none());
     assert!(s.skip(StageId::FrictionClamp).is_some());
     assert!(s.skip(StageId::NonlinearProjection).is_some());
-    assert_eq!(s.final_impulse_world(), s.impulse.as_ref().map(|g| g.impulse_world));
+    assert_eq!(
+        s.final_impulse_world(),
+        s.impulse.as_ref().map(|g| g.impulse_world)
+    );
     assert!(s.regime().is_none() && s.closing());
 }

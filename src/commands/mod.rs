@@ -1,11 +1,12 @@
 //! What each subcommand does: load, solve, render, write.
 
-mod check;
+mod errata;
 mod exercise;
 mod figure;
 mod list;
 mod resolve;
 mod show;
+mod simulate;
 mod solve;
 
 use std::io::Write;
@@ -33,7 +34,8 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
         Some(Command::Resolve(args)) => resolve::resolve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
-        Some(Command::Check(args)) => check::check(&args, out),
+        Some(Command::Simulate(args)) => simulate::simulate(&args, out, err),
+        Some(Command::Errata(args)) => errata::errata(&args, out),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
     }
 }

@@ -6,7 +6,7 @@ use std::io::Write;
 use std::time::Instant;
 
 use super::{io, load, warn};
-use crate::cli::{ImplementationArg, ResolveArgs, ResolveFormat, RestitutionFromArg};
+use crate::cli::{ImplementationArg, ResolveArgs, ResolveFormat, ResolverArgs, RestitutionFromArg};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::validate::rules;
@@ -17,9 +17,8 @@ use crate::render::resolve::{self, Seconds};
 /// The lesson's resolver settings with the command line's over them.
 pub(crate) fn params(
     lesson: &ResolverParams,
-    args: &ResolveArgs,
+    a: &ResolverArgs,
 ) -> Result<ResolverParams, AppError> {
-    let a = &args.resolver;
     let mut p = *lesson;
     for (flag, value, out) in [
         (
@@ -116,7 +115,7 @@ pub fn resolve(
 ) -> Result<(), AppError> {
     let lesson = load(&args.lesson, &args.model, None)?;
     warn(&lesson, err);
-    let params = params(&lesson.resolver, args)?;
+    let params = params(&lesson.resolver, &args.resolver)?;
     let implementation = implementation(args);
     let fmt = Fmt::new(args.digits as usize);
     if let Some(show) = args.show {

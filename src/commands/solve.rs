@@ -9,6 +9,7 @@ use crate::format::Fmt;
 use crate::lesson::Overrides;
 use crate::physics::FrictionModel;
 use crate::render;
+use crate::render::compare::Compared;
 use crate::render::svg::{self, Plane};
 
 fn usage(args: &SolveArgs) -> Result<(), AppError> {
@@ -34,20 +35,26 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     warn(&lesson, err);
     let fmt = Fmt::new(args.digits as usize);
     if args.compare_friction {
-        let traces: Vec<_> = FrictionModel::ALL
+        let compared: Vec<_> = FrictionModel::ALL
             .into_iter()
-            .map(|m| {
+            .map(|model| {
                 let mut l = lesson.clone();
                 l.apply(&Overrides {
-                    friction_model: Some(m),
+                    friction_model: Some(model),
                     ..Overrides::default()
                 });
-                (m, crate::worked_solution(&l, args.contact))
+                let solution = crate::physics::solve(&l.problem::<f64>(args.contact));
+                let trace = crate::trace::build(&l, args.contact, &solution);
+                Compared {
+                    model,
+                    solution,
+                    trace,
+                }
             })
             .collect();
         let text = match args.format {
-            Format::Json => render::compare::json(&traces),
-            _ => render::compare::text(&traces, &fmt),
+            Format::Json => render::compare::json(&compared),
+            _ => render::compare::text(&compared, &fmt),
         };
         return out.write_all(text.as_bytes()).map_err(io);
     }

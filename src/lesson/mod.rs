@@ -15,10 +15,13 @@ use std::io::Read;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
+use crate::physics::params::BoxBoxMode;
+pub use crate::physics::params::Material;
+use crate::physics::step::SimParams;
 pub use crate::physics::Shape;
 use crate::physics::{
     c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
-    ProjectionMethod, Real, ResolverParams, RigidBody, StepParams, World,
+    ProjectionMethod, Real, ResolverParams, RigidBody, SleepParams, StepParams, World, WorldParams,
 };
 pub use printed::Printed;
 pub use source::{LessonDiagnostic, LessonError};
@@ -37,6 +40,8 @@ pub struct Lesson {
     pub printed: Vec<Printed>,
     /// The lesson's `[settings]` table (defaults where absent).
     pub settings: Settings,
+    /// Time stepping, when the lesson has `[world]`, `[step]` or `[sleep]`.
+    pub simulation: Option<Simulation>,
     /// How `resolve` resolves the contacts together (`[settings]`, defaults where absent).
     pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
@@ -84,6 +89,69 @@ pub struct ContactDef {
     pub friction_model: FrictionModel,
     /// `[settings]` with this contact's `settings` table over it.
     pub settings: Settings,
+}
+
+/// What `simulate` needs beyond the bodies: forces, the step, sleep, and the
+/// coefficients of generated contacts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Simulation {
+    pub world: WorldParams<f64>,
+    pub box_box: BoxBoxMode,
+    /// `[world]`'s coefficients, the default of every body.
+    pub material: Material,
+    /// Each body's coefficients (the same indices as `Lesson::bodies`).
+    pub materials: Vec<Material>,
+    /// Closing speed below which generated contacts do not bounce
+    /// (`[world] velocity_limit`, default 0.25 as the reference engine).
+    pub velocity_limit: f64,
+    /// The lecture's micro-collisions: one step of acceleration is not bounced back.
+    pub acceleration_compensation: bool,
+    /// Friction model of generated contacts (`[world] friction_model`).
+    pub friction_model: FrictionModel,
+    /// Gap below which contacts are generated (`[world] contact_margin`, m).
+    pub contact_margin: f64,
+    pub dt: f64,
+    pub steps: u64,
+    pub sleep: SleepParams<f64>,
+}
+
+impl Default for Simulation {
+    fn default() -> Self {
+        Simulation {
+            world: WorldParams::default(),
+            box_box: BoxBoxMode::default(),
+            material: Material::default(),
+            materials: Vec::new(),
+            velocity_limit: 0.25,
+            acceleration_compensation: true,
+            friction_model: FrictionModel::Millington,
+            contact_margin: 0.005,
+            dt: 1.0 / 60.0,
+            steps: 600,
+            sleep: SleepParams::default(),
+        }
+    }
+}
+
+impl Lesson {
+    /// The parameters of the lesson's simulation: its scene tables, with the
+    /// `[settings]` of every generated contact (velocity limit from `[world]`).
+    pub fn sim_params(&self) -> Option<SimParams<f64>> {
+        let sim = self.simulation.as_ref()?;
+        let mut contact = self.settings.contact_params::<f64>();
+        contact.velocity_limit = sim.velocity_limit;
+        Some(SimParams {
+            dt: sim.dt,
+            world: sim.world,
+            sleep: sim.sleep,
+            resolver: self.resolver,
+            contact,
+            acceleration_compensation: sim.acceleration_compensation,
+            box_box: sim.box_box,
+            friction_model: sim.friction_model,
+            contact_margin: sim.contact_margin,
+        })
+    }
 }
 
 /// The `[settings]` table of a lesson file, as validated: a contact's
@@ -259,6 +327,7 @@ impl Lesson {
             contacts,
             step: StepParams {
                 duration: c(self.settings.duration),
+                ..StepParams::default()
             },
         }
     }

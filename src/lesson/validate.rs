@@ -1,6 +1,8 @@
 //! From TOML text to a validated [`Lesson`]. Every error names the span of the
 //! offending value; all errors of a file are reported together.
 
+mod simulation;
+
 use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
@@ -314,8 +316,13 @@ impl Validator {
         if raw.bodies.is_empty() {
             self.err(0..0, "the lesson has no [[body]]");
         }
-        if raw.contacts.is_empty() {
-            self.err(0..0, "the lesson has no [[contact]]");
+        let mut simulation = self.simulation(&raw);
+        self.body_materials(&raw, simulation.as_mut());
+        if raw.contacts.is_empty() && simulation.is_none() {
+            self.err(
+                0..0,
+                "the lesson has no [[contact]] (a scene that generates its contacts needs a [world] or [step] table)",
+            );
         }
         let defaults = self.settings(&raw.settings, Settings::default(), "[settings]");
         let resolver = self.resolver(&raw.settings);
@@ -342,6 +349,7 @@ impl Validator {
             contacts,
             printed,
             settings: defaults,
+            simulation,
             resolver,
             warnings: Vec::new(),
         }
@@ -359,7 +367,8 @@ impl Validator {
         );
         let movable = mass.is_finite() && rules::mass(mass).is_ok();
         let errors_before = self.errors.len();
-        let shape: Option<Shape> = raw.shape.as_ref().map(|s| Shape::from(*s.get_ref()));
+        let mut shape: Option<Shape> = raw.shape.as_ref().map(|s| Shape::from(*s.get_ref()));
+        self.half_space_normal(&name, raw, &mut shape);
         if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
             if s.dimensions()
                 .iter()

@@ -9,17 +9,21 @@
 //!   stepping, micro-collisions, sleep) and `exact/` (impact integration).
 
 pub mod body;
+pub mod collide;
 pub mod contact;
+pub mod exact;
 pub mod params;
 pub mod resolver;
 pub mod shape;
+pub mod step;
 pub mod world;
 
 pub use body::RigidBody;
 pub use contact::{checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
 pub use params::{
-    ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, StepParams,
+    ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, SleepParams,
+    StepParams, WorldParams,
 };
 pub use shape::Shape;
 pub use world::{Body, BodyId, Contact, World};

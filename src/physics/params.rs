@@ -3,8 +3,12 @@
 //!
 //! - [`ContactParams`]: how ONE contact is resolved (per contact, overridable);
 //! - [`StepParams`]: what belongs to a time step (the frame's duration);
-//! - [`ResolverParams`]: how a SET of contacts is resolved together.
+//! - [`ResolverParams`]: how a SET of contacts is resolved together;
+//! - [`WorldParams`], [`SleepParams`]: the forces and sleep of a simulation.
 
+use nalgebra::Vector3;
+
+use super::step::SleepMode;
 use super::{c, Real};
 
 /// How friction is modelled.
@@ -105,11 +109,20 @@ pub struct StepParams<T: Real> {
     /// `a·duration` that one frame of acceleration builds up is not bounced
     /// back (default: 0.01 s).
     pub duration: T,
+    /// Add the planar part of `a·duration` to each contact velocity, as the
+    /// reference engine does: it integrates positions before it resolves, so
+    /// friction must remove next step's build-up too or a box creeps down a
+    /// slope. A stepper that resolves between the velocity and the position
+    /// update does not need it (default: true).
+    pub anticipate_planar_acceleration: bool,
 }
 
 impl<T: Real> Default for StepParams<T> {
     fn default() -> Self {
-        StepParams { duration: c(0.01) }
+        StepParams {
+            duration: c(0.01),
+            anticipate_planar_acceleration: true,
+        }
     }
 }
 
@@ -180,5 +193,110 @@ impl ResolverParams {
     pub fn velocity_limit(&self, contacts: usize) -> usize {
         self.velocity_iterations
             .unwrap_or(8usize.saturating_mul(contacts))
+    }
+}
+
+/// The forces of a simulated world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WorldParams<T: Real> {
+    /// Uniform acceleration of every movable body (default: (0, −9.81, 0) m/s²).
+    pub gravity: Vector3<T>,
+    /// Fraction of linear velocity kept per second, (0, 1]: trades energy
+    /// lost for stability (default: 0.99; 1 = no damping).
+    pub linear_damping: T,
+    /// Fraction of angular velocity kept per second, (0, 1] (default: 0.99).
+    pub angular_damping: T,
+}
+
+impl<T: Real> Default for WorldParams<T> {
+    fn default() -> Self {
+        WorldParams {
+            gravity: Vector3::new(T::zero(), c(-9.81), T::zero()),
+            linear_damping: c(0.99),
+            angular_damping: c(0.99),
+        }
+    }
+}
+
+/// When bodies stop being simulated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SleepParams<T: Real> {
+    /// Whether bodies may sleep: trades the cost of simulating resting bodies
+    /// for the risk of freezing one that should still move (default: true).
+    pub enabled: bool,
+    /// Motion (recency-weighted `v·v + ω·ω`) below which a body sleeps
+    /// (default: 0.3, the reference engine's).
+    pub epsilon: T,
+    /// Per body, as the lecture; or per island of touching bodies (default: body).
+    pub mode: SleepMode,
+    /// Island mode: how long every body of an island must have been slow (default: 0.5 s).
+    pub island_time: T,
+}
+
+impl<T: Real> Default for SleepParams<T> {
+    fn default() -> Self {
+        SleepParams {
+            enabled: true,
+            epsilon: c(0.3),
+            mode: SleepMode::Body,
+            island_time: c(0.5),
+        }
+    }
+}
+
+/// Which contacts a pair of boxes generates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum BoxBoxMode {
+    /// One point–face or edge–edge contact, as the reference engine: cheap,
+    /// but a box resting on a box rocks on one point.
+    Single,
+    /// The reference face clipped against the incident face, up to 4 points:
+    /// costs more, stacks stand (default).
+    #[default]
+    Manifold,
+}
+
+impl BoxBoxMode {
+    pub fn name(self) -> &'static str {
+        match self {
+            BoxBoxMode::Single => "single",
+            BoxBoxMode::Manifold => "manifold",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [BoxBoxMode::Single, BoxBoxMode::Manifold]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
+/// Restitution and friction of the contacts generated for a body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    pub restitution: f64,
+    pub static_friction: f64,
+    pub dynamic_friction: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            restitution: 0.0,
+            static_friction: 0.0,
+            dynamic_friction: 0.0,
+        }
+    }
+}
+
+impl Material {
+    /// The coefficients of a contact between two bodies, as Box2D combines
+    /// them: restitution the larger, friction the geometric mean √(μ₁μ₂).
+    pub fn combine(&self, other: &Material) -> Material {
+        Material {
+            restitution: self.restitution.max(other.restitution),
+            static_friction: (self.static_friction * other.static_friction).sqrt(),
+            dynamic_friction: (self.dynamic_friction * other.dynamic_friction).sqrt(),
+        }
     }
 }

@@ -1,4 +1,5 @@
-//! The JSON contract of GUIDE §4: full f64 values, one object per stage.
+//! The JSON of `solve --format json`, documented in `docs/json.md`: full f64
+//! values, one object per stage.
 
 use serde_json::{json, Map, Value as J};
 

@@ -35,13 +35,55 @@ pub enum CheckKind {
     UnitQuaternion(usize),
 }
 
+/// What one check measured. The trace names these numbers (the `checks`
+/// stage's JSON values); physics only computes them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Measured<T: Real> {
+    /// |Σ m v after − Σ m v before|.
+    LinearMomentum { error: T },
+    /// |L after − L before| of body slot `body` about q.
+    AngularMomentum { body: usize, error: T },
+    /// Normal separating velocity before and after, and the target v_s + Δv.
+    Restitution { before: T, after: T, expected: T },
+    /// Kinetic energy before and after, and `after − before`.
+    Energy { before: T, after: T, change: T },
+    /// Normal and tangential impulse (contact space) and the cone's μ g_n.
+    FrictionCone { normal: T, tangential: T, limit: T },
+    /// Tangential slip speed before and after.
+    Slip { before: T, after: T },
+    /// Depth to resolve, separation the finite move gained, what is left.
+    ResidualPenetration { depth: T, gained: T, residual: T },
+    /// | |θ′| − 1 | of body slot `body`.
+    UnitQuaternion { body: usize, error: T },
+}
+
+impl<T: Real> Measured<T> {
+    /// Which check this is.
+    pub fn kind(&self) -> CheckKind {
+        match *self {
+            Measured::LinearMomentum { .. } => CheckKind::LinearMomentum,
+            Measured::AngularMomentum { body, .. } => CheckKind::AngularMomentum(body),
+            Measured::Restitution { .. } => CheckKind::Restitution,
+            Measured::Energy { .. } => CheckKind::Energy,
+            Measured::FrictionCone { .. } => CheckKind::FrictionCone,
+            Measured::Slip { .. } => CheckKind::Slip,
+            Measured::ResidualPenetration { .. } => CheckKind::ResidualPenetration,
+            Measured::UnitQuaternion { body, .. } => CheckKind::UnitQuaternion(body),
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct CheckItem<T: Real> {
-    pub kind: CheckKind,
     /// `None` for a check that informs rather than passes or fails.
     pub passed: Option<bool>,
-    /// Named measurements (JSON names of the `checks` stage).
-    pub values: Vec<(String, T)>,
+    pub measured: Measured<T>,
+}
+
+impl<T: Real> CheckItem<T> {
+    pub fn kind(&self) -> CheckKind {
+        self.measured.kind()
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -55,7 +97,7 @@ impl<T: Real> Checks<T> {
     }
 
     pub fn get(&self, kind: CheckKind) -> Option<&CheckItem<T>> {
-        self.items.iter().find(|i| i.kind == kind)
+        self.items.iter().find(|i| i.kind() == kind)
     }
 }
 
@@ -70,12 +112,8 @@ pub struct CheckInputs<'a, T: Real> {
     pub orientation: Option<&'a OrientationUpdate<T>>,
 }
 
-fn item<T: Real>(kind: CheckKind, passed: Option<bool>, values: Vec<(String, T)>) -> CheckItem<T> {
-    CheckItem {
-        kind,
-        passed,
-        values,
-    }
+fn item<T: Real>(passed: Option<bool>, measured: Measured<T>) -> CheckItem<T> {
+    CheckItem { passed, measured }
 }
 
 pub fn run_checks<T: Real>(input: &CheckInputs<'_, T>) -> Checks<T> {
@@ -112,9 +150,8 @@ fn velocity_checks<T: Real>(
         }
         let error = (after - before).norm();
         items.push(item(
-            CheckKind::LinearMomentum,
             Some(error <= tol * scale),
-            vec![("linear_momentum_error".into(), error)],
+            Measured::LinearMomentum { error },
         ));
     }
 
@@ -126,9 +163,8 @@ fn velocity_checks<T: Real>(
             + (b.position - q).norm() * b.mass * (b.velocity.norm() + a.v.norm());
         let error = (after - before).norm();
         items.push(item(
-            CheckKind::AngularMomentum(*i),
             Some(error <= tol * scale),
-            vec![(format!("angular_momentum_error{}", i + 1), error)],
+            Measured::AngularMomentum { body: *i, error },
         ));
     }
 
@@ -145,16 +181,12 @@ fn velocity_checks<T: Real>(
     let expected = input.desired.separating() + input.desired.desired;
     let error = (separating - expected).abs();
     items.push(item(
-        CheckKind::Restitution,
         Some(error <= tol * scale),
-        vec![
-            (
-                "separating_velocity_before".into(),
-                input.desired.separating(),
-            ),
-            ("separating_velocity".into(), separating),
-            ("separating_velocity_expected".into(), expected),
-        ],
+        Measured::Restitution {
+            before: input.desired.separating(),
+            after: separating,
+            expected,
+        },
     ));
 
     let (mut e_before, mut e_after) = (T::zero(), T::zero());
@@ -163,13 +195,12 @@ fn velocity_checks<T: Real>(
         e_after += b.kinetic_energy(&a.v, &a.w);
     }
     items.push(item(
-        CheckKind::Energy,
         Some(e_after <= e_before * (T::one() + tol) + tol * e_before.abs()),
-        vec![
-            ("energy_before".into(), e_before),
-            ("energy_after".into(), e_after),
-            ("energy_change".into(), e_after - e_before),
-        ],
+        Measured::Energy {
+            before: e_before,
+            after: e_after,
+            change: e_after - e_before,
+        },
     ));
 
     if let Some(f) = input.friction {
@@ -182,13 +213,12 @@ fn velocity_checks<T: Real>(
         let ok =
             g.x >= -tol * g.norm() && tangential <= mu * g.x * (T::one() + tol) + tol * g.norm();
         items.push(item(
-            CheckKind::FrictionCone,
             Some(ok),
-            vec![
-                ("normal_impulse".into(), g.x),
-                ("tangential_impulse".into(), tangential),
-                ("cone_limit".into(), mu * g.x),
-            ],
+            Measured::FrictionCone {
+                normal: g.x,
+                tangential,
+                limit: mu * g.x,
+            },
         ));
         let slip = |v: Vector3<T>| {
             let vc = input.frame.to_contact(&v);
@@ -204,14 +234,7 @@ fn velocity_checks<T: Real>(
             (true, super::stages::FrictionRegime::Dynamic) => None,
             (true, super::stages::FrictionRegime::Static) => Some(false),
         };
-        items.push(item(
-            CheckKind::Slip,
-            passed,
-            vec![
-                ("slip_speed_before".into(), before),
-                ("slip_speed_after".into(), after),
-            ],
-        ));
+        items.push(item(passed, Measured::Slip { before, after }));
     }
 }
 
@@ -244,22 +267,20 @@ fn position_checks<T: Real>(
     let residual = projection.resolved_depth - gained;
     let depth = projection.resolved_depth;
     items.push(item(
-        CheckKind::ResidualPenetration,
         None,
-        vec![
-            ("depth_to_resolve".into(), depth),
-            ("separation_gained".into(), gained),
-            ("residual_penetration".into(), residual),
-        ],
+        Measured::ResidualPenetration {
+            depth,
+            gained,
+            residual,
+        },
     ));
     if let Some(o) = input.orientation {
         for (i, b) in o.bodies.iter().enumerate() {
             if let Some(b) = b {
                 let error = (b.normalised.norm() - T::one()).abs();
                 items.push(item(
-                    CheckKind::UnitQuaternion(i),
                     Some(error <= tol),
-                    vec![(format!("orientation_norm_error{}", i + 1), error)],
+                    Measured::UnitQuaternion { body: i, error },
                 ));
             }
         }

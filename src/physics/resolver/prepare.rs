@@ -30,15 +30,14 @@ pub struct ResolverBody<T: Real> {
     /// `R I_b⁻¹ Rᵀ` at prepare.
     pub inverse_inertia_world: Matrix3<T>,
     pub position: Vector3<T>,
-    /// Orientation `[w, x, y, z]`: a unit quaternion at prepare; the
-    /// position phase's updates are not normalised (see [`ResolverBody::unit_orientation`]).
+    /// Unit quaternion `[w, x, y, z]`.
     pub orientation: Quaternion<T>,
     pub velocity: Vector3<T>,
     pub angular_velocity: Vector3<T>,
 }
 
 impl<T: Real> ResolverBody<T> {
-    /// The orientation normalised, as it is reported.
+    /// The orientation normalised once more, as reports show it.
     pub fn unit_orientation(&self) -> Quaternion<T> {
         self.orientation.normalize()
     }
@@ -269,8 +268,11 @@ pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut 
         let acceleration =
             relative_acceleration([0, 1].map(|i| body(i).map(|(_, s)| s.acceleration)));
         let duration = contact.duration.unwrap_or(world.step.duration);
-        let (velocity_from_acceleration, planar) =
+        let (velocity_from_acceleration, mut planar) =
             acceleration_terms(&acceleration, &basis, duration);
+        if !world.step.anticipate_planar_acceleration {
+            planar = Vector3::zeros();
+        }
         let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
         let friction_index = matrix.flatten().map(|matrix| {
             friction.push(FrictionData {

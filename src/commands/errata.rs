@@ -1,16 +1,17 @@
-//! `contact-lab check`: every printed lecture number against the computed one.
+//! `contact-lab check`: the errata — every printed lecture number against the
+//! computed one; exit 1 on a disagreement that is not a known erratum.
 
 use std::io::Write;
 
 use super::io;
-use crate::check::{self, Tally};
-use crate::cli::{CheckArgs, CheckFormat};
+use crate::cli::{ErrataArgs, ErrataFormat};
+use crate::errata::{self, Tally};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::{embedded, Lesson};
 use crate::render;
 
-pub fn check(args: &CheckArgs, out: &mut dyn Write) -> Result<(), AppError> {
+pub fn errata(args: &ErrataArgs, out: &mut dyn Write) -> Result<(), AppError> {
     let names: Vec<String> = if args.lessons.is_empty() {
         embedded::ids().into_iter().map(String::from).collect()
     } else {
@@ -23,12 +24,12 @@ pub fn check(args: &CheckArgs, out: &mut dyn Write) -> Result<(), AppError> {
         let traces: Vec<_> = (0..lesson.contacts.len())
             .map(|k| crate::worked_solution(&lesson, k))
             .collect();
-        items.extend(check::lesson(&lesson, &traces));
+        items.extend(errata::lesson(&lesson, &traces));
         lessons.push((lesson.id.clone(), lesson.title.clone()));
     }
     let text = match args.format {
-        CheckFormat::Text => render::check::text(&lessons, &items, &Fmt::default()),
-        CheckFormat::Json => render::check::json(&items),
+        ErrataFormat::Text => render::errata::text(&lessons, &items, &Fmt::default()),
+        ErrataFormat::Json => render::errata::json(&items),
     };
     out.write_all(text.as_bytes()).map_err(io)?;
     let tally = Tally::of(&items);

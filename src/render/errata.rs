@@ -1,10 +1,11 @@
-//! The lecture check as text (an errata sheet) or JSON.
+//! The errata findings (printed numbers against computed ones) as text (an
+//! errata sheet) or JSON, for the `check` subcommand.
 
 use std::fmt::Write;
 
 use serde_json::{json, Value as J};
 
-use crate::check::{Item, Status, Tally};
+use crate::errata::{Item, Status, Tally};
 use crate::format::Fmt;
 use crate::lesson::printed::{PrintedNum, PrintedShape};
 use crate::trace::Value;

@@ -1,4 +1,4 @@
-//! Drawing one scene: the lecture's three set-ups (a cube's edge on the
+//! Exercise set-ups drawn from a seed: the lecture's three set-ups (a cube's edge on the
 //! floor, two spheres, a cube's edge in a heavy sphere) with numbers of at
 //! most four decimals, geometry that fits (the contact point lies on the
 //! bodies), and unit normals and quaternions that are exact as written.
@@ -54,7 +54,7 @@ pub enum Friction {
 }
 
 #[derive(Debug, Clone, PartialEq)]
-pub struct Scene {
+pub struct Setup {
     pub title: &'static str,
     pub bodies: Vec<BodySpec>,
     pub point: [f64; 3],
@@ -129,7 +129,7 @@ fn penetration(rng: &mut SplitMix64, kind: Kind) -> f64 {
 }
 
 /// A cube strikes (or has sunk into) the immovable floor with one edge.
-pub fn cube_on_floor(rng: &mut SplitMix64, kind: Kind) -> Scene {
+pub fn cube_on_floor(rng: &mut SplitMix64, kind: Kind) -> Setup {
     let (side, mass) = cube(rng);
     let (q, cos, sin) = turn(rng);
     let pen = penetration(rng, kind);
@@ -149,7 +149,7 @@ pub fn cube_on_floor(rng: &mut SplitMix64, kind: Kind) -> Scene {
         };
         ([sideways(rng, kind), -rng.grid(0.5, 4.0, 2), 0.0], spin)
     };
-    Scene {
+    Setup {
         title: if pen > 0.0 {
             "A cube has sunk into the floor"
         } else {
@@ -201,7 +201,7 @@ fn sphere_shape(rng: &mut SplitMix64, radius: f64) -> Shape {
 }
 
 /// Two spheres collide (or overlap) along the line of their centres.
-pub fn two_spheres(rng: &mut SplitMix64, kind: Kind) -> Scene {
+pub fn two_spheres(rng: &mut SplitMix64, kind: Kind) -> Setup {
     let (r1, r2) = (rng.grid(1.0, 6.0, 0), rng.grid(1.0, 6.0, 0));
     let masses = [1.0, 2.0, 5.0, 10.0, 20.0, 50.0];
     let (m1, m2) = (rng.pick(&masses), rng.pick(&masses));
@@ -233,7 +233,7 @@ pub fn two_spheres(rng: &mut SplitMix64, kind: Kind) -> Scene {
     } else {
         (v1, v2)
     };
-    Scene {
+    Setup {
         title: if pen > 0.0 {
             "Two spheres overlap"
         } else {
@@ -268,7 +268,7 @@ pub fn two_spheres(rng: &mut SplitMix64, kind: Kind) -> Scene {
 }
 
 /// A cube's edge meets (or has sunk into) a heavy sphere below it.
-pub fn cube_on_sphere(rng: &mut SplitMix64, kind: Kind) -> Scene {
+pub fn cube_on_sphere(rng: &mut SplitMix64, kind: Kind) -> Setup {
     let (side, mass) = cube(rng);
     let (q, cos, sin) = turn(rng);
     let d = direction(rng, true);
@@ -295,7 +295,7 @@ pub fn cube_on_sphere(rng: &mut SplitMix64, kind: Kind) -> Scene {
             0.0,
         ])
     };
-    Scene {
+    Setup {
         title: if pen > 0.0 {
             "A cube has sunk into a heavy sphere"
         } else {
@@ -364,7 +364,7 @@ fn shape(s: &Shape) -> String {
     }
 }
 
-impl Scene {
+impl Setup {
     /// The scene as a lesson file.
     pub fn toml(&self, id: &str, title: &str, source: &str, summary: &str) -> String {
         let mut out = format!(

@@ -1,5 +1,6 @@
-//! The lecture check: every `[[printed]]` number of a lesson against the
-//! value the trace computes. Pure: lessons and traces in, findings out.
+//! Errata: every number a lesson prints (`[[printed]]`) against the value
+//! the trace computes — agrees, known erratum, or new disagreement. Pure:
+//! lessons and traces in, findings out (the `check` subcommand).
 
 use crate::lesson::printed::{PrintedNum, PrintedShape};
 use crate::lesson::{Lesson, Printed};
