@@ -1,4 +1,4 @@
-//! `contact-lab resolve` through the binary: the JSON contract of GUIDE §7,
+//! `contact-lab resolve` through the binary: the JSON contract of docs/resolve.md,
 //! `--log`, `--repeat`, `--show`, the implementation flag, bad settings in a
 //! lesson (65, file:line:column, naming the field), bad flags (2), bad
 //! lessons reported exactly as `solve` reports them, and `solve
@@ -423,4 +423,50 @@ fn solve_all_contacts_says_each_is_solved_alone_and_points_to_resolve() {
     // One contact alone needs no note.
     let one = run(&["solve", "box-four-corners"]);
     assert!(!one.stdout.contains("solved alone"));
+}
+
+/// Every key of the JSON (with the log) is documented in docs/resolve.md's
+/// table, and every key the table lists is produced.
+#[test]
+fn docs_resolve_md_lists_exactly_the_keys_produced() {
+    fn collect(v: &J, out: &mut std::collections::BTreeSet<String>, under_after: bool) {
+        match v {
+            J::Object(m) => {
+                for (k, x) in m {
+                    // Body names under `after` are data, not keys.
+                    if !under_after {
+                        out.insert(k.clone());
+                    }
+                    collect(x, out, k == "after" && !under_after);
+                }
+            }
+            J::Array(a) => a.iter().for_each(|x| collect(x, out, false)),
+            _ => {}
+        }
+    }
+    let mut produced = std::collections::BTreeSet::new();
+    for lesson in ["box-four-corners", "box-stack"] {
+        collect(
+            &json(&["resolve", lesson, "--format", "json", "--log"]),
+            &mut produced,
+            false,
+        );
+    }
+    let doc =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/resolve.md")).unwrap();
+    let documented: std::collections::BTreeSet<String> = doc
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .flat_map(|l| {
+            l.split(" | ")
+                .next()
+                .unwrap()
+                .split('`')
+                .skip(1)
+                .step_by(2)
+                .map(str::to_string)
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    assert_eq!(produced, documented);
 }

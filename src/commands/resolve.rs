@@ -1,5 +1,5 @@
 //! `contact-lab resolve`: every contact of a lesson resolved together
-//! (GUIDE §7), as text, Markdown or JSON; `--show` hands one iteration's
+//! (docs/resolve.md), as text, Markdown or JSON; `--show` hands one iteration's
 //! contact to the single-contact worked solution.
 
 use std::io::Write;

@@ -1,6 +1,7 @@
 //! From TOML text to a validated [`Lesson`]. Every error names the span of the
 //! offending value; all errors of a file are reported together.
 
+mod resolver;
 mod simulation;
 
 use std::collections::HashMap;
@@ -13,7 +14,7 @@ use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
 use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
-use crate::physics::{FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom};
+use crate::physics::{FrictionModel, ProjectionMethod};
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
@@ -595,89 +596,6 @@ impl Validator {
             }
         }
         s
-    }
-
-    /// The resolver's settings of the lesson's `[settings]` table.
-    fn resolver(&mut self, raw: &RawSettings) -> ResolverParams {
-        let mut p = ResolverParams::default();
-        let iterations = |v: &mut Self, name: &str, x: &Option<S<i64>>| {
-            let x = x.as_ref()?;
-            match rules::iterations(name, *x.get_ref()) {
-                Ok(()) => Some(*x.get_ref() as usize),
-                Err(e) => {
-                    v.err(x.span(), format!("in [settings]: {e}"));
-                    None
-                }
-            }
-        };
-        p.position_iterations = iterations(self, "position_iterations", &raw.position_iterations);
-        p.velocity_iterations = iterations(self, "velocity_iterations", &raw.velocity_iterations);
-        for (name, x, out) in [
-            (
-                "position_epsilon",
-                &raw.position_epsilon,
-                &mut p.position_epsilon,
-            ),
-            (
-                "velocity_epsilon",
-                &raw.velocity_epsilon,
-                &mut p.velocity_epsilon,
-            ),
-        ] {
-            if let Some(x) = x {
-                match rules::epsilon(name, *x.get_ref()) {
-                    Ok(()) => *out = *x.get_ref(),
-                    Err(e) => self.err(x.span(), format!("in [settings]: {e}")),
-                }
-            }
-        }
-        if let Some(r) = &raw.restitution_from {
-            match RestitutionFrom::from_name(r.get_ref()) {
-                Some(m) => p.restitution_from = m,
-                None => self.err(
-                    r.span(),
-                    format!(
-                        "in [settings]: restitution_from must be \"current\" or \"initial\", got \"{}\"",
-                        r.get_ref()
-                    ),
-                ),
-            }
-        }
-        p
-    }
-
-    /// A contact's `settings` table cannot hold the resolver's (scene-wide) settings.
-    fn no_resolver_settings(&mut self, raw: &RawSettings) {
-        let spans = [
-            (
-                "position_iterations",
-                raw.position_iterations.as_ref().map(|x| x.span()),
-            ),
-            (
-                "velocity_iterations",
-                raw.velocity_iterations.as_ref().map(|x| x.span()),
-            ),
-            (
-                "position_epsilon",
-                raw.position_epsilon.as_ref().map(|x| x.span()),
-            ),
-            (
-                "velocity_epsilon",
-                raw.velocity_epsilon.as_ref().map(|x| x.span()),
-            ),
-            (
-                "restitution_from",
-                raw.restitution_from.as_ref().map(|x| x.span()),
-            ),
-        ];
-        for (name, span) in spans {
-            if let Some(span) = span {
-                self.err(
-                    span,
-                    format!("{name} is a setting of the whole scene: put it in the lesson's [settings], not in a contact's settings"),
-                );
-            }
-        }
     }
 
     fn contact(

@@ -207,7 +207,7 @@ impl<T: Real> Resolver<T> {
         for b in &self.bodies {
             let state = &mut world.body_mut(b.id).state;
             state.position = b.position;
-            state.orientation = b.unit_orientation();
+            state.orientation = b.orientation;
             state.velocity = b.velocity;
             state.angular_velocity = b.angular_velocity;
         }

@@ -16,10 +16,8 @@ use crate::physics::{Problem, Real};
 
 /// Resolves `penetration` (times the relaxation) of contact `c`: computes each
 /// slot's moves and applies them to the bodies (position `p + Δ_l d`,
-/// orientation `θ + ½[0, Δθ]θ`). The orientation is normalised when it is
-/// reported, not after each move: the update is linear in θ, so normalising
-/// in between (as the reference engine's `setOrientation` does) only scales
-/// it and gives the same unit quaternion up to round-off.
+/// orientation `θ + ½[0, Δθ]θ`, normalised as the reference engine's
+/// `setOrientation` does).
 pub fn take<T: Real>(
     c: &ResolverContact<T>,
     setup: &ContactSetup<T>,
@@ -47,7 +45,8 @@ pub fn take<T: Real>(
         );
         body.position = projection.position;
         if projection.angular_change != Vector3::zeros() {
-            body.orientation = add_scaled_rotation(&body.orientation, &projection.angular_change);
+            let turned = add_scaled_rotation(&body.orientation, &projection.angular_change);
+            body.orientation = turned.normalize();
             moves.orientations[i] = Some(body.orientation);
         }
         moves.bodies[i] = Some(projection);

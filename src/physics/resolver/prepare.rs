@@ -30,15 +30,14 @@ pub struct ResolverBody<T: Real> {
     /// `R I_b⁻¹ Rᵀ` at prepare.
     pub inverse_inertia_world: Matrix3<T>,
     pub position: Vector3<T>,
-    /// Orientation `[w, x, y, z]`: a unit quaternion at prepare; the
-    /// position phase's updates are not normalised (see [`ResolverBody::unit_orientation`]).
+    /// Unit quaternion `[w, x, y, z]`.
     pub orientation: Quaternion<T>,
     pub velocity: Vector3<T>,
     pub angular_velocity: Vector3<T>,
 }
 
 impl<T: Real> ResolverBody<T> {
-    /// The orientation normalised, as it is reported.
+    /// The orientation normalised once more, as reports show it.
     pub fn unit_orientation(&self) -> Quaternion<T> {
         self.orientation.normalize()
     }

@@ -1,4 +1,4 @@
-//! `resolve --format json`, the contract of GUIDE §7: full f64 values; `log`
+//! `resolve --format json`, the contract of docs/resolve.md: full f64 values; `log`
 //! only when asked (`--log`); `seconds` of the fastest of `--repeat` runs.
 
 use serde_json::{json, Map, Value as J};
@@ -58,7 +58,7 @@ fn phase(p: &PhaseTrace, log: bool, position: bool) -> J {
     J::Object(out)
 }
 
-/// The resolve object of GUIDE §7.
+/// The resolve object of docs/resolve.md.
 pub fn to_json(trace: &ResolverTrace, seconds: &Seconds, log: bool) -> J {
     let after: Map<String, J> = trace
         .after

@@ -1,5 +1,5 @@
 //! `resolve`'s output: a scene's contacts resolved together, as text,
-//! Markdown and the JSON of GUIDE §7, all read from a
+//! Markdown and the JSON of docs/resolve.md, all read from a
 //! [`ResolverTrace`](crate::trace::resolver::ResolverTrace).
 
 pub mod json;
