@@ -28,8 +28,9 @@ fn rounded(json: &str) -> String {
         match v {
             serde_json::Value::Number(n) if n.is_f64() => {
                 let x = n.as_f64().unwrap();
+                // Below 1e-9 a value is round-off left by the resolver.
                 let r: f64 = format!("{x:.8e}").parse().unwrap();
-                *v = serde_json::json!(if r == 0.0 { 0.0 } else { r });
+                *v = serde_json::json!(if r.abs() < 1e-9 { 0.0 } else { r });
             }
             serde_json::Value::Array(a) => a.iter_mut().for_each(round),
             serde_json::Value::Object(o) => o.values_mut().for_each(round),
