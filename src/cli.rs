@@ -369,12 +369,7 @@ pub struct SimulateArgs {
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,
     /// Gravity as x,y,z in m/s².
-    #[arg(
-        long,
-        value_delimiter = ',',
-        num_args = 3,
-        allow_negative_numbers = true
-    )]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub gravity: Option<Vec<f64>>,
     /// Fraction of linear and angular velocity kept per second, (0, 1].
     #[arg(long, allow_negative_numbers = true)]

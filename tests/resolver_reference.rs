@@ -209,4 +209,3 @@ fn agrees_with_the_reference_engine_on_its_scenes() {
     }
     println!("largest difference over all scenes: {worst:.1e}");
 }
-
