@@ -41,28 +41,12 @@ fn interactive() -> bool {
     std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
 }
 
-/// Writes `bytes` to `path` atomically: a temporary file beside it, renamed
-/// over it, so a reader never sees half a file and a failure leaves no file.
+/// Writes `bytes` to `path` through [`crate::output_file`]: atomically,
+/// replacing only a regular file (a device, FIFO, directory or symbolic link
+/// is refused with exit 1).
 pub(crate) fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<(), AppError> {
-    let fail =
-        |e: std::io::Error| AppError::Runtime(format!("cannot write {}: {e}", path.display()));
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    let name = path
-        .file_name()
-        .ok_or_else(|| AppError::Usage(format!("{}: not a file name", path.display())))?;
-    let tmp = dir.join(format!(
-        ".{}.{}.tmp",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, bytes).map_err(fail)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
-    })
+    crate::output_file::write(path, bytes, crate::output_file::Existing::Replace)
+        .map_err(|e| AppError::Runtime(format!("cannot write {e}")))
 }
 
 /// A lesson id made safe for a file name.
