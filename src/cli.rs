@@ -45,7 +45,7 @@ pub enum Command {
 #[derive(Debug, Clone, Args)]
 pub struct TuiArgs {
     /// Embedded lesson id or path to a lesson file to open (default: lecture-2).
-    pub lesson: Option<String>,
+    pub lesson: Option<std::ffi::OsString>,
     /// Which contact of the lesson to open (0-based).
     #[arg(long, short, default_value_t = 0)]
     pub contact: usize,
@@ -96,7 +96,7 @@ pub struct ModelArgs {
 #[derive(Debug, Clone, Args)]
 pub struct SolveArgs {
     /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
-    pub lesson: String,
+    pub lesson: std::ffi::OsString,
     /// Which contact of the lesson (0-based).
     #[arg(long, short, default_value_t = 0)]
     pub contact: usize,
@@ -135,7 +135,7 @@ pub enum PlaneArg {
 #[derive(Debug, Clone, Args)]
 pub struct FigureArgs {
     /// Embedded lesson id or path to a lesson file.
-    pub lesson: String,
+    pub lesson: std::ffi::OsString,
     /// Which contact of the lesson (0-based).
     #[arg(long, short, default_value_t = 0)]
     pub contact: usize,
@@ -158,7 +158,7 @@ pub enum CheckFormat {
 #[derive(Debug, Clone, Args)]
 pub struct CheckArgs {
     /// Lesson ids or paths (default: every embedded lesson).
-    pub lessons: Vec<String>,
+    pub lessons: Vec<std::ffi::OsString>,
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = CheckFormat::Text)]
     pub format: CheckFormat,

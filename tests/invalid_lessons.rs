@@ -1,7 +1,9 @@
 //! Bad lesson files through the binary (GUIDE §6, the "bottom" style): every
 //! file in `tests/invalid_lessons/` exits 65, names `FILE:LINE:COLUMN` and a
 //! specific message, writes nothing to stdout and does not panic. Also very
-//! long files (generated), a missing file (66) and command-line misuse (2).
+//! long files (generated), a missing file (66), paths that are not regular
+//! files or cannot be read (1), non-UTF-8 file names, a closed stdout and
+//! command-line misuse (2).
 
 use std::path::{Path, PathBuf};
 
@@ -246,7 +248,11 @@ fn deep_nesting_is_refused_without_overflowing_the_stack() {
 
 #[test]
 fn a_missing_file_exits_66() {
-    for path in ["tests/no/such/lesson.toml", "not-a-lesson-id", DIR] {
+    for path in [
+        "tests/no/such/lesson.toml",
+        "not-a-lesson-id",
+        "tests/invalid_lessons/zero-mass.toml/below-a-file",
+    ] {
         let r = run(&["solve", path]);
         assert_eq!(r.code, Some(66), "{path}: {}", r.stderr);
         assert!(r.stdout.is_empty());
@@ -257,6 +263,116 @@ fn a_missing_file_exits_66() {
             r.stderr
         );
     }
+}
+
+/// A path that exists but is not a regular file is refused at once (exit 1),
+/// never read: a FIFO would block forever, a device never ends.
+#[test]
+fn a_lesson_path_that_is_not_a_regular_file_is_refused_at_once() {
+    let mut cases = vec![(DIR.to_string(), "it is a directory, not a lesson file")];
+    #[cfg(unix)]
+    {
+        let fifo = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lesson-fifo.toml");
+        let _ = std::fs::remove_file(&fifo);
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        assert!(made.unwrap().success(), "mkfifo");
+        cases.push((fifo.display().to_string(), "it is a FIFO (named pipe), not a lesson file"));
+        cases.push(("/dev/zero".into(), "it is a character device, not a lesson file"));
+    }
+    for (path, why) in &cases {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["solve", path])
+            .stdin(std::process::Stdio::null())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if start.elapsed() > std::time::Duration::from_secs(20) {
+                child.kill().unwrap();
+                panic!("solve {path} blocked");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{path}: {stderr}");
+        assert!(out.stdout.is_empty());
+        assert_eq!(
+            stderr.trim_end(),
+            format!("error: cannot read lesson file {path}: {why} (a lesson is a TOML file)")
+        );
+    }
+}
+
+/// Permission denied is not "missing" (66) but a failure to read (exit 1).
+/// Root reads any file, so the check runs only for other users.
+#[cfg(unix)]
+#[test]
+fn an_unreadable_lesson_is_not_called_missing() {
+    use std::os::unix::fs::PermissionsExt;
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("unreadable.toml");
+    std::fs::write(&path, valid_lesson()).unwrap();
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o000)).unwrap();
+    if std::fs::read(&path).is_ok() {
+        println!("skipped: this user (root?) reads files without read permission");
+        return;
+    }
+    let r = run(&["solve", &path.display().to_string()]);
+    assert_eq!(r.code, Some(1), "{}", r.stderr);
+    assert!(!r.stderr.contains("missing"), "{}", r.stderr);
+    assert!(r.stderr.contains("permission denied"), "{}", r.stderr);
+}
+
+/// A file name that is not UTF-8 (and holds an escape) opens, and the name is
+/// shown escaped.
+#[cfg(unix)]
+#[test]
+fn a_non_utf8_file_name_opens() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let name = std::ffi::OsStr::from_bytes(b"caf\xe9-\x1b[31m.toml");
+    let path = dir.join(name);
+    std::fs::write(&path, valid_lesson()).unwrap();
+    let out = contact_lab()
+        .arg("solve")
+        .arg(&path)
+        .arg("--format")
+        .arg("json")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("\"lesson\": \"bad\""));
+    std::fs::write(&path, "id = 3\n").unwrap();
+    let out = contact_lab().arg("solve").arg(&path).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(65), "{stderr}");
+    assert!(stderr.contains("caf\u{fffd}-\\u{1b}[31m.toml:1:"), "{stderr}");
+    assert!(!stderr.contains('\u{1b}'), "{stderr}");
+}
+
+/// `contact-lab … >&-`: output that cannot be delivered is a failure, not
+/// success (the closed pipe of `… | head` stays quiet, tested above).
+#[cfg(unix)]
+#[test]
+fn a_closed_stdout_is_reported() {
+    let bin = env!("CARGO_BIN_EXE_contact-lab");
+    let out = std::process::Command::new("sh")
+        .args(["-c", &format!("'{bin}' solve lecture-2 >&-")])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(stderr, "error: cannot write output: standard output is closed\n");
+    // A command that writes nothing to stdout is not affected.
+    let svg = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("closed-stdout.svg");
+    let out = std::process::Command::new("sh")
+        .args(["-c", &format!("'{bin}' figure lecture-2 -o '{}' >&-", svg.display())])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
 }
 
 #[test]
@@ -370,9 +486,18 @@ fn an_unwritable_stderr_still_gives_the_exit_code() {
     );
 }
 
-#[cfg(unix)]
 #[test]
-fn an_endless_file_is_refused_after_16_mib() {
-    let stderr = assert_invalid("/dev/zero", 1, 1, "the file is larger than 16 MiB");
+fn a_file_over_16_mib_is_refused_unread() {
+    // Sparse: 17 MiB of length, no blocks written.
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("huge.toml");
+    let f = std::fs::File::create(&path).unwrap();
+    f.set_len(17 << 20).unwrap();
+    drop(f);
+    let stderr = assert_invalid(
+        &path.display().to_string(),
+        1,
+        1,
+        "the file is larger than 16 MiB",
+    );
     assert!(stderr.len() < 1_000, "{stderr}");
 }

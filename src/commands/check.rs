@@ -11,8 +11,8 @@ use crate::lesson::{embedded, Lesson};
 use crate::render;
 
 pub fn check(args: &CheckArgs, out: &mut dyn Write) -> Result<(), AppError> {
-    let names: Vec<String> = if args.lessons.is_empty() {
-        embedded::ids().into_iter().map(String::from).collect()
+    let names: Vec<std::ffi::OsString> = if args.lessons.is_empty() {
+        embedded::ids().into_iter().map(Into::into).collect()
     } else {
         args.lessons.clone()
     };

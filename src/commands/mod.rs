@@ -16,7 +16,7 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     match cli.command {
-        None if interactive() => crate::tui::run(crate::tui::open(None, 0)?),
+        None if interactive() => crate::tui::run(crate::tui::open(None::<&std::ffi::OsStr>, 0)?),
         None => list::welcome(out),
         Some(Command::Tui(args)) => {
             let app = crate::tui::open(args.lesson.as_deref(), args.contact)?;
@@ -68,7 +68,7 @@ pub(crate) fn io(e: std::io::Error) -> AppError {
 
 /// Loads a lesson, applies the command-line overrides and checks the contact index.
 pub(crate) fn load(
-    name: &str,
+    name: &std::ffi::OsStr,
     model: &ModelArgs,
     contact: Option<usize>,
 ) -> Result<Lesson, AppError> {

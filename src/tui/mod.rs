@@ -14,6 +14,8 @@ pub mod ui;
 pub mod wrap;
 pub mod write;
 
+use std::ffi::OsStr;
+
 use crate::error::AppError;
 use crate::lesson::{embedded, Lesson};
 pub use app::App;
@@ -21,15 +23,17 @@ pub use theme::Theme;
 
 /// The embedded lessons, plus `lesson` when it names a file; returns them
 /// and the index to open.
-pub fn lessons(lesson: Option<&str>) -> Result<(Vec<Lesson>, usize), AppError> {
+pub fn lessons<N: AsRef<OsStr> + ?Sized>(
+    lesson: Option<&N>,
+) -> Result<(Vec<Lesson>, usize), AppError> {
     let mut all: Vec<Lesson> = embedded::ids()
         .into_iter()
         .map(Lesson::load)
         .collect::<Result<_, _>>()
         .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
-    let at = match lesson {
+    let at = match lesson.map(AsRef::as_ref) {
         None => all.iter().position(|l| l.id == "lecture-2").unwrap_or(0),
-        Some(name) => match all.iter().position(|l| l.id == name) {
+        Some(name) => match all.iter().position(|l| name.to_str() == Some(l.id.as_str())) {
             Some(i) => i,
             None => {
                 all.push(Lesson::load(name)?);
@@ -41,7 +45,10 @@ pub fn lessons(lesson: Option<&str>) -> Result<(Vec<Lesson>, usize), AppError> {
 }
 
 /// The app on `lesson` (embedded id or path; lecture-2 when `None`) and contact `contact`.
-pub fn open(lesson: Option<&str>, contact: usize) -> Result<App, AppError> {
+pub fn open<N: AsRef<OsStr> + ?Sized>(
+    lesson: Option<&N>,
+    contact: usize,
+) -> Result<App, AppError> {
     let (all, at) = lessons(lesson)?;
     let n = all[at].contacts.len();
     if contact >= n {
