@@ -88,6 +88,20 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("zero-mass", 7, 8, "mass must be > 0 (or inf for an immovable body), got 0"),
     ("zero-normal", 15, 10, "contact normal must be non-zero (its length is 0)"),
     ("zero-quaternion", 11, 15, "orientation must be a non-zero quaternion"),
+    ("carriage-return-in-body-name", 6, 8, "body name must not contain control characters (found U+000D), a carriage return"),
+    ("line-feed-in-id", 2, 6, "id must not contain control characters (found U+000A), a line feed"),
+    ("line-feed-in-title", 3, 9, "title must not contain control characters (found U+000A)"),
+    ("escape-in-contact-name", 13, 8, "contact name must not contain control characters (found U+001B), an escape"),
+    ("bidi-override-in-body-name", 6, 8, "body name must not contain control characters (found U+202E), a bidirectional-text control"),
+    ("lone-carriage-return-in-summary", 4, 11, "summary must not contain control characters (found U+000D), a carriage return"),
+    ("immovable-with-acceleration", 17, 16, "body 'floor' is immovable (mass = inf): its acceleration must be zero or absent"),
+    ("immovable-with-inertia", 17, 11, "body 'floor' is immovable (mass = inf): it takes no `inertia` tensor"),
+    ("printed-empty-array", 21, 11, "the printed value is empty"),
+    ("printed-jagged-matrix", 21, 11, "a printed matrix is 3 rows of 3 numbers: row 2 has 1"),
+    ("printed-empty-row", 21, 11, "a printed matrix is 3 rows of 3 numbers: row 1 has 0"),
+    ("printed-two-numbers", 21, 11, "a printed vector has 3 numbers (4 for a quaternion), got 2"),
+    ("printed-component-of-a-vector", 21, 13, "`component` picks one number of a vector, so `printed` must be one number"),
+    ("printed-component-out-of-range", 21, 13, "component must be 0, 1 or 2 (3 for a quaternion's z), got 9"),
 ];
 
 /// Extra help lines some cases must carry.

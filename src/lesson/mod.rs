@@ -1,6 +1,7 @@
 //! Lesson files: one scene per TOML file (format in `lessons/README.md`),
 //! validated into a [`Lesson`] with spans for every error.
 
+pub mod characters;
 pub mod edit;
 pub mod embedded;
 pub mod printed;

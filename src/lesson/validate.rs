@@ -72,26 +72,23 @@ pub mod rules {
             ))
         }
     }
-    /// Ids and names appear in headings and tables: not blank, no control characters.
+    /// Ids and names appear in headings and tables: not blank, no control
+    /// characters at all (see `lesson::characters`).
     pub fn name(s: &str) -> Result<(), String> {
         if s.trim().is_empty() {
             Err("must not be empty".into())
         } else {
-            text(s)
+            super::super::characters::name(s)
         }
     }
-    /// Titles and summaries: line breaks and tabs, but no other control characters.
+    /// One-line texts (title, source, a printed entry's value and where).
+    pub fn line(s: &str) -> Result<(), String> {
+        super::super::characters::line(s)
+    }
+    /// Multi-line texts (summary, erratum): line breaks and tabs, no other
+    /// control characters.
     pub fn text(s: &str) -> Result<(), String> {
-        match s
-            .chars()
-            .find(|c| c.is_control() && !matches!(c, '\n' | '\r' | '\t'))
-        {
-            Some(c) => Err(format!(
-                "must not contain control characters (found U+{:04X})",
-                c as u32
-            )),
-            None => Ok(()),
-        }
+        super::super::characters::lines(s)
     }
     pub fn velocity_limit(x: f64) -> Result<(), String> {
         if in_range(x) && x >= 0.0 {
@@ -268,10 +265,14 @@ impl Validator {
             self.err(raw.id.span(), format!("id {e}"));
         }
         let texts = [("title", Some(&raw.title)), ("source", raw.source.as_ref())];
-        for (what, value) in texts.into_iter().chain([("summary", raw.summary.as_ref())]) {
-            if let Some(Err(e)) = value.map(|v| rules::text(v.get_ref())) {
+        for (what, value) in texts {
+            if let Some(Err(e)) = value.map(|v| rules::line(v.get_ref())) {
                 self.err(value.map_or(0..0, |v| v.span()), format!("{what} {e}"));
             }
+        }
+        if let Some(Err(e)) = raw.summary.as_ref().map(|v| rules::text(v.get_ref())) {
+            let span = raw.summary.as_ref().map_or(0..0, |v| v.span());
+            self.err(span, format!("summary {e}"));
         }
         let bodies: Vec<BodyDef> = raw.bodies.iter().map(|b| self.body(b)).collect();
         let mut index = HashMap::new();
@@ -447,9 +448,18 @@ impl Validator {
         );
         let acceleration = self.opt_vec(&format!("body '{name}' acceleration"), &raw.acceleration);
         if mass.is_infinite() {
+            // An immovable body neither moves nor turns: whatever would make
+            // it do so is refused, not silently ignored.
+            if let Some(t) = &raw.inertia {
+                self.err(
+                    t.span(),
+                    format!("body '{name}' is immovable (mass = inf): it takes no `inertia` tensor (remove it, or give a finite mass)"),
+                );
+            }
             for (field, value) in [
                 ("velocity", &raw.velocity),
                 ("angular_velocity", &raw.angular_velocity),
+                ("acceleration", &raw.acceleration),
             ] {
                 if let Some(v) = value {
                     if v.get_ref().iter().any(|x| *x != 0.0) {
@@ -707,11 +717,14 @@ impl Validator {
             return None;
         }
         // `check` prints these strings: no control characters.
-        let texts = [("value", Some(&raw.value)), ("where", Some(&raw.location))];
-        for (what, text) in texts.into_iter().chain([("erratum", raw.erratum.as_ref())]) {
-            if let Some(Err(e)) = text.map(|t| rules::text(t.get_ref())) {
-                self.err(text.map_or(0..0, |t| t.span()), format!("{what} {e}"));
+        for (what, text) in [("value", &raw.value), ("where", &raw.location)] {
+            if let Err(e) = rules::line(text.get_ref()) {
+                self.err(text.span(), format!("{what} {e}"));
             }
+        }
+        if let Some(Err(e)) = raw.erratum.as_ref().map(|t| rules::text(t.get_ref())) {
+            let span = raw.erratum.as_ref().map_or(0..0, |t| t.span());
+            self.err(span, format!("erratum {e}"));
         }
         match Printed::from_raw(raw) {
             Ok(p) => Some(p),
