@@ -75,6 +75,10 @@ pub(crate) fn load(
     let overrides = overrides(model)?;
     let mut lesson = Lesson::load(name)?;
     lesson.apply(&overrides);
+    if overrides != Overrides::default() {
+        crate::lesson::overflow::check_all(&lesson)
+            .map_err(|e| AppError::Usage(format!("with these options, {e}")))?;
+    }
     if let Some(k) = contact {
         if k >= lesson.contacts.len() {
             return Err(AppError::Usage(format!(

@@ -4,7 +4,9 @@
 pub mod characters;
 pub mod edit;
 pub mod embedded;
+pub mod overflow;
 pub mod printed;
+pub mod ranges;
 pub mod raw;
 pub mod read;
 pub mod shape;
@@ -179,7 +181,10 @@ impl Lesson {
                 return None;
             }
             let inertia = b.inertia.unwrap_or_else(Matrix3::identity);
-            let inverse = inertia.try_inverse().unwrap_or_else(Matrix3::zeros);
+            // Validated tensors invert (`ranges::inertia`); scaled first so a
+            // determinant out of f64's range cannot make one look singular.
+            let inverse = crate::physics::scale::stable_inverse(&inertia)
+                .expect("a validated inertia tensor is invertible");
             Some(RigidBody {
                 mass: c(b.mass),
                 inverse_mass: c(1.0 / b.mass),

@@ -6,6 +6,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 use super::stages::{
     AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, OrientationUpdate, Projection,
 };
+use super::scale::{stable_hypot, stable_norm as norm, stable_norm_quaternion};
 use super::{c, Problem, Real};
 
 /// Relative tolerance of the checks: 10⁴ ε of the float type (f64: 2.2e-12,
@@ -108,9 +109,9 @@ fn velocity_checks<T: Real>(
         for (_, b, a) in &pairs {
             before += b.velocity * b.mass;
             after += a.v * b.mass;
-            scale += (b.velocity * b.mass).norm() + a.impulse.norm();
+            scale += norm(&(b.velocity * b.mass)) + norm(&a.impulse);
         }
-        let error = (after - before).norm();
+        let error = norm(&(after - before));
         items.push(item(
             CheckKind::LinearMomentum,
             Some(error <= tol * scale),
@@ -121,10 +122,10 @@ fn velocity_checks<T: Real>(
     for (i, b, a) in &pairs {
         let before = b.angular_momentum_about(&q, &b.velocity, &b.angular_velocity);
         let after = b.angular_momentum_about(&q, &a.v, &a.w);
-        let scale = before.norm()
-            + (b.inertia_world() * a.w).norm()
-            + (b.position - q).norm() * b.mass * (b.velocity.norm() + a.v.norm());
-        let error = (after - before).norm();
+        let scale = norm(&before)
+            + norm(&(b.inertia_world() * a.w))
+            + norm(&(b.position - q)) * b.mass * (norm(&b.velocity) + norm(&a.v));
+        let error = norm(&(after - before));
         items.push(item(
             CheckKind::AngularMomentum(*i),
             Some(error <= tol * scale),
@@ -134,11 +135,11 @@ fn velocity_checks<T: Real>(
 
     // Separating velocity after the impulse, along the normal.
     let mut after_world = Vector3::zeros();
-    let mut scale = input.desired.contact_velocity_world.norm();
+    let mut scale = norm(&input.desired.contact_velocity_world);
     for (i, b, a) in &pairs {
         let r = input.frame.r[*i].unwrap_or_else(Vector3::zeros);
         let v = a.w.cross(&r) + a.v;
-        scale += v.norm() + b.point_velocity(&r).norm();
+        scale += norm(&v) + norm(&b.point_velocity(&r));
         after_world += v * Problem::<T>::sign(*i);
     }
     let separating = after_world.dot(&d);
@@ -174,13 +175,13 @@ fn velocity_checks<T: Real>(
 
     if let Some(f) = input.friction {
         let g = f.impulse_contact;
-        let tangential = (g.y * g.y + g.z * g.z).sqrt();
+        let tangential = stable_hypot(g.y, g.z);
         let mu = problem
             .contact
             .static_friction
             .max(problem.contact.dynamic_friction);
         let ok =
-            g.x >= -tol * g.norm() && tangential <= mu * g.x * (T::one() + tol) + tol * g.norm();
+            g.x >= -tol * norm(&g) && tangential <= mu * g.x * (T::one() + tol) + tol * norm(&g);
         items.push(item(
             CheckKind::FrictionCone,
             Some(ok),
@@ -192,7 +193,7 @@ fn velocity_checks<T: Real>(
         ));
         let slip = |v: Vector3<T>| {
             let vc = input.frame.to_contact(&v);
-            (vc.y * vc.y + vc.z * vc.z).sqrt()
+            stable_hypot(vc.y, vc.z)
         };
         let before = slip(input.desired.contact_velocity_world);
         let after = slip(after_world);
@@ -255,7 +256,7 @@ fn position_checks<T: Real>(
     if let Some(o) = input.orientation {
         for (i, b) in o.bodies.iter().enumerate() {
             if let Some(b) = b {
-                let error = (b.normalised.norm() - T::one()).abs();
+                let error = (stable_norm_quaternion(&b.normalised) - T::one()).abs();
                 items.push(item(
                     CheckKind::UnitQuaternion(i),
                     Some(error <= tol),

@@ -10,6 +10,7 @@ pub mod body;
 pub mod checks;
 pub mod frame;
 pub mod problem;
+pub mod scale;
 pub mod shape;
 pub mod solve;
 pub mod stages;

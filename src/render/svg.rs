@@ -90,7 +90,7 @@ fn scaled(p: [f64; 3], v: [f64; 3], k: f64) -> [f64; 3] {
 }
 
 fn norm(v: [f64; 3]) -> f64 {
-    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+    crate::physics::scale::stable_norm_of(&v)
 }
 
 /// Where an arrow's label goes.

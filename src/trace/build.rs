@@ -142,12 +142,12 @@ fn skip_reason(skip: Skip) -> &'static str {
 /// rounding: the angle between r and d̂ has sine below 10⁻⁴ (the lecture's
 /// four-digit data leaves about 5·10⁻⁵).
 fn through_centre(r: &Vector3<f64>, d: &Vector3<f64>) -> bool {
-    r.cross(d).norm() <= 1e-4 * r.norm()
+    crate::physics::scale::stable_norm(&r.cross(d)) <= 1e-4 * crate::physics::scale::stable_norm(r)
 }
 
 /// `Some((axis letter, counter_clockwise))` when `v` lies along one world axis.
 fn about_one_axis(v: &Vector3<f64>) -> Option<(char, bool)> {
-    let n = v.norm();
+    let n = crate::physics::scale::stable_norm(v);
     if n == 0.0 {
         return None;
     }
@@ -458,7 +458,7 @@ impl Ctx<'_> {
             b.note("v_s ≥ 0: the contact points are separating or at rest; no impulse is needed.");
         }
         let (vy, vz) = (dv.contact_velocity.y, dv.contact_velocity.z);
-        if (vy * vy + vz * vz).sqrt() > 1e-12 * dv.contact_velocity.norm() {
+        if crate::physics::scale::stable_hypot(vy, vz) > 1e-12 * crate::physics::scale::stable_norm(&dv.contact_velocity) {
             b.note("The y and z components of v_c are sliding velocity in the contact plane; only friction acts on them.");
         }
         b.done()
@@ -510,7 +510,7 @@ impl Ctx<'_> {
                     b.note("ILL-CONDITIONED: κ(M) · ε > 10⁻³, so fewer than three digits of g can be trusted (a huge mass with a tiny inertia, or the reverse).");
                 }
                 if solve.singular {
-                    b.note("SINGULAR: M could not be factorised; the frictionless impulse Δv / Δq̇_t is used instead.");
+                    b.note("SINGULAR: M could not be factorised, or κ(M) · ε ≥ 1 so no digit of g would be right; the frictionless impulse Δv / Δq̇_t is used instead.");
                 } else if solve.used_lu {
                     b.note(
                         "M is not numerically positive-definite (Cholesky failed); LU was used.",
@@ -669,7 +669,7 @@ impl Ctx<'_> {
             b.value(format!("w{n}"), c.w);
             b.value(
                 format!("dw{n}_degrees_per_second"),
-                c.dw.norm().to_degrees(),
+                crate::physics::scale::stable_norm(&c.dw).to_degrees(),
             );
             let g = if i == 0 { "g" } else { "−g" };
             b.f(

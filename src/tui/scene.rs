@@ -215,7 +215,7 @@ fn scale(a: P, s: f64) -> P {
 
 /// Largest length among `vs` (3D, so that the scale does not change with the plane).
 fn longest<'a>(vs: impl Iterator<Item = &'a [f64; 3]>) -> f64 {
-    vs.map(|v| v3(*v).norm())
+    vs.map(|v| crate::physics::scale::stable_norm(&v3(*v)))
         .filter(|x| x.is_finite())
         .fold(0.0, f64::max)
 }
@@ -384,7 +384,7 @@ fn picture(scene: &SceneView, view: &View, show: &Show) -> (Picture, [f64; 4]) {
     );
     // The impulse: g on body 1 at q, −g on body 2 when it can move.
     if let Some(g) = scene.impulse.filter(|_| show.impulse) {
-        let gl = v3(g).norm();
+        let gl = crate::physics::scale::stable_norm(&v3(g));
         if gl > 0.0 && gl.is_finite() {
             let along = scale(view.p(v3(g)), arrow_len / gl);
             pic.arrow(q, along, head, Ink::Impulse, "g", 2);

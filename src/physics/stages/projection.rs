@@ -8,6 +8,7 @@
 use nalgebra::Vector3;
 
 use super::ContactFrame;
+use crate::physics::scale::stable_norm;
 use crate::physics::{Problem, ProjectionMethod, Real};
 
 #[derive(Debug, Clone, PartialEq)]
@@ -78,7 +79,7 @@ pub fn nonlinear_projection<T: Real>(
 
         // Avoiding excessive rotation: scale the limit by the lever arm's size.
         let r_perp = r - d * r.dot(&d);
-        let r_perp_length = r_perp.norm();
+        let r_perp_length = stable_norm(&r_perp);
         // `inf` switches the limit off (and must not become inf · 0 = NaN).
         let angular_limit = if settings.angular_limit.is_finite() {
             settings.angular_limit * r_perp_length
