@@ -200,7 +200,10 @@ mod tests {
         write(&q, b"new", Existing::Replace).unwrap();
         let mode = std::fs::metadata(&q).unwrap().permissions().mode() & 0o777;
         assert_ne!(mode & 0o600, 0, "owner can read and write");
-        assert_ne!(mode, 0o600, "not tempfile's private 0o600 (umask permitting)");
+        assert_ne!(
+            mode, 0o600,
+            "not tempfile's private 0o600 (umask permitting)"
+        );
         std::fs::remove_dir_all(&d).unwrap();
     }
 
@@ -215,12 +218,16 @@ mod tests {
         for existing in [Existing::Replace, Existing::Keep] {
             let e = write(&p, b"svg", existing).unwrap_err();
             assert!(
-                e.to_string().contains("it is a symbolic link, not a regular file"),
+                e.to_string()
+                    .contains("it is a symbolic link, not a regular file"),
                 "{e}"
             );
         }
         assert_eq!(std::fs::read_to_string(&victim).unwrap(), "precious");
-        assert!(std::fs::symlink_metadata(&p).unwrap().file_type().is_symlink());
+        assert!(std::fs::symlink_metadata(&p)
+            .unwrap()
+            .file_type()
+            .is_symlink());
         assert_eq!(entries(&d), ["figure.svg", "victim.txt"]);
         std::fs::remove_dir_all(&d).unwrap();
     }

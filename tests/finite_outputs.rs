@@ -38,7 +38,10 @@ fn vec3() -> impl Strategy<Value = [f64; 3]> {
 }
 
 fn list(v: &[f64]) -> String {
-    v.iter().map(|x| format!("{x:e}")).collect::<Vec<_>>().join(", ")
+    v.iter()
+        .map(|x| format!("{x:e}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// One body's TOML: `movable` decides the mass, the shape or tensor follows.
@@ -191,7 +194,10 @@ fn check(lesson: &Lesson, k: usize, t: &Trace) -> Result<(), String> {
     }
     for s in [&t.after] {
         for (body, state) in s {
-            if !format!("{state:?}").split(|c: char| !c.is_alphanumeric()).all(|w| w != "NaN" && w != "inf") {
+            if !format!("{state:?}")
+                .split(|c: char| !c.is_alphanumeric())
+                .all(|w| w != "NaN" && w != "inf")
+            {
                 return Err(format!("after {body}: {state:?}"));
             }
         }
@@ -215,9 +221,9 @@ fn check(lesson: &Lesson, k: usize, t: &Trace) -> Result<(), String> {
         for node in doc.descendants() {
             for a in node.attributes() {
                 let bad = a.value().contains("NaN")
-                    || a.value().split([' ', ',', '(', ')']).any(|w| {
-                        w.parse::<f64>().is_ok_and(|x| !x.is_finite())
-                    });
+                    || a.value()
+                        .split([' ', ',', '(', ')'])
+                        .any(|w| w.parse::<f64>().is_ok_and(|x| !x.is_finite()));
                 if bad {
                     return Err(format!("SVG ({plane:?}) {}=\"{}\"", a.name(), a.value()));
                 }
@@ -266,12 +272,18 @@ fn the_random_lessons_validate_often_enough() {
         if let Ok(l) = validate::parse("random.toml", &text) {
             valid += 1;
             let big = |x: f64| x != 0.0 && !(1e-20..1e20).contains(&x.abs());
-            if l.bodies.iter().any(|b| b.velocity.iter().chain(b.position.iter()).any(|x| big(*x))) {
+            if l.bodies
+                .iter()
+                .any(|b| b.velocity.iter().chain(b.position.iter()).any(|x| big(*x)))
+            {
                 extreme += 1;
             }
         }
     }
     println!("{valid} of 400 random lessons validate, {extreme} beyond 1e±20");
     assert!(valid >= 40, "only {valid} of 400 random lessons validate");
-    assert!(extreme >= 20, "only {extreme} valid lessons reach beyond 1e±20");
+    assert!(
+        extreme >= 20,
+        "only {extreme} valid lessons reach beyond 1e±20"
+    );
 }

@@ -297,8 +297,14 @@ fn a_lesson_path_that_is_not_a_regular_file_is_refused_at_once() {
         let _ = std::fs::remove_file(&fifo);
         let made = std::process::Command::new("mkfifo").arg(&fifo).status();
         assert!(made.unwrap().success(), "mkfifo");
-        cases.push((fifo.display().to_string(), "it is a FIFO (named pipe), not a lesson file"));
-        cases.push(("/dev/zero".into(), "it is a character device, not a lesson file"));
+        cases.push((
+            fifo.display().to_string(),
+            "it is a FIFO (named pipe), not a lesson file",
+        ));
+        cases.push((
+            "/dev/zero".into(),
+            "it is a character device, not a lesson file",
+        ));
     }
     for (path, why) in &cases {
         let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_contact-lab"))
@@ -364,13 +370,21 @@ fn a_non_utf8_file_name_opens() {
         .arg("json")
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(String::from_utf8_lossy(&out.stdout).contains("\"lesson\": \"bad\""));
     std::fs::write(&path, "id = 3\n").unwrap();
     let out = contact_lab().arg("solve").arg(&path).output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(65), "{stderr}");
-    assert!(stderr.contains("caf\u{fffd}-\\u{1b}[31m.toml:1:"), "{stderr}");
+    assert!(
+        stderr.contains("caf\u{fffd}-\\u{1b}[31m.toml:1:"),
+        "{stderr}"
+    );
     assert!(!stderr.contains('\u{1b}'), "{stderr}");
 }
 
@@ -386,14 +400,25 @@ fn a_closed_stdout_is_reported() {
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert_eq!(stderr, "error: cannot write output: standard output is closed\n");
+    assert_eq!(
+        stderr,
+        "error: cannot write output: standard output is closed\n"
+    );
     // A command that writes nothing to stdout is not affected.
     let svg = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("closed-stdout.svg");
     let out = std::process::Command::new("sh")
-        .args(["-c", &format!("'{bin}' figure lecture-2 -o '{}' >&-", svg.display())])
+        .args([
+            "-c",
+            &format!("'{bin}' figure lecture-2 -o '{}' >&-", svg.display()),
+        ])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 #[test]

@@ -172,7 +172,12 @@ fn a_regular_file_is_replaced_and_no_temporary_file_is_left() {
     let target = d.join("figure.svg");
     std::fs::write(&target, "old").unwrap();
     let out = run(&[os("figure"), os("lecture-2"), os("-o"), target.as_os_str()]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(std::fs::read_to_string(&target).unwrap().contains("<svg "));
     assert_eq!(entries(&d), ["figure.svg"]);
 }

@@ -53,7 +53,8 @@ fn accepted(l: &Lesson) -> bool {
     let ok = |x: f64| rules::in_range(x);
     l.bodies.iter().all(|b| {
         (!b.movable() || (ok(b.mass) && ok(1.0 / b.mass)))
-            && b.inertia.is_none_or(|t| t.iter().all(|x| ok(*x)) && rules::inertia(&t).is_ok())
+            && b.inertia
+                .is_none_or(|t| t.iter().all(|x| ok(*x)) && rules::inertia(&t).is_ok())
             && [b.position, b.velocity, b.angular_velocity, b.acceleration]
                 .iter()
                 .all(|v| v.iter().all(|x| ok(*x)))
@@ -132,7 +133,10 @@ fn every_lesson_takes_the_same_regimes_and_verdicts_in_any_units() {
 fn a_sliding_contact_slides_at_tiny_impulses() {
     let lesson = Lesson::load("friction-cube").unwrap();
     let base = signature(&lesson, 1);
-    assert!(base.contains(&"friction Dynamic None".to_string()), "{base:?}");
+    assert!(
+        base.contains(&"friction Dynamic None".to_string()),
+        "{base:?}"
+    );
     let l = scaled(&lesson, Units::Velocity, 1e-58);
     let l = scaled(&l, Units::Mass, 1e-41);
     assert!(accepted(&l));

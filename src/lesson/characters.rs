@@ -51,7 +51,10 @@ pub fn name(s: &str) -> Result<(), String> {
 /// One-line texts (title, source, a printed entry's `value` and `where`):
 /// tabs are fine, line breaks are not.
 pub fn line(s: &str) -> Result<(), String> {
-    match s.chars().find(|&c| always_refused(c) || matches!(c, '\n' | '\r')) {
+    match s
+        .chars()
+        .find(|&c| always_refused(c) || matches!(c, '\n' | '\r'))
+    {
         Some(c) => Err(refusal(c)),
         None => Ok(()),
     }

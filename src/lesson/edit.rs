@@ -5,8 +5,8 @@
 use nalgebra::Vector3;
 
 use super::validate::rules;
-use crate::format::exact;
 use super::Lesson;
+use crate::format::exact;
 use crate::physics::{FrictionModel, ProjectionMethod};
 
 /// What an editable field holds.

@@ -113,9 +113,15 @@ impl Printed {
         }
         if let Some(k) = &raw.component {
             let problem = if !matches!(printed, PrintedShape::Scalar(_)) {
-                Some("`component` picks one number of a vector, so `printed` must be one number".to_string())
+                Some(
+                    "`component` picks one number of a vector, so `printed` must be one number"
+                        .to_string(),
+                )
             } else if *k.get_ref() > 3 {
-                Some(format!("component must be 0, 1 or 2 (3 for a quaternion's z), got {}", k.get_ref()))
+                Some(format!(
+                    "component must be 0, 1 or 2 (3 for a quaternion's z), got {}",
+                    k.get_ref()
+                ))
             } else {
                 None
             };

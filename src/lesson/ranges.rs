@@ -128,7 +128,10 @@ mod tests {
     fn tensors_the_stages_cannot_use_are_refused_with_the_reason() {
         assert!(inertia(&diag(240.0, 240.0, 240.0)).is_ok());
         assert!(inertia(&diag(1e-55, 1e-55, 1e-55)).is_ok());
-        assert!(inertia(&diag(1e6, 1e6, 1e-6)).is_ok(), "κ = 1e12 is accepted");
+        assert!(
+            inertia(&diag(1e6, 1e6, 1e-6)).is_ok(),
+            "κ = 1e12 is accepted"
+        );
         // Entries in range, inverse enormous: the NaN of issue 17.
         let e = inertia(&diag(1.0, 1.0, 1e-300)).unwrap_err();
         assert!(e.contains("smallest principal moment is 1e-300"), "{e}");

@@ -117,7 +117,10 @@ pub mod rules {
     }
     pub fn duration(x: f64) -> Result<(), String> {
         if x.is_nan() || x <= 0.0 {
-            Err(format!("duration must be a finite number > 0, got {}", exact(x)))
+            Err(format!(
+                "duration must be a finite number > 0, got {}",
+                exact(x)
+            ))
         } else {
             finite(x).map_err(|e| format!("duration {e}"))
         }
@@ -261,7 +264,9 @@ impl Validator {
     /// are then set to 0 (`ranges::flush_tiny`).
     fn finite_direction<const N: usize>(&mut self, what: &str, value: &S<[f64; N]>) -> [f64; N] {
         let v = *value.get_ref();
-        if v.iter().all(|x| x.is_finite() && x.abs() <= rules::MAX_MAGNITUDE) {
+        if v.iter()
+            .all(|x| x.is_finite() && x.abs() <= rules::MAX_MAGNITUDE)
+        {
             return v;
         }
         self.finite(what, value)
@@ -411,11 +416,18 @@ impl Validator {
         if let Some(t) = inertia.filter(|_| movable && self.errors.len() == errors_before) {
             if let Err(e) = rules::inertia(&t) {
                 let span = raw.inertia.as_ref().map(|t| t.span());
-                let from = if span.is_some() { "" } else { " (from the shape)" };
+                let from = if span.is_some() {
+                    ""
+                } else {
+                    " (from the shape)"
+                };
                 let span = span.or(raw.shape.as_ref().map(|s| s.span()));
                 self.err(
                     span.unwrap_or(raw.name.span()),
-                    format!("body '{name}': the inertia tensor {}{from}: {e}", tensor(&t)),
+                    format!(
+                        "body '{name}': the inertia tensor {}{from}: {e}",
+                        tensor(&t)
+                    ),
                 );
             }
         }
@@ -452,8 +464,13 @@ impl Validator {
                         ));
                     }
                     let unit = q / n;
-                    let [w, x, y, z] = [unit.w, unit.i, unit.j, unit.k]
-                        .map(|c| if c.abs() < rules::MIN_MAGNITUDE { 0.0 } else { c });
+                    let [w, x, y, z] = [unit.w, unit.i, unit.j, unit.k].map(|c| {
+                        if c.abs() < rules::MIN_MAGNITUDE {
+                            0.0
+                        } else {
+                            c
+                        }
+                    });
                     Quaternion::new(w, x, y, z)
                 }
             }
@@ -515,7 +532,11 @@ impl Validator {
                     super::ranges::too_small(x)
                 )
             } else {
-                let x = if x.is_finite() { format!("{x:e}") } else { format!("{x}") };
+                let x = if x.is_finite() {
+                    format!("{x:e}")
+                } else {
+                    format!("{x}")
+                };
                 format!("body '{name}': every inertia component must be a finite number within ±1e60, got {x} in row {r}, column {c}")
             };
             self.err(t.span(), message);

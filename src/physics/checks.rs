@@ -3,10 +3,10 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::scale::{stable_hypot, stable_norm as norm, stable_norm_quaternion};
 use super::stages::{
     AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, OrientationUpdate, Projection,
 };
-use super::scale::{stable_hypot, stable_norm as norm, stable_norm_quaternion};
 use super::{c, Problem, Real};
 
 /// Relative tolerance of the checks: 10⁴ ε of the float type (f64: 2.2e-12,

@@ -32,7 +32,9 @@ pub fn stable_norm_of<T: Real>(xs: &[T]) -> T {
         return largest;
     }
     let s = pow2_below(largest);
-    let sum = xs.iter().fold(T::zero(), |acc, x| acc + (*x / s) * (*x / s));
+    let sum = xs
+        .iter()
+        .fold(T::zero(), |acc, x| acc + (*x / s) * (*x / s));
     s * sum.sqrt()
 }
 
@@ -113,7 +115,11 @@ mod tests {
         assert_eq!(stable_inverse(&m).unwrap(), m.try_inverse().unwrap());
         assert_eq!(pow2_below(3.0f64), 2.0);
         assert_eq!(pow2_below(0.3f64), 0.25);
-        assert_eq!(pow2_below(1e-320f64), 2f64.powi(-1022), "clamped at the normal range");
+        assert_eq!(
+            pow2_below(1e-320f64),
+            2f64.powi(-1022),
+            "clamped at the normal range"
+        );
     }
 
     #[test]

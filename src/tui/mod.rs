@@ -33,7 +33,10 @@ pub fn lessons<N: AsRef<OsStr> + ?Sized>(
         .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
     let at = match lesson.map(AsRef::as_ref) {
         None => all.iter().position(|l| l.id == "lecture-2").unwrap_or(0),
-        Some(name) => match all.iter().position(|l| name.to_str() == Some(l.id.as_str())) {
+        Some(name) => match all
+            .iter()
+            .position(|l| name.to_str() == Some(l.id.as_str()))
+        {
             Some(i) => i,
             None => {
                 all.push(Lesson::load(name)?);
@@ -45,10 +48,7 @@ pub fn lessons<N: AsRef<OsStr> + ?Sized>(
 }
 
 /// The app on `lesson` (embedded id or path; lecture-2 when `None`) and contact `contact`.
-pub fn open<N: AsRef<OsStr> + ?Sized>(
-    lesson: Option<&N>,
-    contact: usize,
-) -> Result<App, AppError> {
+pub fn open<N: AsRef<OsStr> + ?Sized>(lesson: Option<&N>, contact: usize) -> Result<App, AppError> {
     let (all, at) = lessons(lesson)?;
     let n = all[at].contacts.len();
     if contact >= n {
