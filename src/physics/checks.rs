@@ -3,9 +3,11 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::causes::{self, Cause};
 use super::scale::{stable_hypot, stable_norm as norm, stable_norm_quaternion};
 use super::stages::{
-    AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, OrientationUpdate, Projection,
+    AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, Impulse, OrientationUpdate,
+    Projection,
 };
 use super::{c, Problem, Real};
 
@@ -43,6 +45,9 @@ pub struct CheckItem<T: Real> {
     pub passed: Option<bool>,
     /// Named measurements (JSON names of the `checks` stage).
     pub values: Vec<(String, T)>,
+    /// Why a check failed, or why a result that looks like a failure is
+    /// not one (`physics::causes`).
+    pub cause: Option<Cause<T>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -65,6 +70,7 @@ pub struct CheckInputs<'a, T: Real> {
     pub problem: &'a Problem<T>,
     pub frame: &'a ContactFrame<T>,
     pub desired: &'a DesiredVelocity<T>,
+    pub impulse: Option<&'a Impulse<T>>,
     pub applied: Option<&'a AppliedImpulse<T>>,
     pub friction: Option<&'a FrictionClamp<T>>,
     pub projection: Option<&'a Projection<T>>,
@@ -76,6 +82,18 @@ fn item<T: Real>(kind: CheckKind, passed: Option<bool>, values: Vec<(String, T)>
         kind,
         passed,
         values,
+        cause: None,
+    }
+}
+
+/// Passed, unless `cause` says why not: a limit of the arithmetic (round-off
+/// of an ill-conditioned solve, the fallback of a failed one) only informs
+/// (`None`); anything else is a defect of the model, named.
+fn verdict<T: Real>(cause: Option<Cause<T>>) -> Option<bool> {
+    match cause {
+        None => Some(true),
+        Some(Cause::RoundOff { .. } | Cause::FrictionlessFallback) => None,
+        Some(_) => Some(false),
     }
 }
 
@@ -145,9 +163,12 @@ fn velocity_checks<T: Real>(
     let separating = after_world.dot(&d);
     let expected = input.desired.separating() + input.desired.desired;
     let error = (separating - expected).abs();
+    let friction_solve = input.friction.and_then(|f| f.solve.as_ref());
+    let missed = (error > tol * scale)
+        .then(|| causes::restitution_miss(problem, input.impulse, friction_solve, error, scale));
     items.push(item(
         CheckKind::Restitution,
-        Some(error <= tol * scale),
+        verdict(missed),
         vec![
             (
                 "separating_velocity_before".into(),
@@ -157,21 +178,25 @@ fn velocity_checks<T: Real>(
             ("separating_velocity_expected".into(), expected),
         ],
     ));
+    items.last_mut().expect("just pushed").cause = missed;
 
     let (mut e_before, mut e_after) = (T::zero(), T::zero());
     for (_, b, a) in &pairs {
         e_before += b.kinetic_energy(&b.velocity, &b.angular_velocity);
         e_after += b.kinetic_energy(&a.v, &a.w);
     }
+    let rise = causes::rose(e_before, e_after)
+        .then(|| causes::energy_rise(problem, input.impulse, friction_solve, (e_before, e_after)));
     items.push(item(
         CheckKind::Energy,
-        Some(e_after <= e_before * (T::one() + tol) + tol * e_before.abs()),
+        verdict(rise),
         vec![
             ("energy_before".into(), e_before),
             ("energy_after".into(), e_after),
             ("energy_change".into(), e_after - e_before),
         ],
     ));
+    items.last_mut().expect("just pushed").cause = rise;
 
     if let Some(f) = input.friction {
         let g = f.impulse_contact;
@@ -182,15 +207,20 @@ fn velocity_checks<T: Real>(
             .max(problem.contact.dynamic_friction);
         let ok =
             g.x >= -tol * norm(&g) && tangential <= mu * g.x * (T::one() + tol) + tol * norm(&g);
+        let outside = (!ok).then(|| {
+            let error = (tangential - mu * g.x).max(-g.x);
+            causes::cone_miss(problem, input.impulse, friction_solve, error, norm(&g))
+        });
         items.push(item(
             CheckKind::FrictionCone,
-            Some(ok),
+            verdict(outside),
             vec![
                 ("normal_impulse".into(), g.x),
                 ("tangential_impulse".into(), tangential),
                 ("cone_limit".into(), mu * g.x),
             ],
         ));
+        items.last_mut().expect("just pushed").cause = outside;
         let slip = |v: Vector3<T>| {
             let vc = input.frame.to_contact(&v);
             stable_hypot(vc.y, vc.z)
@@ -200,10 +230,22 @@ fn velocity_checks<T: Real>(
         // Sticking must leave no slip; sliding may end faster than it began,
         // because the normal impulse itself drives the point sideways (M₀₁, M₀₂).
         let rose = after > before * (T::one() + tol) + tol * scale;
-        let passed = match (rose, f.regime) {
-            (false, _) => Some(true),
-            (true, super::stages::FrictionRegime::Dynamic) => None,
-            (true, super::stages::FrictionRegime::Static) => Some(false),
+        // Under a static regime the slip must not rise, unless the model
+        // applied no friction (kinetic-direction with nothing sliding, or the
+        // frictionless fallback of a failed solve) or round-off explains it.
+        let (passed, cause) = match (rose, f.regime) {
+            (false, _) => (Some(true), None),
+            (true, super::stages::FrictionRegime::Dynamic) => (None, None),
+            (true, super::stages::FrictionRegime::Static) => {
+                let cause = causes::slip_rise(input.impulse, friction_solve, f.issue, after, scale);
+                // Unexplained, or a defect of the model: fails.
+                let passed = if cause.is_some() {
+                    verdict(cause)
+                } else {
+                    Some(false)
+                };
+                (passed, cause)
+            }
         };
         items.push(item(
             CheckKind::Slip,
@@ -213,6 +255,7 @@ fn velocity_checks<T: Real>(
                 ("slip_speed_after".into(), after),
             ],
         ));
+        items.last_mut().expect("just pushed").cause = cause;
     }
 }
 

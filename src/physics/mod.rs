@@ -7,6 +7,7 @@
 //! so that f32 and f64 runs can be compared.
 
 pub mod body;
+pub mod causes;
 pub mod checks;
 pub mod frame;
 pub mod problem;

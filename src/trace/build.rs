@@ -984,11 +984,6 @@ impl Ctx<'_> {
                 b.value(name.clone(), *v);
             }
         }
-        let energy_rose = self
-            .s
-            .checks
-            .get(CheckKind::Energy)
-            .is_some_and(|c| c.passed == Some(false));
         if self.s.checks.get(CheckKind::Restitution).is_some() {
             b.input("desired", self.s.desired.desired);
             b.f("v_s′", "(q̇₁′ − q̇₂′) · d̂", None, Some("separating_velocity"));
@@ -999,18 +994,26 @@ impl Ctx<'_> {
                 Some("separating_velocity_expected"),
             );
         }
-        if energy_rose {
-            if self.problem.contact.has_friction() {
-                b.note("ENERGY ROSE: kinetic energy after ({energy_after}) exceeds before ({energy_before}). Newton's restitution (a velocity target) combined with friction can create energy — Kane's example (T. R. Kane, 1984) is the classic case; energetic restitution (Stronge) avoids it.");
-            } else {
-                b.note("ENERGY ROSE: kinetic energy after ({energy_after}) exceeds before ({energy_before}); with restitution ≤ 1 and no friction this should not happen.");
+        // Why each check came out as it did, where a cause is known.
+        b.input(
+            "velocity_from_acceleration",
+            self.s.desired.velocity_from_acceleration,
+        );
+        let friction = self.problem.contact.has_friction();
+        for item in &self.s.checks.items {
+            let Some(cause) = &item.cause else { continue };
+            if let Some(d) = super::causes::describe(item.kind, cause, friction) {
+                for (name, v) in d.inputs {
+                    b.input(name, v);
+                }
+                b.note(d.note);
             }
         }
         if self
             .s
             .checks
             .get(CheckKind::Slip)
-            .is_some_and(|c| c.passed.is_none())
+            .is_some_and(|c| c.passed.is_none() && c.cause.is_none())
         {
             b.note("The slip speed rose ({slip_speed_before} → {slip_speed_after}) while sliding: the normal impulse itself drives the contact point sideways (M₀₁, M₀₂ ≠ 0), more than friction capped at μ g_n can take away. This is Coulomb friction working as intended, not an error.");
         }

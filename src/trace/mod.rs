@@ -2,6 +2,7 @@
 //! records. Renderers (text, JSON, Markdown, LaTeX, SVG, TUI) read only this.
 
 mod build;
+mod causes;
 pub mod latex;
 mod plane;
 mod scene;
