@@ -59,6 +59,20 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+impl Error {
+    /// The message without the path, for a prompt that already shows it.
+    pub fn reason(&self) -> String {
+        match self {
+            Error::Exists(_) => "already exists".into(),
+            Error::NotRegular { what, .. } => {
+                format!("it is {what}, not a regular file; contact-lab writes only regular files")
+            }
+            Error::NoFileName(_) => "not a file name".into(),
+            Error::Io { source, .. } => source.to_string(),
+        }
+    }
+}
+
 /// A path for a message: lossy UTF-8, control characters escaped, so a file
 /// name cannot move the cursor or recolour the terminal.
 pub fn shown(path: &Path) -> String {

@@ -151,7 +151,16 @@ fn number(text: &str) -> Result<f64, String> {
     let t = text.trim();
     let t = if t == "∞" { "inf" } else { t };
     t.parse::<f64>()
-        .map_err(|_| format!("'{}' is not a number", text.trim()))
+        .map_err(|_| format!("'{}' is not a number", echo(text.trim())))
+}
+
+/// What the user typed, quoted back in a refusal: at most 40 characters, so
+/// a pasted page does not fill the form.
+fn echo(text: &str) -> String {
+    match text.char_indices().nth(40) {
+        Some((i, _)) => format!("{}…", &text[..i]),
+        None => text.to_string(),
+    }
 }
 
 fn vector(text: &str) -> Result<Vector3<f64>, String> {
@@ -166,7 +175,7 @@ fn vector(text: &str) -> Result<Vector3<f64>, String> {
         return Err(format!(
             "expected three numbers x, y, z, got {} ('{}')",
             parts.len(),
-            text.trim()
+            echo(text.trim())
         ));
     }
     let mut v = Vector3::zeros();
@@ -245,13 +254,17 @@ fn apply(lesson: &mut Lesson, k: usize, field: &Field, text: &str) -> Result<(),
                 format!(
                     "one of {}, got '{}'",
                     FRICTION_MODELS.join(", "),
-                    text.trim()
+                    echo(text.trim())
                 )
             })?
         }
         Key::Projection => {
             c.settings.projection = ProjectionMethod::from_name(text.trim()).ok_or_else(|| {
-                format!("one of {}, got '{}'", PROJECTIONS.join(", "), text.trim())
+                format!(
+                    "one of {}, got '{}'",
+                    PROJECTIONS.join(", "),
+                    echo(text.trim())
+                )
             })?
         }
         _ => return Err("not a contact field".into()),

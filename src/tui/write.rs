@@ -55,7 +55,8 @@ pub fn write_atomic(path: &Path, text: &str, overwrite: bool) -> Result<(), Writ
     match write(path, text.as_bytes(), existing) {
         Ok(()) => Ok(()),
         Err(Error::Exists(p)) => Err(WriteError::Exists(p)),
-        Err(e) => Err(WriteError::Io(e.to_string())),
+        // The prompt shows the directory and the name; the reason is what is new.
+        Err(e) => Err(WriteError::Io(e.reason())),
     }
 }
 
