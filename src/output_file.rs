@@ -143,7 +143,16 @@ pub fn write(path: &Path, bytes: &[u8], existing: Existing) -> Result<(), Error>
     // (tempfile's own 0o600 would hide a figure from a web server).
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    let mut temp = builder.tempfile_in(dir).map_err(io)?;
+    let mut temp = builder.tempfile_in(dir).map_err(|e| {
+        // tempfile's message ends "at path …/.contact-lab-….tmp"; the
+        // directory is what the user can act on.
+        let text = e.to_string();
+        let cause = text.split(" at path \"").next().unwrap_or(&text);
+        io(std::io::Error::new(
+            e.kind(),
+            format!("cannot create a file in {}: {cause}", shown(dir)),
+        ))
+    })?;
     if let Some(p) = permissions {
         temp.as_file().set_permissions(p).map_err(io)?;
     }
@@ -275,10 +284,11 @@ mod tests {
     #[test]
     fn a_missing_directory_is_an_io_error() {
         let p = std::env::temp_dir().join("contact-lab-no-such-dir-xyz/a.md");
-        assert!(matches!(
-            write(&p, b"x", Existing::Keep),
-            Err(Error::Io { .. })
-        ));
+        let e = write(&p, b"x", Existing::Keep).unwrap_err();
+        assert!(matches!(e, Error::Io { .. }));
+        let text = e.to_string();
+        assert!(text.contains("cannot create a file in"), "{text}");
+        assert!(!text.contains(".contact-lab-"), "no temporary name: {text}");
     }
 
     #[test]

@@ -173,6 +173,48 @@ fn the_stages_decide_regimes_on_scaled_norms_beyond_the_lesson_range() {
     }
 }
 
+/// A normal or an orientation is a direction: a length of 1e-170 (whose
+/// square underflowed, so it was called "zero") or 1e60 is normalised with a
+/// warning in scientific notation, and solves exactly like the unit one.
+#[test]
+fn directions_of_any_length_are_normalised_not_called_zero() {
+    let lesson = |normal: &str, orientation: &str| {
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/lessons/lecture-2.toml"
+        ))
+        .unwrap()
+        .replace("normal = [0.0, 1.0, 0.0]", &format!("normal = {normal}"))
+        .replace(
+            "orientation = [0.9659258262890683, 0.0, 0.0, -0.25881904510252074]",
+            &format!("orientation = {orientation}"),
+        );
+        contact_lab::lesson::validate::parse("scaled.toml", &text)
+    };
+    let unit = lesson("[0.0, 1.0, 0.0]", "[1.0, 0.0, 0.0, 0.0]").unwrap();
+    for (normal, orientation, shown) in [
+        ("[0.0, 1e-170, 0.0]", "[1e-170, 0.0, 0.0, 0.0]", "1e-170"),
+        ("[0.0, 1e60, 0.0]", "[1e60, 0.0, 0.0, 0.0]", "1e60"),
+    ] {
+        let l = lesson(normal, orientation).unwrap_or_else(|e| panic!("{normal}: {e}"));
+        let warnings: Vec<String> = l.warnings.iter().map(|w| w.to_string()).collect();
+        assert!(
+            warnings
+                .iter()
+                .any(|w| w.contains(&format!("contact normal has length {shown};"))),
+            "{warnings:?}"
+        );
+        assert!(
+            warnings
+                .iter()
+                .any(|w| w.contains(&format!("orientation has length {shown};"))),
+            "{warnings:?}"
+        );
+        assert_eq!(l.contacts[0].normal, unit.contacts[0].normal);
+        assert_eq!(signature(&l, 0), signature(&unit, 0));
+    }
+}
+
 mod random {
     use super::*;
     use contact_lab::lesson::validate;

@@ -40,13 +40,21 @@ impl Shape {
 
     /// The formula, for warnings and the trace.
     pub fn describe(&self) -> String {
+        let e = crate::format::exact;
         match *self {
-            Shape::Sphere(r) => format!("solid sphere r = {r} (I = 2/5 m r²)"),
-            Shape::HollowSphere(r) => format!("hollow sphere r = {r} (I = 2/3 m r²)"),
-            Shape::Box([x, y, z]) => format!("box {x} × {y} × {z} (I_xx = m/12 (y² + z²), …)"),
+            Shape::Sphere(r) => format!("solid sphere r = {} (I = 2/5 m r²)", e(r)),
+            Shape::HollowSphere(r) => format!("hollow sphere r = {} (I = 2/3 m r²)", e(r)),
+            Shape::Box([x, y, z]) => format!(
+                "box {} × {} × {} (I_xx = m/12 (y² + z²), …)",
+                e(x),
+                e(y),
+                e(z)
+            ),
             Shape::Cylinder { radius, height } => {
                 format!(
-                    "cylinder r = {radius}, h = {height} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))"
+                    "cylinder r = {}, h = {} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))",
+                    e(radius),
+                    e(height)
                 )
             }
             Shape::HalfSpace => "half-space".to_string(),
