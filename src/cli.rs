@@ -8,16 +8,20 @@ Examples:
   contact-lab tui lecture-2 --contact 0             the app, opened on one contact
   contact-lab list                                  the embedded lessons
   contact-lab solve lecture-2                       the lecture's second worked example
-  contact-lab solve lecture-2 --format json         the same as JSON (GUIDE §4)
+  contact-lab solve lecture-2 --format json         the same as JSON (docs/json.md)
   contact-lab solve my-scene.toml --contact 1 --digits 4
   contact-lab solve spinning-ball -c 1 --compare-friction
   contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
   contact-lab solve friction-cube --all-contacts --format md --figures figs > friction.md
+  contact-lab resolve box-four-corners              every contact resolved together, iteration by iteration
+  contact-lab resolve sphere-row --format json --log --repeat 5
+  contact-lab resolve box-four-corners --show position:2   the worked solution of that iteration's contact
   contact-lab figure lecture-2 -o lecture-2.svg     the contact as a slide-ready picture
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab exercise --seed 1 --count 5 --answers --format md
 
-Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing.";
+Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing
+(when each is returned: docs/exit-codes.md).";
 
 #[derive(Debug, Parser)]
 #[command(name = "contact-lab", version, about = "Step-by-step rigid-body contact resolution (Millington's impulse-based resolver)", after_help = EXAMPLES)]
@@ -32,10 +36,15 @@ pub enum Command {
     List,
     /// Print the worked solution of one contact (or all: --all-contacts).
     Solve(SolveArgs),
+    /// Resolve every contact of a lesson together: position phase, then velocity phase.
+    Resolve(ResolveArgs),
     /// Draw one contact as an SVG figure: bodies, normal, arms, velocities, impulse.
     Figure(FigureArgs),
+    /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
+    Simulate(SimulateArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
-    Check(CheckArgs),
+    #[command(name = "check")]
+    Errata(ErrataArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
@@ -91,6 +100,9 @@ pub struct ModelArgs {
     /// Max angular move as a multiple of |r⊥| (inf = no limit).
     #[arg(long, allow_negative_numbers = true)]
     pub angular_limit: Option<f64>,
+    /// Restitution is 0 below this closing speed (the reference engine: 0.25).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_limit: Option<f64>,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -150,18 +162,18 @@ pub struct FigureArgs {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CheckFormat {
+pub enum ErrataFormat {
     Text,
     Json,
 }
 
 #[derive(Debug, Clone, Args)]
-pub struct CheckArgs {
+pub struct ErrataArgs {
     /// Lesson ids or paths (default: every embedded lesson).
     pub lessons: Vec<std::ffi::OsString>,
     /// Output format.
-    #[arg(long, short, value_enum, default_value_t = CheckFormat::Text)]
-    pub format: CheckFormat,
+    #[arg(long, short, value_enum, default_value_t = ErrataFormat::Text)]
+    pub format: ErrataFormat,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -209,4 +221,179 @@ pub struct ExerciseArgs {
     /// Significant digits of the answers.
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ResolveFormat {
+    Text,
+    Json,
+    /// Markdown: headings and tables.
+    #[value(alias = "markdown")]
+    Md,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ImplementationArg {
+    /// The lecture's loop: scan every contact twice per iteration.
+    Scan,
+    /// A priority queue and the body → contacts adjacency (same result, faster).
+    Indexed,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RestitutionFromArg {
+    /// The contact velocity when the contact is taken (the reference engine).
+    Current,
+    /// The contact velocity before the velocity phase began (Box2D v3).
+    Initial,
+}
+
+/// `--show position:K` or `--show velocity:K`: iteration K of that phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Show {
+    pub velocity: bool,
+    pub iteration: usize,
+}
+
+fn parse_show(s: &str) -> Result<Show, String> {
+    let bad =
+        || format!("expected position:K or velocity:K (K an iteration number from 0), got '{s}'");
+    let (phase, k) = s.split_once(':').ok_or_else(bad)?;
+    let iteration = k.trim().parse().map_err(|_| bad())?;
+    match phase.trim() {
+        "position" => Ok(Show {
+            velocity: false,
+            iteration,
+        }),
+        "velocity" => Ok(Show {
+            velocity: true,
+            iteration,
+        }),
+        _ => Err(bad()),
+    }
+}
+
+/// The resolver's settings; each overrides the lesson's `[settings]`.
+#[derive(Debug, Clone, Args)]
+pub struct ResolverArgs {
+    /// Most position-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
+    #[arg(long)]
+    pub position_iterations: Option<u64>,
+    /// Most velocity-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
+    #[arg(long)]
+    pub velocity_iterations: Option<u64>,
+    /// Penetrations at or below this are left alone (default: the lesson's, else 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    pub position_epsilon: Option<f64>,
+    /// Desired Δv at or below this is left alone (default: the lesson's, else 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_epsilon: Option<f64>,
+    /// Which contact velocity restitution is applied to (default: the lesson's, else current).
+    #[arg(long, value_enum)]
+    pub restitution_from: Option<RestitutionFromArg>,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ResolveArgs {
+    /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
+    pub lesson: std::ffi::OsString,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = ResolveFormat::Text)]
+    pub format: ResolveFormat,
+    /// JSON: include every iteration (`log`); text and Markdown always show them.
+    #[arg(long)]
+    pub log: bool,
+    /// Time the resolver N times and report the fastest run's phases (JSON `seconds`).
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=10000))]
+    pub repeat: u32,
+    /// The single-contact worked solution of the contact taken at iteration K
+    /// of a phase, with the bodies as they are at that moment.
+    #[arg(long, value_name = "PHASE:K", value_parser = parse_show)]
+    pub show: Option<Show>,
+    /// Which implementation runs the phases (both give the same result).
+    #[arg(long, value_enum, default_value_t = ImplementationArg::Indexed)]
+    pub implementation: ImplementationArg,
+    /// Significant digits of human formats (JSON always carries full f64).
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RunFormat {
+    Text,
+    Json,
+    /// A film strip of the scene and charts of energy, penetration and awake bodies.
+    Svg,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BoxBoxArg {
+    Single,
+    Manifold,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SleepModeArg {
+    Body,
+    Island,
+}
+
+/// Options of `simulate`: each overrides the lesson's value.
+#[derive(Debug, Clone, Args)]
+pub struct SimulateArgs {
+    /// Embedded scene id (see `contact-lab list`) or path to a lesson file with [world] or [step].
+    pub lesson: std::ffi::OsString,
+    /// How long to run, in seconds of simulated time.
+    #[arg(long, conflicts_with = "steps", allow_negative_numbers = true)]
+    pub seconds: Option<f64>,
+    /// How many steps to run (default: the lesson's [step] steps).
+    #[arg(long)]
+    pub steps: Option<u64>,
+    /// The time step in seconds (default: the lesson's [step] dt).
+    #[arg(long, allow_negative_numbers = true)]
+    pub dt: Option<f64>,
+    /// Record one step in every K (the last step is always recorded).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = RunFormat::Text)]
+    pub format: RunFormat,
+    /// Significant digits of the text table.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// The plane of the film strip (svg).
+    #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
+    pub plane: PlaneArg,
+    /// Gravity as x,y,z in m/s².
+    #[arg(
+        long,
+        value_delimiter = ',',
+        num_args = 3,
+        allow_negative_numbers = true
+    )]
+    pub gravity: Option<Vec<f64>>,
+    /// Fraction of linear and angular velocity kept per second, (0, 1].
+    #[arg(long, allow_negative_numbers = true)]
+    pub damping: Option<f64>,
+    /// Bodies never sleep.
+    #[arg(long)]
+    pub no_sleep: bool,
+    /// Sleep per body (the lecture) or per island of touching bodies.
+    #[arg(long, value_enum)]
+    pub sleep_mode: Option<SleepModeArg>,
+    /// Contacts between boxes: single (the reference engine's one point) or manifold (up to 4).
+    #[arg(long, value_enum)]
+    pub box_box: Option<BoxBoxArg>,
+    /// Switch off acceleration compensation (micro-collisions): watch a resting box vibrate.
+    #[arg(long)]
+    pub no_compensation: bool,
+    /// Closing speed below which restitution is 0 (0 switches it off).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_limit: Option<f64>,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
 }

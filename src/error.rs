@@ -1,4 +1,4 @@
-//! Application errors and their exit codes (GUIDE §5).
+//! Application errors and their exit codes (documented in `docs/exit-codes.md`).
 
 use crate::lesson::LessonError;
 

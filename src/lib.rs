@@ -2,11 +2,16 @@
 //! (Millington's impulse-based resolver).
 //!
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
-//! show ([`render`]). [`lesson`] reads scenes; [`commands`] wires the CLI.
+//! show ([`render`], [`tui`]). [`lesson`] reads scenes; [`commands`] wires
+//! the CLI; [`errata`] compares the lectures' printed numbers with the
+//! computed ones; [`exercise`] draws exercises. One contact lives in
+//! `physics::contact` and is described stage by stage in `trace::contact`;
+//! sets of contacts and time steps go beside them. The JSON contract and the
+//! exit codes are in `docs/`.
 
-pub mod check;
 pub mod cli;
 pub mod commands;
+pub mod errata;
 pub mod error;
 pub mod exercise;
 pub mod format;
@@ -20,5 +25,7 @@ pub mod tui;
 /// Solves contact `k` of `lesson` in f64 and describes it.
 pub fn worked_solution(lesson: &lesson::Lesson, k: usize) -> trace::Trace {
     let solution = physics::solve(&lesson.problem::<f64>(k));
-    trace::build(lesson, k, &solution)
+    let mut trace = trace::build(lesson, k, &solution);
+    trace::note_planar_acceleration(&mut trace, &solution);
+    trace
 }

@@ -7,9 +7,9 @@
 use contact_lab::format::Fmt;
 use contact_lab::lesson::{validate, Lesson, Overrides};
 use contact_lab::physics::causes::Cause;
-use contact_lab::physics::checks::CheckKind;
+use contact_lab::physics::checks::{CheckKind, Measured};
 use contact_lab::physics::{
-    solve, ContactInput, FrictionModel, Problem, ProjectionMethod, RigidBody, Settings,
+    solve, ContactInput, ContactParams, FrictionModel, Problem, ProjectionMethod, RigidBody,
 };
 use contact_lab::render;
 use contact_lab::trace::Trace;
@@ -56,6 +56,47 @@ fn notes(t: &Trace) -> String {
     let text = render::text::render(t, &Fmt::default());
     let at = text.find("[checks]").expect("a checks stage");
     text[at..].to_string()
+}
+
+/// Sticking removes the contact velocity with the planar part of last
+/// frame's acceleration added (stage 3, as the reference engine): a ball
+/// landing with a sideways acceleration of 3 is left sliding at 3 × 0.01 s,
+/// what the next step adds back. Not a ✗: shown (·) with that cause.
+#[test]
+fn a_slip_left_by_the_planar_acceleration_term_is_named_not_failed() {
+    let text = r#"id = "planar"
+title = "A ball pushed sideways lands on the floor"
+[[body]]
+name = "ball"
+mass = 1.0
+shape = { sphere = 0.5 }
+position = [0.0, 0.5, 0.0]
+velocity = [0.0, -1.0, 0.0]
+acceleration = [3.0, -9.81, 0.0]
+[[contact]]
+bodies = ["ball"]
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+restitution = 0.5
+friction = 1.0
+"#;
+    let l = validate::parse("planar.toml", text).unwrap();
+    let s = solve(&l.problem::<f64>(0));
+    let slip = s.checks.get(CheckKind::Slip).unwrap();
+    assert_eq!(slip.passed, None);
+    let Some(Cause::PlanarAcceleration { planar }) = slip.cause else {
+        panic!("{:?}", slip.cause)
+    };
+    assert!((planar - 0.03).abs() < 1e-15, "{planar}");
+    let t = trace(&l);
+    assert_eq!(verdict(&t, "slip speed does not rise"), None);
+    let n = notes(&t);
+    assert!(
+        n.contains("SLIP FROM LAST FRAME'S ACCELERATION") && n.contains("(0.03)"),
+        "{n}"
+    );
+    let text = render::text::render(&t, &Fmt::default());
+    assert!(!text.contains('✗'), "{text}");
 }
 
 #[test]
@@ -167,10 +208,13 @@ fn an_ill_conditioned_energy_jump_is_round_off_not_kane() {
     let energy = contact_lab::lesson::Lesson::problem::<f64>(&l, 0);
     let s = solve(&energy);
     let e = s.checks.get(CheckKind::Energy).unwrap();
+    let Measured::Energy { before, after, .. } = e.measured else {
+        panic!("{:?}", e.measured)
+    };
     assert!(
-        e.values[1].1 > e.values[0].1 * 1.1,
+        after > before * 1.1,
         "the energy does jump: {:?}",
-        e.values
+        e.measured
     );
     assert_eq!(verdict(&t, "kinetic energy does not rise"), None);
     let n = notes(&t);
@@ -192,7 +236,8 @@ fn every_failure_is_explained(s: &contact_lab::physics::Solution<f64>) -> Result
                 Some(Cause::Unexplained) | None => {
                     return Err(format!(
                         "{:?} failed without a cause: {:?}",
-                        item.kind, item.values
+                        item.kind(),
+                        item.measured
                     ))
                 }
                 Some(_) => {}
@@ -200,10 +245,10 @@ fn every_failure_is_explained(s: &contact_lab::physics::Solution<f64>) -> Result
         }
         if item.passed.is_none()
             && item.cause.is_none()
-            && item.kind != CheckKind::Slip
-            && item.kind != CheckKind::ResidualPenetration
+            && item.kind() != CheckKind::Slip
+            && item.kind() != CheckKind::ResidualPenetration
         {
-            return Err(format!("{:?} informs without a cause", item.kind));
+            return Err(format!("{:?} informs without a cause", item.kind()));
         }
     }
     Ok(())
@@ -302,12 +347,12 @@ proptest! {
                 static_friction: mu.0,
                 dynamic_friction: mu.0 * mu.1,
                 friction_model: model,
-                settings: Settings {
-                    duration: if duration == 0.0 { 0.01 } else { duration },
+                settings: ContactParams {
                     projection: ProjectionMethod::Nonlinear,
-                    ..Settings::default()
+                    ..ContactParams::default()
                 },
             },
+            duration: if duration == 0.0 { 0.01 } else { duration },
         };
         let s = solve(&p);
         if let Err(e) = every_failure_is_explained(&s) {

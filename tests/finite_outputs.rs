@@ -3,7 +3,8 @@
 //! 1e-60 to 1e60, with the extremes themselves, every shape, explicit and
 //! rotated tensors, immovable bodies, every model and setting) that pass the
 //! validator give only finite values in the trace and in every output: text,
-//! JSON, Markdown, LaTeX and the SVG figure in all three planes.
+//! JSON, Markdown, LaTeX and the SVG figure in all three planes, and in
+//! `resolve`'s text and JSON (the lesson's contacts resolved together).
 
 use contact_lab::format::Fmt;
 use contact_lab::lesson::{validate, Lesson};
@@ -188,7 +189,7 @@ fn check(lesson: &Lesson, k: usize, t: &Trace) -> Result<(), String> {
         for (name, v) in step.values.iter().chain(&step.inputs) {
             let allowed = no_limit && name.starts_with("angular_limit");
             if !allowed && !finite(v) {
-                return Err(format!("{}.{name} = {v:?}", step.id));
+                return Err(format!("{}.{name} = {v:?}", step.id.json_name()));
             }
         }
     }
@@ -238,6 +239,41 @@ fn check(lesson: &Lesson, k: usize, t: &Trace) -> Result<(), String> {
     Ok(())
 }
 
+/// `resolve` of the lesson (its contacts together, with the log) in text
+/// and JSON: no NaN, no inf, no null, unless `resolve`'s guard refuses the
+/// lesson first.
+fn check_resolve(lesson: &Lesson) -> Result<(), String> {
+    use contact_lab::physics::resolver::Implementation;
+    let guard = contact_lab::lesson::overflow::check_resolve(
+        lesson,
+        &lesson.resolver,
+        Implementation::Indexed,
+    );
+    if guard.is_err() {
+        // `resolve` refuses it (exit 1) rather than print NaN.
+        return Ok(());
+    }
+    let trace = contact_lab::trace::resolver::describe(
+        lesson,
+        &lesson.resolver,
+        Implementation::Indexed,
+        true,
+    );
+    let text = render::resolve::text::render(&trace, &Fmt::default());
+    let no_limit = lesson
+        .contacts
+        .iter()
+        .any(|c| c.settings.angular_limit.is_infinite());
+    if text.contains("NaN") || (!no_limit && shows_inf(&text)) {
+        return Err(format!("text shows NaN or inf:\n{text}"));
+    }
+    let json = render::resolve::json::render(&trace, &Default::default(), true);
+    if json.contains("null") || json.contains("NaN") {
+        return Err(format!("JSON has a non-finite number:\n{json}"));
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig {
         cases: 300,
@@ -256,6 +292,9 @@ proptest! {
                 prop_assert!(false, "contact {}: {}\n--- lesson ---\n{}", k, e, text);
             }
         }
+        if let Err(e) = check_resolve(&lesson) {
+            prop_assert!(false, "resolve: {}\n--- lesson ---\n{}", e, text);
+        }
     }
 }
 
@@ -266,7 +305,7 @@ fn the_random_lessons_validate_often_enough() {
     use proptest::strategy::ValueTree;
     let mut runner = proptest::test_runner::TestRunner::deterministic();
     let strategy = lesson_text();
-    let (mut valid, mut extreme) = (0, 0);
+    let (mut valid, mut extreme, mut resolved) = (0, 0, 0);
     for _ in 0..400 {
         let text = strategy.new_tree(&mut runner).unwrap().current();
         if let Ok(l) = validate::parse("random.toml", &text) {
@@ -278,12 +317,24 @@ fn the_random_lessons_validate_often_enough() {
             {
                 extreme += 1;
             }
+            let implementation = contact_lab::physics::resolver::Implementation::Indexed;
+            if contact_lab::lesson::overflow::check_resolve(&l, &l.resolver, implementation).is_ok()
+            {
+                resolved += 1;
+            }
         }
     }
-    println!("{valid} of 400 random lessons validate, {extreme} beyond 1e±20");
+    println!(
+        "{valid} of 400 random lessons validate, {extreme} beyond 1e±20, {resolved} pass resolve's guard"
+    );
     assert!(valid >= 40, "only {valid} of 400 random lessons validate");
     assert!(
         extreme >= 20,
         "only {extreme} valid lessons reach beyond 1e±20"
+    );
+    assert!(
+        resolved * 10 >= valid * 8,
+        "resolve's guard refuses {} of {valid} valid lessons",
+        valid - resolved
     );
 }

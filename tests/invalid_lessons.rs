@@ -1,4 +1,4 @@
-//! Bad lesson files through the binary (GUIDE §6, the "bottom" style): every
+//! Bad lesson files through the binary (as bottom tests its invalid configs): every
 //! file in `tests/invalid_lessons/` exits 65, names `FILE:LINE:COLUMN` and a
 //! specific message, writes nothing to stdout and does not panic. Also very
 //! long files (generated), a missing file (66), paths that are not regular
@@ -109,6 +109,11 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("printed-two-numbers", 21, 11, "a printed vector has 3 numbers (4 for a quaternion), got 2"),
     ("printed-component-of-a-vector", 21, 13, "`component` picks one number of a vector, so `printed` must be one number"),
     ("printed-component-out-of-range", 21, 13, "component must be 0, 1 or 2 (3 for a quaternion's z), got 9"),
+    ("scene-gravity-below-range", 6, 11, "[world] gravity: -1e-70 is below contact-lab's smallest non-zero magnitude, 1e-60"),
+    ("scene-damping-below-range", 6, 18, "[world] linear_damping: damping 1e-300 is below contact-lab's smallest magnitude, 1e-60"),
+    ("scene-dt-below-range", 9, 6, "[step] dt: duration 1e-70 is below contact-lab's smallest magnitude, 1e-60"),
+    ("scene-escape-in-box-box", 6, 11, r#"[world] box_box must be "single" or "manifold", got "single\u{1b}[31m""#),
+    ("scene-half-space-normal-past-range", 22, 10, "body 'floor' normal: every component must be a finite number within ±1e60, 1e200 is outside ±1e60 in y"),
 ];
 
 /// Extra help lines some cases must carry.
@@ -334,6 +339,42 @@ fn a_lesson_path_that_is_not_a_regular_file_is_refused_at_once() {
     }
 }
 
+/// `resolve` and `simulate` read lessons through the same loader as
+/// `solve`: a bad scene (the corpus's `scene-*` files), a directory, a
+/// device and a missing path are refused by each exactly as `solve` refuses
+/// them (65, 1, 1, 66), with the same first line and nothing on stdout.
+#[test]
+fn resolve_and_simulate_refuse_what_solve_refuses() {
+    let mut paths: Vec<String> = corpus()
+        .into_iter()
+        .filter(|f| f.starts_with("scene-"))
+        .map(|f| format!("{DIR}/{f}"))
+        .collect();
+    assert!(paths.len() >= 5, "{paths:?}");
+    paths.push(DIR.into());
+    paths.push("tests/no/such/lesson.toml".into());
+    #[cfg(unix)]
+    paths.push("/dev/zero".into());
+    for path in &paths {
+        let solve = run(&["solve", path]);
+        assert!(
+            matches!(solve.code, Some(1 | 65 | 66)),
+            "{path}: {}",
+            solve.stderr
+        );
+        for command in ["resolve", "simulate"] {
+            let r = run(&[command, path]);
+            assert_eq!(r.code, solve.code, "{command} {path}: {}", r.stderr);
+            assert!(r.stdout.is_empty(), "{command} {path}");
+            assert_eq!(
+                r.stderr.lines().next(),
+                solve.stderr.lines().next(),
+                "{command} {path}"
+            );
+        }
+    }
+}
+
 /// Permission denied is not "missing" (66) but a failure to read (exit 1).
 /// Root reads any file, so the check runs only for other users.
 #[cfg(unix)]
@@ -404,6 +445,22 @@ fn a_closed_stdout_is_reported() {
         stderr,
         "error: cannot write output: standard output is closed\n"
     );
+    // The same for the commands that stepped in later.
+    for command in [
+        "resolve sphere-row",
+        "simulate lessons/scenes/ball-drop.toml --steps 10",
+    ] {
+        let out = std::process::Command::new("sh")
+            .args(["-c", &format!("'{bin}' {command} >&-")])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{command}: {stderr}");
+        assert_eq!(
+            stderr, "error: cannot write output: standard output is closed\n",
+            "{command}"
+        );
+    }
     // A command that writes nothing to stdout is not affected.
     let svg = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("closed-stdout.svg");
     let out = std::process::Command::new("sh")

@@ -29,6 +29,9 @@ fn every_lesson_file_is_embedded_and_named_for_its_id() {
         "",
         &mut files,
     );
+    // The time-stepping scenes (`simulate`) have no contacts to solve and
+    // are not embedded: the lesson list and the TUI show contacts.
+    files.retain(|f| !f.starts_with("scenes/"));
     files.sort();
     let mut embedded: Vec<String> = embedded::LESSONS
         .iter()

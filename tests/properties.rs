@@ -5,7 +5,7 @@ use contact_lab::physics::checks::CheckKind;
 use contact_lab::physics::frame::contact_basis;
 use contact_lab::physics::stages::FrictionRegime;
 use contact_lab::physics::{
-    solve, ContactInput, FrictionModel, Problem, ProjectionMethod, RigidBody, Settings,
+    solve, ContactInput, ContactParams, FrictionModel, Problem, ProjectionMethod, RigidBody,
 };
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use proptest::prelude::*;
@@ -109,7 +109,7 @@ fn problem() -> impl Strategy<Value = Problem<f64>> {
                         static_friction: mu,
                         dynamic_friction: mu * 0.8,
                         friction_model: FrictionModel::Millington,
-                        settings: Settings {
+                        settings: ContactParams {
                             relaxation,
                             angular_limit,
                             projection: if linear {
@@ -117,9 +117,10 @@ fn problem() -> impl Strategy<Value = Problem<f64>> {
                             } else {
                                 ProjectionMethod::Nonlinear
                             },
-                            ..Settings::default()
+                            ..ContactParams::default()
                         },
                     },
+                    duration: 0.01,
                 }
             },
         )

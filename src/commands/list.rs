@@ -41,7 +41,7 @@ pub fn welcome(out: &mut dyn Write) -> Result<(), AppError> {
     table(out)?;
     writeln!(
         out,
-        "\nStart with:  contact-lab solve lecture-2      (the lecture's second worked example)\n             contact-lab solve LESSON --format json\n             contact-lab --help"
+        "\nStart with:  contact-lab solve lecture-2      (the lecture's second worked example)\n             contact-lab solve LESSON --format json\n             contact-lab resolve box-four-corners   (a scene's contacts resolved together)\n             contact-lab --help"
     )
     .map_err(io)
 }

@@ -1,9 +1,12 @@
 //! What each subcommand does: load, solve, render, write.
 
-mod check;
+mod errata;
 mod exercise;
 mod figure;
 mod list;
+mod resolve;
+mod show;
+mod simulate;
 mod solve;
 
 use std::io::Write;
@@ -29,8 +32,10 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         }
         Some(Command::List) => list::list(out),
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
+        Some(Command::Resolve(args)) => resolve::resolve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
-        Some(Command::Check(args)) => check::check(&args, out),
+        Some(Command::Simulate(args)) => simulate::simulate(&args, out, err),
+        Some(Command::Errata(args)) => errata::errata(&args, out),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
     }
 }
@@ -98,6 +103,9 @@ pub(crate) fn overrides(m: &ModelArgs) -> Result<Overrides, AppError> {
     if let Some(a) = m.angular_limit {
         rules::angular_limit(a).map_err(|e| AppError::Usage(format!("--angular-limit: {e}")))?;
     }
+    if let Some(v) = m.velocity_limit {
+        rules::velocity_limit(v).map_err(|e| AppError::Usage(format!("--velocity-limit: {e}")))?;
+    }
     Ok(Overrides {
         friction_model: m.friction_model.map(|f| match f {
             FrictionModelArg::Millington => FrictionModel::Millington,
@@ -110,6 +118,7 @@ pub(crate) fn overrides(m: &ModelArgs) -> Result<Overrides, AppError> {
         }),
         relaxation: m.relaxation,
         angular_limit: m.angular_limit,
+        velocity_limit: m.velocity_limit,
     })
 }
 

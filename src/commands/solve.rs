@@ -9,6 +9,7 @@ use crate::format::Fmt;
 use crate::lesson::Overrides;
 use crate::physics::FrictionModel;
 use crate::render;
+use crate::render::compare::Compared;
 use crate::render::svg::{self, Plane};
 
 fn usage(args: &SolveArgs) -> Result<(), AppError> {
@@ -34,20 +35,26 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     warn(&lesson, err);
     let fmt = Fmt::new(args.digits as usize);
     if args.compare_friction {
-        let traces: Vec<_> = FrictionModel::ALL
+        let compared: Vec<_> = FrictionModel::ALL
             .into_iter()
-            .map(|m| {
+            .map(|model| {
                 let mut l = lesson.clone();
                 l.apply(&Overrides {
-                    friction_model: Some(m),
+                    friction_model: Some(model),
                     ..Overrides::default()
                 });
-                (m, crate::worked_solution(&l, args.contact))
+                let solution = crate::physics::solve(&l.problem::<f64>(args.contact));
+                let trace = crate::trace::build(&l, args.contact, &solution);
+                Compared {
+                    model,
+                    solution,
+                    trace,
+                }
             })
             .collect();
         let text = match args.format {
-            Format::Json => render::compare::json(&traces),
-            _ => render::compare::text(&traces, &fmt),
+            Format::Json => render::compare::json(&compared),
+            _ => render::compare::text(&compared, &fmt),
         };
         return out.write_all(text.as_bytes()).map_err(io);
     }
@@ -80,7 +87,40 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         }
         Format::Latex => render::latex::document(&traces, &fmt, args.fragment),
     };
+    let text = if args.all_contacts && lesson.contacts.len() > 1 {
+        alone_note(&text, &lesson.id, args.format)
+    } else {
+        text
+    };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// `--all-contacts` solves each contact alone, from the scene as given: say so
+/// at the top of the output (JSON keeps its contract) and point to `resolve`.
+fn alone_note(text: &str, id: &str, format: Format) -> String {
+    let note = format!(
+        "Each contact below is solved alone, from the scene as given: the results are \
+         independent of each other. To resolve the contacts together, in order, each \
+         resolution updating the others, run `contact-lab resolve {id}`."
+    );
+    match format {
+        Format::Json => text.to_string(),
+        Format::Text => format!("{note}\n\n{text}"),
+        Format::Md => format!("> {}\n\n{text}", render::markdown::escape(&note)),
+        Format::Latex => {
+            let para = format!(
+                "\\noindent\\emph{{{}}}\n\n",
+                crate::trace::latex::escape_text(&note.replace('`', ""))
+            );
+            match text.find("\\begin{document}\n") {
+                Some(at) => {
+                    let at = at + "\\begin{document}\n".len();
+                    format!("{}{para}{}", &text[..at], &text[at..])
+                }
+                None => format!("{para}{text}"),
+            }
+        }
+    }
 }
 
 /// Writes one SVG per contact into `dir`; returns the links to them.

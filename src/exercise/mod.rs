@@ -4,13 +4,15 @@
 //! and every check of the solution passes.
 
 pub mod rng;
-pub mod scene;
+pub mod setup;
 pub mod sheet;
 
 use crate::lesson::{validate, Lesson};
-use crate::trace::{Trace, Value};
+use crate::physics::stages::FrictionRegime;
+use crate::physics::{solve, Solution};
+use crate::trace::Trace;
 use rng::SplitMix64;
-use scene::Scene;
+use setup::Setup;
 
 /// What an exercise practises.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -48,33 +50,17 @@ pub struct Exercise {
     /// The lesson file, as written.
     pub toml: String,
     pub lesson: Lesson,
+    pub solution: Solution<f64>,
     pub trace: Trace,
 }
 
 /// Draws this many scenes at most before giving up on one exercise.
 const ATTEMPTS: usize = 2000;
 
-fn text(t: &Trace, stage: &str, name: &str) -> Option<String> {
-    match t.value(stage, name) {
-        Some(Value::Text(s)) => Some(s.clone()),
-        _ => None,
-    }
-}
-
-fn scalar(t: &Trace, stage: &str, name: &str) -> Option<f64> {
-    match t.value(stage, name) {
-        Some(Value::Scalar(x)) => Some(*x),
-        _ => None,
-    }
-}
-
-fn ran(t: &Trace, stage: &str) -> bool {
-    t.stage(stage).is_some_and(|s| s.skipped.is_none())
-}
-
-/// Whether a solved scene is a good exercise of `kind`.
-pub fn suits(kind: Kind, lesson: &Lesson, t: &Trace) -> bool {
-    let checks_pass = t.verdicts.iter().all(|v| v.passed != Some(false));
+/// Whether a solved scene is a good exercise of `kind`: read from the
+/// solution's typed records.
+pub fn fits(kind: Kind, lesson: &Lesson, s: &Solution<f64>) -> bool {
+    let checks_pass = s.checks.all_passed();
     // Inertia tensors that print exactly in four decimals, as the lecture's do.
     let exact = |x: f64| ((x * 1e4).round() - x * 1e4).abs() < 1e-6;
     let round_tensors = lesson
@@ -83,38 +69,44 @@ pub fn suits(kind: Kind, lesson: &Lesson, t: &Trace) -> bool {
         .filter_map(|b| b.inertia)
         .all(|m| m.iter().all(|x| exact(*x)));
     let clean = lesson.warnings.is_empty() && checks_pass && round_tensors;
-    let well_conditioned = scalar(t, "impulse", "condition_number").is_none_or(|k| k < 1e4);
+    let well_conditioned = s.condition_number().is_none_or(|k| k < 1e4);
     // A clear margin either side of the Coulomb limit, so rounding cannot flip the regime.
-    let ratio = match (
-        scalar(t, "friction_clamp", "planar"),
-        scalar(t, "friction_clamp", "limit"),
-    ) {
-        (Some(p), Some(l)) if l > 0.0 => p / l,
+    let ratio = match &s.friction {
+        Some(f) if f.limit > 0.0 => f.planar / f.limit,
         _ => f64::NAN,
     };
-    let regime = text(t, "friction_clamp", "regime");
-    let impulse = ran(t, "impulse")
-        && scalar(t, "desired_delta_velocity", "desired").is_some_and(|d| d > 0.5);
+    let regime = s.regime();
+    let impulse = s.closing() && s.desired.desired > 0.5;
     clean
         && well_conditioned
         && match kind {
-            Kind::Frictionless => impulse && !ran(t, "friction_clamp"),
-            Kind::StaticFriction => impulse && regime.as_deref() == Some("static") && ratio < 0.9,
-            Kind::DynamicFriction => impulse && regime.as_deref() == Some("dynamic") && ratio > 1.1,
-            Kind::Penetration => ran(t, "nonlinear_projection"),
+            Kind::Frictionless => impulse && s.friction.is_none(),
+            Kind::StaticFriction => {
+                impulse && regime == Some(FrictionRegime::Static) && ratio < 0.9
+            }
+            Kind::DynamicFriction => {
+                impulse && regime == Some(FrictionRegime::Dynamic) && ratio > 1.1
+            }
+            Kind::Penetration => s.projection.is_some(),
         }
 }
 
-fn draw(rng: &mut SplitMix64, kind: Kind) -> Scene {
+/// Whether the solved contact `t` describes is a good exercise of `kind`
+/// (solves that contact of `lesson` again and asks [`fits`]).
+pub fn suits(kind: Kind, lesson: &Lesson, t: &Trace) -> bool {
+    fits(kind, lesson, &solve(&lesson.problem::<f64>(t.contact)))
+}
+
+fn draw(rng: &mut SplitMix64, kind: Kind) -> Setup {
     let family = match kind {
         Kind::Penetration => rng.pick(&[0, 2]),
         Kind::Frictionless => rng.pick(&[0, 1, 2]),
         Kind::StaticFriction | Kind::DynamicFriction => rng.pick(&[0, 1]),
     };
     match family {
-        0 => scene::cube_on_floor(rng, kind),
-        1 => scene::two_spheres(rng, kind),
-        _ => scene::cube_on_sphere(rng, kind),
+        0 => setup::cube_on_floor(rng, kind),
+        1 => setup::two_spheres(rng, kind),
+        _ => setup::cube_on_sphere(rng, kind),
     }
 }
 
@@ -123,8 +115,8 @@ fn exercise(seed: u64, number: usize, sub_seed: u64, kind: Kind) -> Result<Exerc
     let mut rng = SplitMix64::new(sub_seed);
     let id = format!("exercise-{seed}-{number}");
     for _ in 0..ATTEMPTS {
-        let scene = draw(&mut rng, kind);
-        let title = format!("Exercise {number}: {}", scene.title);
+        let setup = draw(&mut rng, kind);
+        let title = format!("Exercise {number}: {}", setup.title);
         let source = format!(
             "contact-lab exercise --seed {seed}, exercise {number} ({})",
             kind.name()
@@ -133,16 +125,18 @@ fn exercise(seed: u64, number: usize, sub_seed: u64, kind: Kind) -> Result<Exerc
             "A generated {} exercise; numbers are given to at most four decimals.",
             kind.name()
         );
-        let toml = scene.toml(&id, &title, &source, &summary);
+        let toml = setup.toml(&id, &title, &source, &summary);
         let lesson = validate::parse(&format!("{id}.toml"), &toml)
             .map_err(|e| format!("a generated lesson does not validate: {e}\n{toml}"))?;
-        let trace = crate::worked_solution(&lesson, 0);
-        if suits(kind, &lesson, &trace) {
+        let solution = solve(&lesson.problem::<f64>(0));
+        if fits(kind, &lesson, &solution) {
+            let trace = crate::trace::build(&lesson, 0, &solution);
             return Ok(Exercise {
                 number,
                 kind,
                 toml,
                 lesson,
+                solution,
                 trace,
             });
         }

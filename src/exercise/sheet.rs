@@ -19,9 +19,9 @@ pub struct Request {
     pub count: usize,
 }
 
-fn questions(kind: Kind, t: &Trace) -> Vec<&'static str> {
-    let closing = t.stage("impulse").is_some_and(|s| s.skipped.is_none());
-    match kind {
+fn questions(e: &Exercise) -> Vec<&'static str> {
+    let closing = e.solution.closing();
+    match e.kind {
         Kind::Frictionless => vec![
             "Find the contact velocity v_c, the separating velocity v_s and the desired change in velocity Δv.",
             "Find the velocity change per unit impulse along the normal, Δq̇_t.",
@@ -113,12 +113,12 @@ fn short_answers(kind: Kind, t: &Trace) -> Vec<(&'static str, &Value)> {
 
 fn shape(s: &Option<Shape>) -> String {
     match s {
-        Some(Shape::Box([x, y, z])) if x == y && y == z => format!("cube, sides {x}"),
-        Some(Shape::Box([x, y, z])) => format!("box {x} × {y} × {z}"),
-        Some(Shape::Sphere(r)) => format!("solid sphere, r = {r}"),
-        Some(Shape::HollowSphere(r)) => format!("hollow sphere, r = {r}"),
+        Some(Shape::Box { sides: [x, y, z] }) if x == y && y == z => format!("cube, sides {x}"),
+        Some(Shape::Box { sides: [x, y, z] }) => format!("box {x} × {y} × {z}"),
+        Some(Shape::Sphere { radius: r }) => format!("solid sphere, r = {r}"),
+        Some(Shape::HollowSphere { radius: r }) => format!("hollow sphere, r = {r}"),
         Some(Shape::Cylinder { radius, height }) => format!("cylinder, r = {radius}, h = {height}"),
-        Some(Shape::HalfSpace) => "half-space".into(),
+        Some(Shape::HalfSpace { .. }) => "half-space".into(),
         None => "–".into(),
     }
 }
@@ -264,7 +264,7 @@ pub fn markdown(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -
             let _ = writeln!(out, "| {what} | {} |", cells.join(" | "));
         }
         let _ = writeln!(out, "\n{}\n", markdown::escape(&contact_line(l, &inputs)));
-        for (i, q) in questions(e.kind, &e.trace).iter().enumerate() {
+        for (i, q) in questions(e).iter().enumerate() {
             let _ = writeln!(out, "{}. {}", i + 1, markdown::escape(q));
         }
         out.push('\n');
@@ -330,7 +330,7 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
             prose(&contact_line(l, &inputs))
         );
         body.push_str("\\begin{enumerate}\n");
-        for q in questions(e.kind, &e.trace) {
+        for q in questions(e) {
             let _ = writeln!(body, "\\item {}", prose(q));
         }
         body.push_str("\\end{enumerate}\n");

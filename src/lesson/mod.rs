@@ -17,11 +17,15 @@ pub mod validate;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
+use crate::physics::params::BoxBoxMode;
+pub use crate::physics::params::Material;
+use crate::physics::step::SimParams;
+pub use crate::physics::Shape;
 use crate::physics::{
-    c, ContactInput, FrictionModel, Problem, ProjectionMethod, Real, RigidBody, Settings,
+    c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
+    ProjectionMethod, Real, ResolverParams, RigidBody, SleepParams, StepParams, World, WorldParams,
 };
 pub use printed::Printed;
-pub use shape::Shape;
 pub use source::{LessonDiagnostic, LessonError};
 
 /// A validated lesson: every number finite, every reference resolved.
@@ -36,6 +40,12 @@ pub struct Lesson {
     pub bodies: Vec<BodyDef>,
     pub contacts: Vec<ContactDef>,
     pub printed: Vec<Printed>,
+    /// The lesson's `[settings]` table (defaults where absent).
+    pub settings: Settings,
+    /// Time stepping, when the lesson has `[world]`, `[step]` or `[sleep]`.
+    pub simulation: Option<Simulation>,
+    /// How `resolve` resolves the contacts together (`[settings]`, defaults where absent).
+    pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
 }
@@ -79,7 +89,103 @@ pub struct ContactDef {
     pub static_friction: f64,
     pub dynamic_friction: f64,
     pub friction_model: FrictionModel,
-    pub settings: Settings<f64>,
+    /// `[settings]` with this contact's `settings` table over it.
+    pub settings: Settings,
+}
+
+/// What `simulate` needs beyond the bodies: forces, the step, sleep, and the
+/// coefficients of generated contacts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Simulation {
+    pub world: WorldParams<f64>,
+    pub box_box: BoxBoxMode,
+    /// `[world]`'s coefficients, the default of every body.
+    pub material: Material,
+    /// Each body's coefficients (the same indices as `Lesson::bodies`).
+    pub materials: Vec<Material>,
+    /// Closing speed below which generated contacts do not bounce
+    /// (`[world] velocity_limit`, default 0.25 as the reference engine).
+    pub velocity_limit: f64,
+    /// The lecture's micro-collisions: one step of acceleration is not bounced back.
+    pub acceleration_compensation: bool,
+    /// Friction model of generated contacts (`[world] friction_model`).
+    pub friction_model: FrictionModel,
+    pub dt: f64,
+    pub steps: u64,
+    pub sleep: SleepParams<f64>,
+}
+
+impl Default for Simulation {
+    fn default() -> Self {
+        Simulation {
+            world: WorldParams::default(),
+            box_box: BoxBoxMode::default(),
+            material: Material::default(),
+            materials: Vec::new(),
+            velocity_limit: 0.25,
+            acceleration_compensation: true,
+            friction_model: FrictionModel::Millington,
+            dt: 1.0 / 60.0,
+            steps: 600,
+            sleep: SleepParams::default(),
+        }
+    }
+}
+
+impl Lesson {
+    /// The parameters of the lesson's simulation: its scene tables, with the
+    /// `[settings]` of every generated contact (velocity limit from `[world]`).
+    pub fn sim_params(&self) -> Option<SimParams<f64>> {
+        let sim = self.simulation.as_ref()?;
+        let mut contact = self.settings.contact_params::<f64>();
+        contact.velocity_limit = sim.velocity_limit;
+        Some(SimParams {
+            dt: sim.dt,
+            world: sim.world,
+            sleep: sim.sleep,
+            resolver: self.resolver,
+            contact,
+            acceleration_compensation: sim.acceleration_compensation,
+            box_box: sim.box_box,
+            friction_model: sim.friction_model,
+        })
+    }
+}
+
+/// The `[settings]` table of a lesson file, as validated: a contact's
+/// parameters plus the last frame's duration (which the world gives the step).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    pub velocity_limit: f64,
+    pub angular_limit: f64,
+    pub relaxation: f64,
+    pub duration: f64,
+    pub projection: ProjectionMethod,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        let contact = ContactParams::<f64>::default();
+        Settings {
+            velocity_limit: contact.velocity_limit,
+            angular_limit: contact.angular_limit,
+            relaxation: contact.relaxation,
+            duration: StepParams::<f64>::default().duration,
+            projection: contact.projection,
+        }
+    }
+}
+
+impl Settings {
+    /// The contact's share of the settings, in float type `T`.
+    pub fn contact_params<T: Real>(&self) -> ContactParams<T> {
+        ContactParams {
+            velocity_limit: c(self.velocity_limit),
+            angular_limit: c(self.angular_limit),
+            relaxation: c(self.relaxation),
+            projection: self.projection,
+        }
+    }
 }
 
 /// Command-line or TUI overrides applied to every contact before solving.
@@ -89,6 +195,7 @@ pub struct Overrides {
     pub projection: Option<ProjectionMethod>,
     pub relaxation: Option<f64>,
     pub angular_limit: Option<f64>,
+    pub velocity_limit: Option<f64>,
 }
 
 impl Lesson {
@@ -147,6 +254,9 @@ impl Lesson {
             if let Some(a) = o.angular_limit {
                 contact.settings.angular_limit = a;
             }
+            if let Some(v) = o.velocity_limit {
+                contact.settings.velocity_limit = v;
+            }
         }
     }
 
@@ -171,51 +281,73 @@ impl Lesson {
         moved.problem(k)
     }
 
-    /// The physics input of contact `k`, in float type `T`. Immovable bodies
-    /// become empty slots.
+    /// The physics input of contact `k`, in float type `T`: a view of the
+    /// lesson's world. Immovable bodies become empty slots.
     pub fn problem<T: Real>(&self, k: usize) -> Problem<T> {
-        let def = &self.contacts[k];
-        let body = |i: Option<usize>| {
-            let b = &self.bodies[i?];
-            if !b.movable() {
-                return None;
-            }
-            let inertia = b.inertia.unwrap_or_else(Matrix3::identity);
-            // Validated tensors invert (`ranges::inertia`); scaled first so a
-            // determinant out of f64's range cannot make one look singular.
-            let inverse = crate::physics::scale::stable_inverse(&inertia)
-                .expect("a validated inertia tensor is invertible");
-            Some(RigidBody {
-                mass: c(b.mass),
-                inverse_mass: c(1.0 / b.mass),
+        self.world::<T>().problem(k)
+    }
+
+    /// The lesson as a world of bodies by id (the same indices as `bodies`)
+    /// and contacts between them, in float type `T`.
+    pub fn world<T: Real>(&self) -> World<T> {
+        let bodies = self.bodies.iter().map(BodyDef::body).collect();
+        let contacts = self
+            .contacts
+            .iter()
+            .map(|def| Contact {
+                body1: BodyId(def.bodies.0),
+                body2: def.bodies.1.map(BodyId),
+                input: ContactInput {
+                    point: def.point.map(c),
+                    normal: def.normal.map(c),
+                    penetration: c(def.penetration),
+                    restitution: c(def.restitution),
+                    static_friction: c(def.static_friction),
+                    dynamic_friction: c(def.dynamic_friction),
+                    friction_model: def.friction_model,
+                    settings: def.settings.contact_params(),
+                },
+                duration: (def.settings.duration != self.settings.duration)
+                    .then(|| c(def.settings.duration)),
+            })
+            .collect();
+        World {
+            bodies,
+            contacts,
+            step: StepParams {
+                duration: c(self.settings.duration),
+            },
+        }
+    }
+}
+
+impl BodyDef {
+    /// The physics body, in float type `T`.
+    fn body<T: Real>(&self) -> Body<T> {
+        let position = self.position.map(c);
+        let orientation = Quaternion::from(self.orientation.coords.map(c));
+        if !self.movable() {
+            return Body::immovable(position, orientation, self.shape);
+        }
+        let inertia = self.inertia.unwrap_or_else(Matrix3::identity);
+        // Validated tensors invert (`ranges::inertia`); scaled first so a
+        // determinant out of f64's range cannot make one look singular.
+        let inverse = crate::physics::scale::stable_inverse(&inertia)
+            .expect("a validated inertia tensor is invertible");
+        Body {
+            state: RigidBody {
+                mass: c(self.mass),
+                inverse_mass: c(1.0 / self.mass),
                 inertia_body: inertia.map(c),
                 inverse_inertia_body: inverse.map(c),
-                position: b.position.map(c),
-                orientation: Quaternion::from(b.orientation.coords.map(c)),
-                velocity: b.velocity.map(c),
-                angular_velocity: b.angular_velocity.map(c),
-                acceleration: b.acceleration.map(c),
-            })
-        };
-        let s = def.settings;
-        Problem {
-            bodies: [body(Some(def.bodies.0)), body(def.bodies.1)],
-            contact: ContactInput {
-                point: def.point.map(c),
-                normal: def.normal.map(c),
-                penetration: c(def.penetration),
-                restitution: c(def.restitution),
-                static_friction: c(def.static_friction),
-                dynamic_friction: c(def.dynamic_friction),
-                friction_model: def.friction_model,
-                settings: Settings {
-                    velocity_limit: c(s.velocity_limit),
-                    angular_limit: c(s.angular_limit),
-                    relaxation: c(s.relaxation),
-                    duration: c(s.duration),
-                    projection: s.projection,
-                },
+                position,
+                orientation,
+                velocity: self.velocity.map(c),
+                angular_velocity: self.angular_velocity.map(c),
+                acceleration: self.acceleration.map(c),
             },
+            shape: self.shape,
+            movable: true,
         }
     }
 }

@@ -2,7 +2,7 @@
 
 use super::raw::{PrintedNumber, PrintedValue, RawPrinted};
 use super::source::Note;
-use crate::physics::solve::STAGE_IDS;
+use crate::physics::StageId;
 
 /// One printed number and how many decimals it was printed with.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -83,11 +83,11 @@ fn number(n: &PrintedNumber) -> Result<PrintedNum, String> {
 impl Printed {
     pub fn from_raw(raw: &RawPrinted) -> Result<Printed, Note> {
         let stage = raw.stage.get_ref();
-        if !STAGE_IDS.contains(&stage.as_str()) {
+        if StageId::from_json_name(stage).is_none() {
             return Err(Note::new(
                 format!(
                     "unknown stage \"{stage}\" (stages: {})",
-                    STAGE_IDS.join(", ")
+                    StageId::ALL.map(StageId::json_name).join(", ")
                 ),
                 raw.stage.span(),
             ));

@@ -50,6 +50,15 @@ pub fn too_small(x: f64) -> String {
     )
 }
 
+/// The refusal of a magnitude below [`MIN_MAGNITUDE`] for a value that
+/// must be positive (a relaxation, a duration, a damping): 0 is no way out.
+pub fn too_small_positive(x: f64) -> String {
+    format!(
+        "{} is below contact-lab's smallest magnitude, 1e-60 (smaller inputs could underflow a stage)",
+        exact(x)
+    )
+}
+
 /// A unit vector's components below [`MIN_MAGNITUDE`] set to 0: they are far
 /// below f64's resolution of a direction (about 1e-16), so the direction is
 /// the same, and every product of the stages stays in the normal range.

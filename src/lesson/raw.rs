@@ -21,6 +21,46 @@ pub struct RawLesson {
     pub settings: RawSettings,
     #[serde(default)]
     pub printed: Vec<RawPrinted>,
+    /// Time stepping (`simulate`): forces, the step, sleep.
+    pub world: Option<RawWorld>,
+    pub step: Option<RawStep>,
+    pub sleep: Option<RawSleep>,
+}
+
+/// `[world]`: forces and the defaults of generated contacts.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWorld {
+    #[serde(default, deserialize_with = "exact::some")]
+    pub gravity: Option<S<[f64; 3]>>,
+    pub linear_damping: Option<S<f64>>,
+    pub angular_damping: Option<S<f64>>,
+    pub box_box: Option<S<String>>,
+    pub velocity_limit: Option<S<f64>>,
+    pub acceleration_compensation: Option<S<bool>>,
+    pub friction_model: Option<S<String>>,
+    pub restitution: Option<S<f64>>,
+    pub friction: Option<S<f64>>,
+    pub static_friction: Option<S<f64>>,
+    pub dynamic_friction: Option<S<f64>>,
+}
+
+/// `[step]`: the time step and how many to take.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawStep {
+    pub dt: Option<S<f64>>,
+    pub steps: Option<S<i64>>,
+}
+
+/// `[sleep]`: when bodies stop being simulated.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSleep {
+    pub enabled: Option<S<bool>>,
+    pub epsilon: Option<S<f64>>,
+    pub mode: Option<S<String>>,
+    pub island_time: Option<S<f64>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -41,6 +81,14 @@ pub struct RawBody {
     pub angular_velocity: Option<S<[f64; 3]>>,
     #[serde(default, deserialize_with = "exact::some")]
     pub acceleration: Option<S<[f64; 3]>>,
+    /// A half-space's outward normal (world frame).
+    #[serde(default, deserialize_with = "exact::some")]
+    pub normal: Option<S<[f64; 3]>>,
+    /// Coefficients of the contacts generated for this body (`simulate`).
+    pub restitution: Option<S<f64>>,
+    pub friction: Option<S<f64>>,
+    pub static_friction: Option<S<f64>>,
+    pub dynamic_friction: Option<S<f64>>,
 }
 
 /// `shape = { box = [x, y, z] }`, `{ sphere = r }`, `{ hollow_sphere = r }`,
@@ -85,6 +133,12 @@ pub struct RawSettings {
     pub relaxation: Option<S<f64>>,
     pub duration: Option<S<f64>>,
     pub projection: Option<S<String>>,
+    /// The resolver's settings (the lesson's `[settings]` only, not a contact's).
+    pub position_iterations: Option<S<i64>>,
+    pub velocity_iterations: Option<S<i64>>,
+    pub position_epsilon: Option<S<f64>>,
+    pub velocity_epsilon: Option<S<f64>>,
+    pub restitution_from: Option<S<String>>,
 }
 
 #[derive(Debug, Deserialize)]

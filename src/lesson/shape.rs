@@ -1,73 +1,43 @@
-//! Body shapes and the inertia tensors they imply.
+//! The lesson file's shape table converted into the physics [`Shape`], and
+//! its one-line description for warnings and the trace.
 
-use nalgebra::Matrix3;
+use super::raw::RawShape;
+use crate::physics::Shape;
 
-pub use super::raw::RawShape as Shape;
-
-impl Shape {
-    /// Body-frame inertia tensor of a body of mass `m` with this shape, or
-    /// `None` for a half-space (which only an immovable body may be).
-    pub fn inertia(&self, m: f64) -> Option<Matrix3<f64>> {
-        let diag = |a: f64, b: f64, c: f64| Some(Matrix3::from_diagonal(&[a, b, c].into()));
-        match *self {
-            // Solid sphere: I = 2/5 m r².
-            Shape::Sphere(r) => {
-                let i = 0.4 * m * r * r;
-                diag(i, i, i)
-            }
-            // Hollow (thin-shelled) sphere: I = 2/3 m r².
-            Shape::HollowSphere(r) => {
-                let i = 2.0 / 3.0 * m * r * r;
-                diag(i, i, i)
-            }
-            // Solid cuboid with sides x, y, z: I_xx = m/12 (y² + z²), …
-            Shape::Box([x, y, z]) => {
-                let k = m / 12.0;
-                diag(
-                    k * (y * y + z * z),
-                    k * (x * x + z * z),
-                    k * (x * x + y * y),
-                )
-            }
-            // Solid cylinder, axis along body y: I_yy = ½ m r², I_xx = I_zz = m/12 (3r² + h²).
-            Shape::Cylinder { radius, height } => {
-                let side = m / 12.0 * (3.0 * radius * radius + height * height);
-                diag(side, 0.5 * m * radius * radius, side)
-            }
-            Shape::HalfSpace => None,
+impl From<RawShape> for Shape {
+    fn from(raw: RawShape) -> Shape {
+        match raw {
+            RawShape::Sphere(radius) => Shape::Sphere { radius },
+            RawShape::HollowSphere(radius) => Shape::HollowSphere { radius },
+            RawShape::Box(sides) => Shape::Box { sides },
+            RawShape::Cylinder { radius, height } => Shape::Cylinder { radius, height },
+            RawShape::HalfSpace => Shape::HalfSpace {
+                normal: [0.0, 1.0, 0.0],
+            },
         }
     }
+}
 
-    /// The formula, for warnings and the trace.
-    pub fn describe(&self) -> String {
-        let e = crate::format::exact;
-        match *self {
-            Shape::Sphere(r) => format!("solid sphere r = {} (I = 2/5 m r²)", e(r)),
-            Shape::HollowSphere(r) => format!("hollow sphere r = {} (I = 2/3 m r²)", e(r)),
-            Shape::Box([x, y, z]) => format!(
-                "box {} × {} × {} (I_xx = m/12 (y² + z²), …)",
-                e(x),
-                e(y),
-                e(z)
-            ),
-            Shape::Cylinder { radius, height } => {
-                format!(
-                    "cylinder r = {}, h = {} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))",
-                    e(radius),
-                    e(height)
-                )
-            }
-            Shape::HalfSpace => "half-space".to_string(),
+/// The shape and its inertia formula, in words (numbers through
+/// `format::exact`: tiny and huge sizes in scientific notation).
+pub fn describe(shape: &Shape) -> String {
+    let e = crate::format::exact;
+    match *shape {
+        Shape::Sphere { radius: r } => format!("solid sphere r = {} (I = 2/5 m r²)", e(r)),
+        Shape::HollowSphere { radius: r } => {
+            format!("hollow sphere r = {} (I = 2/3 m r²)", e(r))
         }
-    }
-
-    /// Size numbers that must be positive and finite.
-    pub fn dimensions(&self) -> Vec<f64> {
-        match *self {
-            Shape::Sphere(r) | Shape::HollowSphere(r) => vec![r],
-            Shape::Box(s) => s.to_vec(),
-            Shape::Cylinder { radius, height } => vec![radius, height],
-            Shape::HalfSpace => vec![],
-        }
+        Shape::Box { sides: [x, y, z] } => format!(
+            "box {} × {} × {} (I_xx = m/12 (y² + z²), …)",
+            e(x),
+            e(y),
+            e(z)
+        ),
+        Shape::Cylinder { radius, height } => format!(
+            "cylinder r = {}, h = {} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))",
+            e(radius),
+            e(height)
+        ),
+        Shape::HalfSpace { .. } => "half-space".to_string(),
     }
 }

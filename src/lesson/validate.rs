@@ -1,6 +1,10 @@
 //! From TOML text to a validated [`Lesson`]. Every error names the span of the
 //! offending value; all errors of a file are reported together.
 
+mod simulation;
+
+pub use simulation::damping_rule;
+
 use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
@@ -9,8 +13,9 @@ use super::printed::Printed;
 use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
+use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
-use crate::physics::{FrictionModel, ProjectionMethod, Settings};
+use crate::physics::{FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom};
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
@@ -108,19 +113,47 @@ pub mod rules {
     }
     pub fn relaxation(x: f64) -> Result<(), String> {
         if x > 0.0 && x < MIN_MAGNITUDE {
-            Err(format!("relaxation {}", ranges::too_small(x)))
+            Err(format!("relaxation {}", ranges::too_small_positive(x)))
         } else if x > 0.0 && x <= 1.0 {
             Ok(())
         } else {
             Err(format!("relaxation must be in (0, 1], got {}", exact(x)))
         }
     }
+    /// The most iterations a resolver phase may be given.
+    pub const MAX_ITERATIONS: i64 = 1_000_000_000;
+
+    /// An iteration limit: a whole number from 0 to 10⁹.
+    pub fn iterations(name: &str, n: i64) -> Result<(), String> {
+        if (0..=MAX_ITERATIONS).contains(&n) {
+            Ok(())
+        } else {
+            Err(format!(
+                "{name} must be a whole number from 0 to 10⁹ (1000000000), got {n}"
+            ))
+        }
+    }
+
+    /// A resolver epsilon: ≥ 0, and zero or within 1e-60 to 1e60.
+    pub fn epsilon(name: &str, x: f64) -> Result<(), String> {
+        if !x.is_finite() || x < 0.0 {
+            Err(format!(
+                "{name} must be a finite number ≥ 0, got {}",
+                exact(x)
+            ))
+        } else {
+            finite(x).map_err(|e| format!("{name} {e}"))
+        }
+    }
+
     pub fn duration(x: f64) -> Result<(), String> {
         if x.is_nan() || x <= 0.0 {
             Err(format!(
                 "duration must be a finite number > 0, got {}",
                 exact(x)
             ))
+        } else if x < MIN_MAGNITUDE {
+            Err(format!("duration {}", ranges::too_small_positive(x)))
         } else {
             finite(x).map_err(|e| format!("duration {e}"))
         }
@@ -309,10 +342,16 @@ impl Validator {
         if raw.bodies.is_empty() {
             self.err(0..0, "the lesson has no [[body]]");
         }
-        if raw.contacts.is_empty() {
-            self.err(0..0, "the lesson has no [[contact]]");
+        let mut simulation = self.simulation(&raw);
+        self.body_materials(&raw, simulation.as_mut());
+        if raw.contacts.is_empty() && simulation.is_none() {
+            self.err(
+                0..0,
+                "the lesson has no [[contact]] (a scene that generates its contacts needs a [world] or [step] table)",
+            );
         }
         let defaults = self.settings(&raw.settings, Settings::default(), "[settings]");
+        let resolver = self.resolver(&raw.settings);
         let contacts = raw
             .contacts
             .iter()
@@ -335,6 +374,9 @@ impl Validator {
             bodies,
             contacts,
             printed,
+            settings: defaults,
+            simulation,
+            resolver,
             warnings: Vec::new(),
         }
     }
@@ -351,7 +393,8 @@ impl Validator {
         );
         let movable = mass.is_finite() && rules::mass(mass).is_ok();
         let errors_before = self.errors.len();
-        let shape = raw.shape.as_ref().map(|s| *s.get_ref());
+        let mut shape: Option<Shape> = raw.shape.as_ref().map(|s| Shape::from(*s.get_ref()));
+        self.half_space_normal(&name, raw, &mut shape);
         if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
             if s.dimensions()
                 .iter()
@@ -363,7 +406,7 @@ impl Validator {
                         "body '{name}': shape sizes must be finite and > 0 (within 1e-60 to 1e60)"
                     ),
                 );
-            } else if s == Shape::HalfSpace && movable {
+            } else if !s.is_finite() && movable {
                 self.err(
                     span,
                     format!("body '{name}': a half-space must be immovable (mass = inf)"),
@@ -387,7 +430,7 @@ impl Validator {
                         Note::new(
                             format!(
                                 "body '{name}': the inertia tensor given differs from the {}: given {}, the shape gives {}; the given tensor is used",
-                                shape.map(|s| s.describe()).unwrap_or_default(),
+                                shape.as_ref().map(super::shape::describe).unwrap_or_default(),
                                 tensor(t),
                                 tensor(&s)
                             ),
@@ -401,7 +444,7 @@ impl Validator {
             (Some((t, _)), None) => Some(*t),
             (None, Some(s)) => Some(s),
             (None, None) => {
-                if movable && shape != Some(Shape::HalfSpace) {
+                if movable && shape.is_none_or(|s| s.is_finite()) {
                     self.err(
                         raw.name.span(),
                         format!("body '{name}' needs an `inertia` tensor or a `shape`"),
@@ -590,7 +633,7 @@ impl Validator {
         }
     }
 
-    fn settings(&mut self, raw: &RawSettings, base: Settings<f64>, table: &str) -> Settings<f64> {
+    fn settings(&mut self, raw: &RawSettings, base: Settings, table: &str) -> Settings {
         let mut s = base;
         let what = format!("in {table}");
         if let Some(x) = &raw.velocity_limit {
@@ -620,12 +663,95 @@ impl Validator {
         s
     }
 
+    /// The resolver's settings of the lesson's `[settings]` table.
+    fn resolver(&mut self, raw: &RawSettings) -> ResolverParams {
+        let mut p = ResolverParams::default();
+        let iterations = |v: &mut Self, name: &str, x: &Option<S<i64>>| {
+            let x = x.as_ref()?;
+            match rules::iterations(name, *x.get_ref()) {
+                Ok(()) => Some(*x.get_ref() as usize),
+                Err(e) => {
+                    v.err(x.span(), format!("in [settings]: {e}"));
+                    None
+                }
+            }
+        };
+        p.position_iterations = iterations(self, "position_iterations", &raw.position_iterations);
+        p.velocity_iterations = iterations(self, "velocity_iterations", &raw.velocity_iterations);
+        for (name, x, out) in [
+            (
+                "position_epsilon",
+                &raw.position_epsilon,
+                &mut p.position_epsilon,
+            ),
+            (
+                "velocity_epsilon",
+                &raw.velocity_epsilon,
+                &mut p.velocity_epsilon,
+            ),
+        ] {
+            if let Some(x) = x {
+                match rules::epsilon(name, *x.get_ref()) {
+                    Ok(()) => *out = *x.get_ref(),
+                    Err(e) => self.err(x.span(), format!("in [settings]: {e}")),
+                }
+            }
+        }
+        if let Some(r) = &raw.restitution_from {
+            match RestitutionFrom::from_name(r.get_ref()) {
+                Some(m) => p.restitution_from = m,
+                None => self.err(
+                    r.span(),
+                    format!(
+                        "in [settings]: restitution_from must be \"current\" or \"initial\", got \"{}\"",
+                        r.get_ref()
+                    ),
+                ),
+            }
+        }
+        p
+    }
+
+    /// A contact's `settings` table cannot hold the resolver's (scene-wide) settings.
+    fn no_resolver_settings(&mut self, raw: &RawSettings) {
+        let spans = [
+            (
+                "position_iterations",
+                raw.position_iterations.as_ref().map(|x| x.span()),
+            ),
+            (
+                "velocity_iterations",
+                raw.velocity_iterations.as_ref().map(|x| x.span()),
+            ),
+            (
+                "position_epsilon",
+                raw.position_epsilon.as_ref().map(|x| x.span()),
+            ),
+            (
+                "velocity_epsilon",
+                raw.velocity_epsilon.as_ref().map(|x| x.span()),
+            ),
+            (
+                "restitution_from",
+                raw.restitution_from.as_ref().map(|x| x.span()),
+            ),
+        ];
+        for (name, span) in spans {
+            if let Some(span) = span {
+                self.err(
+                    span,
+                    format!("{name} is a setting of the whole scene: put it in the lesson's [settings], not in a contact's settings"),
+                );
+            }
+        }
+    }
+
     fn contact(
         &mut self,
         raw: &RawContact,
         (by_name, raw_bodies): (&HashMap<&str, usize>, &[RawBody]),
         bodies: &[BodyDef],
-        defaults: Settings<f64>,
+        defaults: Settings,
     ) -> ContactDef {
         self.contact_spans.push(raw.bodies.span());
         if let Some(n) = &raw.name {
@@ -738,7 +864,10 @@ impl Validator {
             }),
         };
         let settings = match &raw.settings {
-            Some(s) => self.settings(s, defaults, "[contact.settings]"),
+            Some(s) => {
+                self.no_resolver_settings(s);
+                self.settings(s, defaults, "[contact.settings]")
+            }
             None => defaults,
         };
         ContactDef {

@@ -1,25 +1,35 @@
-//! Pure maths of one contact: no I/O, no formatting.
+//! Pure maths: no I/O, no text. Everything is generic over the float type so
+//! that f32 and f64 runs can be compared.
 //!
-//! A [`Problem`] holds the two bodies of a contact (either may be absent or
-//! immovable, written `None`) and the contact itself. [`solve::solve`] runs the
-//! stages of `stages/` in the lecture's order and returns a [`solve::Solution`]
-//! with one typed record per stage. Everything is generic over the float type
-//! so that f32 and f64 runs can be compared.
+//! - [`body`], [`shape`], [`world`]: bodies by id, their shapes, the world of a scene;
+//! - [`params`]: every tunable, one documented struct per level;
+//! - [`contact`]: ONE contact — frame, problem view, stages, solve, checks
+//!   and the causes of their verdicts;
+//! - [`scale`]: scale-invariant norms and inverse (power-of-two scaling);
+//! - beside it, for sets of contacts over time: `resolver/` (a scene's contacts
+//!   resolved together), `collide/` (contact generation), `step/` (time
+//!   stepping, micro-collisions, sleep) and `exact/` (impact integration).
 
 pub mod body;
-pub mod causes;
-pub mod checks;
-pub mod frame;
-pub mod problem;
+pub mod collide;
+pub mod contact;
+pub mod exact;
+pub mod params;
+pub mod resolver;
 pub mod scale;
 pub mod shape;
-pub mod solve;
-pub mod stages;
+pub mod step;
+pub mod world;
 
 pub use body::RigidBody;
+pub use contact::{causes, checks, frame, problem, solve, stages};
+pub use contact::{ContactInput, Problem, Solution, StageId};
+pub use params::{
+    ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, SleepParams,
+    StepParams, WorldParams,
+};
 pub use shape::Shape;
-pub use problem::{ContactInput, FrictionModel, Problem, ProjectionMethod, Settings};
-pub use solve::{solve, Solution};
+pub use world::{Body, BodyId, Contact, World};
 
 use nalgebra::RealField;
 

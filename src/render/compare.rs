@@ -3,8 +3,19 @@
 use serde_json::json;
 
 use crate::format::Fmt;
-use crate::physics::FrictionModel;
-use crate::trace::{Trace, Verdict};
+use crate::physics::checks::CheckKind;
+use crate::physics::{FrictionModel, Solution};
+use crate::trace::contact::regime_name;
+use crate::trace::{Trace, Value, Verdict};
+
+/// One friction model's result: the solution (for its physics facts) and
+/// its trace (for the values shown).
+#[derive(Debug, Clone)]
+pub struct Compared {
+    pub model: FrictionModel,
+    pub solution: Solution<f64>,
+    pub trace: Trace,
+}
 
 const HOW_THEY_DIFFER: &str = "\
 How they differ: millington solves for the impulse that stops all sliding and, if that needs more than μ_s g_n,
@@ -13,21 +24,15 @@ applies μ_k j against the slip, however slow, so it can reverse the slip and, w
 the normal target; velocity-scaling (seed 004) sets a velocity target (remove, or scale by μ_d) instead of bounding
 the impulse, so its impulse can leave the Coulomb cone.";
 
-fn final_impulse(t: &Trace) -> Option<&crate::trace::Value> {
-    t.value("friction_clamp", "impulse_world")
-        .or_else(|| t.value("impulse", "impulse_world"))
-}
-
-fn verdict<'a>(t: &'a Trace, prefix: &str) -> Option<&'a Verdict> {
-    t.verdicts.iter().find(|v| v.label.starts_with(prefix))
-}
-
-fn mark(v: Option<&Verdict>) -> &'static str {
-    v.map_or("–", Verdict::mark)
+/// ✓, ✗ or · for a check the solution ran, – for one it did not.
+fn mark(s: &Solution<f64>, kind: CheckKind) -> &'static str {
+    s.checks
+        .get(kind)
+        .map_or("–", |c| Verdict::mark_of(c.passed))
 }
 
 /// Rows of (label, one cell per model).
-fn rows(traces: &[(FrictionModel, Trace)], fmt: &Fmt) -> Vec<(String, Vec<String>)> {
+fn rows(compared: &[Compared], fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     let cell = |t: &Trace, stage: &str, name: &str| {
         t.value(stage, name)
             .map_or("–".to_string(), |v| fmt.value(v))
@@ -35,104 +40,109 @@ fn rows(traces: &[(FrictionModel, Trace)], fmt: &Fmt) -> Vec<(String, Vec<String
     let mut rows = vec![
         (
             "regime".to_string(),
-            traces
+            compared
                 .iter()
-                .map(|(_, t)| cell(t, "friction_clamp", "regime"))
+                .map(|c| c.solution.regime().map_or("–", regime_name).to_string())
                 .collect(),
         ),
         (
             "impulse (world)".to_string(),
-            traces
+            compared
                 .iter()
-                .map(|(_, t)| final_impulse(t).map_or("–".into(), |v| fmt.value(v)))
+                .map(|c| {
+                    c.solution
+                        .final_impulse_world()
+                        .map_or("–".into(), |g| fmt.value(&Value::from(g)))
+                })
                 .collect(),
         ),
     ];
-    let first = &traces[0].1;
-    for (n, name) in first.bodies.iter().enumerate() {
-        let n = n + 1;
-        if first.value("apply_impulse", &format!("v{n}")).is_none() {
+    let first = &compared[0];
+    for (n, name) in first.trace.bodies.iter().enumerate() {
+        let applied = first.solution.applied.as_ref();
+        if applied.is_none_or(|a| a.bodies[n].is_none()) {
             continue;
         }
+        let n = n + 1;
         rows.push((
             format!("{name} v′"),
-            traces
+            compared
                 .iter()
-                .map(|(_, t)| cell(t, "apply_impulse", &format!("v{n}")))
+                .map(|Compared { trace: t, .. }| cell(t, "apply_impulse", &format!("v{n}")))
                 .collect(),
         ));
         rows.push((
             format!("{name} ω′"),
-            traces
+            compared
                 .iter()
-                .map(|(_, t)| cell(t, "apply_impulse", &format!("w{n}")))
+                .map(|Compared { trace: t, .. }| cell(t, "apply_impulse", &format!("w{n}")))
                 .collect(),
         ));
     }
     rows.push((
         "energy change".into(),
-        traces
+        compared
             .iter()
-            .map(|(_, t)| cell(t, "checks", "energy_change"))
+            .map(|Compared { trace: t, .. }| cell(t, "checks", "energy_change"))
             .collect(),
     ));
     rows.push((
         "slip speed after".into(),
-        traces
+        compared
             .iter()
-            .map(|(_, t)| cell(t, "checks", "slip_speed_after"))
+            .map(|Compared { trace: t, .. }| cell(t, "checks", "slip_speed_after"))
             .collect(),
     ));
     rows.push((
         "inside friction cone".into(),
-        traces
+        compared
             .iter()
-            .map(|(_, t)| mark(verdict(t, "impulse inside")).into())
+            .map(|c| mark(&c.solution, CheckKind::FrictionCone).into())
             .collect(),
     ));
     rows.push((
         "normal target met".into(),
-        traces
+        compared
             .iter()
-            .map(|(_, t)| mark(verdict(t, "separating velocity")).into())
+            .map(|c| mark(&c.solution, CheckKind::Restitution).into())
             .collect(),
     ));
     rows.push((
         "energy does not rise".into(),
-        traces
+        compared
             .iter()
-            .map(|(_, t)| mark(verdict(t, "kinetic energy")).into())
+            .map(|c| mark(&c.solution, CheckKind::Energy).into())
             .collect(),
     ));
     rows
 }
 
-pub fn text(traces: &[(FrictionModel, Trace)], fmt: &Fmt) -> String {
-    let t = &traces[0].1;
+pub fn text(compared: &[Compared], fmt: &Fmt) -> String {
+    let t = &compared[0].trace;
     let mut out = format!(
         "Friction models compared — {} ({}), contact {}\n\n",
         t.title, t.lesson, t.contact_label
     );
-    let rows = rows(traces, fmt);
+    let rows = rows(compared, fmt);
     let label_w = rows
         .iter()
         .map(|(l, _)| l.chars().count())
         .max()
         .unwrap_or(0);
-    let col_w: Vec<usize> = (0..traces.len())
+    let col_w: Vec<usize> = (0..compared.len())
         .map(|i| {
             rows.iter()
                 .map(|(_, c)| c[i].chars().count())
-                .chain([traces[i].0.name().len()])
+                .chain([compared[i].model.name().len()])
                 .max()
                 .unwrap_or(0)
         })
         .collect();
     let pad = |s: &str, w: usize| format!("{s}{}", " ".repeat(w.saturating_sub(s.chars().count())));
     let mut header = pad("", label_w);
-    for (i, (m, _)) in traces.iter().enumerate() {
+    for (i, c) in compared.iter().enumerate() {
         header.push_str("  ");
-        header.push_str(&pad(m.name(), col_w[i]));
+        header.push_str(&pad(c.model.name(), col_w[i]));
     }
     out.push_str(header.trim_end());
     out.push('\n');
@@ -151,10 +161,10 @@ pub fn text(traces: &[(FrictionModel, Trace)], fmt: &Fmt) -> String {
     out
 }
 
-pub fn json(traces: &[(FrictionModel, Trace)]) -> String {
-    let models: Vec<_> = traces
+pub fn json(compared: &[Compared]) -> String {
+    let models: Vec<_> = compared
         .iter()
-        .map(|(m, t)| json!({ "model": m.name(), "solution": super::json::to_json(t) }))
+        .map(|c| json!({ "model": c.model.name(), "solution": super::json::to_json(&c.trace) }))
         .collect();
     serde_json::to_string_pretty(&json!({ "models": models })).expect("JSON") + "\n"
 }

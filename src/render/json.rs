@@ -1,4 +1,5 @@
-//! The JSON contract of GUIDE §4: full f64 values, one object per stage.
+//! The JSON of `solve --format json`, documented in `docs/json.md`: full f64
+//! values, one object per stage.
 
 use serde_json::{json, Map, Value as J};
 
@@ -30,7 +31,7 @@ pub fn to_json(trace: &Trace) -> J {
         .map(|s| {
             let values: Map<String, J> = s.values.iter().map(|(n, v)| (n.clone(), value(v))).collect();
             let notes: Vec<J> = s.notes.iter().map(|n| J::String(fmt.fill(n, s, false))).collect();
-            json!({ "id": s.id, "title": s.title, "skipped": s.skipped, "values": values, "notes": notes })
+            json!({ "id": s.id.json_name(), "title": s.title, "skipped": s.skipped, "values": values, "notes": notes })
         })
         .collect();
     let after: Map<String, J> = trace

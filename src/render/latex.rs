@@ -14,13 +14,14 @@ pub const PACKAGES: &str = "\\usepackage{amsmath}\n\\usepackage{amssymb}";
 /// The formula as rows of an aligned block: `lhs &= rhs`, `&= numbers`,
 /// `&= result` (a row that repeats the previous one is left out).
 pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
-    let (lhs, rhs) = f.latex.split_once(" = ").unwrap_or((&f.latex, ""));
+    let latex = f.latex();
+    let (lhs, rhs) = latex.split_once(" = ").unwrap_or((&latex, ""));
     let mut right: Vec<String> = Vec::new();
     if !rhs.trim().is_empty() {
         right.push(rhs.trim().to_string());
     }
-    if let Some(s) = &f.substituted_latex {
-        right.push(fmt.fill(s, step, true));
+    if let Some(s) = f.substituted_latex() {
+        right.push(fmt.fill(&s, step, true));
     }
     if let Some(r) = f.result.as_ref().and_then(|r| step.lookup(r)) {
         let r = fmt.value_latex(r);

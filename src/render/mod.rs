@@ -1,9 +1,13 @@
 //! Renderers: each reads a [`Trace`](crate::trace::Trace) and shows it.
 
-pub mod check;
+pub mod chart;
 pub mod compare;
+pub mod errata;
+pub mod figure;
 pub mod json;
 pub mod latex;
 pub mod markdown;
+pub mod resolve;
+pub mod run;
 pub mod svg;
 pub mod text;

@@ -53,11 +53,11 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
                     "{}. {} [{}] — skipped: {why}",
                     i + 1,
                     step.title,
-                    step.id
+                    step.id.json_name()
                 );
             }
             None => {
-                let _ = writeln!(out, "{}. {} [{}]", i + 1, step.title, step.id);
+                let _ = writeln!(out, "{}. {} [{}]", i + 1, step.title, step.id.json_name());
                 for f in &step.formulas {
                     for line in formula_lines(f, step, fmt) {
                         let _ = writeln!(out, "   {line}");

@@ -1,17 +1,31 @@
 //! The trace: one description of a worked solution, built from the stage
 //! records. Renderers (text, JSON, Markdown, LaTeX, SVG, TUI) read only this.
+//!
+//! - [`contact`]: one builder per stage of ONE contact, from a problem, its
+//!   solution and the names to show (reusable per resolver iteration);
+//! - `worked`: a lesson contact's whole [`Trace`] ([`build`]);
+//! - [`latex`]: the Unicode formulas in LaTeX, converted when rendered;
+//! - `scene`: what a picture of the contact needs ([`SceneView`]);
+//! - `stage_names`: each stage's title and short label.
 
-mod build;
-mod causes;
+mod acceleration;
+pub mod contact;
 pub mod latex;
 mod plane;
+pub mod resolver;
+pub mod run;
 mod scene;
+mod stage_names;
+mod worked;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-pub use build::build;
+use crate::physics::StageId;
+
+pub use acceleration::note_planar_acceleration;
 pub use plane::Plane;
-pub use scene::{BodyView, SceneView, ShapeView};
+pub use scene::{BodyView, ContactView, SceneView};
+pub use worked::build;
 
 /// A value a stage takes in or produces.
 #[derive(Debug, Clone, PartialEq)]
@@ -74,23 +88,36 @@ pub struct Formula {
     pub substituted: Option<String>,
     /// Name of the value (in `values` or `inputs`) that is the result.
     pub result: Option<String>,
-    /// LaTeX of `lhs = rhs`.
-    pub latex: String,
+}
+
+impl Formula {
+    /// LaTeX of `lhs = rhs`, made on demand (only the LaTeX and Markdown
+    /// renderers need it, so building a trace does not pay for it).
+    pub fn latex(&self) -> String {
+        format!(
+            "{} = {}",
+            latex::to_latex(&self.lhs),
+            latex::to_latex(&self.rhs)
+        )
+    }
+
     /// LaTeX of the substituted form, placeholders kept.
-    pub substituted_latex: Option<String>,
+    pub fn substituted_latex(&self) -> Option<String> {
+        self.substituted.as_deref().map(latex::to_latex)
+    }
 }
 
 /// One stage of the worked solution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Step {
-    pub id: &'static str,
+    pub id: StageId,
     pub title: &'static str,
     /// Why the stage did not run, when it did not.
     pub skipped: Option<String>,
     pub formulas: Vec<Formula>,
     /// Numbers the formulas take in (not part of the JSON contract).
     pub inputs: Vec<(String, Value)>,
-    /// Named results (the JSON contract, GUIDE §4).
+    /// Named results (the JSON contract, `docs/json.md`).
     pub values: Vec<(String, Value)>,
     pub notes: Vec<String>,
 }
@@ -122,7 +149,12 @@ pub struct Verdict {
 impl Verdict {
     /// ✓ passed, ✗ failed, · informs.
     pub fn mark(&self) -> &'static str {
-        match self.passed {
+        Verdict::mark_of(self.passed)
+    }
+
+    /// The mark of a check that passed (`Some(true)`), failed or informs (`None`).
+    pub fn mark_of(passed: Option<bool>) -> &'static str {
+        match passed {
             Some(true) => "✓",
             Some(false) => "✗",
             None => "·",
@@ -158,7 +190,7 @@ pub struct Trace {
 
 impl Trace {
     pub fn stage(&self, id: &str) -> Option<&Step> {
-        self.stages.iter().find(|s| s.id == id)
+        self.stages.iter().find(|s| s.id.json_name() == id)
     }
 
     /// A stage's named value.

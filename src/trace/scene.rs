@@ -1,28 +1,10 @@
 //! What a picture of the contact needs: bodies with shapes and states before
-//! and after, the contact point, the normal, the arms and the impulse.
+//! and after, the contact point, the normal, the arms and the impulse. A
+//! figure of several contacts takes bodies and a list of [`ContactView`]s.
 
-use crate::lesson::{Lesson, Shape};
+use crate::lesson::Lesson;
 use crate::physics::solve::Solution;
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ShapeView {
-    Sphere {
-        radius: f64,
-    },
-    /// Full side lengths along the body axes.
-    Box {
-        sides: [f64; 3],
-    },
-    /// Axis along body y.
-    Cylinder {
-        radius: f64,
-        height: f64,
-    },
-    /// The plane through the contact point, perpendicular to the normal.
-    HalfSpace,
-    /// No shape given: drawn as a marker.
-    Marker,
-}
+use crate::physics::Shape;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyView {
@@ -30,7 +12,8 @@ pub struct BodyView {
     pub movable: bool,
     /// 1 or 2: the body's slot in the contact; 0 when not in this contact.
     pub slot: usize,
-    pub shape: ShapeView,
+    /// `None` when the lesson gives no shape (drawn as a marker).
+    pub shape: Option<Shape>,
     pub position: [f64; 3],
     pub orientation: [f64; 4],
     pub position_after: [f64; 3],
@@ -44,7 +27,40 @@ pub struct BodyView {
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneView {
     pub bodies: Vec<BodyView>,
+    /// The contact's number in the lesson (from 0).
+    pub contact: usize,
     pub point: [f64; 3],
+    pub normal: [f64; 3],
+    pub penetration: f64,
+    /// The impulse body 1 receives (world), when one is applied.
+    pub impulse: Option<[f64; 3]>,
+}
+
+impl SceneView {
+    /// The contact, its bodies by index into `bodies`.
+    pub fn contact_view(&self) -> ContactView {
+        let slot = |n: usize| self.bodies.iter().position(|b| b.slot == n);
+        ContactView {
+            number: self.contact,
+            bodies: [slot(1), slot(2)],
+            point: self.point,
+            normal: self.normal,
+            penetration: self.penetration,
+            impulse: self.impulse,
+        }
+    }
+}
+
+/// One contact of a scene, between bodies given by index into a list of
+/// [`BodyView`]s (their `slot` is not used).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactView {
+    /// Its number in the scene (file order, from 0).
+    pub number: usize,
+    /// Body 1 and body 2 (`None` against the immovable world).
+    pub bodies: [Option<usize>; 2],
+    pub point: [f64; 3],
+    /// Unit normal, from body 2 toward body 1.
     pub normal: [f64; 3],
     pub penetration: f64,
     /// The impulse body 1 receives (world), when one is applied.
@@ -70,20 +86,11 @@ pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Scen
         .map(|(index, b)| {
             let slot = slots.iter().position(|s| *s == Some(index));
             let after = slot.and_then(|s| solution.after(&problem, s));
-            let shape = match b.shape {
-                Some(Shape::Sphere(r)) | Some(Shape::HollowSphere(r)) => {
-                    ShapeView::Sphere { radius: r }
-                }
-                Some(Shape::Box(sides)) => ShapeView::Box { sides },
-                Some(Shape::Cylinder { radius, height }) => ShapeView::Cylinder { radius, height },
-                Some(Shape::HalfSpace) => ShapeView::HalfSpace,
-                None => ShapeView::Marker,
-            };
             BodyView {
                 name: b.name.clone(),
                 movable: b.movable(),
                 slot: slot.map_or(0, |s| s + 1),
-                shape,
+                shape: b.shape,
                 position: arr(b.position),
                 orientation: quat(b.orientation),
                 position_after: after.as_ref().map_or(arr(b.position), |a| arr(a.position)),
@@ -101,6 +108,7 @@ pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Scen
         .collect();
     SceneView {
         bodies,
+        contact: k,
         point: arr(contact.point),
         normal: arr(contact.normal),
         penetration: contact.penetration,

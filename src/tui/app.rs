@@ -204,7 +204,12 @@ impl App {
     /// Whether the results of the stage `id` may be shown (in the picture
     /// and the checks panel too).
     pub fn shown(&self, id: &str) -> bool {
-        match self.trace.stages.iter().position(|s| s.id == id) {
+        match self
+            .trace
+            .stages
+            .iter()
+            .position(|s| s.id.json_name() == id)
+        {
             Some(s) => self.revealed_all(s),
             None => true,
         }
@@ -232,7 +237,7 @@ impl App {
                 .values
                 .iter()
                 .chain(&step.inputs)
-                .any(|(n, _)| self.changed(step.id, n))
+                .any(|(n, _)| self.changed(step.id.json_name(), n))
     }
 
     /// Handles one key press in whatever mode is active.
@@ -456,7 +461,11 @@ fn count_changed(before: &Trace, after: &Trace) -> usize {
         .map(|s| {
             s.values
                 .iter()
-                .filter(|(n, v)| before.value(s.id, n).is_none_or(|old| !same(old, v)))
+                .filter(|(n, v)| {
+                    before
+                        .value(s.id.json_name(), n)
+                        .is_none_or(|old| !same(old, v))
+                })
                 .count()
         })
         .sum()

@@ -11,23 +11,6 @@ use ratatui::widgets::{Block, HighlightSpacing, List, ListItem, ListState, State
 use super::app::App;
 use super::wrap::{truncate, width};
 
-/// A short name for the stage list (the panel shows the full title).
-fn short_title(id: &str, title: &str) -> String {
-    match id {
-        "contact_frame" => "Contact frame",
-        "unit_impulse" => "Unit impulse",
-        "desired_delta_velocity" => "Desired Δv",
-        "impulse" => "Impulse",
-        "friction_clamp" => "Friction",
-        "apply_impulse" => "Apply impulse",
-        "nonlinear_projection" => "Projection",
-        "orientation_update" => "Orientation",
-        "checks" => "Checks",
-        _ => title,
-    }
-    .to_string()
-}
-
 /// The reason of a skipped stage up to its colon: `no friction (μ = 0)`.
 fn short_reason(why: &str) -> &str {
     why.split(':').next().unwrap_or(why).trim()
@@ -92,7 +75,7 @@ fn render_stages(app: &App, area: Rect, buf: &mut Buffer) {
         } else {
             Span::raw("  ")
         };
-        let name = format!("{} {}", s + 1, short_title(step.id, step.title));
+        let name = format!("{} {}", s + 1, step.id.label());
         let line = match &step.skipped {
             Some(why) => {
                 // As much of the reason as fits; the panel shows all of it.

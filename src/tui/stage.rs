@@ -134,7 +134,8 @@ fn overview(app: &App) -> Vec<Row> {
     for b in &lesson.bodies {
         let shape = b
             .shape
-            .map(|s| s.describe())
+            .as_ref()
+            .map(crate::lesson::shape::describe)
             .unwrap_or_else(|| "no shape".into());
         let text = if b.movable() {
             format!(
@@ -182,7 +183,7 @@ fn formula_rows(app: &App, step: &Step, f: &Formula, hide_result: bool) -> Vec<R
     let t = &app.theme;
     let fmt = &app.fmt;
     let pad = width(&f.lhs) + 3;
-    let changed = |names: &[&str]| names.iter().any(|n| app.changed(step.id, n));
+    let changed = |names: &[&str]| names.iter().any(|n| app.changed(step.id.json_name(), n));
     let mut rows = Vec::new();
     let mut first = true;
     let mut push = |text: String, style: Style, changed: bool| {
@@ -260,7 +261,9 @@ fn stage_rows(app: &App, s: usize) -> Vec<Row> {
     }
     for note in &step.notes {
         rows.push(Row {
-            changed: placeholders(note).iter().any(|n| app.changed(step.id, n)),
+            changed: placeholders(note)
+                .iter()
+                .any(|n| app.changed(step.id.json_name(), n)),
             ..Row::new(format!("· {}", app.fmt.fill(note, step, false)), t.note())
         });
     }

@@ -1,4 +1,4 @@
-//! Shared test helpers: snapshots live in the top-level `snapshots/` (GUIDE §6).
+//! Shared test helpers: snapshots live in the top-level `snapshots/`.
 #![allow(dead_code)]
 
 pub mod dd;

@@ -1,0 +1,191 @@
+//! `resolve --show position:K` / `velocity:K`: the single-contact worked
+//! solution of the contact taken at iteration K, with the bodies as that
+//! iteration finds them — the student's way from the scene to one contact's
+//! stages.
+
+use std::io::Write;
+
+use super::io;
+use crate::cli::{ResolveFormat, Show};
+use crate::error::AppError;
+use crate::format::Fmt;
+use crate::lesson::Lesson;
+use crate::physics::resolver::{
+    Implementation, Observer, PositionMoves, Resolver, ResolverBody, VelocityImpulse,
+};
+use crate::physics::ResolverParams;
+use crate::render;
+
+/// What the chosen iteration found and did.
+struct Moment {
+    contact: usize,
+    value: f64,
+    bodies: Vec<ResolverBody<f64>>,
+    /// The resolver's own move or impulse, described.
+    action: String,
+}
+
+/// Keeps the bodies and the contact of one iteration of one phase.
+struct Capture {
+    velocity: bool,
+    iteration: usize,
+    names: Vec<String>,
+    bodies: Option<Vec<ResolverBody<f64>>>,
+    moment: Option<Moment>,
+    /// Iterations the phase ran.
+    used: [usize; 2],
+}
+
+impl Capture {
+    fn name(&self, slots: &[Option<usize>; 2], i: usize) -> &str {
+        slots[i].map_or("", |b| self.names[b].as_str())
+    }
+}
+
+impl Observer<f64> for Capture {
+    fn before_position(&mut self, i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
+        self.used[0] = i + 1;
+        if !self.velocity && i == self.iteration {
+            self.bodies = Some(bodies.to_vec());
+        }
+    }
+    fn position_taken(&mut self, i: usize, k: usize, penetration: f64, moves: &PositionMoves<f64>) {
+        if self.velocity || i != self.iteration {
+            return;
+        }
+        let f = Fmt::default();
+        let v = |x: &nalgebra::Vector3<f64>| format!("({})", f.list(x.as_slice()));
+        let action = (0..2)
+            .filter_map(|s| {
+                let m = moves.bodies[s].as_ref()?;
+                Some(format!(
+                    "{} Δp {}, Δθ {}",
+                    self.name(&moves.slots, s),
+                    v(&m.linear_change),
+                    v(&m.angular_change)
+                ))
+            })
+            .collect::<Vec<_>>()
+            .join("; ");
+        self.moment = Some(Moment {
+            contact: k,
+            value: penetration,
+            bodies: self.bodies.take().unwrap_or_default(),
+            action: format!("it moved {action}"),
+        });
+    }
+    fn before_velocity(&mut self, i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
+        self.used[1] = i + 1;
+        if self.velocity && i == self.iteration {
+            self.bodies = Some(bodies.to_vec());
+        }
+    }
+    fn velocity_taken(&mut self, i: usize, k: usize, desired: f64, impulse: &VelocityImpulse<f64>) {
+        if !self.velocity || i != self.iteration {
+            return;
+        }
+        let f = Fmt::default();
+        self.moment = Some(Moment {
+            contact: k,
+            value: desired,
+            bodies: self.bodies.take().unwrap_or_default(),
+            action: format!(
+                "its impulse was g = ({}) in contact space",
+                f.list(impulse.impulse_contact.as_slice())
+            ),
+        });
+    }
+}
+
+pub fn show(
+    lesson: &Lesson,
+    params: &ResolverParams,
+    implementation: Implementation,
+    show: Show,
+    format: ResolveFormat,
+    fmt: &Fmt,
+    out: &mut dyn Write,
+) -> Result<(), AppError> {
+    let world = lesson.world::<f64>();
+    let mut resolver = Resolver::prepare(&world, params);
+    let mut capture = Capture {
+        velocity: show.velocity,
+        iteration: show.iteration,
+        names: resolver
+            .bodies
+            .iter()
+            .map(|b| lesson.bodies[b.id.0].name.clone())
+            .collect(),
+        bodies: None,
+        moment: None,
+        used: [0, 0],
+    };
+    resolver.position_phase(implementation, &mut capture);
+    if show.velocity {
+        resolver.velocity_phase(implementation, &mut capture);
+    }
+    let phase = if show.velocity {
+        "velocity"
+    } else {
+        "position"
+    };
+    let Some(moment) = capture.moment else {
+        let used = capture.used[usize::from(show.velocity)];
+        return Err(AppError::Usage(format!(
+            "--show {phase}:{}: the {phase} phase of '{}' ran {used} iteration(s), numbered from 0",
+            show.iteration, lesson.id
+        )));
+    };
+    // The lesson as that iteration finds it.
+    let mut at = lesson.clone();
+    for b in &moment.bodies {
+        let def = &mut at.bodies[b.id.0];
+        def.position = b.position;
+        def.orientation = b.orientation.normalize();
+        def.velocity = b.velocity;
+        def.angular_velocity = b.angular_velocity;
+    }
+    let k = moment.contact;
+    at.contacts[k].penetration = if show.velocity { 0.0 } else { moment.value };
+    let trace = crate::worked_solution(&at, k);
+    let preamble = preamble(lesson, show, &moment, fmt);
+    let text = match format {
+        ResolveFormat::Json => render::json::render(&trace),
+        ResolveFormat::Text => format!("{preamble}\n{}", render::text::render(&trace, fmt)),
+        ResolveFormat::Md => format!(
+            "> {}\n\n{}",
+            render::markdown::escape(&preamble).replace('\n', "\n> "),
+            render::markdown::document(&[trace], fmt, &[])
+        ),
+    };
+    out.write_all(text.as_bytes()).map_err(io)
+}
+
+fn preamble(lesson: &Lesson, show: Show, m: &Moment, fmt: &Fmt) -> String {
+    let label = lesson.contact_label(m.contact);
+    if show.velocity {
+        format!(
+            "Velocity iteration {} of `resolve {}` takes contact {label} at desired Δv {}.\n\
+             The bodies are as that iteration finds them: positions after the position phase,\n\
+             velocities after the earlier velocity iterations. The penetration is left out (0):\n\
+             the position phase has dealt with it. The resolver keeps every contact's r and I⁻¹\n\
+             from before the phases, as the reference engine does; {}.\n",
+            show.iteration,
+            lesson.id,
+            fmt.num(m.value),
+            m.action
+        )
+    } else {
+        format!(
+            "Position iteration {} of `resolve {}` takes contact {label} at penetration {}\n\
+             (the resolver's bookkeeping). The bodies are as that iteration finds them (earlier\n\
+             iterations moved them). The resolver keeps every contact's r and I⁻¹ from before the\n\
+             phase, as the reference engine does; {}. The velocity stages below treat this\n\
+             contact alone: the resolver's velocity phase comes after the position phase.\n",
+            show.iteration,
+            lesson.id,
+            fmt.num(m.value),
+            m.action
+        )
+    }
+}

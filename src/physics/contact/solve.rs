@@ -1,0 +1,166 @@
+//! Runs the stages of one contact in the lecture's order.
+
+use nalgebra::{Quaternion, Vector3};
+
+use super::checks::{run_checks, CheckInputs, Checks};
+use super::stages::*;
+use super::{Problem, Real, StageId};
+
+/// Every stage record of one resolved contact. A stage the contact does not
+/// need is `None`; [`Solution::skip`] says why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution<T: Real> {
+    pub frame: ContactFrame<T>,
+    pub unit: UnitImpulse<T>,
+    pub desired: DesiredVelocity<T>,
+    /// `None` when the contact is separating (Δv ≤ 0): no impulse is applied.
+    pub impulse: Option<Impulse<T>>,
+    /// `None` without friction or without an impulse.
+    pub friction: Option<FrictionClamp<T>>,
+    pub applied: Option<AppliedImpulse<T>>,
+    /// `None` without penetration.
+    pub projection: Option<Projection<T>>,
+    /// `None` when projection rotates nothing.
+    pub orientation: Option<OrientationUpdate<T>>,
+    pub checks: Checks<T>,
+}
+
+/// Why a stage was skipped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Skip {
+    Separating,
+    NoFriction,
+    NoPenetration,
+    NoRotation,
+}
+
+/// A body's state after the contact is resolved.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyAfter<T: Real> {
+    pub position: Vector3<T>,
+    pub orientation: Quaternion<T>,
+    pub velocity: Vector3<T>,
+    pub angular_velocity: Vector3<T>,
+}
+
+pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
+    let contact = &problem.contact;
+    let frame = contact_frame(problem);
+    let unit = unit_impulse(problem, &frame, contact.has_friction());
+    let desired = desired_delta_velocity(problem, &frame);
+    let closing = desired.desired > T::zero();
+    let impulse = closing.then(|| impulse(problem, &frame, &unit, &desired));
+    let friction = impulse
+        .as_ref()
+        .filter(|_| contact.has_friction())
+        .map(|g| friction_clamp(problem, &frame, &unit, &desired, g));
+    let final_impulse = final_impulse_world(impulse.as_ref(), friction.as_ref());
+    let applied = final_impulse.map(|g| apply_impulse(problem, &frame, &g));
+    let projection =
+        (contact.penetration > T::zero()).then(|| nonlinear_projection(problem, &frame));
+    let orientation = projection
+        .as_ref()
+        .map(|p| orientation_update(problem, p))
+        .filter(|o| o.bodies.iter().any(Option::is_some));
+    let checks = run_checks(&CheckInputs {
+        problem,
+        frame: &frame,
+        desired: &desired,
+        impulse: impulse.as_ref(),
+        applied: applied.as_ref(),
+        friction: friction.as_ref(),
+        projection: projection.as_ref(),
+        orientation: orientation.as_ref(),
+    });
+    Solution {
+        frame,
+        unit,
+        desired,
+        impulse,
+        friction,
+        applied,
+        projection,
+        orientation,
+        checks,
+    }
+}
+
+impl<T: Real> Solution<T> {
+    /// The reason a stage was skipped; `None` when it ran.
+    pub fn skip(&self, stage: StageId) -> Option<Skip> {
+        match stage {
+            StageId::Impulse | StageId::ApplyImpulse if self.impulse.is_none() => {
+                Some(Skip::Separating)
+            }
+            StageId::FrictionClamp if self.friction.is_none() => Some(if self.impulse.is_none() {
+                Skip::Separating
+            } else {
+                Skip::NoFriction
+            }),
+            StageId::NonlinearProjection if self.projection.is_none() => Some(Skip::NoPenetration),
+            StageId::OrientationUpdate if self.orientation.is_none() => {
+                Some(if self.projection.is_none() {
+                    Skip::NoPenetration
+                } else {
+                    Skip::NoRotation
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// The impulse actually applied (after the friction clamp), world space.
+    pub fn final_impulse_world(&self) -> Option<Vector3<T>> {
+        final_impulse_world(self.impulse.as_ref(), self.friction.as_ref())
+    }
+
+    /// The impulse actually applied, contact space.
+    pub fn final_impulse_contact(&self) -> Option<Vector3<T>> {
+        self.friction
+            .as_ref()
+            .map(|f| f.impulse_contact)
+            .or(self.impulse.as_ref().map(|g| g.impulse_contact))
+    }
+
+    /// Whether the contact sticks or slides, when friction ran.
+    pub fn regime(&self) -> Option<FrictionRegime> {
+        self.friction.as_ref().map(|f| f.regime)
+    }
+
+    /// True when the contact is closing, so an impulse is applied.
+    pub fn closing(&self) -> bool {
+        self.impulse.is_some()
+    }
+
+    /// κ(M) of the friction matrix, when the 3×3 system was solved.
+    pub fn condition_number(&self) -> Option<T> {
+        self.impulse
+            .as_ref()
+            .and_then(|g| g.solve.as_ref())
+            .map(|s| s.condition_number)
+    }
+
+    /// State of body slot `i` after velocity and position resolution.
+    pub fn after(&self, problem: &Problem<T>, i: usize) -> Option<BodyAfter<T>> {
+        let body = problem.bodies[i].as_ref()?;
+        let applied = self.applied.as_ref().and_then(|a| a.bodies[i].as_ref());
+        let moved = self.projection.as_ref().and_then(|p| p.bodies[i].as_ref());
+        let turned = self.orientation.as_ref().and_then(|o| o.bodies[i].as_ref());
+        Some(BodyAfter {
+            position: moved.map_or(body.position, |m| m.position),
+            orientation: turned.map_or(body.orientation, |o| o.normalised),
+            velocity: applied.map_or(body.velocity, |a| a.v),
+            angular_velocity: applied.map_or(body.angular_velocity, |a| a.w),
+        })
+    }
+}
+
+/// The impulse applied: the friction clamp's when it ran, else the impulse stage's.
+fn final_impulse_world<T: Real>(
+    impulse: Option<&Impulse<T>>,
+    friction: Option<&FrictionClamp<T>>,
+) -> Option<Vector3<T>> {
+    friction
+        .map(|f| f.impulse_world)
+        .or(impulse.map(|g| g.impulse_world))
+}

@@ -1,0 +1,116 @@
+//! Stage 2: velocity change at the contact per unit impulse along the normal
+//! (lecture: "Velocity Change By Unit Impulse"), and with friction the full
+//! 3×3 contact-space matrix `M = Cᵀ(Σ −[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::ContactFrame;
+use crate::physics::frame::skew;
+use crate::physics::{Problem, Real};
+
+/// One body's response to a unit impulse along d.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyUnitResponse<T: Real> {
+    pub inverse_mass: T,
+    /// World inverse inertia `R I_b⁻¹ Rᵀ`.
+    pub inverse_inertia_world: Matrix3<T>,
+    /// `u = r × d`, impulsive torque per unit impulse.
+    pub torque_per_unit_impulse: Vector3<T>,
+    /// `Δθ̇ = I⁻¹ u`, rotation per unit impulse.
+    pub rotation_per_unit_impulse: Vector3<T>,
+    /// `Δq̇ = Δθ̇ × r`, velocity of the contact point per unit impulse.
+    pub velocity_per_unit_impulse: Vector3<T>,
+    /// `Δq̇ · d`, the angular component along the normal.
+    pub angular: T,
+    /// `[r]×`, shown with the friction matrix.
+    pub skew_r: Matrix3<T>,
+    /// `−[r]× I⁻¹ [r]×` in world space (friction only).
+    pub angular_matrix_world: Option<Matrix3<T>>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnitImpulse<T: Real> {
+    pub bodies: [Option<BodyUnitResponse<T>>; 2],
+    /// `Δṗ_d = Σ 1/m_i`.
+    pub linear: T,
+    /// `Δq̇_t = Σ 1/m_i + Σ Δq̇_d,i`.
+    pub total: T,
+    /// Contact-space velocity change per unit impulse (built only with friction).
+    pub matrix: Option<Matrix3<T>>,
+}
+
+/// One body's response to a unit impulse along `d`, from its inverse mass,
+/// world inverse inertia and arm `r` (the resolver calls this with the values
+/// it prepared).
+pub fn body_unit_response<T: Real>(
+    inverse_mass: T,
+    inverse_inertia_world: Matrix3<T>,
+    r: Vector3<T>,
+    d: &Vector3<T>,
+    with_matrix: bool,
+) -> BodyUnitResponse<T> {
+    let torque = r.cross(d);
+    let rotation = inverse_inertia_world * torque;
+    let velocity = rotation.cross(&r);
+    let skew_r = skew(&r);
+    let angular_matrix_world = with_matrix.then(|| -(skew_r * inverse_inertia_world * skew_r));
+    BodyUnitResponse {
+        inverse_mass,
+        inverse_inertia_world,
+        torque_per_unit_impulse: torque,
+        rotation_per_unit_impulse: rotation,
+        velocity_per_unit_impulse: velocity,
+        angular: velocity.dot(d),
+        skew_r,
+        angular_matrix_world,
+    }
+}
+
+/// The two bodies' responses summed: `Δq̇_t` and, with friction, the
+/// contact-space matrix `M = Cᵀ(Σ −[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
+pub fn combine_unit_responses<T: Real>(
+    bodies: [Option<BodyUnitResponse<T>>; 2],
+    contact_to_world: &Matrix3<T>,
+    with_matrix: bool,
+) -> UnitImpulse<T> {
+    let linear = bodies
+        .iter()
+        .flatten()
+        .fold(T::zero(), |s, b| s + b.inverse_mass);
+    let total = bodies.iter().flatten().fold(linear, |s, b| s + b.angular);
+    let matrix = with_matrix.then(|| {
+        let world = bodies
+            .iter()
+            .flatten()
+            .filter_map(|b| b.angular_matrix_world)
+            .fold(Matrix3::zeros(), |s, m| s + m);
+        let c = contact_to_world;
+        c.transpose() * world * c + Matrix3::identity() * linear
+    });
+    UnitImpulse {
+        bodies,
+        linear,
+        total,
+        matrix,
+    }
+}
+
+pub fn unit_impulse<T: Real>(
+    problem: &Problem<T>,
+    frame: &ContactFrame<T>,
+    with_matrix: bool,
+) -> UnitImpulse<T> {
+    let d = frame.normal();
+    let bodies = [0, 1].map(|i| {
+        let body = problem.bodies[i].as_ref()?;
+        let r = frame.r[i]?;
+        Some(body_unit_response(
+            body.inverse_mass,
+            body.inverse_inertia_world(),
+            r,
+            &d,
+            with_matrix,
+        ))
+    });
+    combine_unit_responses(bodies, &frame.contact_to_world, with_matrix)
+}

@@ -1,0 +1,293 @@
+//! Every tunable of the physics, one documented struct per level, each field
+//! saying what it trades and its default (written rapier-style).
+//!
+//! - [`ContactParams`]: how ONE contact is resolved (per contact, overridable);
+//! - [`StepParams`]: what belongs to a time step (the frame's duration);
+//! - [`ResolverParams`]: how a SET of contacts is resolved together;
+//! - [`WorldParams`], [`SleepParams`]: the forces and sleep of a simulation.
+
+use nalgebra::Vector3;
+
+use super::step::SleepMode;
+use super::{c, Real};
+
+/// How friction is modelled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FrictionModel {
+    /// The lecture and reference engine: solve for the impulse that removes all
+    /// sliding, then clamp it to the Coulomb cone.
+    #[default]
+    Millington,
+    /// Companion lectures 002/003: impulse `j(n + μ_k t)`, t against the sliding direction.
+    KineticDirection,
+    /// Seed 004: remove the planar velocity below `v_c μ_s`, otherwise scale it by μ_d.
+    VelocityScaling,
+}
+
+impl FrictionModel {
+    pub const ALL: [FrictionModel; 3] = [
+        FrictionModel::Millington,
+        FrictionModel::KineticDirection,
+        FrictionModel::VelocityScaling,
+    ];
+
+    /// The name used in lesson files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            FrictionModel::Millington => "millington",
+            FrictionModel::KineticDirection => "kinetic-direction",
+            FrictionModel::VelocityScaling => "velocity-scaling",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|m| m.name() == name)
+    }
+}
+
+/// How penetration is resolved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ProjectionMethod {
+    /// Inverse-mass weighting only: no rotation.
+    Linear,
+    /// The lecture's nonlinear projection: linear and angular inertia share the move.
+    #[default]
+    Nonlinear,
+}
+
+impl ProjectionMethod {
+    /// The name used in lesson files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            ProjectionMethod::Linear => "linear",
+            ProjectionMethod::Nonlinear => "nonlinear",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [ProjectionMethod::Linear, ProjectionMethod::Nonlinear]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
+/// How one contact is resolved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactParams<T: Real> {
+    /// Restitution is forced to 0 below this closing speed: trades bounce
+    /// fidelity at low speed for resting contacts that do not vibrate
+    /// (default: 0; the reference engine uses 0.25).
+    pub velocity_limit: T,
+    /// Max angular move as a multiple of |r⊥| in projection: trades
+    /// believable rotation for robustness against over-rotation
+    /// (default: 0.2; `inf` = off).
+    pub angular_limit: T,
+    /// Share of the penetration resolved in one projection, (0, 1]: trades
+    /// speed of separation for stability when many contacts touch one body
+    /// (default: 1).
+    pub relaxation: T,
+    /// Linear or nonlinear projection: trades the lecture's believable
+    /// rotation for a cheaper move without rotation (default: nonlinear).
+    pub projection: ProjectionMethod,
+}
+
+impl<T: Real> Default for ContactParams<T> {
+    fn default() -> Self {
+        ContactParams {
+            velocity_limit: T::zero(),
+            angular_limit: c(0.2),
+            relaxation: T::one(),
+            projection: ProjectionMethod::Nonlinear,
+        }
+    }
+}
+
+/// What belongs to a time step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepParams<T: Real> {
+    /// Last frame's duration, for acceleration compensation: the velocity
+    /// `a·duration` that one frame of acceleration builds up is not bounced
+    /// back (default: 0.01 s).
+    pub duration: T,
+}
+
+impl<T: Real> Default for StepParams<T> {
+    fn default() -> Self {
+        StepParams { duration: c(0.01) }
+    }
+}
+
+/// Which contact velocity restitution is applied to in the velocity phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RestitutionFrom {
+    /// The contact velocity when the contact is taken, as the reference engine does.
+    #[default]
+    Current,
+    /// The contact velocity before the phase began, as Box2D v3 does.
+    Initial,
+}
+
+impl RestitutionFrom {
+    pub fn name(self) -> &'static str {
+        match self {
+            RestitutionFrom::Current => "current",
+            RestitutionFrom::Initial => "initial",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [RestitutionFrom::Current, RestitutionFrom::Initial]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
+/// How a set of contacts is resolved together (the lecture's two phases).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ResolverParams {
+    /// Most position-phase iterations: trades time for penetration left
+    /// (default: `None` = 8 × the number of contacts).
+    pub position_iterations: Option<usize>,
+    /// Most velocity-phase iterations: trades time for closing velocity left
+    /// (default: `None` = 8 × the number of contacts).
+    pub velocity_iterations: Option<usize>,
+    /// Penetrations at or below this are left alone: trades resting jitter
+    /// for penetration left (default: 0.01).
+    pub position_epsilon: f64,
+    /// Desired Δv at or below this is left alone: trades time for closing
+    /// velocity left (default: 0.01).
+    pub velocity_epsilon: f64,
+    /// Restitution from the current or the initial contact velocity (default: current).
+    pub restitution_from: RestitutionFrom,
+}
+
+impl Default for ResolverParams {
+    fn default() -> Self {
+        ResolverParams {
+            position_iterations: None,
+            velocity_iterations: None,
+            position_epsilon: 0.01,
+            velocity_epsilon: 0.01,
+            restitution_from: RestitutionFrom::Current,
+        }
+    }
+}
+
+impl ResolverParams {
+    /// The position iteration limit for `contacts` contacts.
+    pub fn position_limit(&self, contacts: usize) -> usize {
+        self.position_iterations
+            .unwrap_or(8usize.saturating_mul(contacts))
+    }
+
+    /// The velocity iteration limit for `contacts` contacts.
+    pub fn velocity_limit(&self, contacts: usize) -> usize {
+        self.velocity_iterations
+            .unwrap_or(8usize.saturating_mul(contacts))
+    }
+}
+
+/// The forces of a simulated world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WorldParams<T: Real> {
+    /// Uniform acceleration of every movable body (default: (0, −9.81, 0) m/s²).
+    pub gravity: Vector3<T>,
+    /// Fraction of linear velocity kept per second, (0, 1]: trades energy
+    /// lost for stability (default: 0.99; 1 = no damping).
+    pub linear_damping: T,
+    /// Fraction of angular velocity kept per second, (0, 1] (default: 0.99).
+    pub angular_damping: T,
+}
+
+impl<T: Real> Default for WorldParams<T> {
+    fn default() -> Self {
+        WorldParams {
+            gravity: Vector3::new(T::zero(), c(-9.81), T::zero()),
+            linear_damping: c(0.99),
+            angular_damping: c(0.99),
+        }
+    }
+}
+
+/// When bodies stop being simulated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SleepParams<T: Real> {
+    /// Whether bodies may sleep: trades the cost of simulating resting bodies
+    /// for the risk of freezing one that should still move (default: true).
+    pub enabled: bool,
+    /// Motion (recency-weighted `v·v + ω·ω`) below which a body sleeps
+    /// (default: 0.3, the reference engine's).
+    pub epsilon: T,
+    /// Per body, as the lecture; or per island of touching bodies (default: body).
+    pub mode: SleepMode,
+    /// Island mode: how long every body of an island must have been slow (default: 0.5 s).
+    pub island_time: T,
+}
+
+impl<T: Real> Default for SleepParams<T> {
+    fn default() -> Self {
+        SleepParams {
+            enabled: true,
+            epsilon: c(0.3),
+            mode: SleepMode::Body,
+            island_time: c(0.5),
+        }
+    }
+}
+
+/// Which contacts a pair of boxes generates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum BoxBoxMode {
+    /// One point–face or edge–edge contact, as the reference engine: cheap,
+    /// but a box resting on a box rocks on one point.
+    Single,
+    /// The reference face clipped against the incident face, up to 4 points:
+    /// costs more, stacks stand (default).
+    #[default]
+    Manifold,
+}
+
+impl BoxBoxMode {
+    pub fn name(self) -> &'static str {
+        match self {
+            BoxBoxMode::Single => "single",
+            BoxBoxMode::Manifold => "manifold",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [BoxBoxMode::Single, BoxBoxMode::Manifold]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
+/// Restitution and friction of the contacts generated for a body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    pub restitution: f64,
+    pub static_friction: f64,
+    pub dynamic_friction: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            restitution: 0.0,
+            static_friction: 0.0,
+            dynamic_friction: 0.0,
+        }
+    }
+}
+
+impl Material {
+    /// The coefficients of a contact between two bodies, as Box2D combines
+    /// them: restitution the larger, friction the geometric mean √(μ₁μ₂).
+    pub fn combine(&self, other: &Material) -> Material {
+        Material {
+            restitution: self.restitution.max(other.restitution),
+            static_friction: (self.static_friction * other.static_friction).sqrt(),
+            dynamic_friction: (self.dynamic_friction * other.dynamic_friction).sqrt(),
+        }
+    }
+}

@@ -1,0 +1,103 @@
+//! The indexed resolver: the same contacts in the same order as the scan
+//! ([`super::scan`]), found with a priority queue (a tournament tree:
+//! largest value first, lowest index on ties, [`super::queue`]) and updated
+//! through the body → contacts adjacency,
+//! so an iteration touches only the contacts of the bodies it moved. The
+//! per-contact steps are the scan's own functions, so the results are
+//! bit-identical. Nothing is allocated per iteration.
+//!
+//! A value that stays at or below epsilon is not replayed in the queue: it
+//! can never be taken, and the queue's stale entry for it is at or below
+//! epsilon too, so the first contact above epsilon is still exact.
+
+use super::observer::Observer;
+use super::{position, velocity, Phase, PhaseOutcome, Resolver};
+use crate::physics::Real;
+
+/// Marks each contact of the taken contact's bodies once per iteration and
+/// calls `visit` on it (a contact may belong to both bodies).
+fn each_neighbour<T: Real>(
+    r: &mut Resolver<T>,
+    taken: [Option<usize>; 2],
+    stamp: usize,
+    mut visit: impl FnMut(&mut Resolver<T>, usize),
+) {
+    for b in taken.into_iter().flatten() {
+        for n in r.adjacency.offsets[b]..r.adjacency.offsets[b + 1] {
+            let j = r.adjacency.contacts[n];
+            if r.stamps[j] != stamp {
+                r.stamps[j] = stamp;
+                visit(r, j);
+            }
+        }
+    }
+}
+
+pub fn position_phase<T: Real, O: Observer<T>>(
+    r: &mut Resolver<T>,
+    obs: &mut O,
+) -> PhaseOutcome<T> {
+    let (limit, epsilon) = r.limits(Phase::Position);
+    let mut queue = std::mem::take(&mut r.queue);
+    queue.fill(r.contacts.iter().map(|c| c.penetration));
+    let mut used = 0;
+    while used < limit {
+        let Some((k, penetration)) = queue.top().filter(|(_, v)| *v > epsilon) else {
+            break;
+        };
+        obs.before_position(used, k, &r.bodies);
+        let taken = r.contacts[k].bodies;
+        let moves = position::take(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
+        obs.position_taken(used, k, penetration, &moves);
+        r.stamp += 1;
+        let stamp = r.stamp;
+        each_neighbour(r, taken, stamp, |r, j| {
+            let c = &mut r.contacts[j];
+            let from = c.penetration;
+            c.penetration = position::updated_penetration(c, &taken, &moves);
+            if !(from <= epsilon && c.penetration <= epsilon) {
+                queue.update(j, c.penetration);
+            }
+            obs.penetration_updated(j, from, c.penetration);
+        });
+        used += 1;
+    }
+    r.queue = queue;
+    r.finish(Phase::Position, used, obs)
+}
+
+pub fn velocity_phase<T: Real, O: Observer<T>>(
+    r: &mut Resolver<T>,
+    obs: &mut O,
+) -> PhaseOutcome<T> {
+    let (limit, epsilon) = r.limits(Phase::Velocity);
+    let from = r.params.restitution_from;
+    let mut queue = std::mem::take(&mut r.queue);
+    queue.fill(r.contacts.iter().map(|c| c.desired));
+    let mut used = 0;
+    while used < limit {
+        let Some((k, desired)) = queue.top().filter(|(_, v)| *v > epsilon) else {
+            break;
+        };
+        obs.before_velocity(used, k, &r.bodies);
+        let taken = r.contacts[k].bodies;
+        let friction = r.setups[k].friction.map(|f| &r.friction[f]);
+        let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
+        obs.velocity_taken(used, k, desired, &impulse);
+        r.stamp += 1;
+        let stamp = r.stamp;
+        each_neighbour(r, taken, stamp, |r, j| {
+            let c = &mut r.contacts[j];
+            let before = c.desired;
+            c.velocity = velocity::updated_velocity(c, &taken, &impulse);
+            c.desired = super::desired_of(c, from);
+            if !(before <= epsilon && c.desired <= epsilon) {
+                queue.update(j, c.desired);
+            }
+            obs.desired_updated(j, before, c.desired);
+        });
+        used += 1;
+    }
+    r.queue = queue;
+    r.finish(Phase::Velocity, used, obs)
+}

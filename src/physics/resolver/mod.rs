@@ -1,0 +1,227 @@
+//! A SET of contacts resolved together, as the lecture ("Resolving
+//! Penetration", "Updating Penetration Depths") and its reference engine do:
+//!
+//! 1. [`prepare`] every contact once: basis, r, contact velocity, desired Δv;
+//! 2. the **position phase**: up to `position_iterations` times, take the
+//!    contact with the largest penetration above `position_epsilon` (first in
+//!    file order on ties), resolve it by projection, update the penetration of
+//!    every contact sharing a moved body;
+//! 3. the **velocity phase**: up to `velocity_iterations` times, take the
+//!    contact with the largest desired Δv above `velocity_epsilon`, apply its
+//!    impulse, update the contact velocity (and desired Δv) of every contact
+//!    sharing a changed body.
+//!
+//! Two implementations give bit-identical results: [`scan`] (the lecture's
+//! loop, O(contacts) per iteration) and [`indexed`] (a priority queue and a
+//! body → contacts adjacency). Each iteration is reported to an
+//! [`Observer`]; [`Silent`] reports nowhere.
+
+pub mod checks;
+pub mod indexed;
+pub mod observer;
+pub mod position;
+pub mod prepare;
+pub mod queue;
+pub mod row;
+pub mod scan;
+pub mod velocity;
+
+pub use observer::{Observer, PositionMoves, Silent, VelocityImpulse};
+pub use prepare::{
+    desired_of, Adjacency, ContactSetup, FrictionData, Prepared, ResolverBody, ResolverContact,
+};
+
+use crate::physics::params::ResolverParams;
+use crate::physics::{c, Real, World};
+use queue::TournamentTree;
+
+/// Which of the two implementations runs the phases.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Implementation {
+    /// The lecture's loop: scan every contact, twice per iteration.
+    Scan,
+    /// Priority queue and adjacency: touches only the contacts of moved bodies.
+    #[default]
+    Indexed,
+}
+
+impl Implementation {
+    pub fn name(self) -> &'static str {
+        match self {
+            Implementation::Scan => "scan",
+            Implementation::Indexed => "indexed",
+        }
+    }
+}
+
+/// The two phases.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Phase {
+    Position,
+    Velocity,
+}
+
+impl Phase {
+    pub fn name(self) -> &'static str {
+        match self {
+            Phase::Position => "position",
+            Phase::Velocity => "velocity",
+        }
+    }
+}
+
+/// What a phase did. `max_before` / `max_after` are the resolver's own
+/// bookkeeping (the linearly updated penetrations or desired Δv).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PhaseOutcome<T: Real> {
+    pub phase: Phase,
+    pub iterations_used: usize,
+    pub iteration_limit: usize,
+    pub epsilon: T,
+    pub max_before: T,
+    /// The largest value left and its contact (the first on ties).
+    pub max_after: T,
+    pub max_after_contact: usize,
+    /// True when the limit stopped the phase with a value still above epsilon.
+    pub limit_reached: bool,
+}
+
+/// The resolver's state: prepared bodies and contacts, and storage allocated
+/// once for the indexed implementation.
+#[derive(Debug, Clone)]
+pub struct Resolver<T: Real> {
+    pub bodies: Vec<ResolverBody<T>>,
+    pub contacts: Vec<ResolverContact<T>>,
+    pub setups: Vec<ContactSetup<T>>,
+    pub friction: Vec<FrictionData<T>>,
+    pub adjacency: Adjacency,
+    pub params: ResolverParams,
+    queue: TournamentTree<T>,
+    stamps: Vec<usize>,
+    stamp: usize,
+    /// The largest value of each phase before it ran.
+    before: [T; 2],
+}
+
+impl<T: Real> Resolver<T> {
+    /// Prepares every contact of `world` (nothing in `world` changes).
+    pub fn prepare(world: &World<T>, params: &ResolverParams) -> Self {
+        let prepare::Prepared {
+            bodies,
+            contacts,
+            setups,
+            friction,
+            adjacency,
+        } = prepare::prepare(world, params.restitution_from);
+        let n = contacts.len();
+        Resolver {
+            bodies,
+            contacts,
+            setups,
+            friction,
+            adjacency,
+            params: *params,
+            queue: TournamentTree::with_capacity(n),
+            stamps: vec![0; n],
+            stamp: 0,
+            before: [T::zero(); 2],
+        }
+    }
+
+    /// Runs the position phase.
+    pub fn position_phase<O: Observer<T>>(
+        &mut self,
+        implementation: Implementation,
+        obs: &mut O,
+    ) -> PhaseOutcome<T> {
+        self.before[0] = self.max(Phase::Position).0;
+        match implementation {
+            Implementation::Scan => scan::position_phase(self, obs),
+            Implementation::Indexed => indexed::position_phase(self, obs),
+        }
+    }
+
+    /// Runs the velocity phase.
+    pub fn velocity_phase<O: Observer<T>>(
+        &mut self,
+        implementation: Implementation,
+        obs: &mut O,
+    ) -> PhaseOutcome<T> {
+        self.before[1] = self.max(Phase::Velocity).0;
+        match implementation {
+            Implementation::Scan => scan::velocity_phase(self, obs),
+            Implementation::Indexed => indexed::velocity_phase(self, obs),
+        }
+    }
+
+    /// Prepare, position phase, velocity phase.
+    pub fn resolve<O: Observer<T>>(
+        world: &World<T>,
+        params: &ResolverParams,
+        implementation: Implementation,
+        obs: &mut O,
+    ) -> (Self, [PhaseOutcome<T>; 2]) {
+        let mut r = Self::prepare(world, params);
+        let position = r.position_phase(implementation, obs);
+        let velocity = r.velocity_phase(implementation, obs);
+        (r, [position, velocity])
+    }
+
+    /// Writes the bodies' new state into `world`.
+    pub fn write_back(&self, world: &mut World<T>) {
+        for b in &self.bodies {
+            let state = &mut world.body_mut(b.id).state;
+            state.position = b.position;
+            state.orientation = b.orientation;
+            state.velocity = b.velocity;
+            state.angular_velocity = b.angular_velocity;
+        }
+    }
+
+    /// The iteration limit and epsilon of a phase.
+    fn limits(&self, phase: Phase) -> (usize, T) {
+        let n = self.contacts.len();
+        match phase {
+            Phase::Position => (
+                self.params.position_limit(n),
+                c(self.params.position_epsilon),
+            ),
+            Phase::Velocity => (
+                self.params.velocity_limit(n),
+                c(self.params.velocity_epsilon),
+            ),
+        }
+    }
+
+    /// The phase's largest bookkeeping value and its contact (first on ties).
+    pub fn max(&self, phase: Phase) -> (T, usize) {
+        let value = |c: &ResolverContact<T>| match phase {
+            Phase::Position => c.penetration,
+            Phase::Velocity => c.desired,
+        };
+        let mut best = (-c::<T>(f64::INFINITY), 0);
+        for (k, contact) in self.contacts.iter().enumerate() {
+            if value(contact) > best.0 {
+                best = (value(contact), k);
+            }
+        }
+        best
+    }
+
+    fn finish<O: Observer<T>>(&self, phase: Phase, used: usize, obs: &mut O) -> PhaseOutcome<T> {
+        let (limit, epsilon) = self.limits(phase);
+        let (max_after, max_after_contact) = self.max(phase);
+        let outcome = PhaseOutcome {
+            phase,
+            iterations_used: used,
+            iteration_limit: limit,
+            epsilon,
+            max_before: self.before[phase as usize],
+            max_after,
+            max_after_contact,
+            limit_reached: used == limit && max_after > epsilon,
+        };
+        obs.phase_end(phase, &outcome);
+        outcome
+    }
+}

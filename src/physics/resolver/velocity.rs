@@ -1,0 +1,103 @@
+//! The velocity phase's two per-contact steps, shared by both implementations
+//! so they perform the same floating-point operations:
+//! - [`take`]: the impulse of one contact (frictionless `Δv/Δq̇_t`, or the
+//!   3×3 sticking impulse and the friction clamp of its model), applied to its bodies;
+//! - [`updated_velocity`]: a contact's velocity after the taken contact changed
+//!   bodies it shares, `v_j += s·Cⱼᵀ(Δv + Δω × r_j)` (s = +1 for body 1 of
+//!   contact j, −1 for body 2); its desired Δv is then recomputed.
+
+use nalgebra::Vector3;
+
+use super::observer::VelocityImpulse;
+use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
+use crate::physics::stages::apply_impulse::body_velocity_change;
+use crate::physics::stages::friction::{clamp, ClampInputs};
+use crate::physics::stages::impulse::impulse_contact;
+use crate::physics::{FrictionModel, Problem, Real};
+
+/// The impulse of contact `c` for its bookkeeping desired Δv and velocity,
+/// applied to its bodies.
+pub fn take<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+    bodies: &mut [ResolverBody<T>],
+) -> VelocityImpulse<T> {
+    let sticking = friction.is_some_and(|f| f.model != FrictionModel::KineticDirection);
+    let (g, _) = impulse_contact(
+        c.desired,
+        &c.velocity,
+        setup.unit_total,
+        friction.map(|f| &f.matrix),
+        sticking,
+    );
+    let (impulse_contact, regime) = match friction {
+        None => (g, None),
+        Some(f) => {
+            let clamped = clamp(ClampInputs {
+                model: f.model,
+                static_friction: f.static_friction,
+                dynamic_friction: f.dynamic_friction,
+                impulse_contact: g,
+                contact_velocity: c.velocity,
+                desired: c.desired,
+                total: setup.unit_total,
+                matrix: Some(&f.matrix),
+                // The normal impulse that meets Δv (the closed form's j without acceleration).
+                closed_form_j: c.desired / setup.unit_total,
+                contact_to_world: &c.basis,
+            });
+            (clamped.impulse_contact, Some(clamped.regime))
+        }
+    };
+    let impulse_world = c.basis * impulse_contact;
+    let mut changes = [None, None];
+    for (i, slot) in c.bodies.iter().enumerate() {
+        let Some(b) = *slot else { continue };
+        let body = &mut bodies[b];
+        let change = body_velocity_change(
+            body.inverse_mass,
+            &body.inverse_inertia_world,
+            &c.r[i],
+            &impulse_world,
+            Problem::<T>::sign(i),
+            (&body.velocity, &body.angular_velocity),
+        );
+        body.velocity = change.v;
+        body.angular_velocity = change.w;
+        changes[i] = Some(change);
+    }
+    VelocityImpulse {
+        slots: c.bodies,
+        impulse_contact,
+        impulse_world,
+        regime,
+        bodies: changes,
+    }
+}
+
+/// The contact velocity of `c` after the taken contact (slots `taken`)
+/// applied `impulse`, in the reference engine's order (slot of `c`, then
+/// slot of the taken contact).
+pub fn updated_velocity<T: Real>(
+    c: &ResolverContact<T>,
+    taken: &[Option<usize>; 2],
+    impulse: &VelocityImpulse<T>,
+) -> Vector3<T> {
+    let mut velocity = c.velocity;
+    for (b, body) in c.bodies.iter().enumerate() {
+        let Some(body) = body else { continue };
+        for (d, changed) in taken.iter().enumerate() {
+            if *changed != Some(*body) {
+                continue;
+            }
+            let Some(m) = impulse.bodies[d].as_ref() else {
+                continue;
+            };
+            let delta = m.dv + m.dw.cross(&c.r[b]);
+            let sign = if b == 0 { T::one() } else { -T::one() };
+            velocity += c.basis.tr_mul(&delta) * sign;
+        }
+    }
+    velocity
+}

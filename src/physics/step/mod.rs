@@ -1,0 +1,13 @@
+//! Time stepping: integrate forces, generate contacts from the shapes,
+//! resolve them together, update sleep (the lecture's "Resting Contacts and
+//! Friction" and "Sleep"). The pieces: [`integrate`] one body, [`sleep`]
+//! bookkeeping, [`energy`] of the world.
+
+pub mod energy;
+pub mod integrate;
+pub mod simulation;
+pub mod sleep;
+
+pub use integrate::{integrate, Loads};
+pub use simulation::{BlowUp, Event, SimParams, Simulation, StepReport};
+pub use sleep::{SleepMode, SleepState};

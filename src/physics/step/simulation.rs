@@ -1,0 +1,523 @@
+//! One time step of a world, as the reference engine runs it: integrate the
+//! awake bodies, generate contacts from the shapes, wake sleepers that an
+//! awake body presses on, resolve the contacts together (position phase,
+//! then velocity phase), update sleep. What happened is reported per step.
+
+use nalgebra::Vector3;
+
+use super::energy;
+use super::integrate::{integrate, Loads};
+use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
+use crate::physics::collide::{BodyContact, ContactGenerator, Options};
+use crate::physics::params::{BoxBoxMode, Material};
+use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
+use crate::physics::{
+    c, to_f64, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Real, ResolverParams,
+    SleepParams, World, WorldParams,
+};
+
+/// Everything a simulation needs beyond its bodies.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimParams<T: Real> {
+    /// The time step (default: 1/60 s).
+    pub dt: T,
+    pub world: WorldParams<T>,
+    pub sleep: SleepParams<T>,
+    pub resolver: ResolverParams,
+    /// Parameters of every generated contact (velocity limit, angular limit, …).
+    pub contact: ContactParams<T>,
+    /// Acceleration compensation (the lecture's micro-collisions): the
+    /// velocity one step of acceleration builds up is not bounced back
+    /// (default: on). Off, a resting box vibrates.
+    pub acceleration_compensation: bool,
+    /// How a pair of boxes touches (default: manifold).
+    pub box_box: BoxBoxMode,
+    pub friction_model: FrictionModel,
+}
+
+impl<T: Real> Default for SimParams<T> {
+    fn default() -> Self {
+        SimParams {
+            dt: c(1.0 / 60.0),
+            world: WorldParams::default(),
+            sleep: SleepParams::default(),
+            resolver: ResolverParams::default(),
+            contact: ContactParams {
+                velocity_limit: c(0.25),
+                ..ContactParams::default()
+            },
+            acceleration_compensation: true,
+            box_box: BoxBoxMode::default(),
+            friction_model: FrictionModel::default(),
+        }
+    }
+}
+
+/// Something worth a line of its own in a run's log.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Event {
+    /// Two bodies (or a body and the world's immovable body) start touching.
+    ContactMade {
+        body1: BodyId,
+        body2: Option<BodyId>,
+    },
+    /// They stop touching.
+    ContactLost {
+        body1: BodyId,
+        body2: Option<BodyId>,
+    },
+    /// A contact closing at `closing` m/s leaves separating at `separating`.
+    Bounce {
+        body1: BodyId,
+        body2: Option<BodyId>,
+        closing: f64,
+        separating: f64,
+    },
+    /// A touching pair's contact points stop or start sliding.
+    Sticks {
+        body1: BodyId,
+        body2: Option<BodyId>,
+    },
+    Slides {
+        body1: BodyId,
+        body2: Option<BodyId>,
+        speed: f64,
+    },
+    FallsAsleep {
+        body: BodyId,
+    },
+    Wakes {
+        body: BodyId,
+    },
+    /// The position or velocity phase used all its iterations.
+    PositionLimit {
+        left: f64,
+    },
+    VelocityLimit {
+        left: f64,
+    },
+}
+
+/// What one step did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepReport {
+    pub step: u64,
+    /// Time at the end of the step.
+    pub time: f64,
+    pub contacts: usize,
+    pub awake: usize,
+    /// Deepest penetration of the step's contacts before resolution.
+    pub max_penetration: f64,
+    /// Deepest penetration left (the resolver's bookkeeping).
+    pub max_penetration_after: f64,
+    pub kinetic_energy: f64,
+    pub potential_energy: f64,
+    pub position_iterations: usize,
+    pub velocity_iterations: usize,
+    pub events: Vec<Event>,
+}
+
+/// Why a run stopped early.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BlowUp {
+    #[error("step {step}: body {body} has a non-finite {what}")]
+    NonFinite {
+        step: u64,
+        body: usize,
+        what: &'static str,
+    },
+    #[error("step {step}: the kinetic energy {energy:e} J is over 10⁶ times the scene's starting energy scale {scale:e} J; body {body} moves fastest")]
+    Energy {
+        step: u64,
+        body: usize,
+        energy: f64,
+        scale: f64,
+    },
+}
+
+/// A world stepping in time.
+#[derive(Debug, Clone)]
+pub struct Simulation<T: Real> {
+    /// The bodies; `contacts` holds the last step's generated contacts.
+    pub world: World<T>,
+    pub params: SimParams<T>,
+    /// Each body's coefficients.
+    pub materials: Vec<Material>,
+    pub sleep: Vec<SleepState<T>>,
+    pub step: u64,
+    pub time: f64,
+    generator: ContactGenerator<T>,
+    generated: Vec<BodyContact<T>>,
+    /// Touching pairs of the last step and whether they slid.
+    touching: Vec<(BodyId, Option<BodyId>, bool)>,
+    /// The energy scale blow-ups are measured against.
+    energy_scale: f64,
+}
+
+impl<T: Real> Simulation<T> {
+    pub fn new(world: World<T>, params: SimParams<T>, materials: Vec<Material>) -> Self {
+        let sleep = vec![SleepState::awake(params.sleep.epsilon); world.bodies.len()];
+        let mut sim = Simulation {
+            world,
+            params,
+            materials,
+            sleep,
+            step: 0,
+            time: 0.0,
+            generator: ContactGenerator::new(),
+            generated: Vec::new(),
+            touching: Vec::new(),
+            energy_scale: 0.0,
+        };
+        sim.world.contacts.clear();
+        let g = sim.params.world.gravity;
+        let scale = energy::kinetic(&sim.world) + potential_scale(&sim.world, &g);
+        sim.energy_scale = to_f64(scale).abs().max(1e-9);
+        sim
+    }
+
+    /// Number of awake movable bodies.
+    pub fn awake(&self) -> usize {
+        self.world
+            .bodies
+            .iter()
+            .zip(&self.sleep)
+            .filter(|(b, s)| b.movable && s.awake)
+            .count()
+    }
+
+    /// Advances one step without recording the resolver.
+    pub fn advance(&mut self) -> Result<StepReport, BlowUp> {
+        self.advance_observed(&mut Silent)
+    }
+
+    /// Advances one step; the resolver reports each iteration to `observer`.
+    pub fn advance_observed<O: Observer<T>>(
+        &mut self,
+        observer: &mut O,
+    ) -> Result<StepReport, BlowUp> {
+        let p = self.params.clone();
+        let mut events = Vec::new();
+        // 1. Integrate the awake movable bodies.
+        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
+            if body.movable && (sleep.awake || !p.sleep.enabled) {
+                integrate(
+                    &mut body.state,
+                    &p.world.gravity,
+                    &Loads::default(),
+                    p.world.linear_damping,
+                    p.world.angular_damping,
+                    p.dt,
+                );
+            }
+        }
+        self.world.step.duration = p.dt;
+        // 2. Generate contacts from the shapes.
+        self.generate_contacts();
+        let max_penetration = self
+            .world
+            .contacts
+            .iter()
+            .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
+        // 3. Wake sleepers that an awake body presses on.
+        if p.sleep.enabled {
+            self.wake_touched(&mut events);
+        }
+        let closing_before = self.normal_velocities();
+        // 4. Resolve the contacts together.
+        let (resolver, [position, velocity]) =
+            Resolver::resolve(&self.world, &p.resolver, Implementation::Indexed, observer);
+        resolver.write_back(&mut self.world);
+        // 5. Sleep.
+        if p.sleep.enabled {
+            self.update_sleep(&mut events);
+        }
+        self.step += 1;
+        self.time += to_f64(p.dt);
+        self.contact_events(&closing_before, &mut events);
+        if position.limit_reached {
+            events.push(Event::PositionLimit {
+                left: to_f64(position.max_after),
+            });
+        }
+        if velocity.limit_reached {
+            events.push(Event::VelocityLimit {
+                left: to_f64(velocity.max_after),
+            });
+        }
+        self.check_finite()?;
+        let kinetic = to_f64(energy::kinetic(&self.world));
+        if kinetic > 1e6 * self.energy_scale {
+            return Err(BlowUp::Energy {
+                step: self.step,
+                body: self.fastest(),
+                energy: kinetic,
+                scale: self.energy_scale,
+            });
+        }
+        Ok(StepReport {
+            step: self.step,
+            time: self.time,
+            contacts: self.world.contacts.len(),
+            awake: self.awake(),
+            max_penetration,
+            max_penetration_after: to_f64(position.max_after).max(0.0),
+            kinetic_energy: kinetic,
+            potential_energy: to_f64(energy::potential(&self.world, &p.world.gravity)),
+            position_iterations: position.iterations_used,
+            velocity_iterations: velocity.iterations_used,
+            events,
+        })
+    }
+
+    /// Replaces the world's contacts with those the shapes generate now.
+    fn generate_contacts(&mut self) {
+        let options = Options::with_mode(self.params.box_box);
+        self.generator
+            .generate_world(&self.world.bodies, &options, &mut self.generated);
+        let p = &self.params;
+        let duration = (!p.acceleration_compensation).then(T::zero);
+        self.world.contacts.clear();
+        for g in &self.generated {
+            let m = self.materials[g.body1.0].combine(&self.materials[g.body2.0]);
+            self.world.contacts.push(Contact {
+                body1: g.body1,
+                body2: Some(g.body2),
+                input: ContactInput {
+                    point: g.contact.point,
+                    normal: g.contact.normal,
+                    penetration: g.contact.penetration,
+                    restitution: c(m.restitution),
+                    static_friction: c(m.static_friction),
+                    dynamic_friction: c(m.dynamic_friction),
+                    friction_model: p.friction_model,
+                    settings: p.contact,
+                },
+                duration,
+            });
+        }
+    }
+
+    /// Relative normal velocity at each contact (negative when closing).
+    fn normal_velocities(&self) -> Vec<(T, T)> {
+        self.world
+            .contacts
+            .iter()
+            .map(|k| {
+                let v = self.point_velocity(k);
+                let n = k.input.normal;
+                let normal = v.dot(&n);
+                let tangential = (v - n * normal).norm();
+                (normal, tangential)
+            })
+            .collect()
+    }
+
+    fn point_velocity(&self, k: &Contact<T>) -> Vector3<T> {
+        let v = |id: Option<BodyId>| {
+            id.map_or(Vector3::zeros(), |id| {
+                let b = &self.world.body(id).state;
+                b.point_velocity(&(k.input.point - b.position))
+            })
+        };
+        v(Some(k.body1)) - v(k.body2)
+    }
+
+    /// A contact between an awake and a sleeping movable body that is
+    /// closing or penetrating wakes the sleeper; the world wakes nobody.
+    fn wake_touched(&mut self, events: &mut Vec<Event>) {
+        let eps = self.params.sleep.epsilon;
+        let mut woken = Vec::new();
+        for k in &self.world.contacts {
+            let Some(b2) = k.body2.filter(|b| self.world.body(*b).movable) else {
+                continue;
+            };
+            let (a, b) = (self.sleep[k.body1.0].awake, self.sleep[b2.0].awake);
+            if a != b {
+                woken.push(if a { b2 } else { k.body1 });
+            }
+        }
+        if self.params.sleep.mode == SleepMode::Island && !woken.is_empty() {
+            let roots = self.islands();
+            let asleep: Vec<usize> = woken.iter().map(|b| roots[b.0]).collect();
+            for (i, r) in roots.iter().enumerate() {
+                if asleep.contains(r) && !self.sleep[i].awake {
+                    woken.push(BodyId(i));
+                }
+            }
+        }
+        for id in woken {
+            if !self.sleep[id.0].awake {
+                self.sleep[id.0].wake(eps);
+                events.push(Event::Wakes { body: id });
+            }
+        }
+    }
+
+    /// Island roots of the movable bodies, joined by this step's contacts.
+    fn islands(&self) -> Vec<usize> {
+        let links = self.world.contacts.iter().filter_map(|k| {
+            let b2 = k.body2?;
+            (self.world.body(k.body1).movable && self.world.body(b2).movable)
+                .then_some((k.body1.0, b2.0))
+        });
+        islands(self.world.bodies.len(), links)
+    }
+
+    fn update_sleep(&mut self, events: &mut Vec<Event>) {
+        let p = self.params.sleep;
+        let dt = self.params.dt;
+        let mut falls = vec![false; self.world.bodies.len()];
+        for (i, (body, state)) in self
+            .world
+            .bodies
+            .iter()
+            .zip(self.sleep.iter_mut())
+            .enumerate()
+        {
+            if body.movable && state.awake {
+                falls[i] = update_motion(state, &body.state, p.epsilon, dt);
+            }
+        }
+        if p.mode == SleepMode::Island {
+            let roots = self.islands();
+            let n = self.world.bodies.len();
+            let mut ready = vec![true; n];
+            for i in 0..n {
+                let b = &self.world.bodies[i];
+                if b.movable && (self.sleep[i].slow_for < p.island_time || !self.sleep[i].awake) {
+                    ready[roots[i]] &=
+                        !self.sleep[i].awake || self.sleep[i].slow_for >= p.island_time;
+                }
+            }
+            for (i, fall) in falls.iter_mut().enumerate() {
+                *fall = self.world.bodies[i].movable && self.sleep[i].awake && ready[roots[i]];
+            }
+        }
+        for (i, fall) in falls.into_iter().enumerate() {
+            if fall {
+                put_to_sleep(&mut self.sleep[i], &mut self.world.bodies[i].state);
+                events.push(Event::FallsAsleep { body: BodyId(i) });
+            }
+        }
+    }
+
+    /// Contact made or lost, bounces, sticking and sliding, per touching pair.
+    fn contact_events(&mut self, before: &[(T, T)], events: &mut Vec<Event>) {
+        let after = self.normal_velocities();
+        let limit = to_f64(self.params.contact.velocity_limit).max(0.05);
+        // Per touching pair: whether any point slides, the fastest closing
+        // before and the fastest separating after.
+        let mut pairs: Vec<(BodyId, Option<BodyId>, bool)> = Vec::new();
+        let mut speeds: Vec<(f64, f64, bool)> = Vec::new();
+        for (i, k) in self.world.contacts.iter().enumerate() {
+            let vn0 = to_f64(before[i].0);
+            let (vn1, vt1) = (to_f64(after[i].0), to_f64(after[i].1));
+            let slides = vt1 > 1e-3;
+            let bouncy = k.input.restitution > T::zero();
+            match pairs.iter().position(|p| p.0 == k.body1 && p.1 == k.body2) {
+                Some(j) => {
+                    pairs[j].2 |= slides;
+                    speeds[j] = (
+                        speeds[j].0.max(-vn0),
+                        speeds[j].1.max(vn1),
+                        speeds[j].2 || bouncy,
+                    );
+                }
+                None => {
+                    pairs.push((k.body1, k.body2, slides));
+                    speeds.push((-vn0, vn1, bouncy));
+                }
+            }
+        }
+        let mut bounces = Vec::new();
+        for (p, (closing, separating, bouncy)) in pairs.iter().zip(&speeds) {
+            // A bounce: closing faster than the velocity limit, leaving at a
+            // speed worth naming (not round-off, not a resting micro-collision).
+            if *bouncy && *closing > limit && *separating > (0.05 * closing).max(1e-3) {
+                bounces.push(Event::Bounce {
+                    body1: p.0,
+                    body2: p.1,
+                    closing: *closing,
+                    separating: *separating,
+                });
+            }
+        }
+        for p in &pairs {
+            match self.touching.iter().find(|q| q.0 == p.0 && q.1 == p.1) {
+                None => events.push(Event::ContactMade {
+                    body1: p.0,
+                    body2: p.1,
+                }),
+                Some(q) if q.2 && !p.2 => events.push(Event::Sticks {
+                    body1: p.0,
+                    body2: p.1,
+                }),
+                Some(q) if !q.2 && p.2 => events.push(Event::Slides {
+                    body1: p.0,
+                    body2: p.1,
+                    speed: 0.0,
+                }),
+                _ => {}
+            }
+        }
+        for q in &self.touching {
+            if !pairs.iter().any(|p| p.0 == q.0 && p.1 == q.1) {
+                events.push(Event::ContactLost {
+                    body1: q.0,
+                    body2: q.1,
+                });
+            }
+        }
+        events.append(&mut bounces);
+        self.touching = pairs;
+    }
+
+    fn check_finite(&self) -> Result<(), BlowUp> {
+        for (i, b) in self
+            .world
+            .bodies
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.movable)
+        {
+            let s = &b.state;
+            let what = if !s.position.iter().all(|x| x.is_finite()) {
+                "position"
+            } else if !s.velocity.iter().all(|x| x.is_finite()) {
+                "velocity"
+            } else if !s.angular_velocity.iter().all(|x| x.is_finite()) {
+                "angular velocity"
+            } else if !s.orientation.coords.iter().all(|x| x.is_finite()) {
+                "orientation"
+            } else {
+                continue;
+            };
+            return Err(BlowUp::NonFinite {
+                step: self.step,
+                body: i,
+                what,
+            });
+        }
+        Ok(())
+    }
+
+    fn fastest(&self) -> usize {
+        let speed = |b: &crate::physics::Body<T>| to_f64(b.state.velocity.norm());
+        (0..self.world.bodies.len())
+            .filter(|i| self.world.bodies[*i].movable)
+            .max_by(|a, b| speed(&self.world.bodies[*a]).total_cmp(&speed(&self.world.bodies[*b])))
+            .unwrap_or(0)
+    }
+}
+
+/// A potential-energy scale: m |g| (the body's height above the lowest body + 1).
+fn potential_scale<T: Real>(world: &World<T>, g: &Vector3<T>) -> T {
+    world
+        .bodies
+        .iter()
+        .filter_map(|b| b.dynamic())
+        .fold(T::zero(), |s, b| {
+            s + b.mass * g.norm() * (b.position.norm() + T::one())
+        })
+}

@@ -1,0 +1,370 @@
+//! Line and scatter charts as SVG panels: series against a shared x axis,
+//! linear or logarithmic axes with round ticks, a legend, an optional cursor.
+//! Used for a simulation's energy and penetration over time and for the
+//! study's error against cost. Numbers go through the one formatter.
+
+use std::fmt::Write;
+
+use crate::format::Fmt;
+
+/// A scale of one axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Scale {
+    #[default]
+    Linear,
+    /// Base-10 logarithmic; values ≤ 0 are left out.
+    Log,
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mark {
+    #[default]
+    Line,
+    /// Dots, for a scatter plot.
+    Dots,
+    /// A step line (the value holds until the next point), for counts.
+    Steps,
+}
+
+/// One series.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+    pub colour: &'static str,
+    pub mark: Mark,
+    /// Dashed line: told apart without colour.
+    pub dashed: bool,
+}
+
+/// One chart panel.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Chart {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub x_scale: Scale,
+    pub y_scale: Scale,
+    pub series: Vec<Series>,
+    /// A vertical line at this x (the current time, say).
+    pub cursor: Option<f64>,
+    /// Joined points drawn over the series (a Pareto front).
+    pub front: Option<Vec<(f64, f64)>>,
+}
+
+/// Colours told apart by colour-blind readers (Okabe–Ito).
+pub const PALETTE: [&str; 8] = [
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#F0E442", "#000000",
+];
+
+const FONT: &str = "DejaVu Sans, Helvetica, Arial, sans-serif";
+
+/// Round tick values covering `[lo, hi]`.
+pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
+    if !(lo.is_finite() && hi.is_finite()) || hi < lo {
+        return vec![];
+    }
+    match scale {
+        Scale::Log => {
+            let (a, b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+            let step = ((b - a) / 6).max(1);
+            (a..=b)
+                .step_by(step as usize)
+                .map(|e| 10f64.powi(e))
+                .collect()
+        }
+        Scale::Linear => {
+            let span = if hi > lo { hi - lo } else { lo.abs().max(1.0) };
+            let raw = span / 5.0;
+            let mag = 10f64.powf(raw.log10().floor());
+            let step = [1.0, 2.0, 5.0, 10.0]
+                .into_iter()
+                .map(|m| m * mag)
+                .find(|s| span / s <= 6.0)
+                .unwrap_or(10.0 * mag);
+            let first = (lo / step).floor() * step;
+            let mut out = Vec::new();
+            let mut t = first;
+            while t <= hi + step * 1e-9 && out.len() < 20 {
+                out.push(if t.abs() < step * 1e-9 { 0.0 } else { t });
+                t += step;
+            }
+            if out.last().is_some_and(|&l| l < hi) {
+                out.push(t);
+            }
+            out
+        }
+    }
+}
+
+fn transform(x: f64, scale: Scale) -> Option<f64> {
+    match scale {
+        Scale::Linear => x.is_finite().then_some(x),
+        Scale::Log => (x > 0.0 && x.is_finite()).then(|| x.log10()),
+    }
+}
+
+/// The range of the finite values (after the scale), widened when flat.
+fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.filter_map(|v| transform(v, scale)) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    if hi - lo < 1e-12 * lo.abs().max(1.0) {
+        let pad = if scale == Scale::Log {
+            0.5
+        } else {
+            lo.abs().max(1.0) * 0.1
+        };
+        return (lo - pad, hi + pad);
+    }
+    (lo, hi)
+}
+
+impl Chart {
+    /// Draws the chart into `out` as an SVG group within the box
+    /// `(x, y, width, height)` of the page.
+    pub fn draw(&self, out: &mut String, (x0, y0, w, h): (f64, f64, f64, f64)) {
+        let fmt = Fmt::new(3);
+        let all = || self.series.iter().flat_map(|s| s.points.iter());
+        let (xl, xh) = range(all().map(|p| p.0), self.x_scale);
+        let (yl, yh) = range(all().map(|p| p.1), self.y_scale);
+        let back = |v: f64, s: Scale| if s == Scale::Log { 10f64.powf(v) } else { v };
+        let xt = ticks(back(xl, self.x_scale), back(xh, self.x_scale), self.x_scale);
+        let yt = ticks(back(yl, self.y_scale), back(yh, self.y_scale), self.y_scale);
+        // Axis ranges widened to the outer ticks.
+        let tick_range = |t: &[f64], s: Scale, lo: f64, hi: f64| {
+            let tt: Vec<f64> = t.iter().filter_map(|v| transform(*v, s)).collect();
+            let lo = tt.first().copied().unwrap_or(lo).min(lo);
+            let hi = tt.last().copied().unwrap_or(hi).max(hi);
+            (lo, hi)
+        };
+        let (xl, xh) = tick_range(&xt, self.x_scale, xl, xh);
+        let (yl, yh) = tick_range(&yt, self.y_scale, yl, yh);
+        let (left, top, right, bottom) = (x0 + 64.0, y0 + 28.0, x0 + w - 12.0, y0 + h - 40.0);
+        let px = |v: f64| left + (v - xl) / (xh - xl).max(1e-300) * (right - left);
+        let py = |v: f64| bottom - (v - yl) / (yh - yl).max(1e-300) * (bottom - top);
+        let _ = writeln!(
+            out,
+            r##"<g font-family="{FONT}" font-size="12"><text x="{:.1}" y="{:.1}" font-size="14" font-weight="bold">{}</text>"##,
+            x0 + 8.0,
+            y0 + 16.0,
+            escape(&self.title)
+        );
+        let _ = writeln!(
+            out,
+            r##"<rect x="{left:.1}" y="{top:.1}" width="{:.1}" height="{:.1}" fill="none" stroke="#888888"/>"##,
+            right - left,
+            bottom - top
+        );
+        for t in &xt {
+            let Some(v) = transform(*t, self.x_scale) else {
+                continue;
+            };
+            let x = px(v);
+            let _ = writeln!(
+                out,
+                r##"<line x1="{x:.1}" y1="{top:.1}" x2="{x:.1}" y2="{bottom:.1}" stroke="#E4E4E4"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"##,
+                bottom + 16.0,
+                fmt.num(*t)
+            );
+        }
+        for t in &yt {
+            let Some(v) = transform(*t, self.y_scale) else {
+                continue;
+            };
+            let y = py(v);
+            let _ = writeln!(
+                out,
+                r##"<line x1="{left:.1}" y1="{y:.1}" x2="{right:.1}" y2="{y:.1}" stroke="#E4E4E4"/><text x="{:.1}" y="{:.1}" text-anchor="end">{}</text>"##,
+                left - 6.0,
+                y + 4.0,
+                fmt.num(*t)
+            );
+        }
+        let _ = writeln!(
+            out,
+            r##"<text x="{:.1}" y="{:.1}" text-anchor="middle">{}</text>"##,
+            (left + right) / 2.0,
+            bottom + 34.0,
+            escape(&self.x_label)
+        );
+        let _ = writeln!(
+            out,
+            r##"<text x="{:.1}" y="{:.1}" text-anchor="middle" transform="rotate(-90 {:.1} {:.1})">{}</text>"##,
+            x0 + 14.0,
+            (top + bottom) / 2.0,
+            x0 + 14.0,
+            (top + bottom) / 2.0,
+            escape(&self.y_label)
+        );
+        for s in &self.series {
+            let pts: Vec<(f64, f64)> = s
+                .points
+                .iter()
+                .filter_map(|p| {
+                    Some((
+                        px(transform(p.0, self.x_scale)?),
+                        py(transform(p.1, self.y_scale)?),
+                    ))
+                })
+                .collect();
+            let dash = if s.dashed {
+                r#" stroke-dasharray="6 4""#
+            } else {
+                ""
+            };
+            match s.mark {
+                Mark::Dots => {
+                    for (x, y) in &pts {
+                        let _ = writeln!(
+                            out,
+                            r##"<circle cx="{x:.1}" cy="{y:.1}" r="3.5" fill="{}"/>"##,
+                            s.colour
+                        );
+                    }
+                }
+                Mark::Line | Mark::Steps => {
+                    let mut d = String::new();
+                    for (i, (x, y)) in pts.iter().enumerate() {
+                        if i == 0 {
+                            let _ = write!(d, "M{x:.1},{y:.1}");
+                        } else if s.mark == Mark::Steps {
+                            let _ = write!(d, " H{x:.1} V{y:.1}");
+                        } else {
+                            let _ = write!(d, " L{x:.1},{y:.1}");
+                        }
+                    }
+                    if !d.is_empty() {
+                        let _ = writeln!(
+                            out,
+                            r##"<path d="{d}" fill="none" stroke="{}" stroke-width="1.8"{dash}/>"##,
+                            s.colour
+                        );
+                    }
+                }
+            }
+        }
+        if let Some(front) = &self.front {
+            let pts: Vec<String> = front
+                .iter()
+                .filter_map(|p| {
+                    Some(format!(
+                        "{:.1},{:.1}",
+                        px(transform(p.0, self.x_scale)?),
+                        py(transform(p.1, self.y_scale)?)
+                    ))
+                })
+                .collect();
+            if pts.len() > 1 {
+                let _ = writeln!(
+                    out,
+                    r##"<polyline points="{}" fill="none" stroke="#000000" stroke-width="1.2" stroke-dasharray="2 3"/>"##,
+                    pts.join(" ")
+                );
+            }
+        }
+        if let Some(c) = self.cursor.and_then(|c| transform(c, self.x_scale)) {
+            let x = px(c);
+            let _ = writeln!(
+                out,
+                r##"<line x1="{x:.1}" y1="{top:.1}" x2="{x:.1}" y2="{bottom:.1}" stroke="#000000" stroke-dasharray="3 3"/>"##
+            );
+        }
+        // Legend, top right inside the frame.
+        for (i, s) in self.series.iter().enumerate() {
+            let y = top + 14.0 + 15.0 * i as f64;
+            let x = right - 150.0;
+            let dash = if s.dashed {
+                r#" stroke-dasharray="6 4""#
+            } else {
+                ""
+            };
+            let _ = writeln!(
+                out,
+                r##"<line x1="{x:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{}" stroke-width="2"{dash}/><text x="{:.1}" y="{y:.1}">{}</text>"##,
+                y - 4.0,
+                x + 18.0,
+                y - 4.0,
+                s.colour,
+                x + 24.0,
+                escape(&s.name)
+            );
+        }
+        out.push_str("</g>\n");
+    }
+}
+
+/// Text escaped for SVG.
+pub fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn linear_ticks_are_round_and_cover_the_range() {
+        assert_eq!(
+            ticks(0.0, 1.0, Scale::Linear),
+            vec![0.0, 0.2, 0.4, 0.6000000000000001, 0.8, 1.0]
+        );
+        let t = ticks(-3.2, 17.0, Scale::Linear);
+        assert!(t[0] <= -3.2 && *t.last().unwrap() >= 17.0, "{t:?}");
+        assert!(t.len() <= 8);
+    }
+
+    #[test]
+    fn log_ticks_are_powers_of_ten() {
+        assert_eq!(
+            ticks(0.003, 20.0, Scale::Log),
+            vec![1e-3, 1e-2, 1e-1, 1.0, 10.0, 100.0]
+        );
+    }
+
+    #[test]
+    fn a_chart_draws_every_series_and_skips_non_positive_values_on_a_log_axis() {
+        let chart = Chart {
+            title: "energy".into(),
+            x_label: "t (s)".into(),
+            y_label: "J".into(),
+            y_scale: Scale::Log,
+            series: vec![
+                Series {
+                    name: "kinetic".into(),
+                    points: vec![(0.0, 1.0), (1.0, 0.0), (2.0, 0.5)],
+                    colour: PALETTE[0],
+                    mark: Mark::Line,
+                    dashed: false,
+                },
+                Series {
+                    name: "a < b".into(),
+                    points: vec![(0.0, 2.0)],
+                    colour: PALETTE[1],
+                    mark: Mark::Dots,
+                    dashed: true,
+                },
+            ],
+            cursor: Some(1.0),
+            ..Chart::default()
+        };
+        let mut out = String::new();
+        chart.draw(&mut out, (0.0, 0.0, 400.0, 300.0));
+        assert_eq!(out.matches("<path").count(), 1);
+        // The zero is left out: the path has two points.
+        let path = out.lines().find(|l| l.starts_with("<path")).unwrap();
+        assert_eq!(path.matches('L').count(), 1);
+        assert_eq!(out.matches("<circle").count(), 1);
+        assert!(out.contains("a &lt; b"));
+        assert!(!out.contains("NaN"));
+    }
+}

@@ -1,0 +1,176 @@
+//! The errata findings (printed numbers against computed ones) as text (an
+//! errata sheet) or JSON, for the `check` subcommand.
+
+use std::fmt::Write;
+
+use serde_json::{json, Value as J};
+
+use crate::errata::{Item, Status, Tally};
+use crate::format::Fmt;
+use crate::lesson::printed::{PrintedNum, PrintedShape};
+use crate::trace::Value;
+
+/// The printed numbers as printed (their decimals kept), bracketed like the
+/// computed value (`[…]` for a quaternion, `(…)` for a vector).
+fn printed_text(p: &PrintedShape, computed: Option<&Value>, fmt: &Fmt) -> String {
+    let n = |x: &PrintedNum| fmt.fixed(x.value, x.decimals);
+    let list = |xs: &[PrintedNum]| xs.iter().map(n).collect::<Vec<_>>().join(", ");
+    match p {
+        PrintedShape::Scalar(x) => n(x),
+        PrintedShape::Vector(v) if matches!(computed, Some(Value::Quaternion(_))) => {
+            format!("[{}]", list(v))
+        }
+        PrintedShape::Vector(v) => format!("({})", list(v)),
+        PrintedShape::Matrix(m) => format!(
+            "[{}]",
+            m.iter()
+                .map(|r| format!("[{}]", list(r)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
+fn printed_json(p: &PrintedShape) -> J {
+    let list = |xs: &[PrintedNum]| J::Array(xs.iter().map(|x| json!(x.value)).collect());
+    match p {
+        PrintedShape::Scalar(x) => json!(x.value),
+        PrintedShape::Vector(v) => list(v),
+        PrintedShape::Matrix(m) => J::Array(m.iter().map(|r| list(r)).collect()),
+    }
+}
+
+fn mark(s: Status) -> &'static str {
+    match s {
+        Status::Agrees => "✓",
+        Status::KnownErratum => "!",
+        Status::NewDisagreement | Status::NotComputed => "✗",
+        Status::StaleErratum => "?",
+    }
+}
+
+fn name(i: &Item) -> String {
+    let mut s = format!("{}.{}", i.stage, i.value);
+    if let Some(c) = i.component {
+        let _ = write!(s, "[{c}]");
+    }
+    if i.contact > 0 {
+        let _ = write!(s, " (contact {})", i.contact);
+    }
+    s
+}
+
+/// "12 agree, 3 known errata", and any problem that is not zero.
+fn summary(t: &Tally) -> String {
+    let mut parts = vec![
+        format!("{} agree", t.agrees),
+        format!("{} known errata", t.known),
+    ];
+    for (n, what) in [
+        (t.new, "new disagreements"),
+        (t.stale, "stale errata"),
+        (t.not_computed, "not computed"),
+    ] {
+        if n > 0 {
+            parts.push(format!("{n} {what}"));
+        }
+    }
+    parts.join(", ")
+}
+
+/// The errata sheet: per lesson one line per agreeing number and a block per
+/// erratum or problem, then the totals. `lessons` gives each lesson's id and
+/// title, in order.
+pub fn text(lessons: &[(String, String)], items: &[Item], fmt: &Fmt) -> String {
+    let mut out = String::new();
+    let mut unprinted = Vec::new();
+    for (id, title) in lessons {
+        let mine: Vec<&Item> = items.iter().filter(|i| &i.lesson == id).collect();
+        if mine.is_empty() {
+            unprinted.push(id.as_str());
+            continue;
+        }
+        let _ = writeln!(
+            out,
+            "{id} — {title}\n  {} printed numbers: {}\n",
+            mine.len(),
+            summary(&Tally::of(mine.iter().copied()))
+        );
+        for i in &mine {
+            let computed = i.computed.as_ref().map_or("–".into(), |v| fmt.value(v));
+            let printed = printed_text(&i.printed, i.computed.as_ref(), fmt);
+            if i.status == Status::Agrees {
+                let _ = writeln!(
+                    out,
+                    "  {} {}: printed {printed}, computed {computed} — {}",
+                    mark(i.status),
+                    name(i),
+                    i.location
+                );
+                continue;
+            }
+            let _ = writeln!(
+                out,
+                "  {} {}: {}",
+                mark(i.status),
+                name(i),
+                i.status.name().to_uppercase()
+            );
+            let _ = writeln!(out, "      where     {}", i.location);
+            let _ = writeln!(out, "      printed   {printed}");
+            let _ = writeln!(out, "      computed  {computed}");
+            match (&i.erratum, i.status) {
+                (Some(e), Status::StaleErratum) => {
+                    let _ = writeln!(out, "      erratum   {e}\n      the number agrees: the erratum note is out of date");
+                }
+                (Some(e), _) => {
+                    let _ = writeln!(out, "      erratum   {e}");
+                }
+                (None, Status::NotComputed) => {
+                    let _ = writeln!(out, "      the trace has no such stage, value or component");
+                }
+                (None, _) => {
+                    let _ = writeln!(out, "      no erratum documents this difference");
+                }
+            }
+        }
+        out.push('\n');
+    }
+    if !unprinted.is_empty() {
+        let _ = writeln!(out, "No printed numbers: {}.\n", unprinted.join(", "));
+    }
+    let t = Tally::of(items);
+    let _ = writeln!(
+        out,
+        "{} lesson(s), {} printed numbers: {}.",
+        lessons.len(),
+        items.len(),
+        summary(&t)
+    );
+    if t.failures() == 0 {
+        out.push_str("Every disagreement is a known erratum.\n");
+    }
+    out
+}
+
+pub fn json(items: &[Item]) -> String {
+    let items: Vec<J> = items
+        .iter()
+        .map(|i| {
+            json!({
+                "lesson": i.lesson,
+                "contact": i.contact,
+                "stage": i.stage,
+                "value": i.value,
+                "component": i.component,
+                "where": i.location,
+                "printed": printed_json(&i.printed),
+                "computed": i.computed.as_ref().map_or(J::Null, super::json::value),
+                "agrees": i.agrees,
+                "erratum": i.erratum,
+                "status": i.status.name().replace(' ', "_"),
+            })
+        })
+        .collect();
+    serde_json::to_string_pretty(&json!({ "items": items })).expect("JSON") + "\n"
+}

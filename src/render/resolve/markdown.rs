@@ -1,0 +1,101 @@
+//! `resolve` as Markdown: the same content as the text, with a heading per
+//! part and tables for the contacts and the iterations.
+
+use std::fmt::Write;
+
+use super::{action, how, phase_heading, phase_notes, updates};
+use crate::format::Fmt;
+use crate::render::markdown::{cell, escape};
+use crate::trace::resolver::{ContactRow, PhaseTrace, ResolverTrace};
+
+fn table(out: &mut String, rows: &[ContactRow], fmt: &Fmt) {
+    let _ = writeln!(out, "| contact | penetration | v_s | desired Δv |");
+    let _ = writeln!(out, "|---|---|---|---|");
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "| {} | {} | {} | {} |",
+            cell(&r.label),
+            fmt.num(r.penetration),
+            fmt.num(r.separating),
+            fmt.num(r.desired)
+        );
+    }
+}
+
+fn phase(out: &mut String, p: &PhaseTrace, fmt: &Fmt) {
+    let _ = writeln!(out, "\n## {}\n", escape(&phase_heading(p, fmt)));
+    if !p.log.is_empty() {
+        let _ = writeln!(
+            out,
+            "| iteration | contact | value → after | moves or impulse | others changed |"
+        );
+        let _ = writeln!(out, "|---|---|---|---|---|");
+        for it in &p.log {
+            let _ = writeln!(
+                out,
+                "| {} | {} | {} → {} | {} | {} |",
+                it.iteration,
+                it.contact,
+                fmt.num(it.value),
+                fmt.num(it.own_after),
+                cell(&action(it, fmt)),
+                cell(&updates(it, fmt))
+            );
+        }
+        let _ = writeln!(out);
+    }
+    for note in phase_notes(p, fmt) {
+        let _ = writeln!(out, "- {}", escape(&note));
+    }
+}
+
+pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "# {} (`{}`)\n", escape(&trace.title), trace.lesson);
+    if !trace.source.is_empty() {
+        let _ = writeln!(out, "*Source:* {}\n", escape(&trace.source));
+    }
+    if !trace.summary.is_empty() {
+        let _ = writeln!(out, "{}\n", escape(&trace.summary));
+    }
+    let _ = writeln!(out, "{}\n", escape(&how(trace)));
+    for w in &trace.warnings {
+        let _ = writeln!(out, "> warning: {}\n", escape(w));
+    }
+    let _ = writeln!(out, "## Contacts before\n");
+    table(&mut out, &trace.before, fmt);
+    phase(&mut out, &trace.position, fmt);
+    phase(&mut out, &trace.velocity, fmt);
+    let _ = writeln!(out, "\n## Contacts after (the resolver's bookkeeping)\n");
+    table(&mut out, &trace.contacts_after, fmt);
+    let _ = writeln!(out, "\n## After\n");
+    let _ = writeln!(
+        out,
+        "| body | position | orientation | velocity | angular velocity |"
+    );
+    let _ = writeln!(out, "|---|---|---|---|---|");
+    for (name, a) in &trace.after {
+        let v = |x: &[f64]| format!("({})", fmt.list(x));
+        let _ = writeln!(
+            out,
+            "| {} | {} | [{}] | {} | {} |",
+            cell(name),
+            v(&a.position),
+            fmt.list(&a.orientation),
+            v(&a.velocity),
+            v(&a.angular_velocity)
+        );
+    }
+    let _ = writeln!(out, "\n## Checks\n");
+    for v in &trace.verdicts {
+        let _ = writeln!(
+            out,
+            "- {} **{}**: {}",
+            v.mark(),
+            escape(&v.label),
+            escape(&v.detail)
+        );
+    }
+    out
+}

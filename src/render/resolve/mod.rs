@@ -1,0 +1,146 @@
+//! `resolve`'s output: a scene's contacts resolved together, as text,
+//! Markdown and the JSON of GUIDE §7, all read from a
+//! [`ResolverTrace`](crate::trace::resolver::ResolverTrace).
+
+pub mod json;
+pub mod markdown;
+pub mod text;
+
+use crate::format::Fmt;
+use crate::physics::resolver::Phase;
+use crate::physics::RestitutionFrom;
+use crate::trace::resolver::{Iteration, PhaseTrace, ResolverTrace};
+
+/// Wall-clock seconds of each part of a resolve (the fastest of `--repeat` runs).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Seconds {
+    pub prepare: f64,
+    pub position: f64,
+    pub velocity: f64,
+}
+
+/// One line saying how the scene was resolved.
+pub fn how(trace: &ResolverTrace) -> String {
+    let restitution = match trace.restitution_from {
+        RestitutionFrom::Current => {
+            "restitution from each contact's velocity when it is taken (the reference engine's way)"
+        }
+        RestitutionFrom::Initial => {
+            "restitution from each contact's velocity before the velocity phase (Box2D's way)"
+        }
+    };
+    format!(
+        "{} contacts resolved together by the {} resolver; {restitution}.",
+        trace.before.len(),
+        trace.implementation.name()
+    )
+}
+
+/// The phase's heading: what it takes first, its epsilon and limit.
+pub fn phase_heading(p: &PhaseTrace, fmt: &Fmt) -> String {
+    match p.phase {
+        Phase::Position => format!(
+            "Position phase: the deepest penetration above position_epsilon {} first, at most {} iterations",
+            fmt.num(p.epsilon),
+            p.iteration_limit
+        ),
+        Phase::Velocity => format!(
+            "Velocity phase: the largest desired Δv above velocity_epsilon {} first, at most {} iterations",
+            fmt.num(p.epsilon),
+            p.iteration_limit
+        ),
+    }
+}
+
+/// The phase's summary notes: iterations used, what is left, the limit, worse contacts.
+pub fn phase_notes(p: &PhaseTrace, fmt: &Fmt) -> Vec<String> {
+    let what = match p.phase {
+        Phase::Position => "deepest penetration",
+        Phase::Velocity => "largest desired Δv",
+    };
+    let mut out = vec![format!(
+        "{} iteration(s) of {}; {what} before {}, left {} at contact {}.",
+        p.iterations_used,
+        p.iteration_limit,
+        fmt.num(p.max_before),
+        fmt.num(p.max_after),
+        p.max_after_contact
+    )];
+    if p.iteration_limit == 0 {
+        out.push(format!(
+            "The {} iteration limit is 0: nothing was resolved.",
+            p.phase.name()
+        ));
+    } else if p.iterations_used == 0 {
+        out.push(format!(
+            "Nothing above epsilon {}: nothing to resolve.",
+            fmt.num(p.epsilon)
+        ));
+    }
+    if p.limit_reached {
+        out.push(format!(
+            "{} iteration limit {} reached: {what} left {} at contact {}.",
+            p.phase.name(),
+            p.iteration_limit,
+            fmt.num(p.max_after),
+            p.max_after_contact
+        ));
+    }
+    if p.worsening_iterations > 0 {
+        out.push(format!(
+            "{} of {} iteration(s) made another contact worse (marked “worse”): {}.",
+            p.worsening_iterations,
+            p.iterations_used,
+            match p.phase {
+                Phase::Position => "moving a body out of one contact pushed it deeper into another",
+                Phase::Velocity => "an impulse at one contact made another close faster",
+            }
+        ));
+    }
+    out
+}
+
+/// `2: 0.03 → 0.041 (worse)`, the others an iteration changed.
+pub fn updates(it: &Iteration, fmt: &Fmt) -> String {
+    it.updated
+        .iter()
+        .map(|u| {
+            format!(
+                "{}: {} → {}{}",
+                u.contact,
+                fmt.num(u.from),
+                fmt.num(u.to),
+                if u.worse() { " (worse)" } else { "" }
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The moves (position) or the impulse (velocity) of an iteration.
+pub fn action(it: &Iteration, fmt: &Fmt) -> String {
+    let v = |x: &[f64; 3]| format!("({})", fmt.list(x));
+    if let Some(g) = &it.impulse_contact {
+        let regime = it
+            .regime
+            .map(|r| format!(", {r} friction"))
+            .unwrap_or_default();
+        return format!("g = {} in contact space{regime}", v(g));
+    }
+    it.moves
+        .iter()
+        .map(|m| {
+            let turn = if m.angular == [0.0; 3] {
+                String::new()
+            } else {
+                format!(
+                    ", Δθ {}{}",
+                    v(&m.angular),
+                    if m.limited { " (limited)" } else { "" }
+                )
+            };
+            format!("{} Δp {}{turn}", m.body, v(&m.linear))
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}

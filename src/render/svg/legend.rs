@@ -1,0 +1,148 @@
+//! The SVG figure's legend: one line per item of the figure's legend, with
+//! a sample of the stroke where the item has one.
+
+use std::fmt::Write;
+
+use super::page::{c, xml, Page, AFTER, AREA, ARM, BEFORE, IMPULSE, INK, MOVED, NORMAL, WIDTH};
+use crate::format::Fmt;
+use crate::render::figure::{Figure, LegendItem};
+
+/// A stroke sample: colour, dashed, width.
+type Sample = Option<(&'static str, bool, f64)>;
+
+struct Lines<'a> {
+    page: &'a mut Page,
+    x0: f64,
+    y: f64,
+}
+
+impl Lines<'_> {
+    fn line(&mut self, sample: Sample, text: &str) {
+        let (x0, y) = (self.x0, self.y);
+        if let Some((colour, dashed, width)) = sample {
+            let dash = if dashed {
+                r#" stroke-dasharray="9 6""#
+            } else {
+                ""
+            };
+            let _ = writeln!(
+                self.page.out,
+                r#"  <line x1="{}" y1="{}" x2="{}" y2="{}" stroke="{colour}" stroke-width="{width}"{dash}/>"#,
+                c(x0),
+                c(y - 6.0),
+                c(x0 + 34.0),
+                c(y - 6.0)
+            );
+        }
+        let _ = writeln!(
+            self.page.out,
+            r#"  <text x="{}" y="{}" font-size="16" fill="{INK}">{}</text>"#,
+            c(x0 + if sample.is_some() { 44.0 } else { 0.0 }),
+            c(y),
+            xml(text)
+        );
+        self.y += 25.0;
+    }
+}
+
+pub fn legend(page: &mut Page, fig: &Figure) {
+    let fmt = Fmt::new(4);
+    let v = |x: [f64; 3]| format!("({})", fmt.list(&x));
+    let x0 = AREA.2 + 20.0;
+    let y = AREA.1 + 8.0;
+    let _ = writeln!(
+        page.out,
+        r##"  <rect x="{}" y="{}" width="{}" height="{}" rx="10" fill="#FAFAFA" stroke="#CCCCCC"/>"##,
+        c(x0 - 12.0),
+        c(y - 30.0),
+        c(WIDTH - x0 - 8.0),
+        c(AREA.3 - y + 30.0)
+    );
+    let _ = writeln!(
+        page.out,
+        r#"  <text x="{}" y="{}" font-size="18" font-weight="bold" fill="{INK}">Legend</text>"#,
+        c(x0),
+        c(y)
+    );
+    let mut out = Lines {
+        page,
+        x0,
+        y: y + 27.0,
+    };
+    let name = |body: usize| &fig.bodies[body].name;
+    let tag = |body: usize| fig.bodies[body].tag;
+    for item in &fig.legend {
+        match *item {
+            LegendItem::Body { body } => {
+                let b = &fig.bodies[body];
+                let what = if b.movable { "" } else { " (immovable)" };
+                out.line(None, &format!("body {}: {}{what}", b.slot, b.name));
+            }
+            LegendItem::ContactPoint { contact, at } => {
+                let q = &fig.contacts[contact].label;
+                out.line(None, &format!("{q} contact point {}", v(at)));
+            }
+            LegendItem::Normal { direction, .. } => {
+                out.line(
+                    Some((NORMAL, false, 3.0)),
+                    &format!("d̂ normal {}", v(direction)),
+                );
+            }
+            LegendItem::Impulse { impulse, .. } => {
+                out.line(
+                    Some((IMPULSE, false, 5.0)),
+                    &format!("g on body 1 {}", v(impulse)),
+                );
+            }
+            LegendItem::Reaction { .. } => out.line(None, "(body 2 receives −g)"),
+            LegendItem::Arm { body, arm, .. } => {
+                let n = tag(body);
+                out.line(
+                    Some((ARM, true, 2.0)),
+                    &format!("r{n} = q − p{n} {}", v(arm)),
+                );
+            }
+            LegendItem::Velocity {
+                body,
+                before,
+                after,
+            } => {
+                let n = tag(body);
+                out.line(
+                    Some((BEFORE, true, 3.5)),
+                    &format!("v{n} before {}", v(before)),
+                );
+                out.line(
+                    Some((AFTER, false, 3.5)),
+                    &format!("v{n}′ after {}", v(after)),
+                );
+            }
+            LegendItem::Spin {
+                body,
+                before,
+                after,
+            } => {
+                let n = tag(body);
+                out.line(None, &format!("ω{n} {} → {}", v(before), v(after)));
+            }
+            LegendItem::Travel { body, distance } => {
+                let moves = format!("projection moves {} by {}", name(body), fmt.num(distance));
+                out.line(None, &moves);
+                out.line(None, "(beyond the figure)");
+            }
+            LegendItem::Moved => out.line(Some((MOVED, true, 2.5)), "after projection"),
+            LegendItem::Scales => {
+                out.y += 6.0;
+                out.line(None, "Velocities to one scale, the impulse");
+                out.line(None, "to another; ⊙ toward you, ⊗ away.");
+            }
+            LegendItem::OffSurface { body, distance, .. } => {
+                let side = if distance > 0.0 { "outside" } else { "inside" };
+                let off = format!("⚠ q is {} {side} {}", fmt.num(distance.abs()), name(body));
+                out.line(None, &off);
+                out.line(None, "as drawn (shape or orientation");
+                out.line(None, "in the lesson do not fit q).");
+            }
+        }
+    }
+}

@@ -1,0 +1,170 @@
+//! The `checks` stage described: the invariants physics measured, given
+//! their JSON value names here, and the pass/fail verdicts of the checks panel.
+
+use super::builder::{SolvedContact, B};
+use crate::physics::checks::{CheckItem, CheckKind, Measured};
+use crate::physics::StageId;
+use crate::trace::{Step, Verdict};
+
+/// The named values of one check, in the order the `checks` stage lists them
+/// (suffix 1 or 2 is the body slot).
+pub fn check_values(item: &CheckItem<f64>) -> Vec<(String, f64)> {
+    let named = |pairs: &[(&str, f64)]| -> Vec<(String, f64)> {
+        pairs.iter().map(|(n, v)| (n.to_string(), *v)).collect()
+    };
+    match item.measured {
+        Measured::LinearMomentum { error } => named(&[("linear_momentum_error", error)]),
+        Measured::AngularMomentum { body, error } => {
+            vec![(format!("angular_momentum_error{}", body + 1), error)]
+        }
+        Measured::Restitution {
+            before,
+            after,
+            expected,
+        } => named(&[
+            ("separating_velocity_before", before),
+            ("separating_velocity", after),
+            ("separating_velocity_expected", expected),
+        ]),
+        Measured::Energy {
+            before,
+            after,
+            change,
+        } => named(&[
+            ("energy_before", before),
+            ("energy_after", after),
+            ("energy_change", change),
+        ]),
+        Measured::FrictionCone {
+            normal,
+            tangential,
+            limit,
+        } => named(&[
+            ("normal_impulse", normal),
+            ("tangential_impulse", tangential),
+            ("cone_limit", limit),
+        ]),
+        Measured::Slip { before, after } => {
+            named(&[("slip_speed_before", before), ("slip_speed_after", after)])
+        }
+        Measured::ResidualPenetration {
+            depth,
+            gained,
+            residual,
+        } => named(&[
+            ("depth_to_resolve", depth),
+            ("separation_gained", gained),
+            ("residual_penetration", residual),
+        ]),
+        Measured::UnitQuaternion { body, error } => {
+            vec![(format!("orientation_norm_error{}", body + 1), error)]
+        }
+    }
+}
+
+/// Every check's values, with the formulas of the restitution target and
+/// the residual penetration, a note naming the cause of each ✗ (or of a
+/// result only round-off explains), and a note when slip rose while sliding.
+pub fn checks(c: &SolvedContact) -> Step {
+    let mut b = B::new(StageId::Checks);
+    let checks = &c.solution.checks;
+    for item in &checks.items {
+        for (name, v) in check_values(item) {
+            b.value(name, v);
+        }
+    }
+    if checks.get(CheckKind::Restitution).is_some() {
+        b.input("desired", c.solution.desired.desired);
+        b.f("v_s′", "(q̇₁′ − q̇₂′) · d̂", None, Some("separating_velocity"));
+        b.f(
+            "target",
+            "v_s + Δv",
+            Some("{separating_velocity_before} + {desired}"),
+            Some("separating_velocity_expected"),
+        );
+    }
+    // Why each check came out as it did, where a cause is known.
+    b.input(
+        "velocity_from_acceleration",
+        c.solution.desired.velocity_from_acceleration,
+    );
+    let friction = c.problem.contact.has_friction();
+    for item in &checks.items {
+        let Some(cause) = &item.cause else { continue };
+        if let Some(d) = super::causes::describe(item.kind(), cause, friction) {
+            for (name, v) in d.inputs {
+                b.input(name, v);
+            }
+            b.note(d.note);
+        }
+    }
+    if checks
+        .get(CheckKind::Slip)
+        .is_some_and(|c| c.passed.is_none() && c.cause.is_none())
+    {
+        b.note("The slip speed rose ({slip_speed_before} → {slip_speed_after}) while sliding: the normal impulse itself drives the contact point sideways (M₀₁, M₀₂ ≠ 0), more than friction capped at μ g_n can take away. This is Coulomb friction working as intended, not an error.");
+    }
+    if checks.get(CheckKind::ResidualPenetration).is_some() {
+        b.f(
+            "residual",
+            "d_pen − Σ (−1)^(i+1) (qᵢ′ − q) · d̂",
+            Some("{depth_to_resolve} − {separation_gained}"),
+            Some("residual_penetration"),
+        );
+        b.note("Residual penetration = depth to resolve − separation actually gained when each body's contact point is carried by its finite move (new position and normalised rotation). It measures how far the linearised estimate is off.");
+    }
+    b.done()
+}
+
+/// One verdict per check: a label, pass/fail (or informs), and a detail
+/// whose `{name}` placeholders are values of the `checks` stage.
+pub fn verdicts(c: &SolvedContact) -> Vec<Verdict> {
+    c.solution
+        .checks
+        .items
+        .iter()
+        .map(|item| {
+            let (label, detail) = match item.kind() {
+                CheckKind::LinearMomentum => (
+                    "linear momentum conserved".to_string(),
+                    "error {linear_momentum_error}".to_string(),
+                ),
+                CheckKind::AngularMomentum(i) => (
+                    format!("angular momentum of {} about q conserved", c.name(i)),
+                    format!("error {{angular_momentum_error{}}}", i + 1),
+                ),
+                CheckKind::Restitution => (
+                    "separating velocity meets the target".to_string(),
+                    "v_s′ = {separating_velocity}, target {separating_velocity_expected}"
+                        .to_string(),
+                ),
+                CheckKind::Energy => (
+                    "kinetic energy does not rise".to_string(),
+                    "{energy_before} → {energy_after}".to_string(),
+                ),
+                CheckKind::FrictionCone => (
+                    "impulse inside the friction cone".to_string(),
+                    "g_n = {normal_impulse}, |g_t| = {tangential_impulse} ≤ {cone_limit}"
+                        .to_string(),
+                ),
+                CheckKind::Slip => (
+                    "slip speed does not rise".to_string(),
+                    "{slip_speed_before} → {slip_speed_after}".to_string(),
+                ),
+                CheckKind::ResidualPenetration => (
+                    "penetration left after the finite move".to_string(),
+                    "{residual_penetration} of {depth_to_resolve}".to_string(),
+                ),
+                CheckKind::UnitQuaternion(i) => (
+                    format!("{}'s orientation is a unit quaternion", c.name(i)),
+                    format!("| |θ′| − 1 | = {{orientation_norm_error{}}}", i + 1),
+                ),
+            };
+            Verdict {
+                label,
+                passed: item.passed,
+                detail,
+            }
+        })
+        .collect()
+}

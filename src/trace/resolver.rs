@@ -1,0 +1,414 @@
+//! The resolver trace: what `resolve` shows of a scene's contacts resolved
+//! together. A [`Recorder`] (a resolver observer) keeps each iteration — the
+//! contact taken, its penetration or desired Δv, the moves or the impulse,
+//! every other contact it changed from → to — and [`describe`] turns the
+//! resolver's records into the trace the renderers read.
+
+use nalgebra::Vector3;
+
+use super::{AfterState, Verdict};
+use crate::lesson::Lesson;
+use crate::physics::resolver::checks::{scene_checks, SceneChecks};
+use crate::physics::resolver::{
+    Implementation, Observer, Phase, PhaseOutcome, PositionMoves, Resolver, ResolverBody,
+    ResolverContact, VelocityImpulse,
+};
+use crate::physics::stages::FrictionRegime;
+use crate::physics::{ResolverParams, RestitutionFrom, World};
+
+/// One contact's bookkeeping at a moment (before or after the phases).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactRow {
+    pub label: String,
+    pub penetration: f64,
+    /// `v_s`, the normal contact velocity (negative when closing).
+    pub separating: f64,
+    pub desired: f64,
+}
+
+/// Another contact an iteration changed: its value from → to.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Update {
+    pub contact: usize,
+    pub from: f64,
+    pub to: f64,
+}
+
+impl Update {
+    /// Deeper into penetration, or closing faster (more Δv wanted, and some
+    /// wanted at all): the iteration made this contact worse.
+    pub fn worse(&self) -> bool {
+        self.to > self.from && self.to > 0.0
+    }
+}
+
+/// One body's move in a position iteration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyMove {
+    pub body: String,
+    /// `Δp = Δ_l d`.
+    pub linear: [f64; 3],
+    /// `Δθ`, the rotation vector applied.
+    pub angular: [f64; 3],
+    /// True when the angular limit cut the angular move.
+    pub limited: bool,
+}
+
+/// One body's velocity change in a velocity iteration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyKick {
+    pub body: String,
+    pub dv: [f64; 3],
+    pub dw: [f64; 3],
+}
+
+/// One iteration of a phase.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Iteration {
+    pub iteration: usize,
+    pub contact: usize,
+    /// The penetration (position) or desired Δv (velocity) it was taken at.
+    pub value: f64,
+    /// The taken contact's own value after the iteration.
+    pub own_after: f64,
+    pub moves: Vec<BodyMove>,
+    pub kicks: Vec<BodyKick>,
+    pub impulse_contact: Option<[f64; 3]>,
+    pub impulse_world: Option<[f64; 3]>,
+    /// `"static"` or `"dynamic"` for a contact with friction.
+    pub regime: Option<&'static str>,
+    /// The other contacts it changed, by contact number.
+    pub updated: Vec<Update>,
+}
+
+/// One phase: its outcome, its notes and (when recorded) its iterations.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PhaseTrace {
+    pub phase: Phase,
+    pub iterations_used: usize,
+    pub iteration_limit: usize,
+    pub epsilon: f64,
+    pub max_before: f64,
+    pub max_after: f64,
+    pub max_after_contact: usize,
+    pub limit_reached: bool,
+    /// Iterations that made at least one other contact worse.
+    pub worsening_iterations: usize,
+    pub log: Vec<Iteration>,
+}
+
+/// The worked resolution of a whole scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ResolverTrace {
+    pub lesson: String,
+    pub title: String,
+    pub source: String,
+    pub summary: String,
+    pub implementation: Implementation,
+    pub restitution_from: RestitutionFrom,
+    pub before: Vec<ContactRow>,
+    pub position: PhaseTrace,
+    pub velocity: PhaseTrace,
+    pub contacts_after: Vec<ContactRow>,
+    /// Every movable body, in file order.
+    pub after: Vec<(String, AfterState)>,
+    pub verdicts: Vec<Verdict>,
+    pub warnings: Vec<String>,
+}
+
+/// A resolver observer that keeps every iteration (for the trace).
+#[derive(Debug, Clone, Default)]
+pub struct Recorder {
+    /// Names of the resolver's bodies, by resolver body index.
+    names: Vec<String>,
+    position: Vec<Iteration>,
+    velocity: Vec<Iteration>,
+    phase: Option<Phase>,
+}
+
+impl Recorder {
+    /// A recorder for `resolver`'s bodies, named from `lesson`.
+    pub fn new(lesson: &Lesson, resolver: &Resolver<f64>) -> Self {
+        let names = resolver
+            .bodies
+            .iter()
+            .map(|b| lesson.bodies[b.id.0].name.clone())
+            .collect();
+        Recorder {
+            names,
+            ..Recorder::default()
+        }
+    }
+
+    fn current(&mut self) -> Option<&mut Iteration> {
+        match self.phase? {
+            Phase::Position => self.position.last_mut(),
+            Phase::Velocity => self.velocity.last_mut(),
+        }
+    }
+
+    fn updated(&mut self, contact: usize, from: f64, to: f64) {
+        let Some(it) = self.current() else { return };
+        if contact == it.contact {
+            it.own_after = to;
+        } else if to != from {
+            it.updated.push(Update { contact, from, to });
+        }
+    }
+
+    fn iteration(iteration: usize, contact: usize, value: f64) -> Iteration {
+        Iteration {
+            iteration,
+            contact,
+            value,
+            own_after: value,
+            moves: vec![],
+            kicks: vec![],
+            impulse_contact: None,
+            impulse_world: None,
+            regime: None,
+            updated: vec![],
+        }
+    }
+
+    fn slot_name(&self, slots: &[Option<usize>; 2], i: usize) -> String {
+        slots[i].map_or_else(String::new, |b| self.names[b].clone())
+    }
+}
+
+fn arr(v: &Vector3<f64>) -> [f64; 3] {
+    [v.x, v.y, v.z]
+}
+
+impl Observer<f64> for Recorder {
+    fn position_taken(&mut self, i: usize, k: usize, penetration: f64, moves: &PositionMoves<f64>) {
+        self.phase = Some(Phase::Position);
+        let mut it = Recorder::iteration(i, k, penetration);
+        for (slot, m) in moves.bodies.iter().enumerate() {
+            if let Some(m) = m {
+                it.moves.push(BodyMove {
+                    body: self.slot_name(&moves.slots, slot),
+                    linear: arr(&m.linear_change),
+                    angular: arr(&m.angular_change),
+                    limited: m.limited,
+                });
+            }
+        }
+        self.position.push(it);
+    }
+
+    fn penetration_updated(&mut self, contact: usize, from: f64, to: f64) {
+        self.updated(contact, from, to);
+    }
+
+    fn velocity_taken(&mut self, i: usize, k: usize, desired: f64, impulse: &VelocityImpulse<f64>) {
+        self.phase = Some(Phase::Velocity);
+        let mut it = Recorder::iteration(i, k, desired);
+        it.impulse_contact = Some(arr(&impulse.impulse_contact));
+        it.impulse_world = Some(arr(&impulse.impulse_world));
+        it.regime = impulse.regime.map(|r| match r {
+            FrictionRegime::Static => "static",
+            FrictionRegime::Dynamic => "dynamic",
+        });
+        for (slot, b) in impulse.bodies.iter().enumerate() {
+            if let Some(b) = b {
+                it.kicks.push(BodyKick {
+                    body: self.slot_name(&impulse.slots, slot),
+                    dv: arr(&b.dv),
+                    dw: arr(&b.dw),
+                });
+            }
+        }
+        self.velocity.push(it);
+    }
+
+    fn desired_updated(&mut self, contact: usize, from: f64, to: f64) {
+        self.updated(contact, from, to);
+    }
+}
+
+/// Each iteration's updates in contact order (the indexed resolver visits
+/// them in adjacency order, the scan in file order).
+fn sort_updates(log: &mut [Iteration]) {
+    for it in log.iter_mut() {
+        it.updated.sort_by_key(|u| u.contact);
+    }
+}
+
+fn rows(lesson: &Lesson, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
+    contacts
+        .iter()
+        .enumerate()
+        .map(|(k, c)| ContactRow {
+            label: lesson.contact_label(k),
+            penetration: c.penetration,
+            separating: c.velocity.x,
+            desired: c.desired,
+        })
+        .collect()
+}
+
+fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>) -> PhaseTrace {
+    let worsening_iterations = log
+        .iter()
+        .filter(|it| it.updated.iter().any(Update::worse))
+        .count();
+    PhaseTrace {
+        phase: outcome.phase,
+        iterations_used: outcome.iterations_used,
+        iteration_limit: outcome.iteration_limit,
+        epsilon: outcome.epsilon,
+        max_before: outcome.max_before,
+        max_after: outcome.max_after,
+        max_after_contact: outcome.max_after_contact,
+        limit_reached: outcome.limit_reached,
+        worsening_iterations,
+        log,
+    }
+}
+
+/// Resolves `lesson`'s contacts together and describes it; with `record`
+/// the iterations are kept (text and Markdown show them, JSON with `--log`).
+pub fn describe(
+    lesson: &Lesson,
+    params: &ResolverParams,
+    implementation: Implementation,
+    record: bool,
+) -> ResolverTrace {
+    let world: World<f64> = lesson.world();
+    let mut resolver = Resolver::prepare(&world, params);
+    let before = rows(lesson, &resolver.contacts);
+    let mut recorder = Recorder::new(lesson, &resolver);
+    let [position, velocity] = if record {
+        [
+            resolver.position_phase(implementation, &mut recorder),
+            resolver.velocity_phase(implementation, &mut recorder),
+        ]
+    } else {
+        let mut silent = crate::physics::resolver::Silent;
+        [
+            resolver.position_phase(implementation, &mut silent),
+            resolver.velocity_phase(implementation, &mut silent),
+        ]
+    };
+    let mut position_log = std::mem::take(&mut recorder.position);
+    let mut velocity_log = std::mem::take(&mut recorder.velocity);
+    sort_updates(&mut position_log);
+    sort_updates(&mut velocity_log);
+    let checks = scene_checks(&world, &resolver);
+    ResolverTrace {
+        lesson: lesson.id.clone(),
+        title: lesson.title.clone(),
+        source: lesson.source.clone(),
+        summary: lesson.summary.clone(),
+        implementation,
+        restitution_from: params.restitution_from,
+        before,
+        position: phase_trace(&position, position_log),
+        velocity: phase_trace(&velocity, velocity_log),
+        contacts_after: rows(lesson, &resolver.contacts),
+        after: after(lesson, &resolver.bodies),
+        verdicts: verdicts(lesson, &checks, &position, &velocity),
+        warnings: lesson.warnings.iter().map(|w| w.to_string()).collect(),
+    }
+}
+
+/// Every movable body's state after both phases (orientation normalised).
+pub fn after(lesson: &Lesson, bodies: &[ResolverBody<f64>]) -> Vec<(String, AfterState)> {
+    bodies
+        .iter()
+        .map(|b| {
+            let q = b.orientation.normalize();
+            (
+                lesson.bodies[b.id.0].name.clone(),
+                AfterState {
+                    position: arr(&b.position),
+                    orientation: [q.w, q.i, q.j, q.k],
+                    velocity: arr(&b.velocity),
+                    angular_velocity: arr(&b.angular_velocity),
+                },
+            )
+        })
+        .collect()
+}
+
+fn verdicts(
+    lesson: &Lesson,
+    c: &SceneChecks<f64>,
+    position: &PhaseOutcome<f64>,
+    velocity: &PhaseOutcome<f64>,
+) -> Vec<Verdict> {
+    let f = crate::format::Fmt::default();
+    let v = |x: &Vector3<f64>| format!("({})", f.list(&arr(x)));
+    let mut out = vec![];
+    if c.free_bodies.is_empty() {
+        out.push(Verdict {
+            label: "linear momentum".into(),
+            passed: None,
+            detail: "every body touches the world or an immovable body (directly or through others): the world's impulses change their momentum".into(),
+        });
+    } else {
+        let names: Vec<&str> = c
+            .free_bodies
+            .iter()
+            .map(|b| lesson.bodies[b.0].name.as_str())
+            .collect();
+        out.push(Verdict {
+            label: "linear momentum".into(),
+            passed: Some(c.momentum_conserved),
+            detail: format!(
+                "Σ m v of the bodies that touch nothing immovable ({}): before {}, after {}, relative error {}",
+                names.join(", "),
+                v(&c.momentum_before),
+                v(&c.momentum_after),
+                f.num(c.momentum_error)
+            ),
+        });
+    }
+    let change = c.energy_after - c.energy_before;
+    let percent = if c.energy_before > 0.0 {
+        format!(" ({}%)", f.num(100.0 * change / c.energy_before))
+    } else {
+        String::new()
+    };
+    out.push(Verdict {
+        label: "kinetic energy".into(),
+        passed: Some(c.energy_not_gained),
+        detail: format!(
+            "before {}, after {}: change {}{percent}",
+            f.num(c.energy_before),
+            f.num(c.energy_after),
+            f.num(change)
+        ),
+    });
+    out.push(Verdict {
+        label: "penetration left".into(),
+        passed: Some(c.penetration_left.0 <= position.epsilon),
+        detail: format!(
+            "deepest {} at contact {} (position_epsilon {})",
+            f.num(c.penetration_left.0),
+            c.penetration_left.1,
+            f.num(position.epsilon)
+        ),
+    });
+    let closing = if c.closing_left.0 > 0.0 {
+        format!(
+            "largest closing speed {} at contact {}",
+            f.num(c.closing_left.0),
+            c.closing_left.1
+        )
+    } else {
+        "no contact is closing".into()
+    };
+    out.push(Verdict {
+        label: "closing velocity left".into(),
+        passed: Some(velocity.max_after <= velocity.epsilon),
+        detail: format!(
+            "{closing}; largest desired Δv {} at contact {} (velocity_epsilon {})",
+            f.num(velocity.max_after),
+            velocity.max_after_contact,
+            f.num(velocity.epsilon)
+        ),
+    });
+    out
+}

@@ -1,0 +1,206 @@
+//! The description of a run in time: one frame per recorded step (the step's
+//! numbers and every body's state) and the events in words, with body names.
+
+use crate::physics::step::{Event, Simulation, StepReport};
+use crate::physics::{BodyId, Shape};
+
+/// A body's state in a frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyFrame {
+    pub position: [f64; 3],
+    pub orientation: [f64; 4],
+    pub velocity: [f64; 3],
+    pub angular_velocity: [f64; 3],
+    pub awake: bool,
+}
+
+/// One recorded step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    pub step: u64,
+    pub time: f64,
+    pub contacts: usize,
+    pub awake: usize,
+    pub max_penetration: f64,
+    pub kinetic_energy: f64,
+    pub potential_energy: f64,
+    pub position_iterations: usize,
+    pub velocity_iterations: usize,
+    /// Every body, in lesson order.
+    pub bodies: Vec<BodyFrame>,
+    /// Contact points and normals of the step (for pictures).
+    pub contact_points: Vec<([f64; 3], [f64; 3])>,
+}
+
+/// An event in words.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventLine {
+    pub step: u64,
+    pub time: f64,
+    pub kind: &'static str,
+    pub text: String,
+}
+
+/// A run: its frames and events.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunTrace {
+    pub lesson: String,
+    pub title: String,
+    pub dt: f64,
+    pub names: Vec<String>,
+    pub shapes: Vec<Option<Shape>>,
+    pub movable: Vec<bool>,
+    pub frames: Vec<Frame>,
+    pub events: Vec<EventLine>,
+    /// Set when the run stopped early: the reason.
+    pub stopped: Option<String>,
+}
+
+impl RunTrace {
+    pub fn new(lesson: &str, title: &str, names: Vec<String>, sim: &Simulation<f64>) -> Self {
+        RunTrace {
+            lesson: lesson.to_string(),
+            title: title.to_string(),
+            dt: sim.params.dt,
+            names,
+            shapes: sim.world.bodies.iter().map(|b| b.shape).collect(),
+            movable: sim.world.bodies.iter().map(|b| b.movable).collect(),
+            frames: Vec::new(),
+            events: Vec::new(),
+            stopped: None,
+        }
+    }
+
+    /// The frame of the simulation as it is now, after `report`.
+    pub fn frame(sim: &Simulation<f64>, report: &StepReport) -> Frame {
+        Frame {
+            step: report.step,
+            time: report.time,
+            contacts: report.contacts,
+            awake: report.awake,
+            max_penetration: report.max_penetration,
+            kinetic_energy: report.kinetic_energy,
+            potential_energy: report.potential_energy,
+            position_iterations: report.position_iterations,
+            velocity_iterations: report.velocity_iterations,
+            bodies: sim
+                .world
+                .bodies
+                .iter()
+                .zip(&sim.sleep)
+                .map(|(b, s)| {
+                    let q = b.state.orientation;
+                    BodyFrame {
+                        position: b.state.position.into(),
+                        orientation: [q.w, q.i, q.j, q.k],
+                        velocity: b.state.velocity.into(),
+                        angular_velocity: b.state.angular_velocity.into(),
+                        awake: b.movable && s.awake,
+                    }
+                })
+                .collect(),
+            contact_points: sim
+                .world
+                .contacts
+                .iter()
+                .map(|k| (k.input.point.into(), k.input.normal.into()))
+                .collect(),
+        }
+    }
+
+    /// The state before the first step, as frame 0.
+    pub fn initial(sim: &Simulation<f64>) -> Frame {
+        let report = StepReport {
+            step: 0,
+            time: 0.0,
+            contacts: 0,
+            awake: sim.awake(),
+            max_penetration: 0.0,
+            max_penetration_after: 0.0,
+            kinetic_energy: crate::physics::step::energy::kinetic(&sim.world),
+            potential_energy: crate::physics::step::energy::potential(
+                &sim.world,
+                &sim.params.world.gravity,
+            ),
+            position_iterations: 0,
+            velocity_iterations: 0,
+            events: Vec::new(),
+        };
+        Self::frame(sim, &report)
+    }
+
+    /// Adds the events of `report` in words.
+    pub fn add_events(&mut self, report: &StepReport) {
+        for e in &report.events {
+            let (kind, text) = self.describe(e);
+            self.events.push(EventLine {
+                step: report.step,
+                time: report.time,
+                kind,
+                text,
+            });
+        }
+    }
+
+    fn name(&self, id: BodyId) -> &str {
+        self.names.get(id.0).map_or("?", String::as_str)
+    }
+
+    fn pair(&self, a: BodyId, b: Option<BodyId>) -> String {
+        match b {
+            Some(b) => format!("{} ↔ {}", self.name(a), self.name(b)),
+            None => format!("{} ↔ world", self.name(a)),
+        }
+    }
+
+    fn describe(&self, e: &Event) -> (&'static str, String) {
+        let f = crate::format::Fmt::new(3);
+        match *e {
+            Event::ContactMade { body1, body2 } => (
+                "contact",
+                format!("contact made: {}", self.pair(body1, body2)),
+            ),
+            Event::ContactLost { body1, body2 } => (
+                "contact",
+                format!("contact lost: {}", self.pair(body1, body2)),
+            ),
+            Event::Bounce {
+                body1,
+                body2,
+                closing,
+                separating,
+            } => (
+                "bounce",
+                format!(
+                    "bounce: {} closing at {} m/s, separating at {} m/s (ratio {})",
+                    self.pair(body1, body2),
+                    f.num(closing),
+                    f.num(separating),
+                    f.num(separating / closing)
+                ),
+            ),
+            Event::Sticks { body1, body2 } => {
+                ("friction", format!("sticks: {}", self.pair(body1, body2)))
+            }
+            Event::Slides { body1, body2, .. } => {
+                ("friction", format!("slides: {}", self.pair(body1, body2)))
+            }
+            Event::FallsAsleep { body } => ("sleep", format!("{} falls asleep", self.name(body))),
+            Event::Wakes { body } => ("sleep", format!("{} wakes", self.name(body))),
+            Event::PositionLimit { left } => (
+                "limit",
+                format!(
+                    "position iteration limit reached: deepest penetration left {} m",
+                    f.num(left)
+                ),
+            ),
+            Event::VelocityLimit { left } => (
+                "limit",
+                format!(
+                    "velocity iteration limit reached: largest desired Δv left {} m/s",
+                    f.num(left)
+                ),
+            ),
+        }
+    }
+}
