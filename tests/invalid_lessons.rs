@@ -531,6 +531,27 @@ fn command_line_misuse_exits_2_with_a_message() {
             "unexpected argument 'extra'",
         ),
         (&["frobnicate"], "unrecognized subcommand 'frobnicate'"),
+        // `simulate`'s options follow the lesson file's range rules.
+        (
+            &["simulate", "ball-drop", "--dt", "1e-70"],
+            "--dt: duration 1e-70 is below contact-lab's smallest magnitude, 1e-60",
+        ),
+        (
+            &["simulate", "ball-drop", "--gravity", "0", "1e-70", "0"],
+            "--gravity takes three finite numbers x,y,z, each 0 or of magnitude 1e-60 to 1e60",
+        ),
+        (
+            &["simulate", "ball-drop", "--damping", "1e-300"],
+            "--damping: damping 1e-300 is below contact-lab's smallest magnitude, 1e-60",
+        ),
+        (
+            &["simulate", "ball-drop", "--velocity-limit", "1e-70"],
+            "--velocity-limit: velocity_limit 1e-70 is below contact-lab's smallest non-zero magnitude",
+        ),
+        (
+            &["resolve", "sphere-row", "--velocity-epsilon", "1e-70"],
+            "--velocity-epsilon 1e-70 is below contact-lab's smallest non-zero magnitude",
+        ),
     ];
     for (args, fragment) in cases {
         let r = run(args);

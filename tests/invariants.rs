@@ -16,7 +16,7 @@ fn every_lesson_file_is_embedded_and_named_for_its_id() {
     fn toml_files(dir: &std::path::Path, prefix: &str, out: &mut Vec<String>) {
         for entry in std::fs::read_dir(dir).unwrap().flatten() {
             let name = entry.file_name().into_string().unwrap();
-            if entry.path().is_dir() {
+            if entry.path().is_dir() && name != "scenes" {
                 toml_files(&entry.path(), &format!("{prefix}{name}/"), out);
             } else if name.ends_with(".toml") {
                 out.push(format!("{prefix}{name}"));
@@ -29,9 +29,6 @@ fn every_lesson_file_is_embedded_and_named_for_its_id() {
         "",
         &mut files,
     );
-    // The time-stepping scenes (`simulate`) have no contacts to solve and
-    // are not embedded: the lesson list and the TUI show contacts.
-    files.retain(|f| !f.starts_with("scenes/"));
     files.sort();
     let mut embedded: Vec<String> = embedded::LESSONS
         .iter()
@@ -42,6 +39,31 @@ fn every_lesson_file_is_embedded_and_named_for_its_id() {
         files, embedded,
         "every lessons/*.toml must be listed in src/lesson/embedded.rs"
     );
+    // Scenes live in lessons/scenes/ and in their own list.
+    let mut scenes: Vec<String> =
+        std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/lessons/scenes"))
+            .unwrap()
+            .flatten()
+            .map(|e| format!("scenes/{}", e.file_name().into_string().unwrap()))
+            .filter(|n| n.ends_with(".toml"))
+            .collect();
+    scenes.sort();
+    let mut listed: Vec<String> = embedded::SCENES
+        .iter()
+        .map(|(f, _)| f.to_string())
+        .collect();
+    listed.sort();
+    assert_eq!(
+        scenes, listed,
+        "every lessons/scenes/*.toml must be listed in SCENES"
+    );
+    for id in embedded::scene_ids() {
+        assert_eq!(
+            Lesson::load(id).unwrap().id,
+            id,
+            "file name of scene '{id}' must be its id"
+        );
+    }
     for lesson in common::all_lessons() {
         assert!(
             embedded::find(&lesson.id).is_some(),

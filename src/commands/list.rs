@@ -29,7 +29,23 @@ fn table(out: &mut dyn Write) -> Result<(), AppError> {
 }
 
 pub fn list(out: &mut dyn Write) -> Result<(), AppError> {
-    table(out)
+    table(out)?;
+    scenes(out)
+}
+
+/// The scenes, which `simulate` steps in time.
+fn scenes(out: &mut dyn Write) -> Result<(), AppError> {
+    let scenes: Vec<Lesson> = embedded::scene_ids()
+        .into_iter()
+        .map(Lesson::load)
+        .collect::<Result<_, _>>()
+        .map_err(|e| AppError::Runtime(format!("an embedded scene is invalid: {e}")))?;
+    let w = scenes.iter().map(|l| l.id.len()).max().unwrap_or(2).max(2);
+    writeln!(out, "\nScenes (contact-lab simulate ID):").map_err(io)?;
+    for l in &scenes {
+        writeln!(out, "{:w$}  {}", l.id, l.title).map_err(io)?;
+    }
+    Ok(())
 }
 
 pub fn welcome(out: &mut dyn Write) -> Result<(), AppError> {

@@ -82,7 +82,7 @@ pub fn simulation(
                 exact(dt)
             ));
         }
-        rules::finite(dt).map_err(|e| AppError::Usage(format!("--dt {e}")))?;
+        rules::duration(dt).map_err(|e| AppError::Usage(format!("--dt: {e}")))?;
         p.dt = dt;
     }
     if let Some(g) = &args.gravity {

@@ -30,6 +30,26 @@ pub const LESSONS: &[(&str, &str)] = embed![
     "extremes/extreme-inertia.toml",
 ];
 
+/// Scenes (`lessons/scenes/`): lessons that `simulate` steps in time. They
+/// load by id like any lesson but are listed apart, since their contacts are
+/// generated at every step rather than written in the file.
+#[rustfmt::skip]
+pub const SCENES: &[(&str, &str)] = embed![
+    "scenes/ball-drop.toml",
+    "scenes/resting-box.toml",
+    "scenes/sliding-box.toml",
+    "scenes/ramp-stick.toml",
+    "scenes/ramp-slide.toml",
+    "scenes/stack-5.toml",
+    "scenes/cradle-over-time.toml",
+    "scenes/sleep-and-wake.toml",
+];
+
+/// Ids of the embedded scenes, in list order.
+pub fn scene_ids() -> Vec<&'static str> {
+    SCENES.iter().map(|(file, _)| id_of(file)).collect()
+}
+
 /// The id of an embedded lesson file: its base name without `.toml`.
 fn id_of(file: &str) -> &str {
     file.rsplit('/')
@@ -46,6 +66,7 @@ pub fn ids() -> Vec<&'static str> {
 pub fn find(id: &str) -> Option<&'static str> {
     LESSONS
         .iter()
+        .chain(SCENES)
         .find(|(file, _)| id_of(file) == id)
         .map(|(_, text)| *text)
 }
@@ -53,6 +74,7 @@ pub fn find(id: &str) -> Option<&'static str> {
 pub fn origin(id: &str) -> String {
     let file = LESSONS
         .iter()
+        .chain(SCENES)
         .map(|(f, _)| *f)
         .find(|f| id_of(f) == id)
         .unwrap_or(id);

@@ -110,6 +110,8 @@ pub struct Simulation {
     pub acceleration_compensation: bool,
     /// Friction model of generated contacts (`[world] friction_model`).
     pub friction_model: FrictionModel,
+    /// Gap below which contacts are generated (`[world] contact_margin`, m).
+    pub contact_margin: f64,
     pub dt: f64,
     pub steps: u64,
     pub sleep: SleepParams<f64>,
@@ -125,6 +127,7 @@ impl Default for Simulation {
             velocity_limit: 0.25,
             acceleration_compensation: true,
             friction_model: FrictionModel::Millington,
+            contact_margin: 0.005,
             dt: 1.0 / 60.0,
             steps: 600,
             sleep: SleepParams::default(),
@@ -148,6 +151,7 @@ impl Lesson {
             acceleration_compensation: sim.acceleration_compensation,
             box_box: sim.box_box,
             friction_model: sim.friction_model,
+            contact_margin: sim.contact_margin,
         })
     }
 }
@@ -316,6 +320,7 @@ impl Lesson {
             contacts,
             step: StepParams {
                 duration: c(self.settings.duration),
+                ..StepParams::default()
             },
         }
     }

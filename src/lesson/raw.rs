@@ -39,6 +39,7 @@ pub struct RawWorld {
     pub velocity_limit: Option<S<f64>>,
     pub acceleration_compensation: Option<S<bool>>,
     pub friction_model: Option<S<String>>,
+    pub contact_margin: Option<S<f64>>,
     pub restitution: Option<S<f64>>,
     pub friction: Option<S<f64>>,
     pub static_friction: Option<S<f64>>,

@@ -109,11 +109,20 @@ pub struct StepParams<T: Real> {
     /// `a·duration` that one frame of acceleration builds up is not bounced
     /// back (default: 0.01 s).
     pub duration: T,
+    /// Add the planar part of `a·duration` to each contact velocity, as the
+    /// reference engine does: it integrates positions before it resolves, so
+    /// friction must remove next step's build-up too or a box creeps down a
+    /// slope. A stepper that resolves between the velocity and the position
+    /// update does not need it (default: true).
+    pub anticipate_planar_acceleration: bool,
 }
 
 impl<T: Real> Default for StepParams<T> {
     fn default() -> Self {
-        StepParams { duration: c(0.01) }
+        StepParams {
+            duration: c(0.01),
+            anticipate_planar_acceleration: true,
+        }
     }
 }
 

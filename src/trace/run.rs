@@ -190,14 +190,14 @@ impl RunTrace {
             Event::PositionLimit { left } => (
                 "limit",
                 format!(
-                    "position iteration limit reached: deepest penetration left {} m",
+                    "position iteration limit reached (and reached every step until this line shows again): deepest penetration left {} m",
                     f.num(left)
                 ),
             ),
             Event::VelocityLimit { left } => (
                 "limit",
                 format!(
-                    "velocity iteration limit reached: largest desired Δv left {} m/s",
+                    "velocity iteration limit reached (from now on, each step, until it stops): largest desired Δv left {} m/s",
                     f.num(left)
                 ),
             ),

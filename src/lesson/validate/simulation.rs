@@ -72,6 +72,9 @@ impl Validator {
                     ),
                 }
             }
+            if let Some(m) = &w.contact_margin {
+                sim.contact_margin = self.rule("[world] contact_margin", m, rules::non_negative);
+            }
             if let Some(a) = &w.acceleration_compensation {
                 sim.acceleration_compensation = *a.get_ref();
             }
@@ -179,6 +182,18 @@ impl Validator {
             }
             return;
         };
+        for b in &raw.bodies {
+            let movable = b.mass.get_ref().is_finite();
+            if movable && b.shape.is_none() {
+                self.err(
+                    b.name.span(),
+                    format!(
+                        "body '{}' moves in a scene (the lesson has [world], [step] or [sleep]) and needs a `shape` to collide",
+                        b.name.get_ref()
+                    ),
+                );
+            }
+        }
         sim.materials = raw
             .bodies
             .iter()

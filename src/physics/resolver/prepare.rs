@@ -209,8 +209,11 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> 
             let acceleration =
                 relative_acceleration([0, 1].map(|i| body(i).map(|(_, s)| s.acceleration)));
             let duration = contact.duration.unwrap_or(world.step.duration);
-            let (velocity_from_acceleration, planar) =
+            let (velocity_from_acceleration, mut planar) =
                 acceleration_terms(&acceleration, &basis, duration);
+            if !world.step.anticipate_planar_acceleration {
+                planar = Vector3::zeros();
+            }
             let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
             let friction_index = unit.matrix.map(|matrix| {
                 friction.push(FrictionData {

@@ -35,6 +35,20 @@ pub fn integrate<T: Real>(
     angular_damping: T,
     dt: T,
 ) {
+    integrate_velocity(body, gravity, loads, linear_damping, angular_damping, dt);
+    integrate_position(body, dt);
+}
+
+/// The velocity half of [`integrate`]: `a = g + F/m`, `v += a·dt`,
+/// `ω += I⁻¹τ·dt`, then damping.
+pub fn integrate_velocity<T: Real>(
+    body: &mut RigidBody<T>,
+    gravity: &Vector3<T>,
+    loads: &Loads<T>,
+    linear_damping: T,
+    angular_damping: T,
+    dt: T,
+) {
     body.acceleration = gravity + loads.force * body.inverse_mass;
     let angular_acceleration = body.inverse_inertia_world() * loads.torque;
     body.velocity += body.acceleration * dt;
@@ -42,6 +56,10 @@ pub fn integrate<T: Real>(
     // Damping as the fraction of velocity kept per second.
     body.velocity *= linear_damping.powf(dt);
     body.angular_velocity *= angular_damping.powf(dt);
+}
+
+/// The position half of [`integrate`]: `x += v·dt`, `θ += ½[0, ω·dt]θ`, normalised.
+pub fn integrate_position<T: Real>(body: &mut RigidBody<T>, dt: T) {
     body.position += body.velocity * dt;
     let turned = add_scaled_rotation(&body.orientation, &(body.angular_velocity * dt));
     let norm = turned.norm();

@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 
 use super::energy;
-use super::integrate::{integrate, Loads};
+use super::integrate::{integrate_position, integrate_velocity, Loads};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
@@ -33,6 +33,11 @@ pub struct SimParams<T: Real> {
     /// How a pair of boxes touches (default: manifold).
     pub box_box: BoxBoxMode,
     pub friction_model: FrictionModel,
+    /// Contacts are generated for gaps up to this distance (m), with a
+    /// negative penetration: a resting body whose contact the position phase
+    /// just resolved keeps it, instead of losing it for a step and falling
+    /// freely (default: 0.005).
+    pub contact_margin: T,
 }
 
 impl<T: Real> Default for SimParams<T> {
@@ -49,6 +54,7 @@ impl<T: Real> Default for SimParams<T> {
             acceleration_compensation: true,
             box_box: BoxBoxMode::default(),
             friction_model: FrictionModel::default(),
+            contact_margin: c(0.005),
         }
     }
 }
@@ -152,6 +158,9 @@ pub struct Simulation<T: Real> {
     touching: Vec<(BodyId, Option<BodyId>, bool)>,
     /// The energy scale blow-ups are measured against.
     energy_scale: f64,
+    /// Whether the position and velocity phases hit their limits last step
+    /// (a limit is an event when it starts being hit).
+    limits_hit: [bool; 2],
 }
 
 impl<T: Real> Simulation<T> {
@@ -168,6 +177,7 @@ impl<T: Real> Simulation<T> {
             generated: Vec::new(),
             touching: Vec::new(),
             energy_scale: 0.0,
+            limits_hit: [false; 2],
         };
         sim.world.contacts.clear();
         let g = sim.params.world.gravity;
@@ -198,10 +208,12 @@ impl<T: Real> Simulation<T> {
     ) -> Result<StepReport, BlowUp> {
         let p = self.params.clone();
         let mut events = Vec::new();
-        // 1. Integrate the awake movable bodies.
+        // 1. Contacts from the shapes where the bodies are now.
+        self.generate_contacts();
+        // 2. Velocities of the awake bodies: gravity and damping over the step.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate(
+                integrate_velocity(
                     &mut body.state,
                     &p.world.gravity,
                     &Loads::default(),
@@ -212,8 +224,9 @@ impl<T: Real> Simulation<T> {
             }
         }
         self.world.step.duration = p.dt;
-        // 2. Generate contacts from the shapes.
-        self.generate_contacts();
+        // Resolved between the velocity and the position update, the
+        // contacts see this step's build-up already: nothing to anticipate.
+        self.world.step.anticipate_planar_acceleration = false;
         let max_penetration = self
             .world
             .contacts
@@ -228,23 +241,30 @@ impl<T: Real> Simulation<T> {
         let (resolver, [position, velocity]) =
             Resolver::resolve(&self.world, &p.resolver, Implementation::Indexed, observer);
         resolver.write_back(&mut self.world);
-        // 5. Sleep.
+        // 5. Positions of the awake bodies with the resolved velocities.
+        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
+            if body.movable && (sleep.awake || !p.sleep.enabled) {
+                integrate_position(&mut body.state, p.dt);
+            }
+        }
+        // 6. Sleep.
         if p.sleep.enabled {
             self.update_sleep(&mut events);
         }
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
-        if position.limit_reached {
+        if position.limit_reached && !self.limits_hit[0] {
             events.push(Event::PositionLimit {
                 left: to_f64(position.max_after),
             });
         }
-        if velocity.limit_reached {
+        if velocity.limit_reached && !self.limits_hit[1] {
             events.push(Event::VelocityLimit {
                 left: to_f64(velocity.max_after),
             });
         }
+        self.limits_hit = [position.limit_reached, velocity.limit_reached];
         self.check_finite()?;
         let kinetic = to_f64(energy::kinetic(&self.world));
         if kinetic > 1e6 * self.energy_scale {
@@ -272,7 +292,10 @@ impl<T: Real> Simulation<T> {
 
     /// Replaces the world's contacts with those the shapes generate now.
     fn generate_contacts(&mut self) {
-        let options = Options::with_mode(self.params.box_box);
+        let options = Options {
+            box_box: self.params.box_box,
+            tolerance: self.params.contact_margin,
+        };
         self.generator
             .generate_world(&self.world.bodies, &options, &mut self.generated);
         let p = &self.params;
@@ -323,17 +346,26 @@ impl<T: Real> Simulation<T> {
         v(Some(k.body1)) - v(k.body2)
     }
 
-    /// A contact between an awake and a sleeping movable body that is
-    /// closing or penetrating wakes the sleeper; the world wakes nobody.
+    /// A contact between an awake and a sleeping movable body that the
+    /// resolver will act on (penetrating beyond the position epsilon, or
+    /// closing faster than the velocity epsilon) wakes the sleeper, as the
+    /// reference engine wakes the bodies of a contact it resolves; the world
+    /// wakes nobody.
     fn wake_touched(&mut self, events: &mut Vec<Event>) {
         let eps = self.params.sleep.epsilon;
+        let (pen_eps, vel_eps) = (
+            c::<T>(self.params.resolver.position_epsilon),
+            c::<T>(self.params.resolver.velocity_epsilon),
+        );
         let mut woken = Vec::new();
         for k in &self.world.contacts {
             let Some(b2) = k.body2.filter(|b| self.world.body(*b).movable) else {
                 continue;
             };
             let (a, b) = (self.sleep[k.body1.0].awake, self.sleep[b2.0].awake);
-            if a != b {
+            let acts = k.input.penetration > pen_eps
+                || -self.point_velocity(k).dot(&k.input.normal) > vel_eps;
+            if a != b && acts {
                 woken.push(if a { b2 } else { k.body1 });
             }
         }
@@ -413,7 +445,8 @@ impl<T: Real> Simulation<T> {
         for (i, k) in self.world.contacts.iter().enumerate() {
             let vn0 = to_f64(before[i].0);
             let (vn1, vt1) = (to_f64(after[i].0), to_f64(after[i].1));
-            let slides = vt1 > 1e-3;
+            // Sliding: faster than residual jitter of resting contacts (5 cm/s).
+            let slides = vt1 > 0.05;
             let bouncy = k.input.restitution > T::zero();
             match pairs.iter().position(|p| p.0 == k.body1 && p.1 == k.body2) {
                 Some(j) => {

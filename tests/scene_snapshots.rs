@@ -1,0 +1,42 @@
+//! `simulate` of every scene as text (a row every half second, the events
+//! between) and as JSON (every second), held as snapshots.
+
+mod common;
+
+use assert_cmd::Command;
+
+fn simulate(path: &std::path::Path, args: &[&str]) -> String {
+    let out = Command::cargo_bin("contact-lab")
+        .unwrap()
+        .arg("simulate")
+        .arg(path)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn simulate_text_and_json_of_every_scene() {
+    common::snapshot_settings().bind(|| {
+        insta::glob!("../lessons/scenes", "*.toml", |path| {
+            let lesson = common::lesson_file(path);
+            let scene = lesson.simulation.as_ref().unwrap();
+            let half_second = ((0.5 / scene.dt).round() as u64).max(1).to_string();
+            let second = ((1.0 / scene.dt).round() as u64).max(1).to_string();
+            insta::assert_snapshot!(
+                "simulate_text",
+                simulate(path, &["--every", &half_second, "--digits", "5"])
+            );
+            insta::assert_snapshot!(
+                "simulate_json",
+                simulate(path, &["--every", &second, "--format", "json"])
+            );
+        });
+    });
+}

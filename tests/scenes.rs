@@ -1,0 +1,218 @@
+//! Scenes in time, checked against what physics predicts in closed form
+//! (a bounce's apex, a sliding box's stopping distance, a slope's
+//! acceleration), against invariants (energy, momentum), and against what
+//! the lecture says about resting contacts and sleep.
+
+use contact_lab::lesson::Lesson;
+use contact_lab::physics::step::{Event, Simulation, StepReport};
+use contact_lab::physics::BodyId;
+
+/// The scene's simulation with the lesson's parameters.
+fn simulation(id: &str) -> Simulation<f64> {
+    let lesson = Lesson::load(id).unwrap();
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let materials = lesson.simulation.unwrap().materials;
+    Simulation::new(world, params, materials)
+}
+
+/// Runs `steps` steps, handing each report and the simulation to `each`.
+fn run(
+    sim: &mut Simulation<f64>,
+    steps: usize,
+    mut each: impl FnMut(&Simulation<f64>, &StepReport),
+) {
+    for _ in 0..steps {
+        let report = sim.advance().expect("the scene does not blow up");
+        each(sim, &report);
+    }
+}
+
+fn body(sim: &Simulation<f64>, i: usize) -> &contact_lab::physics::RigidBody<f64> {
+    &sim.world.bodies[i].state
+}
+
+#[test]
+fn ball_drop_first_apex_is_e_squared_times_the_height() {
+    let mut sim = simulation("ball-drop");
+    let (mut bounced, mut apex) = (false, 0.0f64);
+    run(&mut sim, 1200, |sim, r| {
+        bounced |= r.events.iter().any(|e| matches!(e, Event::Bounce { .. }));
+        if bounced {
+            apex = apex.max(body(sim, 0).position.y - 0.1);
+        }
+    });
+    assert!(bounced);
+    let expected = 0.8f64.powi(2) * 1.0;
+    assert!(
+        (apex - expected).abs() < 0.02 * expected,
+        "apex {apex} m, e²h = {expected} m"
+    );
+}
+
+#[test]
+fn resting_box_settles_without_vibrating_and_falls_asleep() {
+    let mut sim = simulation("resting-box");
+    let (mut asleep_at, mut worst_speed, mut worst_depth) = (None, 0.0f64, 0.0f64);
+    run(&mut sim, 240, |sim, r| {
+        if r.time > 1.0 {
+            worst_speed = worst_speed.max(body(sim, 0).velocity.norm());
+            worst_depth = worst_depth.max(r.max_penetration);
+        }
+        if asleep_at.is_none() && r.events.contains(&Event::FallsAsleep { body: BodyId(0) }) {
+            asleep_at = Some(r.time);
+        }
+    });
+    assert!(worst_speed < 0.01, "speed after 1 s: {worst_speed} m/s");
+    assert!(worst_depth < 0.01, "penetration after 1 s: {worst_depth} m");
+    assert!(
+        asleep_at.is_some_and(|t| t < 4.0),
+        "asleep at {asleep_at:?}"
+    );
+}
+
+#[test]
+fn without_micro_collisions_the_resting_box_vibrates() {
+    // The same box with acceleration compensation and the velocity limit off:
+    // restitution 0.4 bounces back the velocity each step of gravity builds.
+    let vertical_speed = |compensate: bool| {
+        let mut sim = simulation("resting-box");
+        sim.params.sleep.enabled = false;
+        if !compensate {
+            sim.params.acceleration_compensation = false;
+            sim.params.contact.velocity_limit = 0.0;
+        }
+        let mut worst = 0.0f64;
+        run(&mut sim, 180, |sim, r| {
+            if r.time > 1.0 {
+                worst = worst.max(body(sim, 0).velocity.y.abs());
+            }
+        });
+        worst
+    };
+    let (still, vibrating) = (vertical_speed(true), vertical_speed(false));
+    assert!(still < 0.01, "{still}");
+    assert!(
+        vibrating > 0.05,
+        "vertical speed amplitude without compensation {vibrating} m/s"
+    );
+}
+
+#[test]
+fn sliding_box_stops_where_coulomb_says() {
+    let mut sim = simulation("sliding-box");
+    run(&mut sim, 400, |_, _| {});
+    let distance = body(&sim, 0).position.x;
+    let expected = 3.0f64.powi(2) / (2.0 * 0.3 * 9.81);
+    assert!(
+        (distance - expected).abs() < 0.02 * expected,
+        "stopped after {distance} m, v₀²/(2 μ_d g) = {expected} m"
+    );
+    assert!(body(&sim, 0).velocity.norm() < 0.01);
+}
+
+#[test]
+fn box_slides_down_a_steep_slope_with_coulombs_acceleration() {
+    let mut sim = simulation("ramp-slide");
+    let dt = sim.params.dt;
+    run(&mut sim, 120, |_, _| {});
+    let theta = 30f64.to_radians();
+    let expected = 9.81 * (theta.sin() - 0.3 * theta.cos());
+    let v = body(&sim, 0).velocity;
+    let along = (v.x * theta.cos() - v.y * theta.sin()).abs();
+    let acceleration = along / (120.0 * dt);
+    assert!(
+        (acceleration - expected).abs() < 0.02 * expected,
+        "{acceleration} m/s² against g(sin θ − μ_d cos θ) = {expected}"
+    );
+}
+
+#[test]
+fn the_cradle_passes_the_velocity_to_the_last_ball() {
+    let mut sim = simulation("cradle-over-time");
+    run(&mut sim, 200, |_, _| {});
+    for i in 0..4 {
+        assert!(body(&sim, i).velocity.norm() < 1e-9, "ball {i}");
+    }
+    assert!((body(&sim, 4).velocity.x - 1.0).abs() < 1e-9);
+    let momentum: f64 = (0..5).map(|i| body(&sim, i).velocity.x).sum();
+    assert!((momentum - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn a_manifold_stack_stands_and_single_contacts_let_it_fall() {
+    let top_height = |mode: contact_lab::physics::params::BoxBoxMode| {
+        let mut sim = simulation("stack-5");
+        sim.params.box_box = mode;
+        run(&mut sim, 360, |_, _| {});
+        body(&sim, 4).position.y
+    };
+    let standing = top_height(contact_lab::physics::params::BoxBoxMode::Manifold);
+    let single = top_height(contact_lab::physics::params::BoxBoxMode::Single);
+    assert!(
+        standing > 4.4,
+        "manifold: top box at {standing} m after 6 s"
+    );
+    assert!(single < 3.0, "single: top box at {single} m after 6 s");
+}
+
+#[test]
+fn sleeping_boxes_wake_when_the_ball_arrives_and_the_floor_wakes_nobody() {
+    let mut sim = simulation("sleep-and-wake");
+    let (mut asleep, mut woke) = (None, None);
+    run(&mut sim, 300, |sim, r| {
+        for e in &r.events {
+            match e {
+                Event::FallsAsleep { body: BodyId(0) } if asleep.is_none() => asleep = Some(r.time),
+                Event::Wakes { body } if woke.is_none() => {
+                    // Only the ball (body 2) can wake a box.
+                    let touching = sim.world.contacts.iter().any(|k| {
+                        (k.body1 == *body && k.body2 == Some(BodyId(2)))
+                            || (k.body1 == BodyId(2) && k.body2 == Some(*body))
+                    });
+                    assert!(touching, "{body:?} woke without the ball");
+                    woke = Some(r.time);
+                }
+                _ => {}
+            }
+        }
+    });
+    let (asleep, woke) = (
+        asleep.expect("box1 falls asleep"),
+        woke.expect("the ball wakes a box"),
+    );
+    assert!(
+        asleep < 2.5 && woke > 2.8 && woke < 3.5,
+        "asleep {asleep} s, woke {woke} s"
+    );
+}
+
+#[test]
+fn every_scene_stays_finite_and_energy_rises_only_with_a_cause() {
+    for id in contact_lab::lesson::embedded::scene_ids() {
+        let mut sim = simulation(id);
+        let g = sim.params.world.gravity;
+        let mut energy = contact_lab::physics::step::energy::total(&sim.world, &g);
+        run(&mut sim, 300, |sim, r| {
+            let now = r.kinetic_energy + r.potential_energy;
+            // Allowed: projection moving bodies out of penetration (work of
+            // the position phase, at most m g × the depth resolved).
+            let mass: f64 = sim
+                .world
+                .bodies
+                .iter()
+                .filter_map(|b| b.dynamic())
+                .map(|b| b.mass)
+                .sum();
+            let allowance =
+                mass * g.norm() * r.max_penetration.max(0.0) + 1e-9 * energy.abs().max(1.0);
+            assert!(
+                now <= energy + allowance,
+                "{id} step {}: energy rose from {energy} to {now}",
+                r.step
+            );
+            energy = now;
+        });
+    }
+}
