@@ -15,11 +15,13 @@ use contact_lab::physics::{
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
+/// One report: (phase, iteration, contact, value bits, updates sorted by contact).
+type Taken = (u8, usize, usize, u64, Vec<(usize, u64, u64)>);
+
 /// Every report, as bits, so two runs compare exactly.
 #[derive(Debug, Default, PartialEq)]
 struct Log {
-    /// (phase, iteration, contact, value bits, updates sorted by contact).
-    taken: Vec<(u8, usize, usize, u64, Vec<(usize, u64, u64)>)>,
+    taken: Vec<Taken>,
 }
 
 impl Observer<f64> for Log {
@@ -61,28 +63,36 @@ fn state(r: &Resolver<f64>) -> Vec<u64> {
     out
 }
 
+/// A body: movable, mass, box sides, orientation (raw), position, velocity,
+/// angular velocity, accelerating.
+type BodySpec = (
+    bool,
+    f64,
+    [f64; 3],
+    [f64; 4],
+    [f64; 3],
+    [f64; 3],
+    [f64; 3],
+    bool,
+);
+
+/// A contact: body 1, body 2, point, normal, penetration and restitution
+/// (indices into the sets below), friction kind, μ.
+type ContactSpec = (
+    usize,
+    Option<usize>,
+    [f64; 3],
+    usize,
+    usize,
+    usize,
+    usize,
+    f64,
+);
+
 #[derive(Debug, Clone)]
 struct Spec {
-    bodies: Vec<(
-        bool,
-        f64,
-        [f64; 3],
-        [f64; 4],
-        [f64; 3],
-        [f64; 3],
-        [f64; 3],
-        bool,
-    )>,
-    contacts: Vec<(
-        usize,
-        Option<usize>,
-        [f64; 3],
-        usize,
-        usize,
-        usize,
-        usize,
-        f64,
-    )>,
+    bodies: Vec<BodySpec>,
+    contacts: Vec<ContactSpec>,
     restitution_from: RestitutionFrom,
     projection: ProjectionMethod,
 }

@@ -152,7 +152,7 @@ fn agrees_with_cyclone(scene: &(&str, &str, &str)) -> f64 {
                         &x[0..3],
                         &mut worst,
                     );
-                    let q = b.orientation;
+                    let q = b.unit_orientation();
                     close(
                         &format!("{what} orientation"),
                         &[q.w, q.i, q.j, q.k],

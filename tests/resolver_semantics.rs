@@ -53,7 +53,7 @@ fn one_contact_resolved_together_is_the_single_contact_solution() {
             if moved {
                 assert!(close(&b.position, &after.position), "{id}");
                 assert!(
-                    (b.orientation.coords - after.orientation.coords).norm() < 1e-12,
+                    (b.unit_orientation().coords - after.orientation.coords).norm() < 1e-12,
                     "{id}"
                 );
             }

@@ -141,7 +141,7 @@ pub fn show(
     for b in &moment.bodies {
         let def = &mut at.bodies[b.id.0];
         def.position = b.position;
-        def.orientation = b.orientation.normalize();
+        def.orientation = b.unit_orientation();
         def.velocity = b.velocity;
         def.angular_velocity = b.angular_velocity;
     }
@@ -154,7 +154,7 @@ pub fn show(
         ResolveFormat::Text => format!("{preamble}\n{}", render::text::render(&trace, fmt)),
         ResolveFormat::Md => format!(
             "> {}\n\n{}",
-            render::markdown::escape(&preamble).replace('\n', "\n> "),
+            render::markdown::escape(preamble.trim_end()).replace('\n', "\n> "),
             render::markdown::document(&[trace], fmt, &[])
         ),
     };
@@ -163,29 +163,34 @@ pub fn show(
 
 fn preamble(lesson: &Lesson, show: Show, m: &Moment, fmt: &Fmt) -> String {
     let label = lesson.contact_label(m.contact);
-    if show.velocity {
-        format!(
-            "Velocity iteration {} of `resolve {}` takes contact {label} at desired Δv {}.\n\
-             The bodies are as that iteration finds them: positions after the position phase,\n\
-             velocities after the earlier velocity iterations. The penetration is left out (0):\n\
-             the position phase has dealt with it. The resolver keeps every contact's r and I⁻¹\n\
-             from before the phases, as the reference engine does; {}.\n",
-            show.iteration,
-            lesson.id,
-            fmt.num(m.value),
-            m.action
-        )
+    let lines = if show.velocity {
+        [
+            format!(
+                "Velocity iteration {} of `resolve {}` takes contact {label} at desired Δv {}.",
+                show.iteration,
+                lesson.id,
+                fmt.num(m.value)
+            ),
+            "The bodies are as that iteration finds them: positions after the position phase, velocities after the earlier velocity iterations. The penetration is left out (0): the position phase has dealt with it.".to_string(),
+            format!(
+                "The contact point is where the lesson puts it (collision detection is not run again). The resolver keeps every contact's r and I⁻¹ from before the phases, as the reference engine does; once earlier iterations have moved the bodies its numbers differ slightly from this solution's: {}.",
+                m.action
+            ),
+        ]
     } else {
-        format!(
-            "Position iteration {} of `resolve {}` takes contact {label} at penetration {}\n\
-             (the resolver's bookkeeping). The bodies are as that iteration finds them (earlier\n\
-             iterations moved them). The resolver keeps every contact's r and I⁻¹ from before the\n\
-             phase, as the reference engine does; {}. The velocity stages below treat this\n\
-             contact alone: the resolver's velocity phase comes after the position phase.\n",
-            show.iteration,
-            lesson.id,
-            fmt.num(m.value),
-            m.action
-        )
-    }
+        [
+            format!(
+                "Position iteration {} of `resolve {}` takes contact {label} at penetration {} (the resolver's bookkeeping).",
+                show.iteration,
+                lesson.id,
+                fmt.num(m.value)
+            ),
+            "The bodies are as that iteration finds them (earlier iterations moved them). The velocity stages below treat this contact alone: the resolver's velocity phase comes after the position phase.".to_string(),
+            format!(
+                "The contact point is where the lesson puts it (collision detection is not run again). The resolver keeps every contact's r and I⁻¹ from before the phase, as the reference engine does; once earlier iterations have moved the bodies its numbers differ slightly from this solution's: {}.",
+                m.action
+            ),
+        ]
+    };
+    lines.join("\n") + "\n"
 }

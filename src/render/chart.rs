@@ -90,7 +90,7 @@ pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
                 out.push(if t.abs() < step * 1e-9 { 0.0 } else { t });
                 t += step;
             }
-            if out.last().is_some_and(|&l| l < hi) {
+            if out.last().is_some_and(|&l| l < hi - step * 1e-6) {
                 out.push(t);
             }
             out

@@ -318,7 +318,7 @@ pub fn after(lesson: &Lesson, bodies: &[ResolverBody<f64>]) -> Vec<(String, Afte
     bodies
         .iter()
         .map(|b| {
-            let q = b.orientation.normalize();
+            let q = b.unit_orientation();
             (
                 lesson.bodies[b.id.0].name.clone(),
                 AfterState {

@@ -6,9 +6,11 @@
 //! per-contact steps are the scan's own functions, so the results are
 //! bit-identical. Nothing is allocated per iteration.
 //!
-//! A value that stays at or below epsilon is not replayed in the queue: it
-//! can never be taken, and the queue's stale entry for it is at or below
-//! epsilon too, so the first contact above epsilon is still exact.
+//! The contacts an iteration changed are replayed in the queue together
+//! (each match above them once). A value that stays at or below epsilon is
+//! not replayed: it can never be taken, and the queue's stale entry for it
+//! is at or below epsilon too, so the first contact above epsilon is still
+//! exact.
 
 use super::observer::Observer;
 use super::{position, velocity, Phase, PhaseOutcome, Resolver};
@@ -51,15 +53,21 @@ pub fn position_phase<T: Real, O: Observer<T>>(
         obs.position_taken(used, k, penetration, &moves);
         r.stamp += 1;
         let stamp = r.stamp;
+        let mut changed = std::mem::take(&mut r.changed);
+        changed.clear();
         each_neighbour(r, taken, stamp, |r, j| {
             let c = &mut r.contacts[j];
             let from = c.penetration;
             c.penetration = position::updated_penetration(c, &taken, &moves);
             if !(from <= epsilon && c.penetration <= epsilon) {
-                queue.update(j, c.penetration);
+                queue.set(j, c.penetration);
+                changed.push(j);
             }
             obs.penetration_updated(j, from, c.penetration);
         });
+        changed.sort_unstable();
+        queue.replay(&mut changed);
+        r.changed = changed;
         used += 1;
     }
     r.queue = queue;
@@ -86,16 +94,22 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
         obs.velocity_taken(used, k, desired, &impulse);
         r.stamp += 1;
         let stamp = r.stamp;
+        let mut changed = std::mem::take(&mut r.changed);
+        changed.clear();
         each_neighbour(r, taken, stamp, |r, j| {
             let c = &mut r.contacts[j];
             let before = c.desired;
             c.velocity = velocity::updated_velocity(c, &taken, &impulse);
             c.desired = super::desired_of(c, from);
             if !(before <= epsilon && c.desired <= epsilon) {
-                queue.update(j, c.desired);
+                queue.set(j, c.desired);
+                changed.push(j);
             }
             obs.desired_updated(j, before, c.desired);
         });
+        changed.sort_unstable();
+        queue.replay(&mut changed);
+        r.changed = changed;
         used += 1;
     }
     r.queue = queue;

@@ -96,7 +96,11 @@ pub struct Resolver<T: Real> {
     pub friction: Vec<FrictionData<T>>,
     pub adjacency: Adjacency,
     pub params: ResolverParams,
+    /// World body → resolver body (kept for the next prepare).
+    index: Vec<Option<usize>>,
     queue: TournamentTree<T>,
+    /// The contacts one iteration changed (scratch, sized at prepare).
+    changed: Vec<usize>,
     stamps: Vec<usize>,
     stamp: usize,
     /// The largest value of each phase before it ran.
@@ -106,26 +110,57 @@ pub struct Resolver<T: Real> {
 impl<T: Real> Resolver<T> {
     /// Prepares every contact of `world` (nothing in `world` changes).
     pub fn prepare(world: &World<T>, params: &ResolverParams) -> Self {
-        let prepare::Prepared {
-            bodies,
-            contacts,
-            setups,
-            friction,
-            adjacency,
-        } = prepare::prepare(world, params.restitution_from);
-        let n = contacts.len();
-        Resolver {
-            bodies,
-            contacts,
-            setups,
-            friction,
-            adjacency,
+        let mut r = Resolver {
+            bodies: Vec::new(),
+            contacts: Vec::new(),
+            setups: Vec::new(),
+            friction: Vec::new(),
+            adjacency: Adjacency::default(),
             params: *params,
-            queue: TournamentTree::with_capacity(n),
-            stamps: vec![0; n],
+            index: Vec::new(),
+            queue: TournamentTree::default(),
+            changed: Vec::new(),
+            stamps: Vec::new(),
             stamp: 0,
             before: [T::zero(); 2],
-        }
+        };
+        r.prepare_again(world, params);
+        r
+    }
+
+    /// Prepares `world` again in this resolver's storage: once it has held a
+    /// world this size, nothing is allocated (as an engine resolving every
+    /// frame would run it).
+    pub fn prepare_again(&mut self, world: &World<T>, params: &ResolverParams) {
+        let mut prepared = prepare::Prepared {
+            bodies: std::mem::take(&mut self.bodies),
+            contacts: std::mem::take(&mut self.contacts),
+            setups: std::mem::take(&mut self.setups),
+            friction: std::mem::take(&mut self.friction),
+            adjacency: std::mem::take(&mut self.adjacency),
+            index: std::mem::take(&mut self.index),
+        };
+        prepare::prepare_into(world, params.restitution_from, &mut prepared);
+        let n = prepared.contacts.len();
+        self.bodies = prepared.bodies;
+        self.contacts = prepared.contacts;
+        self.setups = prepared.setups;
+        self.friction = prepared.friction;
+        self.adjacency = prepared.adjacency;
+        self.index = prepared.index;
+        self.params = *params;
+        self.queue.reserve(n);
+        // An iteration changes at most the contacts of the taken contact's two bodies.
+        let widest = (0..self.bodies.len())
+            .map(|b| self.adjacency.of(b).len())
+            .max()
+            .unwrap_or(0);
+        self.changed
+            .reserve((2 * widest).saturating_sub(self.changed.len()));
+        self.stamps.clear();
+        self.stamps.resize(n, 0);
+        self.stamp = 0;
+        self.before = [T::zero(); 2];
     }
 
     /// Runs the position phase.
@@ -172,7 +207,7 @@ impl<T: Real> Resolver<T> {
         for b in &self.bodies {
             let state = &mut world.body_mut(b.id).state;
             state.position = b.position;
-            state.orientation = b.orientation;
+            state.orientation = b.unit_orientation();
             state.velocity = b.velocity;
             state.angular_velocity = b.angular_velocity;
         }

@@ -14,7 +14,7 @@ pub struct PositionMoves<T: Real> {
     /// The resolver body of each slot (`None`: the world or an immovable body).
     pub slots: [Option<usize>; 2],
     pub bodies: [Option<BodyProjection<T>>; 2],
-    /// New orientation of each moved body (normalised), where it turned.
+    /// New orientation of each moved body (not normalised), where it turned.
     pub orientations: [Option<nalgebra::Quaternion<T>>; 2],
 }
 

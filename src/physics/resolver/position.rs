@@ -16,8 +16,10 @@ use crate::physics::{Problem, Real};
 
 /// Resolves `penetration` (times the relaxation) of contact `c`: computes each
 /// slot's moves and applies them to the bodies (position `p + Δ_l d`,
-/// orientation `θ + ½[0, Δθ]θ`, normalised as the reference engine's
-/// `setOrientation` does).
+/// orientation `θ + ½[0, Δθ]θ`). The orientation is normalised when it is
+/// reported, not after each move: the update is linear in θ, so normalising
+/// in between (as the reference engine's `setOrientation` does) only scales
+/// it and gives the same unit quaternion up to round-off.
 pub fn take<T: Real>(
     c: &ResolverContact<T>,
     setup: &ContactSetup<T>,
@@ -45,8 +47,7 @@ pub fn take<T: Real>(
         );
         body.position = projection.position;
         if projection.angular_change != Vector3::zeros() {
-            let turned = add_scaled_rotation(&body.orientation, &projection.angular_change);
-            body.orientation = turned.normalize();
+            body.orientation = add_scaled_rotation(&body.orientation, &projection.angular_change);
             moves.orientations[i] = Some(body.orientation);
         }
         moves.bodies[i] = Some(projection);

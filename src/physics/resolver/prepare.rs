@@ -14,9 +14,11 @@ use crate::physics::stages::desired_velocity::{
     relative_acceleration,
 };
 use crate::physics::stages::projection::{
-    projection_inertia, total_projection_inertia, ProjectionInertia,
+    projection_inertia_from, total_projection_inertia, ProjectionInertia,
 };
-use crate::physics::stages::unit_impulse::{body_unit_response, combine_unit_responses};
+use crate::physics::stages::unit_impulse::{
+    angular_response, body_unit_response, combine_unit_responses, total_per_unit_impulse,
+};
 use crate::physics::{BodyId, FrictionModel, Real, World};
 
 /// A movable body as the resolver moves it.
@@ -28,10 +30,18 @@ pub struct ResolverBody<T: Real> {
     /// `R I_b⁻¹ Rᵀ` at prepare.
     pub inverse_inertia_world: Matrix3<T>,
     pub position: Vector3<T>,
-    /// Unit quaternion `[w, x, y, z]`.
+    /// Orientation `[w, x, y, z]`: a unit quaternion at prepare; the
+    /// position phase's updates are not normalised (see [`ResolverBody::unit_orientation`]).
     pub orientation: Quaternion<T>,
     pub velocity: Vector3<T>,
     pub angular_velocity: Vector3<T>,
+}
+
+impl<T: Real> ResolverBody<T> {
+    /// The orientation normalised, as it is reported.
+    pub fn unit_orientation(&self) -> Quaternion<T> {
+        self.orientation.normalize()
+    }
 }
 
 /// The friction part of a contact (only contacts with friction have one).
@@ -90,28 +100,43 @@ pub struct ContactSetup<T: Real> {
 pub struct Adjacency {
     pub offsets: Vec<usize>,
     pub contacts: Vec<usize>,
+    /// Scratch for the build (kept so a rebuild allocates nothing).
+    fill: Vec<usize>,
 }
 
 impl Adjacency {
     pub fn build(bodies: usize, slots: impl Iterator<Item = [Option<usize>; 2]> + Clone) -> Self {
-        let mut offsets = vec![0usize; bodies + 1];
+        let mut a = Adjacency::default();
+        a.build_into(bodies, slots);
+        a
+    }
+
+    /// Rebuilds in place (no allocation when the storage is big enough).
+    pub fn build_into(
+        &mut self,
+        bodies: usize,
+        slots: impl Iterator<Item = [Option<usize>; 2]> + Clone,
+    ) {
+        self.offsets.clear();
+        self.offsets.resize(bodies + 1, 0);
         for s in slots.clone() {
             for b in s.into_iter().flatten() {
-                offsets[b + 1] += 1;
+                self.offsets[b + 1] += 1;
             }
         }
         for b in 0..bodies {
-            offsets[b + 1] += offsets[b];
+            self.offsets[b + 1] += self.offsets[b];
         }
-        let mut fill = offsets.clone();
-        let mut contacts = vec![0usize; offsets[bodies]];
+        self.contacts.clear();
+        self.contacts.resize(self.offsets[bodies], 0);
+        self.fill.clear();
+        self.fill.extend_from_slice(&self.offsets[..bodies]);
         for (k, s) in slots.enumerate() {
             for b in s.into_iter().flatten() {
-                contacts[fill[b]] = k;
-                fill[b] += 1;
+                self.contacts[self.fill[b]] = k;
+                self.fill[b] += 1;
             }
         }
-        Adjacency { offsets, contacts }
     }
 
     /// The contacts of resolver body `b`.
@@ -144,12 +169,39 @@ pub struct Prepared<T: Real> {
     pub setups: Vec<ContactSetup<T>>,
     pub friction: Vec<FrictionData<T>>,
     pub adjacency: Adjacency,
+    /// World body → resolver body (scratch kept for the next prepare).
+    pub index: Vec<Option<usize>>,
 }
 
 /// Prepares every movable body and every contact of `world`.
 pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> {
-    let mut index = vec![None; world.bodies.len()];
-    let mut bodies = Vec::new();
+    let mut prepared = Prepared {
+        bodies: Vec::new(),
+        contacts: Vec::new(),
+        setups: Vec::new(),
+        friction: Vec::new(),
+        adjacency: Adjacency::default(),
+        index: Vec::new(),
+    };
+    prepare_into(world, from, &mut prepared);
+    prepared
+}
+
+/// Prepares `world` into `out`, reusing its storage: nothing is allocated
+/// when it already holds a world this size (as an engine resolving every
+/// frame would use it).
+pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut Prepared<T>) {
+    let Prepared {
+        bodies,
+        contacts,
+        setups,
+        friction,
+        adjacency,
+        index,
+    } = out;
+    index.clear();
+    index.resize(world.bodies.len(), None);
+    bodies.clear();
     for (i, body) in world.bodies.iter().enumerate() {
         if let Some(b) = body.dynamic() {
             index[i] = Some(bodies.len());
@@ -164,96 +216,96 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> 
             });
         }
     }
-    let mut friction = Vec::new();
-    let mut setups = Vec::with_capacity(world.contacts.len());
-    let contacts: Vec<ResolverContact<T>> = world
-        .contacts
-        .iter()
-        .map(|contact| {
-            let input = &contact.input;
-            let slots = contact.slots().map(|id| index[id?.0]);
-            let body =
-                |i: usize| slots[i].map(|b| (&bodies[b], &world.bodies[bodies[b].id.0].state));
-            // Contact frame (stage 1): basis and arms.
-            let (basis, _) = contact_basis(&input.normal);
-            let d = input.normal;
-            let r = [0, 1].map(|i| body(i).map(|(b, _)| input.point - b.position));
-            // Velocity change per unit impulse (stage 2), from the bodies' prepared I⁻¹.
-            let with_matrix = input.has_friction();
-            let responses = [0, 1].map(|i| {
+    friction.clear();
+    setups.clear();
+    contacts.clear();
+    contacts.extend(world.contacts.iter().map(|contact| {
+        let input = &contact.input;
+        let slots = contact.slots().map(|id| index[id?.0]);
+        let bodies = &*bodies;
+        let body = |i: usize| slots[i].map(|b| (&bodies[b], &world.bodies[bodies[b].id.0].state));
+        // Contact frame (stage 1): basis and arms.
+        let (basis, _) = contact_basis(&input.normal);
+        let d = input.normal;
+        let r = [0, 1].map(|i| body(i).map(|(b, _)| input.point - b.position));
+        // Velocity change per unit impulse (stage 2), from the bodies'
+        // prepared I⁻¹; the projection's angular inertia is the same number.
+        let responses = [0, 1].map(|i| {
+            let (b, _) = body(i)?;
+            Some(angular_response(&b.inverse_inertia_world, &r[i]?, &d))
+        });
+        let projection = [0, 1].map(|i| {
+            let (b, _) = body(i)?;
+            Some(projection_inertia_from(
+                b.inverse_mass,
+                responses[i].as_ref()?,
+                &r[i]?,
+                &d,
+                &input.settings,
+            ))
+        });
+        let (_, unit_total) = total_per_unit_impulse(
+            &[0, 1].map(|i| Some((body(i)?.0.inverse_mass, responses[i]?.angular))),
+        );
+        // Only a contact with friction builds the 3×3 matrix.
+        let matrix = input.has_friction().then(|| {
+            let bodies = [0, 1].map(|i| {
                 let (b, _) = body(i)?;
                 Some(body_unit_response(
                     b.inverse_mass,
                     b.inverse_inertia_world,
                     r[i]?,
                     &d,
-                    with_matrix,
+                    true,
                 ))
             });
-            let projection = [0, 1].map(|i| {
-                let (b, _) = body(i)?;
-                Some(projection_inertia(
-                    b.inverse_mass,
-                    &b.inverse_inertia_world,
-                    &r[i]?,
-                    &d,
-                    &input.settings,
-                ))
+            combine_unit_responses(bodies, &basis, true).matrix
+        });
+        // Contact velocity and the acceleration terms (stage 3).
+        let point_velocity = [0, 1].map(|i| {
+            let (_, state) = body(i)?;
+            Some(state.point_velocity(&r[i]?))
+        });
+        let acceleration =
+            relative_acceleration([0, 1].map(|i| body(i).map(|(_, s)| s.acceleration)));
+        let duration = contact.duration.unwrap_or(world.step.duration);
+        let (velocity_from_acceleration, mut planar) =
+            acceleration_terms(&acceleration, &basis, duration);
+        if !world.step.anticipate_planar_acceleration {
+            planar = Vector3::zeros();
+        }
+        let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
+        let friction_index = matrix.flatten().map(|matrix| {
+            friction.push(FrictionData {
+                model: input.friction_model,
+                static_friction: input.static_friction,
+                dynamic_friction: input.dynamic_friction,
+                matrix,
             });
-            let unit = combine_unit_responses(responses, &basis, with_matrix);
-            // Contact velocity and the acceleration terms (stage 3).
-            let point_velocity = [0, 1].map(|i| {
-                let (_, state) = body(i)?;
-                Some(state.point_velocity(&r[i]?))
-            });
-            let acceleration =
-                relative_acceleration([0, 1].map(|i| body(i).map(|(_, s)| s.acceleration)));
-            let duration = contact.duration.unwrap_or(world.step.duration);
-            let (velocity_from_acceleration, mut planar) =
-                acceleration_terms(&acceleration, &basis, duration);
-            if !world.step.anticipate_planar_acceleration {
-                planar = Vector3::zeros();
-            }
-            let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
-            let friction_index = unit.matrix.map(|matrix| {
-                friction.push(FrictionData {
-                    model: input.friction_model,
-                    static_friction: input.static_friction,
-                    dynamic_friction: input.dynamic_friction,
-                    matrix,
-                });
-                friction.len() - 1
-            });
-            let mut c = ResolverContact {
-                penetration: input.penetration,
-                desired: T::zero(),
-                bodies: slots,
-                normal: d,
-                r: r.map(|r| r.unwrap_or_else(Vector3::zeros)),
-                velocity,
-                basis,
-                initial_velocity: velocity.x,
-                velocity_from_acceleration,
-                restitution: input.restitution,
-                velocity_limit: input.settings.velocity_limit,
-            };
-            c.desired = desired_of(&c, from);
-            setups.push(ContactSetup {
-                relaxation: input.settings.relaxation,
-                total_inertia: total_projection_inertia(&projection),
-                projection,
-                unit_total: unit.total,
-                friction: friction_index,
-            });
-            c
-        })
-        .collect();
-    let adjacency = Adjacency::build(bodies.len(), contacts.iter().map(|c| c.bodies));
-    Prepared {
-        bodies,
-        contacts,
-        setups,
-        friction,
-        adjacency,
-    }
+            friction.len() - 1
+        });
+        let mut c = ResolverContact {
+            penetration: input.penetration,
+            desired: T::zero(),
+            bodies: slots,
+            normal: d,
+            r: r.map(|r| r.unwrap_or_else(Vector3::zeros)),
+            velocity,
+            basis,
+            initial_velocity: velocity.x,
+            velocity_from_acceleration,
+            restitution: input.restitution,
+            velocity_limit: input.settings.velocity_limit,
+        };
+        c.desired = desired_of(&c, from);
+        setups.push(ContactSetup {
+            relaxation: input.settings.relaxation,
+            total_inertia: total_projection_inertia(&projection),
+            projection,
+            unit_total,
+            friction: friction_index,
+        });
+        c
+    }));
+    adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
 }

@@ -1,11 +1,14 @@
 //! The indexed resolver's priority queue: a tournament (winner) tree over
 //! the contacts' values with the scan's tie rule — the largest value wins,
-//! the lowest contact index among equal values. Leaves are the contacts;
-//! each inner node holds the winner of its two children, so the root is the
-//! contact the scan would take. Changing one value replays the matches on
-//! its path to the root (at most log₂ n). A NaN value ranks below everything
-//! (the scan never takes it). Storage is allocated once; filling and
-//! updating allocate nothing.
+//! the lowest contact index among equal values. Leaves are the contacts
+//! (padded to a power of two with unused leaves that never win); each inner
+//! node holds the winner of its two children with its value, so the root is
+//! the contact the scan would take. After an iteration changes some values,
+//! [`TournamentTree::replay`] replays the matches above them level by level,
+//! each match once however many of the changed contacts are below it, and
+//! only where a result changed. A NaN value ranks below every number (the
+//! scan never takes it). Storage is allocated once; filling, changing and
+//! replaying allocate nothing.
 
 use crate::physics::{c, Real};
 
@@ -18,27 +21,37 @@ struct Entry<T> {
 
 #[derive(Debug, Clone)]
 pub struct TournamentTree<T: Real> {
-    /// Contacts (leaves).
+    /// Contacts in use.
     n: usize,
-    /// Node `p` holds the winner of its subtree with its value: inner nodes
-    /// `1..n`, leaf `i` at `n + i`. A match reads one pair of siblings, side
-    /// by side in memory.
+    /// Leaf slots, a power of two ≥ n: leaf `i` is node `leaves + i`.
+    leaves: usize,
+    /// Node 1 is the root; node `p` holds the winner of nodes `2p`, `2p + 1`.
     nodes: Vec<Entry<T>>,
 }
 
 impl<T: Real> Default for TournamentTree<T> {
+    /// An empty tree that has allocated nothing.
     fn default() -> Self {
-        Self::with_capacity(0)
+        TournamentTree {
+            n: 0,
+            leaves: 1,
+            nodes: Vec::new(),
+        }
     }
 }
 
 impl<T: Real> TournamentTree<T> {
     pub fn with_capacity(n: usize) -> Self {
+        let mut t = Self::default();
+        t.reserve(n);
+        t
+    }
+
+    /// Room for `n` contacts (allocates only if there is less).
+    pub fn reserve(&mut self, n: usize) {
         assert!(n < u32::MAX as usize, "contacts are numbered in 32 bits");
-        TournamentTree {
-            n: 0,
-            nodes: Vec::with_capacity(2 * n),
-        }
+        let need = 2 * n.next_power_of_two();
+        self.nodes.reserve(need.saturating_sub(self.nodes.len()));
     }
 
     fn key(x: T) -> T {
@@ -50,7 +63,8 @@ impl<T: Real> TournamentTree<T> {
         }
     }
 
-    /// The winner of two entries: the larger value, the lower contact on ties.
+    /// The winner of two entries: the larger value, the lower contact on ties
+    /// (an unused leaf has the largest contact number and the lowest value).
     fn play(a: Entry<T>, b: Entry<T>) -> Entry<T> {
         if a.key > b.key || (a.key == b.key && a.contact < b.contact) {
             a
@@ -62,17 +76,19 @@ impl<T: Real> TournamentTree<T> {
     /// Refills the tree with `values` (contact `i` has `values[i]`), in O(n).
     pub fn fill(&mut self, values: impl ExactSizeIterator<Item = T>) {
         self.n = values.len();
-        self.nodes.clear();
-        let filler = Entry {
-            key: T::zero(),
-            contact: 0,
+        self.leaves = self.n.next_power_of_two();
+        let unused = Entry {
+            key: -c::<T>(f64::INFINITY),
+            contact: u32::MAX,
         };
-        self.nodes.resize(self.n, filler);
+        self.nodes.clear();
+        self.nodes.resize(self.leaves, unused);
         self.nodes.extend(values.enumerate().map(|(i, v)| Entry {
             key: Self::key(v),
             contact: i as u32,
         }));
-        for p in (1..self.n).rev() {
+        self.nodes.resize(2 * self.leaves, unused);
+        for p in (1..self.leaves).rev() {
             self.nodes[p] = Self::play(self.nodes[2 * p], self.nodes[2 * p + 1]);
         }
     }
@@ -80,24 +96,53 @@ impl<T: Real> TournamentTree<T> {
     /// The first contact and its value.
     pub fn top(&self) -> Option<(usize, T)> {
         // Node 1 is the root (for one contact, its leaf).
-        let root = self.nodes.get(1).filter(|_| self.n > 0)?;
-        Some((root.contact as usize, root.key))
+        let root = self.nodes.get(1)?;
+        (self.n > 0).then_some((root.contact as usize, root.key))
     }
 
-    /// Sets contact `k`'s value and replays its path to the root.
-    pub fn update(&mut self, k: usize, value: T) {
-        let mut p = self.n + k;
-        self.nodes[p].key = Self::key(value);
-        p /= 2;
-        while p >= 1 {
-            let now = Self::play(self.nodes[2 * p], self.nodes[2 * p + 1]);
-            // Higher matches only change if this one did.
-            if now == self.nodes[p] {
-                break;
+    /// Sets contact `k`'s value; the matches above it are replayed by
+    /// [`TournamentTree::replay`].
+    pub fn set(&mut self, k: usize, value: T) {
+        self.nodes[self.leaves + k].key = Self::key(value);
+    }
+
+    /// Replays the matches above the contacts `changed` (their values set
+    /// with [`TournamentTree::set`]), sorted ascending and without repeats;
+    /// `changed` is used as scratch.
+    pub fn replay(&mut self, changed: &mut [usize]) {
+        // Leaves are all at one depth, so one level's nodes are never
+        // ancestors of each other: replay level by level, bottom up.
+        let mut len = 0;
+        for i in 0..changed.len() {
+            let p = (self.leaves + changed[i]) / 2;
+            if len == 0 || changed[len - 1] != p {
+                changed[len] = p;
+                len += 1;
             }
-            self.nodes[p] = now;
-            p /= 2;
         }
+        while len > 0 {
+            let mut next = 0;
+            for i in 0..len {
+                let p = changed[i];
+                let now = Self::play(self.nodes[2 * p], self.nodes[2 * p + 1]);
+                // Higher matches only change if this one did.
+                if now != self.nodes[p] {
+                    self.nodes[p] = now;
+                    let q = p / 2;
+                    if q >= 1 && (next == 0 || changed[next - 1] != q) {
+                        changed[next] = q;
+                        next += 1;
+                    }
+                }
+            }
+            len = next;
+        }
+    }
+
+    /// Sets contact `k`'s value and replays the matches above it.
+    pub fn update(&mut self, k: usize, value: T) {
+        self.set(k, value);
+        self.replay(&mut [k]);
     }
 }
 
@@ -135,6 +180,37 @@ mod tests {
     }
 
     #[test]
+    fn a_batch_replay_is_the_same_as_one_update_at_a_time() {
+        let n = 37;
+        let values: Vec<f64> = (0..n).map(|i| ((i * 13) % 7) as f64).collect();
+        let mut one = TournamentTree::<f64>::with_capacity(n);
+        let mut batch = TournamentTree::<f64>::with_capacity(n);
+        one.fill(values.iter().copied());
+        batch.fill(values.iter().copied());
+        let mut x = 99u64;
+        for _ in 0..300 {
+            let mut changed: Vec<usize> = (0..6)
+                .map(|_| {
+                    x = x
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    (x >> 33) as usize % n
+                })
+                .collect();
+            changed.sort_unstable();
+            changed.dedup();
+            for &k in &changed {
+                let v = ((x >> 7) % 9) as f64 - (k % 3) as f64;
+                one.update(k, v);
+                batch.set(k, v);
+            }
+            batch.replay(&mut changed);
+            assert_eq!(one.top(), batch.top());
+            assert_eq!(one.nodes, batch.nodes);
+        }
+    }
+
+    #[test]
     fn agrees_with_the_scan_under_many_updates() {
         for n in [1usize, 2, 3, 7, 8, 13, 64, 100] {
             let mut values: Vec<f64> = (0..n).map(|i| ((i * 37) % 11) as f64).collect();
@@ -150,8 +226,7 @@ mod tests {
                 let v = ((x >> 13) % 7) as f64 - 2.0;
                 values[k] = v;
                 t.update(k, v);
-                let top = t.top().map(|(k, v)| (k, v));
-                assert_eq!(top, scan(&values), "n = {n}");
+                assert_eq!(t.top(), scan(&values), "n = {n}");
             }
         }
     }

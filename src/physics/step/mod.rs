@@ -5,6 +5,7 @@
 
 pub mod energy;
 pub mod integrate;
+pub mod report;
 pub mod simulation;
 pub mod sleep;
 

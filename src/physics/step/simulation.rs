@@ -7,6 +7,7 @@ use nalgebra::Vector3;
 
 use super::energy;
 use super::integrate::{integrate_position, integrate_velocity, Loads};
+pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
@@ -59,88 +60,6 @@ impl<T: Real> Default for SimParams<T> {
     }
 }
 
-/// Something worth a line of its own in a run's log.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Event {
-    /// Two bodies (or a body and the world's immovable body) start touching.
-    ContactMade {
-        body1: BodyId,
-        body2: Option<BodyId>,
-    },
-    /// They stop touching.
-    ContactLost {
-        body1: BodyId,
-        body2: Option<BodyId>,
-    },
-    /// A contact closing at `closing` m/s leaves separating at `separating`.
-    Bounce {
-        body1: BodyId,
-        body2: Option<BodyId>,
-        closing: f64,
-        separating: f64,
-    },
-    /// A touching pair's contact points stop or start sliding.
-    Sticks {
-        body1: BodyId,
-        body2: Option<BodyId>,
-    },
-    Slides {
-        body1: BodyId,
-        body2: Option<BodyId>,
-        speed: f64,
-    },
-    FallsAsleep {
-        body: BodyId,
-    },
-    Wakes {
-        body: BodyId,
-    },
-    /// The position or velocity phase used all its iterations.
-    PositionLimit {
-        left: f64,
-    },
-    VelocityLimit {
-        left: f64,
-    },
-}
-
-/// What one step did.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StepReport {
-    pub step: u64,
-    /// Time at the end of the step.
-    pub time: f64,
-    pub contacts: usize,
-    pub awake: usize,
-    /// Deepest penetration of the step's contacts before resolution.
-    pub max_penetration: f64,
-    /// Deepest penetration left (the resolver's bookkeeping).
-    pub max_penetration_after: f64,
-    pub kinetic_energy: f64,
-    pub potential_energy: f64,
-    pub position_iterations: usize,
-    pub velocity_iterations: usize,
-    pub events: Vec<Event>,
-}
-
-/// Why a run stopped early.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum BlowUp {
-    #[error("step {step}: body {body} has a non-finite {what}")]
-    NonFinite {
-        step: u64,
-        body: usize,
-        what: &'static str,
-    },
-    #[error("step {step}: the kinetic energy {energy:e} J is over 10⁶ times the scene's starting energy scale {scale:e} J; body {body} moves fastest")]
-    Energy {
-        step: u64,
-        body: usize,
-        energy: f64,
-        scale: f64,
-    },
-}
-
 /// A world stepping in time.
 #[derive(Debug, Clone)]
 pub struct Simulation<T: Real> {
@@ -154,6 +73,8 @@ pub struct Simulation<T: Real> {
     pub time: f64,
     generator: ContactGenerator<T>,
     generated: Vec<BodyContact<T>>,
+    /// The resolver, kept so its storage is reused from step to step.
+    resolver: Option<Resolver<T>>,
     /// Touching pairs of the last step and whether they slid.
     touching: Vec<(BodyId, Option<BodyId>, bool)>,
     /// The energy scale blow-ups are measured against.
@@ -175,6 +96,7 @@ impl<T: Real> Simulation<T> {
             time: 0.0,
             generator: ContactGenerator::new(),
             generated: Vec::new(),
+            resolver: None,
             touching: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
@@ -238,8 +160,15 @@ impl<T: Real> Simulation<T> {
         }
         let closing_before = self.normal_velocities();
         // 4. Resolve the contacts together.
-        let (resolver, [position, velocity]) =
-            Resolver::resolve(&self.world, &p.resolver, Implementation::Indexed, observer);
+        let resolver = match &mut self.resolver {
+            Some(r) => {
+                r.prepare_again(&self.world, &p.resolver);
+                r
+            }
+            none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
+        };
+        let position = resolver.position_phase(Implementation::Indexed, observer);
+        let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         resolver.write_back(&mut self.world);
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {

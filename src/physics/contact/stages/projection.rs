@@ -7,6 +7,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::unit_impulse::{angular_response, AngularResponse};
 use super::ContactFrame;
 use crate::physics::scale::stable_norm;
 use crate::physics::{ContactParams, Problem, ProjectionMethod, Real};
@@ -68,9 +69,22 @@ pub fn projection_inertia<T: Real>(
     d: &Vector3<T>,
     settings: &ContactParams<T>,
 ) -> ProjectionInertia<T> {
-    let rotation_per_unit = inverse_inertia_world * r.cross(d);
+    let response = angular_response(inverse_inertia_world, r, d);
+    projection_inertia_from(inverse_mass, &response, r, d, settings)
+}
+
+/// [`projection_inertia`] from the body's [`AngularResponse`] (the same
+/// numbers as the velocity change per unit impulse).
+pub fn projection_inertia_from<T: Real>(
+    inverse_mass: T,
+    response: &AngularResponse<T>,
+    r: &Vector3<T>,
+    d: &Vector3<T>,
+    settings: &ContactParams<T>,
+) -> ProjectionInertia<T> {
+    let rotation_per_unit = response.rotation;
     let angular = if settings.projection == ProjectionMethod::Nonlinear {
-        rotation_per_unit.cross(r).dot(d)
+        response.angular
     } else {
         T::zero()
     };

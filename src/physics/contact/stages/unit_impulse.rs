@@ -39,6 +39,48 @@ pub struct UnitImpulse<T: Real> {
     pub matrix: Option<Matrix3<T>>,
 }
 
+/// The angular part of one body's response to a unit impulse along `d`
+/// (lecture: "Velocity Change By Unit Impulse"): `u = r × d`, `Δθ̇ = I⁻¹ u`,
+/// `Δq̇ = Δθ̇ × r` and its normal component `Δq̇ · d`. The projection's
+/// angular inertia is the same number.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AngularResponse<T: Real> {
+    pub torque: Vector3<T>,
+    pub rotation: Vector3<T>,
+    pub velocity: Vector3<T>,
+    pub angular: T,
+}
+
+pub fn angular_response<T: Real>(
+    inverse_inertia_world: &Matrix3<T>,
+    r: &Vector3<T>,
+    d: &Vector3<T>,
+) -> AngularResponse<T> {
+    let torque = r.cross(d);
+    let rotation = inverse_inertia_world * torque;
+    let velocity = rotation.cross(r);
+    AngularResponse {
+        torque,
+        rotation,
+        velocity,
+        angular: velocity.dot(d),
+    }
+}
+
+/// `Δq̇_t = Σ 1/mᵢ + Σ Δq̇_dᵢ` over the bodies present (`(1/m, Δq̇_d)` each),
+/// the linear terms summed first as the lecture writes it.
+pub fn total_per_unit_impulse<T: Real>(bodies: &[Option<(T, T)>; 2]) -> (T, T) {
+    let linear = bodies
+        .iter()
+        .flatten()
+        .fold(T::zero(), |s, (inverse_mass, _)| s + *inverse_mass);
+    let total = bodies
+        .iter()
+        .flatten()
+        .fold(linear, |s, (_, angular)| s + *angular);
+    (linear, total)
+}
+
 /// One body's response to a unit impulse along `d`, from its inverse mass,
 /// world inverse inertia and arm `r` (the resolver calls this with the values
 /// it prepared).
@@ -49,9 +91,12 @@ pub fn body_unit_response<T: Real>(
     d: &Vector3<T>,
     with_matrix: bool,
 ) -> BodyUnitResponse<T> {
-    let torque = r.cross(d);
-    let rotation = inverse_inertia_world * torque;
-    let velocity = rotation.cross(&r);
+    let AngularResponse {
+        torque,
+        rotation,
+        velocity,
+        angular,
+    } = angular_response(&inverse_inertia_world, &r, d);
     let skew_r = skew(&r);
     let angular_matrix_world = with_matrix.then(|| -(skew_r * inverse_inertia_world * skew_r));
     BodyUnitResponse {
@@ -60,7 +105,7 @@ pub fn body_unit_response<T: Real>(
         torque_per_unit_impulse: torque,
         rotation_per_unit_impulse: rotation,
         velocity_per_unit_impulse: velocity,
-        angular: velocity.dot(d),
+        angular,
         skew_r,
         angular_matrix_world,
     }
@@ -73,11 +118,11 @@ pub fn combine_unit_responses<T: Real>(
     contact_to_world: &Matrix3<T>,
     with_matrix: bool,
 ) -> UnitImpulse<T> {
-    let linear = bodies
-        .iter()
-        .flatten()
-        .fold(T::zero(), |s, b| s + b.inverse_mass);
-    let total = bodies.iter().flatten().fold(linear, |s, b| s + b.angular);
+    let (linear, total) = total_per_unit_impulse(
+        &bodies
+            .each_ref()
+            .map(|b| b.as_ref().map(|b| (b.inverse_mass, b.angular))),
+    );
     let matrix = with_matrix.then(|| {
         let world = bodies
             .iter()
