@@ -54,7 +54,7 @@ pub enum Command {
 #[derive(Debug, Clone, Args)]
 pub struct TuiArgs {
     /// Embedded lesson id or path to a lesson file to open (default: lecture-2).
-    pub lesson: Option<String>,
+    pub lesson: Option<std::ffi::OsString>,
     /// Which contact of the lesson to open (0-based).
     #[arg(long, short, default_value_t = 0)]
     pub contact: usize,
@@ -108,7 +108,7 @@ pub struct ModelArgs {
 #[derive(Debug, Clone, Args)]
 pub struct SolveArgs {
     /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
-    pub lesson: String,
+    pub lesson: std::ffi::OsString,
     /// Which contact of the lesson (0-based).
     #[arg(long, short, default_value_t = 0)]
     pub contact: usize,
@@ -147,7 +147,7 @@ pub enum PlaneArg {
 #[derive(Debug, Clone, Args)]
 pub struct FigureArgs {
     /// Embedded lesson id or path to a lesson file.
-    pub lesson: String,
+    pub lesson: std::ffi::OsString,
     /// Which contact of the lesson (0-based).
     #[arg(long, short, default_value_t = 0)]
     pub contact: usize,
@@ -170,7 +170,7 @@ pub enum ErrataFormat {
 #[derive(Debug, Clone, Args)]
 pub struct ErrataArgs {
     /// Lesson ids or paths (default: every embedded lesson).
-    pub lessons: Vec<String>,
+    pub lessons: Vec<std::ffi::OsString>,
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = ErrataFormat::Text)]
     pub format: ErrataFormat,
@@ -296,7 +296,7 @@ pub struct ResolverArgs {
 #[derive(Debug, Clone, Args)]
 pub struct ResolveArgs {
     /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
-    pub lesson: String,
+    pub lesson: std::ffi::OsString,
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = ResolveFormat::Text)]
     pub format: ResolveFormat,
@@ -346,7 +346,7 @@ pub enum SleepModeArg {
 #[derive(Debug, Clone, Args)]
 pub struct SimulateArgs {
     /// Embedded scene id (see `contact-lab list`) or path to a lesson file with [world] or [step].
-    pub lesson: String,
+    pub lesson: std::ffi::OsString,
     /// How long to run, in seconds of simulated time.
     #[arg(long, conflicts_with = "steps", allow_negative_numbers = true)]
     pub seconds: Option<f64>,

@@ -22,6 +22,7 @@ impl AppError {
         match self {
             AppError::Lesson(LessonError::Missing { .. }) => 66,
             AppError::Lesson(LessonError::Invalid { .. }) => 65,
+            AppError::Lesson(LessonError::Unreadable { .. }) => 1,
             AppError::Usage(_) => 2,
             AppError::Runtime(_) | AppError::Output(_) => 1,
         }

@@ -177,6 +177,20 @@ impl Fmt {
     }
 }
 
+/// A number as written back to the user in a message or an edit field: all
+/// its digits (the shortest text that reads back as the same f64), in
+/// scientific notation outside [1e-4, 1e15) so that 1e-300 is not three
+/// hundred zeros. `-0` is `0`.
+pub fn exact(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else if !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 fn is_name(s: &str) -> bool {
     !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
@@ -229,6 +243,24 @@ mod tests {
     fn rounding_to_zero_shows_zero() {
         assert_eq!(Fmt::new(3).num(-0.0004), "-0.0004");
         assert_eq!(Fmt::new(1).num(-0.04), "-0.04");
+    }
+
+    #[test]
+    fn exact_numbers_round_trip_in_scientific_notation_at_the_extremes() {
+        use super::exact;
+        assert_eq!(exact(-0.3), "-0.3");
+        assert_eq!(exact(1.0000001), "1.0000001");
+        assert_eq!(exact(1e-300), "1e-300");
+        assert_eq!(exact(-2.5e-170), "-2.5e-170");
+        assert_eq!(exact(1e200), "1e200");
+        assert_eq!(exact(123456789012.5), "123456789012.5");
+        assert_eq!(exact(-0.0), "0");
+        assert_eq!(exact(f64::NAN), "NaN");
+        assert_eq!(exact(f64::NEG_INFINITY), "-inf");
+        for x in [1e-300, 3.14159e-9, 6.02e23, -1.7976931348623157e308, 5e-324] {
+            assert_eq!(exact(x).parse::<f64>().unwrap(), x);
+            assert!(exact(x).len() < 30, "{}", exact(x));
+        }
     }
 
     #[test]

@@ -16,6 +16,7 @@ pub mod error;
 pub mod exercise;
 pub mod format;
 pub mod lesson;
+pub mod output_file;
 pub mod physics;
 pub mod render;
 pub mod trace;

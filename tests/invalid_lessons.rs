@@ -1,7 +1,9 @@
 //! Bad lesson files through the binary (as bottom tests its invalid configs): every
 //! file in `tests/invalid_lessons/` exits 65, names `FILE:LINE:COLUMN` and a
 //! specific message, writes nothing to stdout and does not panic. Also very
-//! long files (generated), a missing file (66) and command-line misuse (2).
+//! long files (generated), a missing file (66), paths that are not regular
+//! files or cannot be read (1), non-UTF-8 file names, a closed stdout and
+//! command-line misuse (2).
 
 use std::path::{Path, PathBuf};
 
@@ -64,7 +66,14 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("syntax-missing-equals", 7, 6, "key with no value, expected `=`"),
     ("syntax-unterminated-string", 3, 20, "invalid basic string, expected `\"`"),
     ("tensor-row-too-long", 8, 11, "a 3×3 tensor row: expected an array of 3 numbers, got 4"),
-    ("tensor-too-small-to-invert", 8, 11, "the inertia tensor [[1e-120, 0, 0], [0, 1e-120, 0], [0, 0, 1e-120]] cannot be inverted"),
+    ("tensor-too-small-to-invert", 8, 11, "inertia component in row 1, column 1: 1e-120 is below contact-lab's smallest non-zero magnitude, 1e-60"),
+    ("tensor-with-tiny-principal-moment", 8, 11, "its smallest principal moment is 1e-61, below contact-lab's 1e-60: its inverse I⁻¹ would reach 1e61"),
+    ("tensor-ill-conditioned", 8, 11, "the inertia tensor [[1, 0, 0], [0, 1, 0], [0, 0, 1e-20]]: its condition number (largest / smallest principal moment) is 1e20"),
+    ("shape-inertia-past-range", 8, 9, "(from the shape): its largest principal moment is 4e79, above contact-lab's 1e60"),
+    ("velocity-below-range", 10, 12, "body 'ball' velocity: 1e-170 is below contact-lab's smallest non-zero magnitude, 1e-60"),
+    ("product-overflows", 13, 10, "contact 0: its numbers overflow a 64-bit float: `energy_after` reaches 6.409905439180083e304"),
+    ("product-overflows-under-another-model", 13, 10, "contact 0: its numbers overflow a 64-bit float under the kinetic-direction friction model"),
+    ("friction-below-range", 17, 12, "friction coefficient 1e-300 is below contact-lab's smallest non-zero magnitude"),
     ("three-bodies-in-contact", 19, 10, "a contact names one or two bodies, got 3"),
     ("two-immovable-bodies", 18, 10, "a contact needs at least one movable body"),
     ("unknown-body", 13, 11, "unknown body 'bal' (bodies: ball)"),
@@ -86,6 +95,25 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("zero-mass", 7, 8, "mass must be > 0 (or inf for an immovable body), got 0"),
     ("zero-normal", 15, 10, "contact normal must be non-zero (its length is 0)"),
     ("zero-quaternion", 11, 15, "orientation must be a non-zero quaternion"),
+    ("carriage-return-in-body-name", 6, 8, "body name must not contain control characters (found U+000D), a carriage return"),
+    ("line-feed-in-id", 2, 6, "id must not contain control characters (found U+000A), a line feed"),
+    ("line-feed-in-title", 3, 9, "title must not contain control characters (found U+000A)"),
+    ("escape-in-contact-name", 13, 8, "contact name must not contain control characters (found U+001B), an escape"),
+    ("bidi-override-in-body-name", 6, 8, "body name must not contain control characters (found U+202E), a bidirectional-text control"),
+    ("lone-carriage-return-in-summary", 4, 11, "summary must not contain control characters (found U+000D), a carriage return"),
+    ("immovable-with-acceleration", 17, 16, "body 'floor' is immovable (mass = inf): its acceleration must be zero or absent"),
+    ("immovable-with-inertia", 17, 11, "body 'floor' is immovable (mass = inf): it takes no `inertia` tensor"),
+    ("printed-empty-array", 21, 11, "the printed value is empty"),
+    ("printed-jagged-matrix", 21, 11, "a printed matrix is 3 rows of 3 numbers: row 2 has 1"),
+    ("printed-empty-row", 21, 11, "a printed matrix is 3 rows of 3 numbers: row 1 has 0"),
+    ("printed-two-numbers", 21, 11, "a printed vector has 3 numbers (4 for a quaternion), got 2"),
+    ("printed-component-of-a-vector", 21, 13, "`component` picks one number of a vector, so `printed` must be one number"),
+    ("printed-component-out-of-range", 21, 13, "component must be 0, 1 or 2 (3 for a quaternion's z), got 9"),
+    ("scene-gravity-below-range", 6, 11, "[world] gravity: -1e-70 is below contact-lab's smallest non-zero magnitude, 1e-60"),
+    ("scene-damping-below-range", 6, 18, "[world] linear_damping: damping 1e-300 is below contact-lab's smallest magnitude, 1e-60"),
+    ("scene-dt-below-range", 9, 6, "[step] dt: duration 1e-70 is below contact-lab's smallest magnitude, 1e-60"),
+    ("scene-escape-in-box-box", 6, 11, r#"[world] box_box must be "single" or "manifold", got "single\u{1b}[31m""#),
+    ("scene-half-space-normal-past-range", 22, 10, "body 'floor' normal: every component must be a finite number within ±1e60, 1e200 is outside ±1e60 in y"),
 ];
 
 /// Extra help lines some cases must carry.
@@ -246,7 +274,11 @@ fn deep_nesting_is_refused_without_overflowing_the_stack() {
 
 #[test]
 fn a_missing_file_exits_66() {
-    for path in ["tests/no/such/lesson.toml", "not-a-lesson-id", DIR] {
+    for path in [
+        "tests/no/such/lesson.toml",
+        "not-a-lesson-id",
+        "tests/invalid_lessons/zero-mass.toml/below-a-file",
+    ] {
         let r = run(&["solve", path]);
         assert_eq!(r.code, Some(66), "{path}: {}", r.stderr);
         assert!(r.stdout.is_empty());
@@ -257,6 +289,193 @@ fn a_missing_file_exits_66() {
             r.stderr
         );
     }
+}
+
+/// A path that exists but is not a regular file is refused at once (exit 1),
+/// never read: a FIFO would block forever, a device never ends.
+#[test]
+fn a_lesson_path_that_is_not_a_regular_file_is_refused_at_once() {
+    let mut cases = vec![(DIR.to_string(), "it is a directory, not a lesson file")];
+    #[cfg(unix)]
+    {
+        let fifo = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lesson-fifo.toml");
+        let _ = std::fs::remove_file(&fifo);
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        assert!(made.unwrap().success(), "mkfifo");
+        cases.push((
+            fifo.display().to_string(),
+            "it is a FIFO (named pipe), not a lesson file",
+        ));
+        cases.push((
+            "/dev/zero".into(),
+            "it is a character device, not a lesson file",
+        ));
+    }
+    for (path, why) in &cases {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["solve", path])
+            .stdin(std::process::Stdio::null())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if start.elapsed() > std::time::Duration::from_secs(20) {
+                child.kill().unwrap();
+                panic!("solve {path} blocked");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{path}: {stderr}");
+        assert!(out.stdout.is_empty());
+        assert_eq!(
+            stderr.trim_end(),
+            format!("error: cannot read lesson file {path}: {why} (a lesson is a TOML file)")
+        );
+    }
+}
+
+/// `resolve` and `simulate` read lessons through the same loader as
+/// `solve`: a bad scene (the corpus's `scene-*` files), a directory, a
+/// device and a missing path are refused by each exactly as `solve` refuses
+/// them (65, 1, 1, 66), with the same first line and nothing on stdout.
+#[test]
+fn resolve_and_simulate_refuse_what_solve_refuses() {
+    let mut paths: Vec<String> = corpus()
+        .into_iter()
+        .filter(|f| f.starts_with("scene-"))
+        .map(|f| format!("{DIR}/{f}"))
+        .collect();
+    assert!(paths.len() >= 5, "{paths:?}");
+    paths.push(DIR.into());
+    paths.push("tests/no/such/lesson.toml".into());
+    #[cfg(unix)]
+    paths.push("/dev/zero".into());
+    for path in &paths {
+        let solve = run(&["solve", path]);
+        assert!(
+            matches!(solve.code, Some(1 | 65 | 66)),
+            "{path}: {}",
+            solve.stderr
+        );
+        for command in ["resolve", "simulate"] {
+            let r = run(&[command, path]);
+            assert_eq!(r.code, solve.code, "{command} {path}: {}", r.stderr);
+            assert!(r.stdout.is_empty(), "{command} {path}");
+            assert_eq!(
+                r.stderr.lines().next(),
+                solve.stderr.lines().next(),
+                "{command} {path}"
+            );
+        }
+    }
+}
+
+/// Permission denied is not "missing" (66) but a failure to read (exit 1).
+/// Root reads any file, so the check runs only for other users.
+#[cfg(unix)]
+#[test]
+fn an_unreadable_lesson_is_not_called_missing() {
+    use std::os::unix::fs::PermissionsExt;
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("unreadable.toml");
+    std::fs::write(&path, valid_lesson()).unwrap();
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o000)).unwrap();
+    if std::fs::read(&path).is_ok() {
+        println!("skipped: this user (root?) reads files without read permission");
+        return;
+    }
+    let r = run(&["solve", &path.display().to_string()]);
+    assert_eq!(r.code, Some(1), "{}", r.stderr);
+    assert!(!r.stderr.contains("missing"), "{}", r.stderr);
+    assert!(r.stderr.contains("permission denied"), "{}", r.stderr);
+}
+
+/// A file name that is not UTF-8 (and holds an escape) opens, and the name is
+/// shown escaped.
+#[cfg(unix)]
+#[test]
+fn a_non_utf8_file_name_opens() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let name = std::ffi::OsStr::from_bytes(b"caf\xe9-\x1b[31m.toml");
+    let path = dir.join(name);
+    std::fs::write(&path, valid_lesson()).unwrap();
+    let out = contact_lab()
+        .arg("solve")
+        .arg(&path)
+        .arg("--format")
+        .arg("json")
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("\"lesson\": \"bad\""));
+    std::fs::write(&path, "id = 3\n").unwrap();
+    let out = contact_lab().arg("solve").arg(&path).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(65), "{stderr}");
+    assert!(
+        stderr.contains("caf\u{fffd}-\\u{1b}[31m.toml:1:"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains('\u{1b}'), "{stderr}");
+}
+
+/// `contact-lab … >&-`: output that cannot be delivered is a failure, not
+/// success (the closed pipe of `… | head` stays quiet, tested above).
+#[cfg(unix)]
+#[test]
+fn a_closed_stdout_is_reported() {
+    let bin = env!("CARGO_BIN_EXE_contact-lab");
+    let out = std::process::Command::new("sh")
+        .args(["-c", &format!("'{bin}' solve lecture-2 >&-")])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(
+        stderr,
+        "error: cannot write output: standard output is closed\n"
+    );
+    // The same for the commands that stepped in later.
+    for command in [
+        "resolve sphere-row",
+        "simulate lessons/scenes/ball-drop.toml --steps 10",
+    ] {
+        let out = std::process::Command::new("sh")
+            .args(["-c", &format!("'{bin}' {command} >&-")])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{command}: {stderr}");
+        assert_eq!(
+            stderr, "error: cannot write output: standard output is closed\n",
+            "{command}"
+        );
+    }
+    // A command that writes nothing to stdout is not affected.
+    let svg = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("closed-stdout.svg");
+    let out = std::process::Command::new("sh")
+        .args([
+            "-c",
+            &format!("'{bin}' figure lecture-2 -o '{}' >&-", svg.display()),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 #[test]
@@ -312,6 +531,27 @@ fn command_line_misuse_exits_2_with_a_message() {
             "unexpected argument 'extra'",
         ),
         (&["frobnicate"], "unrecognized subcommand 'frobnicate'"),
+        // `simulate`'s options follow the lesson file's range rules.
+        (
+            &["simulate", "ball-drop", "--dt", "1e-70"],
+            "--dt: duration 1e-70 is below contact-lab's smallest magnitude, 1e-60",
+        ),
+        (
+            &["simulate", "ball-drop", "--gravity", "0,1e-70,0"],
+            "--gravity takes three finite numbers x,y,z, each 0 or of magnitude 1e-60 to 1e60",
+        ),
+        (
+            &["simulate", "ball-drop", "--damping", "1e-300"],
+            "--damping: damping 1e-300 is below contact-lab's smallest magnitude, 1e-60",
+        ),
+        (
+            &["simulate", "ball-drop", "--velocity-limit", "1e-70"],
+            "--velocity-limit: velocity_limit 1e-70 is below contact-lab's smallest non-zero magnitude",
+        ),
+        (
+            &["resolve", "sphere-row", "--velocity-epsilon", "1e-70"],
+            "--velocity-epsilon 1e-70 is below contact-lab's smallest non-zero magnitude",
+        ),
     ];
     for (args, fragment) in cases {
         let r = run(args);
@@ -370,9 +610,18 @@ fn an_unwritable_stderr_still_gives_the_exit_code() {
     );
 }
 
-#[cfg(unix)]
 #[test]
-fn an_endless_file_is_refused_after_16_mib() {
-    let stderr = assert_invalid("/dev/zero", 1, 1, "the file is larger than 16 MiB");
+fn a_file_over_16_mib_is_refused_unread() {
+    // Sparse: 17 MiB of length, no blocks written.
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("huge.toml");
+    let f = std::fs::File::create(&path).unwrap();
+    f.set_len(17 << 20).unwrap();
+    drop(f);
+    let stderr = assert_invalid(
+        &path.display().to_string(),
+        1,
+        1,
+        "the file is larger than 16 MiB",
+    );
     assert!(stderr.len() < 1_000, "{stderr}");
 }

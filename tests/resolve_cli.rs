@@ -322,6 +322,7 @@ const SETTINGS: &[(&str, usize, usize, &str)] = &[
     ("negative-position-epsilon", 20, 20, "in [settings]: position_epsilon must be a finite number ≥ 0, got -0.01"),
     ("negative-position-iterations", 20, 23, "in [settings]: position_iterations must be a whole number from 0 to 10⁹ (1000000000), got -5"),
     ("resolver-setting-in-contact", 18, 33, "velocity_epsilon is a setting of the whole scene: put it in the lesson's [settings]"),
+    ("tiny-position-epsilon", 20, 20, "in [settings]: position_epsilon 1e-70 is below contact-lab's smallest non-zero magnitude, 1e-60"),
     ("unknown-restitution-from", 20, 20, "in [settings]: restitution_from must be \"current\" or \"initial\", got \"later\""),
     ("velocity-iterations-past-limit", 20, 23, "in [settings]: velocity_iterations must be a whole number from 0 to 10⁹ (1000000000), got 2000000000"),
 ];
@@ -469,4 +470,52 @@ fn docs_resolve_md_lists_exactly_the_keys_produced() {
         })
         .collect();
     assert_eq!(produced, documented);
+}
+
+/// solves the contact alone.
+#[test]
+fn a_resolve_that_would_overflow_is_refused_not_printed_as_nan() {
+    let text = r#"id = "compounds"
+title = "A kinetic-direction contact that gains energy each iteration"
+
+[[body]]
+name = "a"
+mass = 1e-2
+shape = { sphere = 1e-2 }
+position = [0e0, 0e0, 0e0]
+orientation = [0e0, 0e0, 0e0, 3.157282506847742e0]
+angular_velocity = [0e0, 0e0, 2.5262785208061715e42]
+
+[[body]]
+name = "b"
+mass = 1e-2
+shape = { cylinder = { radius = 5.9165870772058554e1, height = 1e-2 } }
+position = [0e0, 0e0, 1.6348583195291289e44]
+orientation = [-1.216850513646529e0, -3.708478557730917e-1, 3.656956475211908e-11, -2.116646867987548e0]
+
+[[contact]]
+bodies = ["a", "b"]
+point = [-1e60, 0e0, 0e0]
+normal = [-6.2365331714715764e32, 1e0, 0e0]
+restitution = 0e0
+static_friction = 1e60
+friction_model = "kinetic-direction"
+settings = { projection = "linear" }
+"#;
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("resolve-compounds.toml");
+    std::fs::write(&path, text).unwrap();
+    let path = path.display().to_string();
+    assert_eq!(run(&["solve", &path]).code, Some(0));
+    for format in ["text", "json", "md"] {
+        let r = run(&["resolve", &path, "--format", format]);
+        assert_eq!(r.code, Some(1), "{format}: {}", r.stderr);
+        assert!(r.stdout.is_empty(), "{format}: {}", r.stdout);
+        assert!(
+            r.stderr.contains(
+                "error: compounds: resolving the contacts together overflows a 64-bit float: the kinetic energy after reaches NaN"
+            ),
+            "{}",
+            r.stderr
+        );
+    }
 }

@@ -475,3 +475,66 @@ fn predict_mode_hides_the_narrative_that_quotes_results() {
     assert!(!text.contains("(18.73)"), "{text}");
     assert!(text.contains("hidden in predict mode"));
 }
+
+/// A 3,000-character input scrolls on its one line: its end and the cursor
+/// stay in view, and so does the refusal (which quotes only the start).
+#[test]
+fn a_3000_character_input_scrolls_and_its_refusal_stays_in_view() {
+    let long = "7".repeat(2999) + "x";
+    for (w, h) in SIZES {
+        let mut app = app("lecture-2", false);
+        let mut t = term(w, h);
+        key(&mut app, KeyCode::Char('e'));
+        key(&mut app, KeyCode::Enter);
+        ctrl(&mut app, 'u');
+        type_text(&mut app, &long);
+        draw(&mut t, &app);
+        let text = buffer_text(t.backend().buffer());
+        assert!(
+            text.contains("restitution (number) = …777"),
+            "{w}×{h}:\n{text}"
+        );
+        assert!(
+            text.contains("77x▏"),
+            "the end and the cursor, {w}×{h}:\n{text}"
+        );
+        key(&mut app, KeyCode::Enter);
+        draw(&mut t, &app);
+        let text = buffer_text(t.backend().buffer());
+        assert!(
+            text.contains("77x▏"),
+            "input after the refusal, {w}×{h}:\n{text}"
+        );
+        assert!(
+            text.contains("refused: restitution: '7777"),
+            "{w}×{h}:\n{text}"
+        );
+        assert!(text.contains("7…' is"), "{w}×{h}:\n{text}");
+        assert!(text.contains("not a number"), "{w}×{h}:\n{text}");
+        assert!(
+            !text.contains(&"7".repeat(200)),
+            "the refusal quotes only the start"
+        );
+    }
+}
+
+/// The same for the file name of `w`, and its error.
+#[test]
+fn a_3000_character_file_name_scrolls_and_its_error_stays_in_view() {
+    let dir = common::scratch("long-name");
+    let mut app = app("lecture-2", false);
+    app.write_dir = dir.clone();
+    let mut t = term(80, 24);
+    key(&mut app, KeyCode::Char('w'));
+    ctrl(&mut app, 'u');
+    type_text(&mut app, &("n".repeat(2999) + "Z"));
+    draw(&mut t, &app);
+    let text = buffer_text(t.backend().buffer());
+    assert!(text.contains("file: …nnn"), "{text}");
+    assert!(text.contains("nnZ▏"), "{text}");
+    key(&mut app, KeyCode::Enter);
+    draw(&mut t, &app);
+    let text = buffer_text(t.backend().buffer());
+    assert!(text.contains("nnZ▏"), "{text}");
+    assert!(text.contains("cannot write: File name too long"), "{text}");
+}

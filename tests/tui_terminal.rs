@@ -1,7 +1,9 @@
-//! In a real (pseudo-)terminal: a panic inside the app restores the terminal.
-//! A test build panics after its first frame when CONTACT_LAB_TEST_PANIC is
-//! set; `script` gives the app a terminal, and `stty -a` run afterwards in
-//! the same terminal shows whether raw mode was undone.
+//! In a real (pseudo-)terminal: a panic inside the app, and the signals that
+//! end a program (SIGTERM, SIGHUP), restore the terminal. A test build
+//! panics after its first frame when CONTACT_LAB_TEST_PANIC is set; the
+//! signals are sent by the shell; `script` gives the app a terminal, and
+//! `stty -a` run afterwards in the same terminal shows whether raw mode was
+//! undone.
 
 use std::process::Command;
 
@@ -55,4 +57,66 @@ fn a_panic_inside_the_app_restores_the_terminal() {
         stty.contains(" echo ") && !stty.contains("-echo "),
         "echo restored:\n{stty}"
     );
+}
+
+/// The app in a pseudo-terminal, sent `signal` a second after it starts;
+/// returns everything the terminal showed (the app's output, the exit
+/// status the shell saw, then `stty -a`).
+fn run_and_signal(signal: &str) -> Option<String> {
+    if Command::new("script").arg("--version").output().is_err() {
+        println!("skipped: `script` (util-linux) is not installed");
+        return None;
+    }
+    let bin = env!("CARGO_BIN_EXE_contact-lab");
+    // In `sh -c` a background job's stdin is /dev/null unless redirected.
+    let shell = format!(
+        "{bin} tui lecture-2 </dev/tty & pid=$!; sleep 1; kill -{signal} $pid; wait $pid; echo \"status=$?\"; stty -a"
+    );
+    let out = Command::new("script")
+        .args(["-q", "-e", "-c", &shell, "/dev/null"])
+        .env("TERM", "xterm-256color")
+        .env("COLUMNS", "100")
+        .env("LINES", "30")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("script runs");
+    Some(String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr))
+}
+
+fn assert_restored(text: &str, signal: &str, number: i32) {
+    let entered = text
+        .find("\x1b[?1049h")
+        .unwrap_or_else(|| panic!("{signal}: the app entered the alternate screen:\n{text}"));
+    let left = text
+        .rfind("\x1b[?1049l")
+        .unwrap_or_else(|| panic!("{signal}: the alternate screen was left:\n{text}"));
+    assert!(left > entered, "{signal}: left after entering");
+    // The app died of the signal itself, as its parent expects: 128 + n.
+    assert!(
+        text.contains(&format!("status={}", 128 + number)),
+        "{signal}: exit status 128 + {number}:\n{text}"
+    );
+    let stty = &text[text.rfind("speed").expect("stty -a printed the settings")..];
+    assert!(
+        stty.contains(" icanon") && !stty.contains("-icanon"),
+        "{signal}: canonical mode restored:\n{stty}"
+    );
+    assert!(
+        stty.contains(" echo ") && !stty.contains("-echo "),
+        "{signal}: echo restored:\n{stty}"
+    );
+}
+
+#[test]
+fn sigterm_restores_the_terminal() {
+    if let Some(text) = run_and_signal("TERM") {
+        assert_restored(&text, "SIGTERM", 15);
+    }
+}
+
+#[test]
+fn sighup_restores_the_terminal() {
+    if let Some(text) = run_and_signal("HUP") {
+        assert_restored(&text, "SIGHUP", 1);
+    }
 }

@@ -12,8 +12,8 @@ use crate::lesson::{embedded, Lesson};
 use crate::render;
 
 pub fn errata(args: &ErrataArgs, out: &mut dyn Write) -> Result<(), AppError> {
-    let names: Vec<String> = if args.lessons.is_empty() {
-        embedded::ids().into_iter().map(String::from).collect()
+    let names: Vec<std::ffi::OsString> = if args.lessons.is_empty() {
+        embedded::ids().into_iter().map(Into::into).collect()
     } else {
         args.lessons.clone()
     };

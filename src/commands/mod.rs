@@ -19,7 +19,7 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     match cli.command {
-        None if interactive() => crate::tui::run(crate::tui::open(None, 0)?),
+        None if interactive() => crate::tui::run(crate::tui::open(None::<&std::ffi::OsStr>, 0)?),
         None => list::welcome(out),
         Some(Command::Tui(args)) => {
             let app = crate::tui::open(args.lesson.as_deref(), args.contact)?;
@@ -46,28 +46,12 @@ fn interactive() -> bool {
     std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
 }
 
-/// Writes `bytes` to `path` atomically: a temporary file beside it, renamed
-/// over it, so a reader never sees half a file and a failure leaves no file.
+/// Writes `bytes` to `path` through [`crate::output_file`]: atomically,
+/// replacing only a regular file (a device, FIFO, directory or symbolic link
+/// is refused with exit 1).
 pub(crate) fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<(), AppError> {
-    let fail =
-        |e: std::io::Error| AppError::Runtime(format!("cannot write {}: {e}", path.display()));
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    let name = path
-        .file_name()
-        .ok_or_else(|| AppError::Usage(format!("{}: not a file name", path.display())))?;
-    let tmp = dir.join(format!(
-        ".{}.{}.tmp",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, bytes).map_err(fail)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
-    })
+    crate::output_file::write(path, bytes, crate::output_file::Existing::Replace)
+        .map_err(|e| AppError::Runtime(format!("cannot write {e}")))
 }
 
 /// A lesson id made safe for a file name.
@@ -89,13 +73,17 @@ pub(crate) fn io(e: std::io::Error) -> AppError {
 
 /// Loads a lesson, applies the command-line overrides and checks the contact index.
 pub(crate) fn load(
-    name: &str,
+    name: &std::ffi::OsStr,
     model: &ModelArgs,
     contact: Option<usize>,
 ) -> Result<Lesson, AppError> {
     let overrides = overrides(model)?;
     let mut lesson = Lesson::load(name)?;
     lesson.apply(&overrides);
+    if overrides != Overrides::default() {
+        crate::lesson::overflow::check_all(&lesson)
+            .map_err(|e| AppError::Usage(format!("with these options, {e}")))?;
+    }
     if let Some(k) = contact {
         if k >= lesson.contacts.len() {
             return Err(AppError::Usage(format!(

@@ -117,6 +117,8 @@ pub fn resolve(
     warn(&lesson, err);
     let params = params(&lesson.resolver, &args.resolver)?;
     let implementation = implementation(args);
+    crate::lesson::overflow::check_resolve(&lesson, &params, implementation)
+        .map_err(|e| AppError::Runtime(format!("{}: {e}", lesson.id)))?;
     let fmt = Fmt::new(args.digits as usize);
     if let Some(show) = args.show {
         return super::show::show(

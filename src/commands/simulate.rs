@@ -6,7 +6,9 @@ use std::io::Write;
 use super::{figure::plane, io, warn};
 use crate::cli::{BoxBoxArg, RunFormat, SimulateArgs, SleepModeArg};
 use crate::error::AppError;
+use crate::format::exact;
 use crate::format::Fmt;
+use crate::lesson::validate::{damping_rule, rules};
 use crate::lesson::Lesson;
 use crate::physics::params::BoxBoxMode;
 use crate::physics::step::{Simulation, SleepMode};
@@ -76,23 +78,23 @@ pub fn simulation(
     if let Some(dt) = args.dt {
         if !(dt.is_finite() && dt > 0.0 && dt <= 1e6) {
             return usage(&format!(
-                "--dt must be a finite number of seconds > 0, got {dt}"
+                "--dt must be a finite number of seconds > 0, got {}",
+                exact(dt)
             ));
         }
+        rules::duration(dt).map_err(|e| AppError::Usage(format!("--dt: {e}")))?;
         p.dt = dt;
     }
     if let Some(g) = &args.gravity {
-        if g.len() != 3 || g.iter().any(|x| !x.is_finite() || x.abs() > 1e60) {
-            return usage("--gravity takes three finite numbers x,y,z");
+        if g.len() != 3 || g.iter().any(|x| rules::finite(*x).is_err()) {
+            return usage(
+                "--gravity takes three finite numbers x,y,z, each 0 or of magnitude 1e-60 to 1e60",
+            );
         }
         p.world.gravity = nalgebra::Vector3::new(g[0], g[1], g[2]);
     }
     if let Some(d) = args.damping {
-        if !(d > 0.0 && d <= 1.0) {
-            return usage(&format!(
-                "--damping is the fraction of velocity kept per second, in (0, 1]; got {d}"
-            ));
-        }
+        damping_rule(d).map_err(|e| AppError::Usage(format!("--damping: {e}")))?;
         p.world.linear_damping = d;
         p.world.angular_damping = d;
     }
@@ -115,11 +117,7 @@ pub fn simulation(
         p.acceleration_compensation = false;
     }
     if let Some(v) = args.velocity_limit {
-        if !(v.is_finite() && v >= 0.0) {
-            return usage(&format!(
-                "--velocity-limit must be a finite speed ≥ 0, got {v}"
-            ));
-        }
+        rules::velocity_limit(v).map_err(|e| AppError::Usage(format!("--velocity-limit: {e}")))?;
         p.contact.velocity_limit = v;
     }
     p.resolver = super::resolve::params(&p.resolver, &args.resolver)?;
@@ -127,7 +125,10 @@ pub fn simulation(
         (Some(n), _) => n,
         (None, Some(t)) => {
             if !(t.is_finite() && t >= 0.0) {
-                return usage(&format!("--seconds must be a finite time ≥ 0, got {t}"));
+                return usage(&format!(
+                    "--seconds must be a finite time ≥ 0, got {}",
+                    exact(t)
+                ));
             }
             let n = (t / p.dt).round();
             if n > MAX_STEPS as f64 {

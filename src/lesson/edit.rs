@@ -6,6 +6,7 @@ use nalgebra::Vector3;
 
 use super::validate::rules;
 use super::Lesson;
+use crate::format::exact;
 use crate::physics::{FrictionModel, ProjectionMethod};
 
 /// What an editable field holds.
@@ -109,7 +110,7 @@ pub fn fields(lesson: &Lesson, k: usize) -> Vec<Field> {
 }
 
 fn vector_text(v: &Vector3<f64>) -> String {
-    format!("{}, {}, {}", v.x, v.y, v.z)
+    format!("{}, {}, {}", exact(v.x), exact(v.y), exact(v.z))
 }
 
 /// The field's current value as editable text (full precision, so that
@@ -118,17 +119,17 @@ pub fn get(lesson: &Lesson, k: usize, field: &Field) -> String {
     let c = &lesson.contacts[k];
     let body = field.body.map(|b| &lesson.bodies[b]);
     match (field.key, body) {
-        (Key::Restitution, _) => c.restitution.to_string(),
-        (Key::StaticFriction, _) => c.static_friction.to_string(),
-        (Key::DynamicFriction, _) => c.dynamic_friction.to_string(),
-        (Key::Penetration, _) => c.penetration.to_string(),
+        (Key::Restitution, _) => exact(c.restitution),
+        (Key::StaticFriction, _) => exact(c.static_friction),
+        (Key::DynamicFriction, _) => exact(c.dynamic_friction),
+        (Key::Penetration, _) => exact(c.penetration),
         (Key::FrictionModel, _) => c.friction_model.name().to_string(),
-        (Key::VelocityLimit, _) => c.settings.velocity_limit.to_string(),
-        (Key::AngularLimit, _) => c.settings.angular_limit.to_string(),
-        (Key::Relaxation, _) => c.settings.relaxation.to_string(),
-        (Key::Duration, _) => c.settings.duration.to_string(),
+        (Key::VelocityLimit, _) => exact(c.settings.velocity_limit),
+        (Key::AngularLimit, _) => exact(c.settings.angular_limit),
+        (Key::Relaxation, _) => exact(c.settings.relaxation),
+        (Key::Duration, _) => exact(c.settings.duration),
         (Key::Projection, _) => c.settings.projection.name().to_string(),
-        (Key::Mass, Some(b)) => b.mass.to_string(),
+        (Key::Mass, Some(b)) => exact(b.mass),
         (Key::Velocity, Some(b)) => vector_text(&b.velocity),
         (Key::AngularVelocity, Some(b)) => vector_text(&b.angular_velocity),
         (Key::Acceleration, Some(b)) => vector_text(&b.acceleration),
@@ -150,7 +151,16 @@ fn number(text: &str) -> Result<f64, String> {
     let t = text.trim();
     let t = if t == "∞" { "inf" } else { t };
     t.parse::<f64>()
-        .map_err(|_| format!("'{}' is not a number", text.trim()))
+        .map_err(|_| format!("'{}' is not a number", echo(text.trim())))
+}
+
+/// What the user typed, quoted back in a refusal: at most 40 characters, so
+/// a pasted page does not fill the form.
+fn echo(text: &str) -> String {
+    match text.char_indices().nth(40) {
+        Some((i, _)) => format!("{}…", &text[..i]),
+        None => text.to_string(),
+    }
 }
 
 fn vector(text: &str) -> Result<Vector3<f64>, String> {
@@ -165,7 +175,7 @@ fn vector(text: &str) -> Result<Vector3<f64>, String> {
         return Err(format!(
             "expected three numbers x, y, z, got {} ('{}')",
             parts.len(),
-            text.trim()
+            echo(text.trim())
         ));
     }
     let mut v = Vector3::zeros();
@@ -181,7 +191,13 @@ fn vector(text: &str) -> Result<Vector3<f64>, String> {
 /// on refusal returns why, and the lesson is unchanged.
 pub fn set(lesson: &mut Lesson, k: usize, field: &Field, text: &str) -> Result<String, String> {
     let before = get(lesson, k, field);
+    let backup = lesson.clone();
     apply(lesson, k, field, text).map_err(|e| format!("{}: {e}", field.label))?;
+    // As when the file is read: what the stages compute must fit in f64.
+    if let Err(e) = super::overflow::check_all(lesson) {
+        *lesson = backup;
+        return Err(format!("{}: {e}", field.label));
+    }
     let after = get(lesson, k, field);
     let mut said = format!("{} {before} → {after}", field.label);
     if field.key == Key::Mass {
@@ -207,6 +223,11 @@ fn apply(lesson: &mut Lesson, k: usize, field: &Field, text: &str) -> Result<(),
                     );
                 }
                 let scale = m / body.mass;
+                // The scaled tensor must still be one the stages can use.
+                if let Some(t) = body.inertia {
+                    rules::inertia(&(t * scale))
+                        .map_err(|e| format!("the inertia tensor scaled with it: {e}"))?;
+                }
                 body.inertia = body.inertia.map(|t| t * scale);
                 body.shape_inertia = body.shape_inertia.map(|t| t * scale);
                 body.mass = m;
@@ -233,13 +254,17 @@ fn apply(lesson: &mut Lesson, k: usize, field: &Field, text: &str) -> Result<(),
                 format!(
                     "one of {}, got '{}'",
                     FRICTION_MODELS.join(", "),
-                    text.trim()
+                    echo(text.trim())
                 )
             })?
         }
         Key::Projection => {
             c.settings.projection = ProjectionMethod::from_name(text.trim()).ok_or_else(|| {
-                format!("one of {}, got '{}'", PROJECTIONS.join(", "), text.trim())
+                format!(
+                    "one of {}, got '{}'",
+                    PROJECTIONS.join(", "),
+                    echo(text.trim())
+                )
             })?
         }
         _ => return Err("not a contact field".into()),
@@ -297,6 +322,27 @@ mod tests {
         assert!(e.contains("(0, 1]"), "{e}");
         assert_eq!(l.contacts, before.contacts);
         assert_eq!(l.bodies, before.bodies);
+    }
+
+    #[test]
+    fn an_edit_whose_products_overflow_is_refused_and_undone() {
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/invalid_lessons/product-overflows-under-another-model.toml"
+        ))
+        .unwrap();
+        // Valid with a modest friction; μ_d = 1e54 overflows under kinetic-direction.
+        let text = text.replace("static_friction = 1.1449294629583569e54", "friction = 0.5");
+        let mut l = super::super::validate::parse("t.toml", &text).unwrap();
+        let before = l.clone();
+        let mu = fields(&l, 0)
+            .into_iter()
+            .find(|f| f.label == "dynamic friction μ_d")
+            .expect("a dynamic friction field");
+        let e = set(&mut l, 0, &mu, "1.1449294629583569e54").unwrap_err();
+        assert!(e.contains("overflow a 64-bit float"), "{e}");
+        assert_eq!(l.contacts, before.contacts);
+        set(&mut l, 0, &mu, "0.8").unwrap();
     }
 
     #[test]

@@ -1,17 +1,19 @@
 //! Lesson files: one scene per TOML file (format in `lessons/README.md`),
 //! validated into a [`Lesson`] with spans for every error.
 
+pub mod characters;
 pub mod edit;
 pub mod embedded;
+pub mod overflow;
 pub mod printed;
+pub mod ranges;
 pub mod raw;
+pub mod read;
 pub mod shape;
 pub mod snippet;
 pub mod source;
 pub mod syntax;
 pub mod validate;
-
-use std::io::Read;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
@@ -201,30 +203,21 @@ pub struct Overrides {
 }
 
 impl Lesson {
-    /// Loads a lesson by embedded id or by path.
-    pub fn load(name: &str) -> Result<Lesson, LessonError> {
-        if let Some(text) = embedded::find(name) {
-            return validate::parse(&embedded::origin(name), text);
+    /// Loads a lesson by embedded id or by path (any file name the OS
+    /// allows, UTF-8 or not).
+    pub fn load(name: impl AsRef<std::ffi::OsStr>) -> Result<Lesson, LessonError> {
+        let name = name.as_ref();
+        if let Some(text) = name.to_str().and_then(embedded::find) {
+            return validate::parse(&embedded::origin(name.to_str().unwrap_or_default()), text);
         }
-        // At most MAX_BYTES + 1 bytes: `solve /dev/zero` must not read forever.
-        let read = std::fs::File::open(name).and_then(|file| {
-            let mut bytes = Vec::new();
-            file.take(validate::MAX_BYTES as u64 + 1)
-                .read_to_end(&mut bytes)?;
-            Ok(bytes)
-        });
-        let bytes = read.map_err(|e| LessonError::Missing {
-            path: name.to_string(),
-            reason: if e.kind() == std::io::ErrorKind::NotFound {
-                "no such file, and no embedded lesson has this id (see `contact-lab list`)".into()
-            } else {
-                e.to_string()
-            },
-        })?;
+        let path = std::path::Path::new(name);
+        // Messages show the name escaped: it may hold control characters.
+        let shown = crate::output_file::shown(path);
+        let bytes = read::read(path, &shown)?;
         if bytes.len() > validate::MAX_BYTES {
-            return Err(validate::too_large(name));
+            return Err(validate::too_large(&shown));
         }
-        validate::parse_bytes(name, &bytes)
+        validate::parse_bytes(&shown, &bytes)
     }
 
     /// Names of the contact's two slots (the second may be absent).
@@ -342,7 +335,10 @@ impl BodyDef {
             return Body::immovable(position, orientation, self.shape);
         }
         let inertia = self.inertia.unwrap_or_else(Matrix3::identity);
-        let inverse = inertia.try_inverse().unwrap_or_else(Matrix3::zeros);
+        // Validated tensors invert (`ranges::inertia`); scaled first so a
+        // determinant out of f64's range cannot make one look singular.
+        let inverse = crate::physics::scale::stable_inverse(&inertia)
+            .expect("a validated inertia tensor is invertible");
         Body {
             state: RigidBody {
                 mass: c(self.mass),

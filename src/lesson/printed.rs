@@ -108,15 +108,69 @@ impl Printed {
                     .map_err(bad)?,
             ),
         };
+        if let Some(e) = shape_error(&printed) {
+            return Err(bad(e));
+        }
+        if let Some(k) = &raw.component {
+            let problem = if !matches!(printed, PrintedShape::Scalar(_)) {
+                Some(
+                    "`component` picks one number of a vector, so `printed` must be one number"
+                        .to_string(),
+                )
+            } else if *k.get_ref() > 3 {
+                Some(format!(
+                    "component must be 0, 1 or 2 (3 for a quaternion's z), got {}",
+                    k.get_ref()
+                ))
+            } else {
+                None
+            };
+            if let Some(problem) = problem {
+                return Err(Note::new(problem, k.span()));
+            }
+        }
         Ok(Printed {
             contact: raw.contact.as_ref().map_or(0, |c| *c.get_ref()),
             stage: stage.clone(),
             value: raw.value.get_ref().clone(),
-            component: raw.component,
+            component: raw.component.as_ref().map(|k| *k.get_ref()),
             printed,
             location: raw.location.get_ref().clone(),
             erratum: raw.erratum.as_ref().map(|e| e.get_ref().clone()),
         })
+    }
+}
+
+/// What is wrong with the shape of a printed value: every value a stage has
+/// is a number, a 3-vector, a quaternion (4) or a 3×3 matrix (rows of 3), so
+/// anything else could never agree and is refused when the lesson is read.
+fn shape_error(p: &PrintedShape) -> Option<String> {
+    match p {
+        PrintedShape::Scalar(_) => None,
+        PrintedShape::Vector(v) if v.is_empty() => {
+            Some("the printed value is empty: write the number(s) the lecture prints".into())
+        }
+        PrintedShape::Vector(v) if !(3..=4).contains(&v.len()) => Some(format!(
+            "a printed vector has 3 numbers (4 for a quaternion), got {}",
+            v.len()
+        )),
+        PrintedShape::Vector(_) => None,
+        PrintedShape::Matrix(m) => {
+            if let Some((i, row)) = m.iter().enumerate().find(|(_, r)| r.len() != 3) {
+                Some(format!(
+                    "a printed matrix is 3 rows of 3 numbers: row {} has {}",
+                    i + 1,
+                    row.len()
+                ))
+            } else if m.len() != 3 {
+                Some(format!(
+                    "a printed matrix is 3 rows of 3 numbers, got {} row(s)",
+                    m.len()
+                ))
+            } else {
+                None
+            }
+        }
     }
 }
 

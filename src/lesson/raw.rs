@@ -149,7 +149,7 @@ pub struct RawPrinted {
     pub stage: S<String>,
     pub value: S<String>,
     /// Component index for vectors (0-based) when only one component is printed.
-    pub component: Option<usize>,
+    pub component: Option<S<usize>>,
     pub printed: S<PrintedValue>,
     #[serde(rename = "where")]
     pub location: S<String>,

@@ -18,17 +18,26 @@ impl From<RawShape> for Shape {
     }
 }
 
-/// The shape and its inertia formula, in words.
+/// The shape and its inertia formula, in words (numbers through
+/// `format::exact`: tiny and huge sizes in scientific notation).
 pub fn describe(shape: &Shape) -> String {
+    let e = crate::format::exact;
     match *shape {
-        Shape::Sphere { radius: r } => format!("solid sphere r = {r} (I = 2/5 m r²)"),
-        Shape::HollowSphere { radius: r } => format!("hollow sphere r = {r} (I = 2/3 m r²)"),
-        Shape::Box { sides: [x, y, z] } => {
-            format!("box {x} × {y} × {z} (I_xx = m/12 (y² + z²), …)")
+        Shape::Sphere { radius: r } => format!("solid sphere r = {} (I = 2/5 m r²)", e(r)),
+        Shape::HollowSphere { radius: r } => {
+            format!("hollow sphere r = {} (I = 2/3 m r²)", e(r))
         }
-        Shape::Cylinder { radius, height } => {
-            format!("cylinder r = {radius}, h = {height} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))")
-        }
+        Shape::Box { sides: [x, y, z] } => format!(
+            "box {} × {} × {} (I_xx = m/12 (y² + z²), …)",
+            e(x),
+            e(y),
+            e(z)
+        ),
+        Shape::Cylinder { radius, height } => format!(
+            "cylinder r = {}, h = {} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))",
+            e(radius),
+            e(height)
+        ),
         Shape::HalfSpace { .. } => "half-space".to_string(),
     }
 }

@@ -100,9 +100,13 @@ pub fn line_column(text: &str, at: usize) -> (usize, usize) {
 /// Why a lesson could not be loaded.
 #[derive(Debug, thiserror::Error)]
 pub enum LessonError {
-    /// The named lesson is neither embedded nor a readable file (exit 66).
+    /// The named lesson is neither embedded nor a file (exit 66).
     #[error("lesson file missing: {path}: {reason}")]
     Missing { path: String, reason: String },
+    /// The path exists but cannot be read as a lesson: permission denied, a
+    /// directory, a FIFO, a device, an I/O error (exit 1).
+    #[error("cannot read lesson file {path}: {reason}")]
+    Unreadable { path: String, reason: String },
     /// The file was read but is not a valid lesson (exit 65).
     #[error("invalid lesson {path}: {}", .diagnostics.first().map(|d| d.to_string()).unwrap_or_default())]
     Invalid {

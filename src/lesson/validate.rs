@@ -4,6 +4,8 @@
 mod resolver;
 mod simulation;
 
+pub use simulation::damping_rule;
+
 use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
@@ -19,30 +21,23 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
 pub mod rules {
-    /// The largest magnitude an input may have. Stages multiply at most five
-    /// inputs together (m·v², I·ω², (p − q) × m v, …), so inputs within
-    /// ±10⁶⁰ keep every intermediate below f64's 1.8·10³⁰⁸: no stage can
-    /// overflow to inf, however a valid lesson is written.
-    pub const MAX_MAGNITUDE: f64 = 1e60;
+    use crate::format::exact;
+    use crate::lesson::ranges;
+    pub use crate::lesson::ranges::{in_range, MAX_MAGNITUDE, MIN_MAGNITUDE};
 
-    /// Finite and within ±[`MAX_MAGNITUDE`].
-    pub fn in_range(x: f64) -> bool {
-        x.is_finite() && x.abs() <= MAX_MAGNITUDE
-    }
-
+    /// Zero, or a magnitude from 1e-60 to 1e60 (see `lesson::ranges` for why).
     pub fn finite(x: f64) -> Result<(), String> {
-        if in_range(x) {
-            Ok(())
-        } else if x.is_finite() {
-            Err(format!("{x:e} is outside contact-lab's range of ±1e60 (larger inputs could overflow a stage)"))
-        } else {
-            Err(format!("must be a finite number, got {x}"))
-        }
+        ranges::problem(x).map_or(Ok(()), Err)
+    }
+    /// The inertia tensor the stages will use (see `lesson::ranges::inertia`).
+    pub fn inertia(t: &nalgebra::Matrix3<f64>) -> Result<(), String> {
+        ranges::inertia(t)
     }
     pub fn mass(m: f64) -> Result<(), String> {
         if m.is_nan() || m <= 0.0 {
             Err(format!(
-                "mass must be > 0 (or inf for an immovable body), got {m}"
+                "mass must be > 0 (or inf for an immovable body), got {}",
+                exact(m)
             ))
         } else if !(1.0 / m).is_finite() {
             Err(format!(
@@ -60,73 +55,70 @@ pub mod rules {
         if (0.0..=1.0).contains(&c) {
             Ok(())
         } else {
-            Err(format!("restitution must be in [0, 1], got {c}"))
+            Err(format!("restitution must be in [0, 1], got {}", exact(c)))
         }
     }
     pub fn friction(mu: f64) -> Result<(), String> {
         if in_range(mu) && mu >= 0.0 {
             Ok(())
+        } else if mu > 0.0 && mu < MIN_MAGNITUDE {
+            Err(format!("friction coefficient {}", ranges::too_small(mu)))
         } else if mu.is_finite() && mu > 0.0 {
             Err(format!(
                 "friction coefficient {mu:e} is outside contact-lab's range of 0 to 1e60"
             ))
         } else {
             Err(format!(
-                "friction coefficient must be a finite number ≥ 0, got {mu}"
+                "friction coefficient must be a finite number ≥ 0, got {}",
+                exact(mu)
             ))
         }
     }
-    /// Ids and names appear in headings and tables: not blank, no control characters.
+    /// Ids and names appear in headings and tables: not blank, no control
+    /// characters at all (see `lesson::characters`).
     pub fn name(s: &str) -> Result<(), String> {
         if s.trim().is_empty() {
             Err("must not be empty".into())
         } else {
-            text(s)
+            super::super::characters::name(s)
         }
     }
-    /// Titles and summaries: line breaks and tabs, but no other control characters.
+    /// One-line texts (title, source, a printed entry's value and where).
+    pub fn line(s: &str) -> Result<(), String> {
+        super::super::characters::line(s)
+    }
+    /// Multi-line texts (summary, erratum): line breaks and tabs, no other
+    /// control characters.
     pub fn text(s: &str) -> Result<(), String> {
-        match s
-            .chars()
-            .find(|c| c.is_control() && !matches!(c, '\n' | '\r' | '\t'))
-        {
-            Some(c) => Err(format!(
-                "must not contain control characters (found U+{:04X})",
-                c as u32
-            )),
-            None => Ok(()),
-        }
+        super::super::characters::lines(s)
     }
     pub fn velocity_limit(x: f64) -> Result<(), String> {
-        if in_range(x) && x >= 0.0 {
-            Ok(())
-        } else {
-            Err(format!(
-                "velocity_limit must be a finite number ≥ 0, got {x}"
-            ))
-        }
+        non_negative(x).map_err(|e| format!("velocity_limit {e}"))
     }
     pub fn non_negative(x: f64) -> Result<(), String> {
-        if in_range(x) && x >= 0.0 {
-            Ok(())
+        if x.is_nan() || x < 0.0 {
+            Err(format!("must be a finite number ≥ 0, got {}", exact(x)))
         } else {
-            Err(format!("must be a finite number ≥ 0, got {x}"))
+            finite(x)
         }
     }
     pub fn angular_limit(x: f64) -> Result<(), String> {
         if x.is_nan() || x < 0.0 {
             Err(format!(
-                "angular_limit must be ≥ 0 (inf = no limit), got {x}"
+                "angular_limit must be ≥ 0 (inf = no limit), got {}",
+                exact(x)
             ))
         } else {
             Ok(())
         }
     }
     pub fn relaxation(x: f64) -> Result<(), String> {
-        if x > 0.0 && x <= 1.0 {
+        if x > 0.0 && x < MIN_MAGNITUDE {
+            Err(format!("relaxation {}", ranges::too_small_positive(x)))
+        } else if x > 0.0 && x <= 1.0 {
             Ok(())
         } else {
-            Err(format!("relaxation must be in (0, 1], got {x}"))
+            Err(format!("relaxation must be in (0, 1], got {}", exact(x)))
         }
     }
     /// The most iterations a resolver phase may be given.
@@ -143,20 +135,28 @@ pub mod rules {
         }
     }
 
-    /// A resolver epsilon: finite and ≥ 0.
+    /// A resolver epsilon: ≥ 0, and zero or within 1e-60 to 1e60.
     pub fn epsilon(name: &str, x: f64) -> Result<(), String> {
-        if in_range(x) && x >= 0.0 {
-            Ok(())
+        if !x.is_finite() || x < 0.0 {
+            Err(format!(
+                "{name} must be a finite number ≥ 0, got {}",
+                exact(x)
+            ))
         } else {
-            Err(format!("{name} must be a finite number ≥ 0, got {x}"))
+            finite(x).map_err(|e| format!("{name} {e}"))
         }
     }
 
     pub fn duration(x: f64) -> Result<(), String> {
-        if in_range(x) && x > 0.0 {
-            Ok(())
+        if x.is_nan() || x <= 0.0 {
+            Err(format!(
+                "duration must be a finite number > 0, got {}",
+                exact(x)
+            ))
+        } else if x < MIN_MAGNITUDE {
+            Err(format!("duration {}", ranges::too_small_positive(x)))
         } else {
-            Err(format!("duration must be a finite number > 0, got {x}"))
+            finite(x).map_err(|e| format!("duration {e}"))
         }
     }
 }
@@ -225,6 +225,14 @@ pub fn parse(origin: &str, text: &str) -> Result<Lesson, LessonError> {
     let mut v = Validator::default();
     let lesson = v.lesson(raw, origin);
     if v.errors.is_empty() {
+        // What the stages compute from valid inputs must fit in f64 too.
+        for (k, span) in v.contact_spans.clone().into_iter().enumerate() {
+            if let Err(e) = super::overflow::check(&lesson, k) {
+                v.err(span, e);
+            }
+        }
+    }
+    if v.errors.is_empty() {
         let mut lesson = lesson;
         lesson.warnings = LessonDiagnostic::resolve(origin, text, v.warnings);
         Ok(lesson)
@@ -237,6 +245,8 @@ pub fn parse(origin: &str, text: &str) -> Result<Lesson, LessonError> {
 struct Validator {
     errors: Vec<Note>,
     warnings: Vec<Note>,
+    /// Where each contact's `bodies` is, for errors about a whole contact.
+    contact_spans: Vec<std::ops::Range<usize>>,
 }
 
 fn v3(a: [f64; 3]) -> Vector3<f64> {
@@ -271,17 +281,29 @@ impl Validator {
             .zip(names)
             .find(|(x, _)| !rules::in_range(**x));
         if let Some((x, axis)) = bad {
-            let problem = if x.is_finite() {
-                format!("{x:e} is outside ±1e60")
+            let message = if x.is_finite() && x.abs() < rules::MIN_MAGNITUDE {
+                format!("{what}: {} (in {axis})", super::ranges::too_small(*x))
+            } else if x.is_finite() {
+                format!("{what}: every component must be a finite number within ±1e60, {x:e} is outside ±1e60 in {axis}")
             } else {
-                format!("got {x}")
+                format!("{what}: every component must be a finite number within ±1e60, got {x} in {axis}")
             };
-            self.err(
-                value.span(),
-                format!("{what}: every component must be a finite number within ±1e60, {problem} in {axis}"),
-            );
+            self.err(value.span(), message);
         }
         *value.get_ref()
+    }
+
+    /// A direction (normal, orientation): finite and within ±1e60, but any
+    /// length, since it is normalised; tiny components of the unit vector
+    /// are then set to 0 (`ranges::flush_tiny`).
+    fn finite_direction<const N: usize>(&mut self, what: &str, value: &S<[f64; N]>) -> [f64; N] {
+        let v = *value.get_ref();
+        if v.iter()
+            .all(|x| x.is_finite() && x.abs() <= rules::MAX_MAGNITUDE)
+        {
+            return v;
+        }
+        self.finite(what, value)
     }
 
     fn opt_vec(&mut self, what: &str, value: &Option<S<[f64; 3]>>) -> Vector3<f64> {
@@ -295,10 +317,14 @@ impl Validator {
             self.err(raw.id.span(), format!("id {e}"));
         }
         let texts = [("title", Some(&raw.title)), ("source", raw.source.as_ref())];
-        for (what, value) in texts.into_iter().chain([("summary", raw.summary.as_ref())]) {
-            if let Some(Err(e)) = value.map(|v| rules::text(v.get_ref())) {
+        for (what, value) in texts {
+            if let Some(Err(e)) = value.map(|v| rules::line(v.get_ref())) {
                 self.err(value.map_or(0..0, |v| v.span()), format!("{what} {e}"));
             }
+        }
+        if let Some(Err(e)) = raw.summary.as_ref().map(|v| rules::text(v.get_ref())) {
+            let span = raw.summary.as_ref().map_or(0..0, |v| v.span());
+            self.err(span, format!("summary {e}"));
         }
         let bodies: Vec<BodyDef> = raw.bodies.iter().map(|b| self.body(b)).collect();
         let mut index = HashMap::new();
@@ -428,17 +454,22 @@ impl Validator {
                 None
             }
         };
-        // The stages use I⁻¹: a tensor f64 cannot invert must not become a
-        // silent zero (a body that cannot turn) or a matrix of NaN.
+        // The stages use I⁻¹: a tensor whose inverse is out of range, has no
+        // correct digit or cannot be found must not become a silent zero (a
+        // body that cannot turn), inf or NaN (see `lesson::ranges`).
         if let Some(t) = inertia.filter(|_| movable && self.errors.len() == errors_before) {
-            let inverse = t.try_inverse().filter(|i| i.iter().all(|x| x.is_finite()));
-            if inverse.is_none_or(|i| (t * i - Matrix3::identity()).norm() > 0.5) {
+            if let Err(e) = rules::inertia(&t) {
                 let span = raw.inertia.as_ref().map(|t| t.span());
+                let from = if span.is_some() {
+                    ""
+                } else {
+                    " (from the shape)"
+                };
                 let span = span.or(raw.shape.as_ref().map(|s| s.span()));
                 self.err(
                     span.unwrap_or(raw.name.span()),
                     format!(
-                        "body '{name}': the inertia tensor {} cannot be inverted in 64-bit floats",
+                        "body '{name}': the inertia tensor {}{from}: {e}",
                         tensor(&t)
                     ),
                 );
@@ -454,8 +485,8 @@ impl Validator {
                     o.get_ref()[3],
                     o.get_ref()[0],
                 ));
-                self.finite(&format!("body '{name}' orientation"), o);
-                let n = q.norm();
+                self.finite_direction(&format!("body '{name}' orientation"), o);
+                let n = crate::physics::scale::stable_norm_quaternion(&q);
                 if !n.is_finite() {
                     Quaternion::identity()
                 } else if n == 0.0 {
@@ -469,11 +500,22 @@ impl Validator {
                 } else {
                     if (n - 1.0).abs() > 1e-6 {
                         self.warnings.push(Note::new(
-                            format!("body '{name}': orientation has length {n}; it was normalised"),
+                            format!(
+                                "body '{name}': orientation has length {}; it was normalised",
+                                crate::format::exact(n)
+                            ),
                             o.span(),
                         ));
                     }
-                    q / n
+                    let unit = q / n;
+                    let [w, x, y, z] = [unit.w, unit.i, unit.j, unit.k].map(|c| {
+                        if c.abs() < rules::MIN_MAGNITUDE {
+                            0.0
+                        } else {
+                            c
+                        }
+                    });
+                    Quaternion::new(w, x, y, z)
                 }
             }
         };
@@ -484,9 +526,18 @@ impl Validator {
         );
         let acceleration = self.opt_vec(&format!("body '{name}' acceleration"), &raw.acceleration);
         if mass.is_infinite() {
+            // An immovable body neither moves nor turns: whatever would make
+            // it do so is refused, not silently ignored.
+            if let Some(t) = &raw.inertia {
+                self.err(
+                    t.span(),
+                    format!("body '{name}' is immovable (mass = inf): it takes no `inertia` tensor (remove it, or give a finite mass)"),
+                );
+            }
             for (field, value) in [
                 ("velocity", &raw.velocity),
                 ("angular_velocity", &raw.angular_velocity),
+                ("acceleration", &raw.acceleration),
             ] {
                 if let Some(v) = value {
                     if v.get_ref().iter().any(|x| *x != 0.0) {
@@ -519,10 +570,20 @@ impl Validator {
             .enumerate()
             .flat_map(|(r, row)| row.iter().enumerate().map(move |(c, x)| (r + 1, c + 1, *x)));
         if let Some((r, c, x)) = cells.into_iter().find(|(_, _, x)| !rules::in_range(*x)) {
-            self.err(
-                t.span(),
-                format!("body '{name}': every inertia component must be a finite number within ±1e60, got {x} in row {r}, column {c}"),
-            );
+            let message = if x.is_finite() && x.abs() < rules::MIN_MAGNITUDE {
+                format!(
+                    "body '{name}': inertia component in row {r}, column {c}: {}",
+                    super::ranges::too_small(x)
+                )
+            } else {
+                let x = if x.is_finite() {
+                    format!("{x:e}")
+                } else {
+                    format!("{x}")
+                };
+                format!("body '{name}': every inertia component must be a finite number within ±1e60, got {x} in row {r}, column {c}")
+            };
+            self.err(t.span(), message);
         }
         *t.get_ref()
     }
@@ -531,23 +592,28 @@ impl Validator {
         if !t.iter().all(|x| x.is_finite()) {
             return;
         }
-        let asym = (t - t.transpose()).norm();
-        if asym > 1e-9 * t.norm() {
+        let norm = crate::physics::scale::stable_norm_matrix;
+        let asym = norm(&(t - t.transpose()));
+        if asym > 1e-9 * norm(t) {
             self.err(
                 span,
-                format!("body '{name}': inertia tensor must be symmetric (|I − Iᵀ| = {asym})"),
+                format!(
+                    "body '{name}': inertia tensor must be symmetric (|I − Iᵀ| = {})",
+                    crate::format::Fmt::new(3).num(asym)
+                ),
             );
             return;
         }
-        let eig = t.symmetric_eigenvalues();
-        if eig.min() <= 0.0 || t.cholesky().is_none() {
+        let eig = super::ranges::principal_moments(t);
+        let scaled = t / crate::physics::scale::pow2_below(t.amax().max(f64::MIN_POSITIVE));
+        if eig[0] <= 0.0 || scaled.cholesky().is_none() {
             self.err(
                 span,
                 format!("body '{name}': inertia tensor must be positive-definite (eigenvalues {:.6e}, {:.6e}, {:.6e})", eig[0], eig[1], eig[2]),
             );
             return;
         }
-        let condition = eig.max() / eig.min();
+        let condition = eig[2] / eig[0];
         if condition > 1e8 {
             self.warnings.push(Note::new(
                 format!(
@@ -558,11 +624,11 @@ impl Validator {
                 span.clone(),
             ));
         }
-        let mut e: Vec<f64> = eig.iter().copied().collect();
-        e.sort_by(|a, b| a.total_cmp(b));
+        let e = eig;
         if e[0] + e[1] < e[2] * (1.0 - 1e-9) {
+            let f = crate::format::Fmt::new(6);
             self.warnings.push(Note::new(
-                format!("body '{name}': principal moments {:.6}, {:.6}, {:.6} break the triangle inequality: no real body has this tensor", e[0], e[1], e[2]),
+                format!("body '{name}': principal moments {}, {}, {} break the triangle inequality: no real body has this tensor", f.num(e[0]), f.num(e[1]), f.num(e[2])),
                 span,
             ));
         }
@@ -605,6 +671,7 @@ impl Validator {
         bodies: &[BodyDef],
         defaults: Settings,
     ) -> ContactDef {
+        self.contact_spans.push(raw.bodies.span());
         if let Some(n) = &raw.name {
             if let Err(e) = rules::name(n.get_ref()) {
                 self.err(n.span(), format!("contact name {e}"));
@@ -650,24 +717,29 @@ impl Validator {
             );
         }
         let point = v3(self.finite("contact point", &raw.point));
-        let given = v3(self.finite("contact normal", &raw.normal));
-        let normal_length = given.norm();
+        // A direction: any non-zero length will do (scaled before squaring,
+        // so a length of 1e-170 is not taken for zero).
+        let given = v3(self.finite_direction("contact normal", &raw.normal));
+        let normal_length = crate::physics::scale::stable_norm(&given);
         let normal = if !normal_length.is_finite() {
             Vector3::y()
-        } else if normal_length <= 1e-12 {
+        } else if normal_length == 0.0 {
             self.err(
                 raw.normal.span(),
-                format!("contact normal must be non-zero (its length is {normal_length})"),
+                "contact normal must be non-zero (its length is 0)",
             );
             Vector3::y()
         } else {
             if (normal_length - 1.0).abs() > 1e-4 {
                 self.warnings.push(Note::new(
-                    format!("contact normal has length {normal_length}; it was normalised to unit length"),
+                    format!(
+                        "contact normal has length {}; it was normalised to unit length",
+                        crate::format::exact(normal_length)
+                    ),
                     raw.normal.span(),
                 ));
             }
-            given / normal_length
+            super::ranges::flush_tiny(given / normal_length)
         };
         let penetration = raw
             .penetration
@@ -694,7 +766,7 @@ impl Validator {
         if mu_d > mu_s {
             if let Some(span) = raw.dynamic_friction.as_ref().map(|f| f.span()) {
                 self.warnings.push(Note::new(
-                    format!("dynamic friction {mu_d} exceeds static friction {mu_s}: sliding would grip harder than sticking"),
+                    format!("dynamic friction {} exceeds static friction {}: sliding would grip harder than sticking", crate::format::exact(mu_d), crate::format::exact(mu_s)),
                     span,
                 ));
             }
@@ -747,11 +819,14 @@ impl Validator {
             return None;
         }
         // `check` prints these strings: no control characters.
-        let texts = [("value", Some(&raw.value)), ("where", Some(&raw.location))];
-        for (what, text) in texts.into_iter().chain([("erratum", raw.erratum.as_ref())]) {
-            if let Some(Err(e)) = text.map(|t| rules::text(t.get_ref())) {
-                self.err(text.map_or(0..0, |t| t.span()), format!("{what} {e}"));
+        for (what, text) in [("value", &raw.value), ("where", &raw.location)] {
+            if let Err(e) = rules::line(text.get_ref()) {
+                self.err(text.span(), format!("{what} {e}"));
             }
+        }
+        if let Some(Err(e)) = raw.erratum.as_ref().map(|t| rules::text(t.get_ref())) {
+            let span = raw.erratum.as_ref().map_or(0..0, |t| t.span());
+            self.err(span, format!("erratum {e}"));
         }
         match Printed::from_raw(raw) {
             Ok(p) => Some(p),

@@ -3,7 +3,9 @@
 //!
 //! - [`body`], [`shape`], [`world`]: bodies by id, their shapes, the world of a scene;
 //! - [`params`]: every tunable, one documented struct per level;
-//! - [`contact`]: ONE contact — frame, problem view, stages, solve, checks;
+//! - [`contact`]: ONE contact — frame, problem view, stages, solve, checks
+//!   and the causes of their verdicts;
+//! - [`scale`]: scale-invariant norms and inverse (power-of-two scaling);
 //! - beside it, for sets of contacts over time: `resolver/` (a scene's contacts
 //!   resolved together), `collide/` (contact generation), `step/` (time
 //!   stepping, micro-collisions, sleep) and `exact/` (impact integration).
@@ -14,12 +16,13 @@ pub mod contact;
 pub mod exact;
 pub mod params;
 pub mod resolver;
+pub mod scale;
 pub mod shape;
 pub mod step;
 pub mod world;
 
 pub use body::RigidBody;
-pub use contact::{checks, frame, problem, solve, stages};
+pub use contact::{causes, checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
 pub use params::{
     ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, SleepParams,

@@ -156,12 +156,14 @@ impl RunTrace {
     fn describe(&self, e: &Event) -> (&'static str, String) {
         let f = crate::format::Fmt::new(3);
         match *e {
-            Event::ContactMade { body1, body2 } => {
-                ("contact", format!("contact made: {}", self.pair(body1, body2)))
-            }
-            Event::ContactLost { body1, body2 } => {
-                ("contact", format!("contact lost: {}", self.pair(body1, body2)))
-            }
+            Event::ContactMade { body1, body2 } => (
+                "contact",
+                format!("contact made: {}", self.pair(body1, body2)),
+            ),
+            Event::ContactLost { body1, body2 } => (
+                "contact",
+                format!("contact lost: {}", self.pair(body1, body2)),
+            ),
             Event::Bounce {
                 body1,
                 body2,
@@ -177,7 +179,9 @@ impl RunTrace {
                     f.num(separating / closing)
                 ),
             ),
-            Event::Sticks { body1, body2 } => ("friction", format!("sticks: {}", self.pair(body1, body2))),
+            Event::Sticks { body1, body2 } => {
+                ("friction", format!("sticks: {}", self.pair(body1, body2)))
+            }
             Event::Slides { body1, body2, .. } => {
                 ("friction", format!("slides: {}", self.pair(body1, body2)))
             }

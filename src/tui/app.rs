@@ -412,7 +412,7 @@ impl App {
                     KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
                         return self.say("not written".into(), false);
                     }
-                    KeyCode::Char(c) => input.push(c),
+                    KeyCode::Char(c) if !c.is_control() => input.push(c),
                     _ => {}
                 }
                 self.mode = Mode::Write { input, error };

@@ -96,12 +96,20 @@ pub enum Event {
     Resize,
 }
 
-/// Waits for the next key press or resize (other events are skipped).
-pub fn next() -> std::io::Result<Event> {
+/// Waits for the next key press or resize (other events are skipped);
+/// `None` as soon as `stop` is set (a signal asked the app to end), checked
+/// every 100 ms while no key comes.
+pub fn next(stop: &std::sync::atomic::AtomicUsize) -> std::io::Result<Option<Event>> {
     loop {
+        if stop.load(std::sync::atomic::Ordering::Relaxed) != 0 {
+            return Ok(None);
+        }
+        if !event::poll(std::time::Duration::from_millis(100))? {
+            continue;
+        }
         match event::read()? {
-            CtEvent::Key(k) if k.kind == KeyEventKind::Press => return Ok(Event::Key(k)),
-            CtEvent::Resize(..) => return Ok(Event::Resize),
+            CtEvent::Key(k) if k.kind == KeyEventKind::Press => return Ok(Some(Event::Key(k))),
+            CtEvent::Resize(..) => return Ok(Some(Event::Resize)),
             _ => {}
         }
     }

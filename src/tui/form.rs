@@ -54,7 +54,8 @@ impl Form {
                 }
                 KeyCode::Char('u') if ctrl => input.clear(),
                 KeyCode::Char('c') if ctrl => return Outcome::Close,
-                KeyCode::Char(c) if !ctrl => input.push(c),
+                // A pasted control character (escape, CR) would reach the terminal.
+                KeyCode::Char(c) if !ctrl && !c.is_control() => input.push(c),
                 _ => {}
             }
             return Outcome::Stay;

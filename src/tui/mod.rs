@@ -14,6 +14,8 @@ pub mod ui;
 pub mod wrap;
 pub mod write;
 
+use std::ffi::OsStr;
+
 use crate::error::AppError;
 use crate::lesson::{embedded, Lesson};
 pub use app::App;
@@ -21,15 +23,20 @@ pub use theme::Theme;
 
 /// The embedded lessons, plus `lesson` when it names a file; returns them
 /// and the index to open.
-pub fn lessons(lesson: Option<&str>) -> Result<(Vec<Lesson>, usize), AppError> {
+pub fn lessons<N: AsRef<OsStr> + ?Sized>(
+    lesson: Option<&N>,
+) -> Result<(Vec<Lesson>, usize), AppError> {
     let mut all: Vec<Lesson> = embedded::ids()
         .into_iter()
         .map(Lesson::load)
         .collect::<Result<_, _>>()
         .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
-    let at = match lesson {
+    let at = match lesson.map(AsRef::as_ref) {
         None => all.iter().position(|l| l.id == "lecture-2").unwrap_or(0),
-        Some(name) => match all.iter().position(|l| l.id == name) {
+        Some(name) => match all
+            .iter()
+            .position(|l| name.to_str() == Some(l.id.as_str()))
+        {
             Some(i) => i,
             None => {
                 all.push(Lesson::load(name)?);
@@ -41,7 +48,7 @@ pub fn lessons(lesson: Option<&str>) -> Result<(Vec<Lesson>, usize), AppError> {
 }
 
 /// The app on `lesson` (embedded id or path; lecture-2 when `None`) and contact `contact`.
-pub fn open(lesson: Option<&str>, contact: usize) -> Result<App, AppError> {
+pub fn open<N: AsRef<OsStr> + ?Sized>(lesson: Option<&N>, contact: usize) -> Result<App, AppError> {
     let (all, at) = lessons(lesson)?;
     let n = all[at].contacts.len();
     if contact >= n {
@@ -56,19 +63,27 @@ pub fn open(lesson: Option<&str>, contact: usize) -> Result<App, AppError> {
 }
 
 /// Runs the app until the user quits; the terminal is restored on return,
-/// on error and on panic (ratatui's hook).
+/// on error, on panic (ratatui's hook) and on the signals that end a
+/// program (SIGTERM, SIGHUP, SIGINT, SIGQUIT: the app stops at once, restores
+/// the terminal, then dies of the same signal, as its parent expects).
 pub fn run(mut app: App) -> Result<(), AppError> {
+    let signal = signals::watch()?;
     let mut terminal = ratatui::try_init().map_err(|e| {
         // Raw mode may be on although the alternate screen failed.
         ratatui::restore();
         AppError::Runtime(format!("cannot open the terminal: {e}"))
     })?;
-    let result = run_loop(&mut terminal, &mut app);
+    let result = run_loop(&mut terminal, &mut app, &signal);
     ratatui::restore();
+    signals::end_if_signalled(&signal);
     result.map_err(|e| AppError::Runtime(format!("terminal: {e}")))
 }
 
-fn run_loop(terminal: &mut ratatui::DefaultTerminal, app: &mut App) -> std::io::Result<()> {
+fn run_loop(
+    terminal: &mut ratatui::DefaultTerminal,
+    app: &mut App,
+    signal: &std::sync::atomic::AtomicUsize,
+) -> std::io::Result<()> {
     while !app.quit {
         terminal.draw(|f| f.render_widget(&*app, f.area()))?;
         // Test builds only: prove the terminal is restored when the app panics.
@@ -76,10 +91,50 @@ fn run_loop(terminal: &mut ratatui::DefaultTerminal, app: &mut App) -> std::io::
         if std::env::var_os("CONTACT_LAB_TEST_PANIC").is_some() {
             panic!("CONTACT_LAB_TEST_PANIC: a deliberate panic after the first frame");
         }
-        match event::next()? {
-            event::Event::Key(k) => app.key(k),
-            event::Event::Resize => {}
+        match event::next(signal)? {
+            Some(event::Event::Key(k)) => app.key(k),
+            Some(event::Event::Resize) => {}
+            None => break,
         }
     }
     Ok(())
+}
+
+/// The signals that end the app, caught so that the terminal is restored first.
+mod signals {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Arc;
+
+    use crate::error::AppError;
+
+    /// A flag the handlers set to the signal's number.
+    #[cfg(unix)]
+    pub fn watch() -> Result<Arc<AtomicUsize>, AppError> {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGQUIT, SIGTERM};
+        let flag = Arc::new(AtomicUsize::new(0));
+        for sig in [SIGTERM, SIGHUP, SIGINT, SIGQUIT] {
+            signal_hook::flag::register_usize(sig, Arc::clone(&flag), sig as usize)
+                .map_err(|e| AppError::Runtime(format!("cannot watch signal {sig}: {e}")))?;
+        }
+        Ok(flag)
+    }
+
+    #[cfg(not(unix))]
+    pub fn watch() -> Result<Arc<AtomicUsize>, AppError> {
+        Ok(Arc::new(AtomicUsize::new(0)))
+    }
+
+    /// After the terminal is restored: end the process by the signal that
+    /// stopped the app (its default action), if one did.
+    pub fn end_if_signalled(flag: &AtomicUsize) {
+        let sig = flag.load(Ordering::Relaxed);
+        if sig == 0 {
+            return;
+        }
+        #[cfg(unix)]
+        {
+            let _ = signal_hook::low_level::emulate_default_handler(sig as i32);
+        }
+        std::process::exit(128 + sig as i32);
+    }
 }

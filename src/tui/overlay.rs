@@ -13,7 +13,7 @@ use ratatui::widgets::{
 use super::app::App;
 use super::event::KEYS;
 use super::form::Form;
-use super::wrap::{truncate, width, wrap};
+use super::wrap::{tail, truncate, width, wrap};
 use crate::lesson::edit::{self, Kind};
 
 /// A `w × h` rectangle in the middle of `area` (clipped to it).
@@ -80,7 +80,12 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
     let title = format!(" Edit contact {} ", lesson.contact_label(k));
     let title = truncate(&title, rect.width.saturating_sub(4) as usize);
     let inner = frame(app, &title, rect, buf);
-    let error_rows = form.error.as_deref().map_or(0, |e| {
+    // At most three rows of refusal, so the input line above it stays in view.
+    let error = form
+        .error
+        .as_deref()
+        .map(|e| truncate(e, (inner.width as usize * 5 / 2).saturating_sub(12)));
+    let error_rows = error.as_deref().map_or(0, |e| {
         wrap(&format!(" refused: {e}"), inner.width as usize, 0).len() as u16
     });
     let [list_area, input_area, help_area] = Layout::vertical([
@@ -127,13 +132,16 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
             Kind::Vector => "x, y, z",
             _ => "number",
         };
+        let prompt = format!(" {} ({what}) = ", field.label);
+        // One line, scrolled so that its end and the cursor stay visible.
+        let room = (inner.width as usize).saturating_sub(width(&prompt) + 1);
         lines.push(Line::from(vec![
-            Span::styled(format!(" {} ({what}) = ", field.label), t.key()),
-            Span::raw(input.clone()),
+            Span::styled(prompt, t.key()),
+            Span::raw(tail(input, room)),
             Span::styled("▏", t.key()),
         ]));
     }
-    if let Some(e) = &form.error {
+    if let Some(e) = &error {
         lines.push(Line::styled(format!(" refused: {e}"), t.error()));
     }
     Paragraph::new(lines)
@@ -149,18 +157,33 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
 
 pub fn write_prompt(app: &App, input: &str, error: Option<&str>, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
-    let rows = 4 + u16::from(error.is_some());
-    let rect = centered(area, 70.min(area.width.saturating_sub(4)), rows);
+    let w = 70.min(area.width.saturating_sub(4));
+    let text_w = w.saturating_sub(3) as usize;
+    // The error wraps to at most three rows; the file name scrolls on one.
+    let error_lines: Vec<String> = error.map_or_else(Vec::new, |e| {
+        let mut l = wrap(e, text_w, 0);
+        if l.len() > 3 {
+            l.truncate(3);
+            l[2] = truncate(&format!("{} …", l[2]), text_w);
+        }
+        l
+    });
+    let rows = 4 + error_lines.len() as u16;
+    let rect = centered(area, w, rows);
     let inner = frame(app, " Write Markdown ", rect, buf);
+    let dir = crate::output_file::shown(&app.write_dir);
     let mut lines = vec![
-        Line::styled(format!(" into {}", app.write_dir.display()), t.dim()),
+        Line::styled(
+            truncate(&format!(" into {dir}"), inner.width as usize),
+            t.dim(),
+        ),
         Line::from(vec![
             Span::styled(" file: ", t.key()),
-            Span::raw(input.to_string()),
+            Span::raw(tail(input, (inner.width as usize).saturating_sub(8))),
             Span::styled("▏", t.key()),
         ]),
     ];
-    if let Some(e) = error {
+    for e in error_lines {
         lines.push(Line::styled(format!(" {e}"), t.error()));
     }
     Paragraph::new(lines)

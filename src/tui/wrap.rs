@@ -153,9 +153,38 @@ pub fn truncate(s: &str, max: usize) -> String {
     out
 }
 
+/// The end of `s` in at most `max` cells, starting with `…` when cut: a long
+/// input line scrolled so that its end (where the cursor is) stays visible.
+pub fn tail(s: &str, max: usize) -> String {
+    if width(s) <= max {
+        return s.to_string();
+    }
+    let mut kept = Vec::new();
+    let mut w = 0;
+    for ch in s.chars().rev() {
+        let cw = width(ch.encode_utf8(&mut [0; 4]));
+        if w + cw + 1 > max {
+            break;
+        }
+        kept.push(ch);
+        w += cw;
+    }
+    let mut out = String::from(if max > 0 { "…" } else { "" });
+    out.extend(kept.into_iter().rev());
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn tail_keeps_the_end() {
+        assert_eq!(tail("0.5", 10), "0.5");
+        assert_eq!(tail("123456789", 5), "…6789");
+        assert_eq!(width(&tail(&"é".repeat(3000), 40)), 40);
+        assert_eq!(tail("abc", 0), "");
+    }
 
     #[test]
     fn hanging_indent() {

@@ -1,8 +1,7 @@
-//! `w`: the worked solution as a Markdown file, written atomically (a temporary
-//! file in the same directory, then linked or renamed into place) and never
-//! over an existing file unless the user said so.
+//! `w`: the worked solution as a Markdown file, written through
+//! [`crate::output_file`] (atomically, never over a device, FIFO, directory or
+//! symbolic link) and never over an existing file unless the user said so.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use crate::format::Fmt;
@@ -43,44 +42,22 @@ pub enum WriteError {
     Io(String),
 }
 
-/// Writes `text` to `path` atomically. Without `overwrite`, an existing file
-/// is left alone and [`WriteError::Exists`] returned.
+/// Writes `text` to `path` through [`crate::output_file`] (atomically,
+/// only ever replacing a regular file). Without `overwrite`, an existing
+/// file is left alone and [`WriteError::Exists`] returned.
 pub fn write_atomic(path: &Path, text: &str, overwrite: bool) -> Result<(), WriteError> {
-    let io = |e: std::io::Error| WriteError::Io(format!("{}: {e}", path.display()));
-    if !overwrite && path.exists() {
-        return Err(WriteError::Exists(path.to_path_buf()));
-    }
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
+    use crate::output_file::{write, Error, Existing};
+    let existing = if overwrite {
+        Existing::Replace
+    } else {
+        Existing::Keep
     };
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
-    let tmp = dir.join(format!(
-        ".{}.{}.tmp",
-        name.unwrap_or_else(|| "contact-lab".into()),
-        std::process::id()
-    ));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp).map_err(io)?;
-        f.write_all(text.as_bytes()).map_err(io)?;
-        f.sync_all().map_err(io)?;
-        drop(f);
-        if overwrite {
-            return std::fs::rename(&tmp, path).map_err(io);
-        }
-        // A hard link fails if the name exists, so a file that appeared since
-        // the check above is still not replaced.
-        match std::fs::hard_link(&tmp, path) {
-            Ok(()) => Ok(()),
-            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-                Err(WriteError::Exists(path.to_path_buf()))
-            }
-            // A file system without hard links: rename (the check above stands).
-            Err(_) => std::fs::rename(&tmp, path).map_err(io),
-        }
-    })();
-    let _ = std::fs::remove_file(&tmp);
-    result
+    match write(path, text.as_bytes(), existing) {
+        Ok(()) => Ok(()),
+        Err(Error::Exists(p)) => Err(WriteError::Exists(p)),
+        // The prompt shows the directory and the name; the reason is what is new.
+        Err(e) => Err(WriteError::Io(e.reason())),
+    }
 }
 
 #[cfg(test)]

@@ -223,17 +223,19 @@ impl Validator {
         let Some(n) = &raw.normal else {
             return;
         };
-        let v = v3(self.finite(&format!("body '{name}' normal"), n));
+        // A direction: any non-zero length will do (scaled before squaring,
+        // so a length of 1e-170 is not taken for zero).
+        let v = v3(self.finite_direction(&format!("body '{name}' normal"), n));
         match shape {
             Some(Shape::HalfSpace { normal }) => {
-                let len = v.norm();
+                let len = crate::physics::scale::stable_norm(&v);
                 if len == 0.0 || !len.is_finite() {
                     self.err(
                         n.span(),
                         format!("body '{name}': a half-space's normal must be non-zero"),
                     );
                 } else {
-                    *normal = (v / len).into();
+                    *normal = super::super::ranges::flush_tiny(v / len).into();
                 }
             }
             _ => self.err(
@@ -244,12 +246,20 @@ impl Validator {
     }
 }
 
-fn damping_rule(x: f64) -> Result<(), String> {
-    if x > 0.0 && x <= 1.0 {
+/// A damping: the fraction of velocity kept per second, in (0, 1] and not
+/// below 1e-60 (also `simulate --damping`).
+pub fn damping_rule(x: f64) -> Result<(), String> {
+    if x > 0.0 && x < rules::MIN_MAGNITUDE {
+        Err(format!(
+            "damping {}",
+            super::super::ranges::too_small_positive(x)
+        ))
+    } else if x > 0.0 && x <= 1.0 {
         Ok(())
     } else {
         Err(format!(
-            "damping is the fraction of velocity kept per second and must be in (0, 1], got {x}"
+            "damping is the fraction of velocity kept per second and must be in (0, 1], got {}",
+            crate::format::exact(x)
         ))
     }
 }

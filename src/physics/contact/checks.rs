@@ -3,10 +3,13 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::causes::{self, Cause};
 use super::stages::{
-    AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, OrientationUpdate, Projection,
+    AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, Impulse, OrientationUpdate,
+    Projection,
 };
 use super::{c, Problem, Real};
+use crate::physics::scale::{stable_hypot, stable_norm as norm, stable_norm_quaternion};
 
 /// Relative tolerance of the checks: 10⁴ ε of the float type (f64: 2.2e-12,
 /// f32: 1.2e-3), applied to the size of the terms each check adds up, so a
@@ -78,6 +81,9 @@ pub struct CheckItem<T: Real> {
     /// `None` for a check that informs rather than passes or fails.
     pub passed: Option<bool>,
     pub measured: Measured<T>,
+    /// Why a check failed, or why a result that looks like a failure is
+    /// not one (`physics::contact::causes`).
+    pub cause: Option<Cause<T>>,
 }
 
 impl<T: Real> CheckItem<T> {
@@ -106,6 +112,7 @@ pub struct CheckInputs<'a, T: Real> {
     pub problem: &'a Problem<T>,
     pub frame: &'a ContactFrame<T>,
     pub desired: &'a DesiredVelocity<T>,
+    pub impulse: Option<&'a Impulse<T>>,
     pub applied: Option<&'a AppliedImpulse<T>>,
     pub friction: Option<&'a FrictionClamp<T>>,
     pub projection: Option<&'a Projection<T>>,
@@ -113,7 +120,30 @@ pub struct CheckInputs<'a, T: Real> {
 }
 
 fn item<T: Real>(passed: Option<bool>, measured: Measured<T>) -> CheckItem<T> {
-    CheckItem { passed, measured }
+    CheckItem {
+        passed,
+        measured,
+        cause: None,
+    }
+}
+
+/// A check's item with the cause that explains it: passed, unless `cause`
+/// says why not; a limit of the arithmetic (round-off of an ill-conditioned
+/// solve, the fallback of a failed one) only informs (`None`); anything else
+/// is a defect of the model, named.
+fn explained<T: Real>(cause: Option<Cause<T>>, measured: Measured<T>) -> CheckItem<T> {
+    let passed = match cause {
+        None => Some(true),
+        Some(
+            Cause::RoundOff { .. } | Cause::FrictionlessFallback | Cause::PlanarAcceleration { .. },
+        ) => None,
+        Some(_) => Some(false),
+    };
+    CheckItem {
+        passed,
+        measured,
+        cause,
+    }
 }
 
 pub fn run_checks<T: Real>(input: &CheckInputs<'_, T>) -> Checks<T> {
@@ -146,9 +176,9 @@ fn velocity_checks<T: Real>(
         for (_, b, a) in &pairs {
             before += b.velocity * b.mass;
             after += a.v * b.mass;
-            scale += (b.velocity * b.mass).norm() + a.impulse.norm();
+            scale += norm(&(b.velocity * b.mass)) + norm(&a.impulse);
         }
-        let error = (after - before).norm();
+        let error = norm(&(after - before));
         items.push(item(
             Some(error <= tol * scale),
             Measured::LinearMomentum { error },
@@ -158,10 +188,10 @@ fn velocity_checks<T: Real>(
     for (i, b, a) in &pairs {
         let before = b.angular_momentum_about(&q, &b.velocity, &b.angular_velocity);
         let after = b.angular_momentum_about(&q, &a.v, &a.w);
-        let scale = before.norm()
-            + (b.inertia_world() * a.w).norm()
-            + (b.position - q).norm() * b.mass * (b.velocity.norm() + a.v.norm());
-        let error = (after - before).norm();
+        let scale = norm(&before)
+            + norm(&(b.inertia_world() * a.w))
+            + norm(&(b.position - q)) * b.mass * (norm(&b.velocity) + norm(&a.v));
+        let error = norm(&(after - before));
         items.push(item(
             Some(error <= tol * scale),
             Measured::AngularMomentum { body: *i, error },
@@ -170,18 +200,21 @@ fn velocity_checks<T: Real>(
 
     // Separating velocity after the impulse, along the normal.
     let mut after_world = Vector3::zeros();
-    let mut scale = input.desired.contact_velocity_world.norm();
+    let mut scale = norm(&input.desired.contact_velocity_world);
     for (i, b, a) in &pairs {
         let r = input.frame.r[*i].unwrap_or_else(Vector3::zeros);
         let v = a.w.cross(&r) + a.v;
-        scale += v.norm() + b.point_velocity(&r).norm();
+        scale += norm(&v) + norm(&b.point_velocity(&r));
         after_world += v * Problem::<T>::sign(*i);
     }
     let separating = after_world.dot(&d);
     let expected = input.desired.separating() + input.desired.desired;
     let error = (separating - expected).abs();
-    items.push(item(
-        Some(error <= tol * scale),
+    let friction_solve = input.friction.and_then(|f| f.solve.as_ref());
+    let missed = (error > tol * scale)
+        .then(|| causes::restitution_miss(problem, input.impulse, friction_solve, error, scale));
+    items.push(explained(
+        missed,
         Measured::Restitution {
             before: input.desired.separating(),
             after: separating,
@@ -194,8 +227,10 @@ fn velocity_checks<T: Real>(
         e_before += b.kinetic_energy(&b.velocity, &b.angular_velocity);
         e_after += b.kinetic_energy(&a.v, &a.w);
     }
-    items.push(item(
-        Some(e_after <= e_before * (T::one() + tol) + tol * e_before.abs()),
+    let rise = causes::rose(e_before, e_after)
+        .then(|| causes::energy_rise(problem, input.impulse, friction_solve, (e_before, e_after)));
+    items.push(explained(
+        rise,
         Measured::Energy {
             before: e_before,
             after: e_after,
@@ -205,15 +240,19 @@ fn velocity_checks<T: Real>(
 
     if let Some(f) = input.friction {
         let g = f.impulse_contact;
-        let tangential = (g.y * g.y + g.z * g.z).sqrt();
+        let tangential = stable_hypot(g.y, g.z);
         let mu = problem
             .contact
             .static_friction
             .max(problem.contact.dynamic_friction);
         let ok =
-            g.x >= -tol * g.norm() && tangential <= mu * g.x * (T::one() + tol) + tol * g.norm();
-        items.push(item(
-            Some(ok),
+            g.x >= -tol * norm(&g) && tangential <= mu * g.x * (T::one() + tol) + tol * norm(&g);
+        let outside = (!ok).then(|| {
+            let error = (tangential - mu * g.x).max(-g.x);
+            causes::cone_miss(problem, input.impulse, friction_solve, error, norm(&g))
+        });
+        items.push(explained(
+            outside,
             Measured::FrictionCone {
                 normal: g.x,
                 tangential,
@@ -222,19 +261,45 @@ fn velocity_checks<T: Real>(
         ));
         let slip = |v: Vector3<T>| {
             let vc = input.frame.to_contact(&v);
-            (vc.y * vc.y + vc.z * vc.z).sqrt()
+            stable_hypot(vc.y, vc.z)
         };
         let before = slip(input.desired.contact_velocity_world);
         let after = slip(after_world);
         // Sticking must leave no slip; sliding may end faster than it began,
         // because the normal impulse itself drives the point sideways (M₀₁, M₀₂).
         let rose = after > before * (T::one() + tol) + tol * scale;
-        let passed = match (rose, f.regime) {
-            (false, _) => Some(true),
-            (true, super::stages::FrictionRegime::Dynamic) => None,
-            (true, super::stages::FrictionRegime::Static) => Some(false),
-        };
-        items.push(item(passed, Measured::Slip { before, after }));
+        // Sticking aims at the contact velocity with the planar part of last
+        // frame's acceleration (stage 3, as the reference engine): where that
+        // slip did not rise, what is left is the slide one frame of
+        // acceleration will add back.
+        let planar = input.desired.planar_from_acceleration;
+        let planar_slip = (planar != Vector3::zeros())
+            .then(|| {
+                let next = input.frame.to_contact(&after_world) + planar;
+                let aimed = input.desired.contact_velocity;
+                let rose = stable_hypot(next.y, next.z)
+                    > stable_hypot(aimed.y, aimed.z) * (T::one() + tol) + tol * scale;
+                (!rose).then(|| stable_hypot(planar.y, planar.z))
+            })
+            .flatten();
+        // Under a static regime the slip must not rise, unless the model
+        // applied no friction (kinetic-direction with nothing sliding, or the
+        // frictionless fallback of a failed solve), the planar acceleration
+        // term or round-off explains it.
+        let measured = Measured::Slip { before, after };
+        items.push(match (rose, f.regime) {
+            (false, _) => item(Some(true), measured),
+            (true, super::stages::FrictionRegime::Dynamic) => item(None, measured),
+            (true, super::stages::FrictionRegime::Static) => {
+                let why = (f.issue, planar_slip);
+                match causes::slip_rise(input.impulse, friction_solve, why, after, scale) {
+                    // A limit of the arithmetic informs, a defect of the model fails.
+                    Some(cause) => explained(Some(cause), measured),
+                    // Unexplained: fails.
+                    None => item(Some(false), measured),
+                }
+            }
+        });
     }
 }
 
@@ -277,7 +342,7 @@ fn position_checks<T: Real>(
     if let Some(o) = input.orientation {
         for (i, b) in o.bodies.iter().enumerate() {
             if let Some(b) = b {
-                let error = (b.normalised.norm() - T::one()).abs();
+                let error = (stable_norm_quaternion(&b.normalised) - T::one()).abs();
                 items.push(item(
                     Some(error <= tol),
                     Measured::UnitQuaternion { body: i, error },

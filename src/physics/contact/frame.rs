@@ -41,8 +41,9 @@ pub fn difference_digits<T: Real>(r: &Vector3<T>, q: &Vector3<T>, p: &Vector3<T>
     let eps = T::default_epsilon();
     let full = -eps.log10();
     let size = q.amax().max(p.amax());
-    if r.norm() == T::zero() || size == T::zero() {
+    let length = crate::physics::scale::stable_norm(r);
+    if length == T::zero() || size == T::zero() {
         return full;
     }
-    (r.norm() / (eps * size)).log10().min(full)
+    (length / (eps * size)).log10().min(full)
 }

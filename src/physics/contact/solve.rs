@@ -66,6 +66,7 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
         problem,
         frame: &frame,
         desired: &desired,
+        impulse: impulse.as_ref(),
         applied: applied.as_ref(),
         friction: friction.as_ref(),
         projection: projection.as_ref(),

@@ -8,8 +8,9 @@ use crate::trace::{BodyView, ContactView, Plane};
 
 const SUB: [&str; 3] = ["", "₁", "₂"];
 
+/// |v|, scale-invariant (no underflow below 1e-154, no overflow above 1e154).
 fn norm(v: [f64; 3]) -> f64 {
-    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+    crate::physics::scale::stable_norm_of(&v)
 }
 
 fn minus(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

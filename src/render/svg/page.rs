@@ -180,7 +180,7 @@ impl Page {
         let along = [0, 1, 2].map(|i| a.to[i] - a.from[i]);
         let page_len = ((q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2)).sqrt();
         if page_len < 6.0 {
-            let length = (along[0] * along[0] + along[1] * along[1] + along[2] * along[2]).sqrt();
+            let length = crate::physics::scale::stable_norm_of(&along);
             if length * self.view.scale < 6.0 {
                 return;
             }

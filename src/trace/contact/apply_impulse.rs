@@ -35,7 +35,7 @@ pub fn apply_impulse(c: &SolvedContact) -> Step {
         b.value(format!("w{n}"), change.w);
         b.value(
             format!("dw{n}_degrees_per_second"),
-            change.dw.norm().to_degrees(),
+            crate::physics::scale::stable_norm(&change.dw).to_degrees(),
         );
         let g = if i == 0 { "g" } else { "−g" };
         b.f(

@@ -5,6 +5,7 @@
 use nalgebra::Vector3;
 
 use super::ContactNames;
+use crate::physics::scale::stable_norm;
 use crate::physics::solve::{Skip, Solution};
 use crate::physics::{Problem, RigidBody, StageId};
 use crate::trace::{Formula, Step, Value};
@@ -132,12 +133,12 @@ pub(super) fn skip_reason(skip: Skip) -> &'static str {
 /// rounding: the angle between r and d̂ has sine below 10⁻⁴ (the lecture's
 /// four-digit data leaves about 5·10⁻⁵).
 pub(super) fn through_centre(r: &Vector3<f64>, d: &Vector3<f64>) -> bool {
-    r.cross(d).norm() <= 1e-4 * r.norm()
+    stable_norm(&r.cross(d)) <= 1e-4 * stable_norm(r)
 }
 
 /// `Some((axis letter, counter_clockwise))` when `v` lies along one world axis.
 pub(super) fn about_one_axis(v: &Vector3<f64>) -> Option<(char, bool)> {
-    let n = v.norm();
+    let n = stable_norm(v);
     if n == 0.0 {
         return None;
     }

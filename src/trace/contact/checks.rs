@@ -63,7 +63,8 @@ pub fn check_values(item: &CheckItem<f64>) -> Vec<(String, f64)> {
 }
 
 /// Every check's values, with the formulas of the restitution target and
-/// the residual penetration, and notes when energy or slip rose.
+/// the residual penetration, a note naming the cause of each ✗ (or of a
+/// result only round-off explains), and a note when slip rose while sliding.
 pub fn checks(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::Checks);
     let checks = &c.solution.checks;
@@ -72,9 +73,6 @@ pub fn checks(c: &SolvedContact) -> Step {
             b.value(name, v);
         }
     }
-    let energy_rose = checks
-        .get(CheckKind::Energy)
-        .is_some_and(|c| c.passed == Some(false));
     if checks.get(CheckKind::Restitution).is_some() {
         b.input("desired", c.solution.desired.desired);
         b.f("v_s′", "(q̇₁′ − q̇₂′) · d̂", None, Some("separating_velocity"));
@@ -85,16 +83,24 @@ pub fn checks(c: &SolvedContact) -> Step {
             Some("separating_velocity_expected"),
         );
     }
-    if energy_rose {
-        if c.problem.contact.has_friction() {
-            b.note("ENERGY ROSE: kinetic energy after ({energy_after}) exceeds before ({energy_before}). Newton's restitution (a velocity target) combined with friction can create energy — Kane's example (T. R. Kane, 1984) is the classic case; energetic restitution (Stronge) avoids it.");
-        } else {
-            b.note("ENERGY ROSE: kinetic energy after ({energy_after}) exceeds before ({energy_before}); with restitution ≤ 1 and no friction this should not happen.");
+    // Why each check came out as it did, where a cause is known.
+    b.input(
+        "velocity_from_acceleration",
+        c.solution.desired.velocity_from_acceleration,
+    );
+    let friction = c.problem.contact.has_friction();
+    for item in &checks.items {
+        let Some(cause) = &item.cause else { continue };
+        if let Some(d) = super::causes::describe(item.kind(), cause, friction) {
+            for (name, v) in d.inputs {
+                b.input(name, v);
+            }
+            b.note(d.note);
         }
     }
     if checks
         .get(CheckKind::Slip)
-        .is_some_and(|c| c.passed.is_none())
+        .is_some_and(|c| c.passed.is_none() && c.cause.is_none())
     {
         b.note("The slip speed rose ({slip_speed_before} → {slip_speed_after}) while sliding: the normal impulse itself drives the contact point sideways (M₀₁, M₀₂ ≠ 0), more than friction capped at μ g_n can take away. This is Coulomb friction working as intended, not an error.");
     }

@@ -91,7 +91,9 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
         b.note("v_s ≥ 0: the contact points are separating or at rest; no impulse is needed.");
     }
     let (vy, vz) = (dv.contact_velocity.y, dv.contact_velocity.z);
-    if (vy * vy + vz * vz).sqrt() > 1e-12 * dv.contact_velocity.norm() {
+    if crate::physics::scale::stable_hypot(vy, vz)
+        > 1e-12 * crate::physics::scale::stable_norm(&dv.contact_velocity)
+    {
         b.note("The y and z components of v_c are sliding velocity in the contact plane; only friction acts on them.");
     }
     b.done()

@@ -53,7 +53,7 @@ pub fn impulse(c: &SolvedContact) -> Step {
                 b.note("ILL-CONDITIONED: κ(M) · ε > 10⁻³, so fewer than three digits of g can be trusted (a huge mass with a tiny inertia, or the reverse).");
             }
             if solve.singular {
-                b.note("SINGULAR: M could not be factorised; the frictionless impulse Δv / Δq̇_t is used instead.");
+                b.note("SINGULAR: M could not be factorised, or κ(M) · ε ≥ 1 so no digit of g would be right; the frictionless impulse Δv / Δq̇_t is used instead.");
             } else if solve.used_lu {
                 b.note("M is not numerically positive-definite (Cholesky failed); LU was used.");
             }

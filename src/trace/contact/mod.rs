@@ -8,6 +8,7 @@
 
 mod apply_impulse;
 mod builder;
+mod causes;
 mod checks;
 mod contact_frame;
 mod desired_velocity;

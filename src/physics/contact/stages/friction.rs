@@ -9,6 +9,7 @@ use nalgebra::Vector3;
 
 use super::impulse::solve_matrix;
 use super::{ContactFrame, DesiredVelocity, Impulse, MatrixSolve, UnitImpulse};
+use crate::physics::scale::stable_hypot;
 use crate::physics::{FrictionModel, Problem, Real};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,7 +114,7 @@ pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
     };
     match input.model {
         FrictionModel::Millington => {
-            out.planar = (g.y * g.y + g.z * g.z).sqrt();
+            out.planar = stable_hypot(g.y, g.z);
             out.limit = mu_s * g.x;
             if out.planar > out.limit {
                 out.regime = FrictionRegime::Dynamic;
@@ -137,7 +138,7 @@ pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
             }
         }
         FrictionModel::VelocityScaling => {
-            out.planar = (v.y * v.y + v.z * v.z).sqrt();
+            out.planar = stable_hypot(v.y, v.z);
             out.limit = -v.x * mu_s;
             if out.planar > out.limit {
                 out.regime = FrictionRegime::Dynamic;
@@ -154,7 +155,7 @@ pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
         }
         FrictionModel::KineticDirection => {
             let j = input.closed_form_j;
-            let slide = (v.y * v.y + v.z * v.z).sqrt();
+            let slide = stable_hypot(v.y, v.z);
             out.limit = mu_d * j;
             // t is undefined when nothing slides; ε-relative test against the normal speed.
             if slide > T::default_epsilon() * (v.x.abs() + slide) && slide > T::zero() {

@@ -20,7 +20,8 @@ pub struct MatrixSolve<T: Real> {
     pub ill_conditioned: bool,
     /// True when Cholesky failed (M not numerically positive-definite) and LU was used.
     pub used_lu: bool,
-    /// True when no factorisation succeeded: the frictionless impulse was used instead.
+    /// True when no factorisation succeeded, or κ·ε ≥ 1 (no digit of g would
+    /// be right): the frictionless impulse was used instead.
     pub singular: bool,
 }
 
@@ -49,8 +50,12 @@ pub fn solve_matrix<T: Real>(
         T::max_value().unwrap_or(hi)
     };
     let ill_conditioned = condition_number * T::default_epsilon() > c(1e-3);
+    // κ ε ≥ 1 (or M numerically indefinite): no digit of g would be right,
+    // and an LU solve of such an M can return anything up to inf.
+    let hopeless = condition_number * T::default_epsilon() >= T::one();
     let mut used_lu = false;
     let solution = match m.cholesky() {
+        _ if hopeless => None,
         Some(ch) => Some(ch.solve(&rhs)),
         None => {
             used_lu = true;

@@ -3,6 +3,7 @@
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 use super::Projection;
+use crate::physics::scale::stable_norm;
 use crate::physics::{c, Problem, Real};
 
 #[derive(Debug, Clone, PartialEq)]
@@ -60,7 +61,7 @@ pub fn orientation_update<T: Real>(
             normalised: unit.into_inner(),
             angle_degrees: angle * degrees,
             axis,
-            rotation_vector_degrees: moved.angular_change.norm() * degrees,
+            rotation_vector_degrees: stable_norm(&moved.angular_change) * degrees,
             euler_zyx_degrees: Vector3::new(yaw, pitch, roll) * degrees,
         })
     });

@@ -9,6 +9,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::unit_impulse::{angular_response, AngularResponse};
 use super::ContactFrame;
+use crate::physics::scale::stable_norm;
 use crate::physics::{ContactParams, Problem, ProjectionMethod, Real};
 
 #[derive(Debug, Clone, PartialEq)]
@@ -89,7 +90,7 @@ pub fn projection_inertia_from<T: Real>(
     };
     // Avoiding excessive rotation: scale the limit by the lever arm's size.
     let r_perp = r - d * r.dot(d);
-    let r_perp_length = r_perp.norm();
+    let r_perp_length = stable_norm(&r_perp);
     // `inf` switches the limit off (and must not become inf · 0 = NaN).
     let angular_limit = if settings.angular_limit.is_finite() {
         settings.angular_limit * r_perp_length

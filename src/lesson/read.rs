@@ -1,0 +1,115 @@
+//! Reading a lesson file: only a regular file is read, at once refused
+//! otherwise (a FIFO would block forever, a device never ends), and at most
+//! [`super::validate::MAX_BYTES`] + 1 bytes of it.
+//!
+//! Exit codes (see `LessonError`): nothing at the path is 66 ("missing");
+//! a path that exists but cannot be read as a lesson — permission denied, a
+//! directory, a FIFO, a device, an I/O error — is 1, with the reason.
+
+use std::io::Read;
+use std::path::Path;
+
+use super::source::LessonError;
+use super::validate;
+
+/// What a path that is not a regular file is, for the refusal.
+fn kind(t: std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO (named pipe)";
+        }
+        if t.is_char_device() {
+            return "a character device";
+        }
+        if t.is_block_device() {
+            return "a block device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if t.is_dir() {
+        "a directory"
+    } else {
+        "not a regular file"
+    }
+}
+
+/// Opens without blocking: a FIFO with no writer would otherwise hang `open`.
+fn open(path: &Path) -> std::io::Result<std::fs::File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    options.open(path)
+}
+
+/// Only "nothing is there" is missing (66); anything else is a failure to read (1).
+fn open_error(e: &std::io::Error, shown: &str) -> LessonError {
+    let path = shown.to_string();
+    match e.kind() {
+        std::io::ErrorKind::NotFound | std::io::ErrorKind::NotADirectory => LessonError::Missing {
+            path,
+            reason: "no such file, and no embedded lesson has this id (see `contact-lab list`)"
+                .into(),
+        },
+        std::io::ErrorKind::PermissionDenied => LessonError::Unreadable {
+            path,
+            reason: "permission denied (the file exists but may not be read)".into(),
+        },
+        _ => LessonError::Unreadable {
+            path,
+            reason: e.to_string(),
+        },
+    }
+}
+
+/// The bytes of the lesson file at `path` (`shown` is the path for messages).
+pub fn read(path: &Path, shown: &str) -> Result<Vec<u8>, LessonError> {
+    let unreadable = |reason: String| LessonError::Unreadable {
+        path: shown.to_string(),
+        reason,
+    };
+    let file = open(path).map_err(|e| open_error(&e, shown))?;
+    // fstat on the open file: what was opened is what is checked.
+    let meta = file.metadata().map_err(|e| unreadable(e.to_string()))?;
+    if !meta.is_file() {
+        return Err(unreadable(format!(
+            "it is {}, not a lesson file (a lesson is a TOML file)",
+            kind(meta.file_type())
+        )));
+    }
+    let mut bytes = Vec::new();
+    file.take(validate::MAX_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| unreadable(e.to_string()))?;
+    Ok(bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::{Error, ErrorKind};
+
+    #[test]
+    fn only_a_missing_file_is_missing() {
+        let e = open_error(&Error::from(ErrorKind::PermissionDenied), "a.toml");
+        assert_eq!(
+            e.to_string(),
+            "cannot read lesson file a.toml: permission denied (the file exists but may not be read)"
+        );
+        assert!(matches!(
+            open_error(&Error::from(ErrorKind::NotFound), "a.toml"),
+            LessonError::Missing { .. }
+        ));
+        assert!(matches!(
+            open_error(&Error::other("disk on fire"), "a.toml"),
+            LessonError::Unreadable { .. }
+        ));
+    }
+}
