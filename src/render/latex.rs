@@ -118,7 +118,8 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
         );
     }
     out.push_str("\\end{description}\n");
-    if let Some(checks) = trace.stage("checks") {
+    // A separating contact has no verdicts: an empty itemize does not compile.
+    if let Some(checks) = trace.stage("checks").filter(|_| !trace.verdicts.is_empty()) {
         out.push('\n');
         out.push_str(&heading(depth + 1, "Verdicts"));
         out.push_str("\\begin{itemize}\n");
