@@ -79,8 +79,9 @@ pub fn shown(path: &Path) -> String {
     crate::lesson::snippet::printable(path.to_string_lossy().into_owned()).replace('\n', "\\n")
 }
 
-/// What a non-regular file is, for the refusal.
-fn kind(t: std::fs::FileType) -> &'static str {
+/// What a non-regular file is, for a refusal (of an output target here, of a
+/// lesson path in `lesson::read`).
+pub(crate) fn kind(t: std::fs::FileType) -> &'static str {
     #[cfg(unix)]
     {
         use std::os::unix::fs::FileTypeExt;

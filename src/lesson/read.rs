@@ -12,31 +12,6 @@ use std::path::Path;
 use super::source::LessonError;
 use super::validate;
 
-/// What a path that is not a regular file is, for the refusal.
-fn kind(t: std::fs::FileType) -> &'static str {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        if t.is_fifo() {
-            return "a FIFO (named pipe)";
-        }
-        if t.is_char_device() {
-            return "a character device";
-        }
-        if t.is_block_device() {
-            return "a block device";
-        }
-        if t.is_socket() {
-            return "a socket";
-        }
-    }
-    if t.is_dir() {
-        "a directory"
-    } else {
-        "not a regular file"
-    }
-}
-
 /// Opens without blocking: a FIFO with no writer would otherwise hang `open`.
 fn open(path: &Path) -> std::io::Result<std::fs::File> {
     let mut options = std::fs::OpenOptions::new();
@@ -81,7 +56,7 @@ pub fn read(path: &Path, shown: &str) -> Result<Vec<u8>, LessonError> {
     if !meta.is_file() {
         return Err(unreadable(format!(
             "it is {}, not a lesson file (a lesson is a TOML file)",
-            kind(meta.file_type())
+            crate::output_file::kind(meta.file_type())
         )));
     }
     let mut bytes = Vec::new();
