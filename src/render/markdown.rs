@@ -122,7 +122,8 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
         );
     }
     out.push('\n');
-    if let Some(checks) = trace.stage("checks") {
+    // A separating contact has no verdicts: no empty heading.
+    if let Some(checks) = trace.stage("checks").filter(|_| !trace.verdicts.is_empty()) {
         out.push_str(&heading(level + 1, "Verdicts"));
         for v in &trace.verdicts {
             let mark = v.mark();
