@@ -107,3 +107,24 @@ impl<T: Real> World<T> {
         adjacency
     }
 }
+
+/// Groups of `bodies` joined by `links` (pairs of body indices): each body's
+/// group root, the smallest index of its group (union–find with path halving).
+/// Islands for sleep and the resolver's momentum check both use it.
+pub fn groups(bodies: usize, links: impl Iterator<Item = (usize, usize)>) -> Vec<usize> {
+    let mut parent: Vec<usize> = (0..bodies).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for (a, b) in links {
+        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+        if ra != rb {
+            parent[ra.max(rb)] = ra.min(rb);
+        }
+    }
+    (0..bodies).map(|i| find(&mut parent, i)).collect()
+}

@@ -70,8 +70,27 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
         }
     }
     let _ = writeln!(out);
+    after(&mut out, &trace.after, fmt);
+    if let Some(checks) = trace.stage("checks") {
+        let _ = writeln!(out);
+        let _ = writeln!(out, "Checks");
+        for v in &trace.verdicts {
+            let mark = v.mark();
+            let _ = writeln!(
+                out,
+                "   {mark} {}: {}",
+                v.label,
+                fmt.fill(&v.detail, checks, false)
+            );
+        }
+    }
+    out
+}
+
+/// "After", then each body's position, orientation and velocities, two lines a body.
+pub(crate) fn after(out: &mut String, bodies: &[(String, crate::trace::AfterState)], fmt: &Fmt) {
     let _ = writeln!(out, "After");
-    for (name, a) in &trace.after {
+    for (name, a) in bodies {
         let v = |x: &[f64]| format!("({})", fmt.list(x));
         let _ = writeln!(
             out,
@@ -87,18 +106,4 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
             v(&a.angular_velocity)
         );
     }
-    if let Some(checks) = trace.stage("checks") {
-        let _ = writeln!(out);
-        let _ = writeln!(out, "Checks");
-        for v in &trace.verdicts {
-            let mark = v.mark();
-            let _ = writeln!(
-                out,
-                "   {mark} {}: {}",
-                v.label,
-                fmt.fill(&v.detail, checks, false)
-            );
-        }
-    }
-    out
 }

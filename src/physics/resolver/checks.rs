@@ -31,25 +31,6 @@ pub struct SceneChecks<T: Real> {
     pub closing_left: (T, usize),
 }
 
-/// Groups of bodies linked by contacts (union–find by body index).
-fn roots(n: usize, links: impl Iterator<Item = (usize, usize)>) -> Vec<usize> {
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn find(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    for (a, b) in links {
-        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        if ra != rb {
-            parent[ra.max(rb)] = ra.min(rb);
-        }
-    }
-    (0..n).map(|i| find(&mut parent, i)).collect()
-}
-
 /// Checks the resolver's result against the world it was prepared from.
 pub fn scene_checks<T: Real>(before: &World<T>, resolver: &Resolver<T>) -> SceneChecks<T> {
     let n = before.bodies.len();
@@ -59,7 +40,7 @@ pub fn scene_checks<T: Real>(before: &World<T>, resolver: &Resolver<T>) -> Scene
         let b = c.body2.map_or(n, |b| b.0);
         (a, b)
     });
-    let root = roots(n + 1, links);
+    let root = crate::physics::world::groups(n + 1, links);
     let anchored: Vec<bool> = (0..=n)
         .map(|i| root[i] == root[n] || (i < n && !before.bodies[i].movable))
         .collect();

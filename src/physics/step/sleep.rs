@@ -99,25 +99,8 @@ pub fn put_to_sleep<T: Real>(state: &mut SleepState<T>, body: &mut RigidBody<T>)
 }
 
 /// Islands: bodies joined by contacts between two movable bodies (a contact
-/// with the world or an immovable body joins nothing). Returns each body's
-/// island root, by union–find with path halving.
-pub fn islands(bodies: usize, links: impl Iterator<Item = (usize, usize)>) -> Vec<usize> {
-    let mut parent: Vec<usize> = (0..bodies).collect();
-    fn find(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    for (a, b) in links {
-        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        if ra != rb {
-            parent[ra.max(rb)] = ra.min(rb);
-        }
-    }
-    (0..bodies).map(|i| find(&mut parent, i)).collect()
-}
+/// with the world or an immovable body joins nothing): each body's group root.
+pub use crate::physics::world::groups as islands;
 
 #[cfg(test)]
 mod tests {

@@ -94,23 +94,7 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     let _ = writeln!(out, "Contacts after (the resolver's bookkeeping)");
     table(&mut out, &trace.contacts_after, fmt);
     let _ = writeln!(out);
-    let _ = writeln!(out, "After");
-    for (name, a) in &trace.after {
-        let v = |x: &[f64]| format!("({})", fmt.list(x));
-        let _ = writeln!(
-            out,
-            "   {name}: position {}, orientation [{}]",
-            v(&a.position),
-            fmt.list(&a.orientation)
-        );
-        let _ = writeln!(
-            out,
-            "   {}  velocity {}, angular velocity {}",
-            " ".repeat(name.chars().count()),
-            v(&a.velocity),
-            v(&a.angular_velocity)
-        );
-    }
+    crate::render::text::after(&mut out, &trace.after, fmt);
     let _ = writeln!(out);
     let _ = writeln!(out, "Checks");
     for v in &trace.verdicts {
