@@ -216,3 +216,45 @@ fn every_scene_stays_finite_and_energy_rises_only_with_a_cause() {
         });
     }
 }
+
+/// What one run of `sleep-modes` shows: when every box is asleep, how many
+/// times a box was woken, and the top box's height at the end.
+struct SleepRun {
+    all_asleep_at: Option<f64>,
+    wakes: usize,
+    top: f64,
+}
+
+fn sleep_modes(configure: impl Fn(&mut Simulation<f64>)) -> SleepRun {
+    let mut sim = simulation("sleep-modes");
+    configure(&mut sim);
+    let (mut all_asleep_at, mut wakes) = (None, 0);
+    run(&mut sim, 900, |sim, r| {
+        wakes += r.events.iter().filter(|e| matches!(e, Event::Wakes { .. })).count();
+        if all_asleep_at.is_none() && sim.awake() == 0 {
+            all_asleep_at = Some(r.time);
+        }
+    });
+    SleepRun { all_asleep_at, wakes, top: body(&sim, 7).position.y }
+}
+
+#[test]
+fn island_sleep_freezes_the_stack_at_once_per_body_sleep_flaps_and_no_sleep_lets_it_fall() {
+    use contact_lab::physics::step::SleepMode;
+    let body_mode = sleep_modes(|_| {});
+    let island = sleep_modes(|s| s.params.sleep.mode = SleepMode::Island);
+    let awake = sleep_modes(|s| s.params.sleep.enabled = false);
+    // Island: asleep within a second, nobody woken, the stack where it stood.
+    let t = island.all_asleep_at.expect("the island falls asleep");
+    assert!(t < 1.0, "island asleep at {t} s");
+    assert_eq!(island.wakes, 0);
+    assert!(island.top > 7.4, "island: top at {} m", island.top);
+    // Per body: many wakes, and all asleep only after several seconds.
+    let t = body_mode.all_asleep_at.expect("every box falls asleep in the end");
+    assert!(t > 5.0 && t < 14.0, "per body: all asleep at {t} s");
+    assert!(body_mode.wakes >= 10, "per body: {} wakes", body_mode.wakes);
+    assert!(body_mode.top > 7.4, "per body: top at {} m", body_mode.top);
+    // No sleep: the lecture's resolver lets the stack sag and fall.
+    assert!(awake.all_asleep_at.is_none());
+    assert!(awake.top < 2.0, "no sleep: top at {} m after 15 s", awake.top);
+}

@@ -43,6 +43,7 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/stack-5.toml",
     "scenes/cradle-over-time.toml",
     "scenes/sleep-and-wake.toml",
+    "scenes/sleep-modes.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.
