@@ -44,6 +44,7 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/cradle-over-time.toml",
     "scenes/sleep-and-wake.toml",
     "scenes/sleep-modes.toml",
+    "scenes/kane-rod-bounce.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

@@ -46,6 +46,12 @@ pub enum Event {
     VelocityLimit {
         left: f64,
     },
+    /// The velocity phase added `gained` J of kinetic energy (reported when
+    /// it starts, not again while it goes on), and what can explain it.
+    EnergyGain {
+        gained: f64,
+        cause: super::audit::EnergyCause,
+    },
 }
 
 /// What one step did.

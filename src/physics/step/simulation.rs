@@ -5,7 +5,7 @@
 
 use nalgebra::Vector3;
 
-use super::energy;
+use super::{audit, energy};
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
@@ -82,6 +82,9 @@ pub struct Simulation<T: Real> {
     /// Whether the position and velocity phases hit their limits last step
     /// (a limit is an event when it starts being hit).
     limits_hit: [bool; 2],
+    /// Whether the last step's velocity phase added energy (reported once
+    /// when it starts).
+    gaining: bool,
 }
 
 impl<T: Real> Simulation<T> {
@@ -100,6 +103,7 @@ impl<T: Real> Simulation<T> {
             touching: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
+            gaining: false,
         };
         sim.world.contacts.clear();
         let g = sim.params.world.gravity;
@@ -159,6 +163,7 @@ impl<T: Real> Simulation<T> {
             self.wake_touched(&mut events);
         }
         let closing_before = self.normal_velocities();
+        let kinetic_before = to_f64(energy::kinetic(&self.world));
         // 4. Resolve the contacts together.
         let resolver = match &mut self.resolver {
             Some(r) => {
@@ -170,6 +175,19 @@ impl<T: Real> Simulation<T> {
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         resolver.write_back(&mut self.world);
+        let gained = audit::gain(
+            kinetic_before,
+            to_f64(energy::kinetic(&self.world)),
+            self.energy_scale,
+        );
+        let gain_event = match (gained, self.gaining) {
+            (Some(gained), false) => Some(Event::EnergyGain {
+                gained,
+                cause: audit::cause(&self.world, p.acceleration_compensation),
+            }),
+            _ => None,
+        };
+        self.gaining = gained.is_some();
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
@@ -183,6 +201,7 @@ impl<T: Real> Simulation<T> {
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
+        events.extend(gain_event);
         if position.limit_reached && !self.limits_hit[0] {
             events.push(Event::PositionLimit {
                 left: to_f64(position.max_after),
