@@ -291,6 +291,23 @@ pub struct ResolverArgs {
     /// Which contact velocity restitution is applied to (default: the lesson's, else current).
     #[arg(long, value_enum)]
     pub restitution_from: Option<RestitutionFromArg>,
+    /// The solver: the lecture's deepest-first order or sequential impulses
+    /// (default: the lesson's, else deepest-first). Iterations count contact visits for both.
+    #[arg(long, value_enum)]
+    pub solver: Option<SolverArg>,
+    /// Sequential impulses: start each step from the last step's accumulated impulses.
+    #[arg(long)]
+    pub warm_start: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverArg {
+    /// The lecture's: the deepest penetration, the largest desired Δv first.
+    #[value(name = "deepest_first", alias = "deepest-first")]
+    DeepestFirst,
+    /// Projected Gauss–Seidel with accumulated, clamped impulses.
+    #[value(name = "sequential_impulse", alias = "sequential-impulse")]
+    SequentialImpulse,
 }
 
 #[derive(Debug, Clone, Args)]

@@ -151,7 +151,40 @@ impl RestitutionFrom {
     }
 }
 
+/// Which algorithm resolves a set of contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Solver {
+    /// The lecture's: the deepest penetration (largest desired Δv) first,
+    /// one contact at a time, a one-shot impulse per visit.
+    #[default]
+    DeepestFirst,
+    /// Sequential impulses (projected Gauss–Seidel): every contact in turn,
+    /// sweep after sweep, with accumulated and clamped impulses.
+    SequentialImpulse,
+}
+
+impl Solver {
+    pub const ALL: [Solver; 2] = [Solver::DeepestFirst, Solver::SequentialImpulse];
+
+    /// The name used in lesson files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Solver::DeepestFirst => "deepest_first",
+            Solver::SequentialImpulse => "sequential_impulse",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.name() == name || m.name().replace('_', "-") == name)
+    }
+}
+
 /// How a set of contacts is resolved together (the lecture's two phases).
+/// Iterations are counted in contact visits for both solvers: one
+/// deepest-first iteration visits one contact, one sequential-impulse sweep
+/// visits every contact, so equal limits mean equal work.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ResolverParams {
     /// Most position-phase iterations: trades time for penetration left
@@ -166,8 +199,17 @@ pub struct ResolverParams {
     /// Desired Δv at or below this is left alone: trades time for closing
     /// velocity left (default: 0.01).
     pub velocity_epsilon: f64,
-    /// Restitution from the current or the initial contact velocity (default: current).
+    /// Restitution from the current or the initial contact velocity (default:
+    /// current). Sequential impulses always take it from the initial velocity.
     pub restitution_from: RestitutionFrom,
+    /// Deepest-first (the lecture's) or sequential impulses: trades the
+    /// lecture's one-shot impulses, exact for one contact, for accumulated
+    /// impulses that settle coupled contacts (default: deepest_first).
+    pub solver: Solver,
+    /// Sequential impulses only: start from the previous step's accumulated
+    /// impulses (matched by body pair and contact point): trades a little
+    /// bookkeeping for fewer sweeps on resting contacts (default: false).
+    pub warm_start: bool,
 }
 
 impl Default for ResolverParams {
@@ -178,6 +220,8 @@ impl Default for ResolverParams {
             position_epsilon: 0.01,
             velocity_epsilon: 0.01,
             restitution_from: RestitutionFrom::Current,
+            solver: Solver::DeepestFirst,
+            warm_start: false,
         }
     }
 }
