@@ -187,11 +187,11 @@ impl Solver {
 /// visits every contact, so equal limits mean equal work.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ResolverParams {
-    /// Most position-phase iterations: trades time for penetration left
-    /// (default: `None` = 8 × the number of contacts).
+    /// Most position-phase iterations (contact visits): trades time for
+    /// penetration left (default: `None` = `visits_per_contact` × contacts).
     pub position_iterations: Option<usize>,
-    /// Most velocity-phase iterations: trades time for closing velocity left
-    /// (default: `None` = 8 × the number of contacts).
+    /// Most velocity-phase iterations (contact visits): trades time for
+    /// closing velocity left (default: `None` = `visits_per_contact` × contacts).
     pub velocity_iterations: Option<usize>,
     /// Penetrations at or below this are left alone: trades resting jitter
     /// for penetration left (default: 0.01).
@@ -210,6 +210,9 @@ pub struct ResolverParams {
     /// impulses (matched by body pair and contact point): trades a little
     /// bookkeeping for fewer sweeps on resting contacts (default: false).
     pub warm_start: bool,
+    /// The limit of each phase when no explicit count is given, per contact:
+    /// trades time for what is left (default: 8, the lecture's 8 × contacts).
+    pub visits_per_contact: usize,
 }
 
 impl Default for ResolverParams {
@@ -222,6 +225,7 @@ impl Default for ResolverParams {
             restitution_from: RestitutionFrom::Current,
             solver: Solver::DeepestFirst,
             warm_start: false,
+            visits_per_contact: 8,
         }
     }
 }
@@ -230,13 +234,13 @@ impl ResolverParams {
     /// The position iteration limit for `contacts` contacts.
     pub fn position_limit(&self, contacts: usize) -> usize {
         self.position_iterations
-            .unwrap_or(8usize.saturating_mul(contacts))
+            .unwrap_or(self.visits_per_contact.saturating_mul(contacts))
     }
 
     /// The velocity iteration limit for `contacts` contacts.
     pub fn velocity_limit(&self, contacts: usize) -> usize {
         self.velocity_iterations
-            .unwrap_or(8usize.saturating_mul(contacts))
+            .unwrap_or(self.visits_per_contact.saturating_mul(contacts))
     }
 }
 
