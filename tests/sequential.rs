@@ -54,7 +54,11 @@ fn one_frictionless_contact_gets_the_lectures_impulse() {
     // The lecture's printed impulse, (0, 18.7337, 0).
     assert!((lecture.y - 18.7337).abs() < 1e-4);
     assert_close(&si, &lecture, "impulse");
-    assert_close(&r.bodies[0].velocity, &df.bodies[0].velocity, "velocity after");
+    assert_close(
+        &r.bodies[0].velocity,
+        &df.bodies[0].velocity,
+        "velocity after",
+    );
     assert_close(
         &r.bodies[0].angular_velocity,
         &df.bodies[0].angular_velocity,
@@ -77,7 +81,12 @@ fn one_sticking_contact_gets_the_lectures_sticking_impulse() {
 
 #[test]
 fn normal_impulses_stay_non_negative_and_friction_inside_the_cone() {
-    for id in ["box-four-corners", "box-stack", "friction-cube", "two-boxes"] {
+    for id in [
+        "box-four-corners",
+        "box-stack",
+        "friction-cube",
+        "two-boxes",
+    ] {
         let w = Lesson::load(id).unwrap().world::<f64>();
         let (r, _) = Resolver::resolve(
             &w,
@@ -122,7 +131,10 @@ fn free_bodies_keep_their_momentum() {
     );
     assert!(velocity.iterations_used > 0);
     let (p0, p1) = (momentum(&before.bodies), momentum(&after.bodies));
-    assert!((p0 - p1).norm() < 1e-12 * p0.norm().max(1.0), "{p0:?} → {p1:?}");
+    assert!(
+        (p0 - p1).norm() < 1e-12 * p0.norm().max(1.0),
+        "{p0:?} → {p1:?}"
+    );
     assert!(
         (after.bodies[0].velocity - before.bodies[0].velocity).norm() > 0.1,
         "the impulses changed the velocities"
@@ -169,5 +181,8 @@ fn ramp_stick_sticks_under_sequential_impulses_and_creeps_under_the_lecture() {
     // Measured: deepest-first 2.12 m, sequential impulses 1.1e-5 m, warm-started 3.5e-8 m.
     assert!(lecture > 1.0, "deepest-first creeps: {lecture} m");
     assert!(si < 1e-3, "sequential impulses stick: {si} m");
-    assert!(warm < 1e-3, "warm-started sequential impulses stick: {warm} m");
+    assert!(
+        warm < 1e-3,
+        "warm-started sequential impulses stick: {warm} m"
+    );
 }

@@ -113,10 +113,7 @@ fn csv_has_one_line_per_row_and_the_same_columns() {
 fn svg_is_well_formed_with_a_panel_per_scene_and_a_front() {
     let svg = quick("svg");
     let doc = roxmltree::Document::parse(&svg).expect("well-formed SVG");
-    let texts: Vec<&str> = doc
-        .descendants()
-        .filter_map(|n| n.text())
-        .collect();
+    let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).collect();
     assert!(texts.iter().any(|t| t.contains("ramp-stick")));
     assert!(texts.iter().any(|t| t.contains("cradle-over-time")));
     assert!(svg.contains("<polyline"), "the front is joined");

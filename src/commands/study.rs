@@ -44,9 +44,9 @@ fn specs(args: &StudyArgs, err: &mut dyn Write) -> Result<Vec<SceneSpec>, AppErr
             )));
         };
         let known = SCENES.iter().find(|(id, _, _)| *id == lesson.id);
-        let seconds = args.seconds.unwrap_or_else(|| {
-            known.map_or((scene.steps as f64 * scene.dt).min(2.0), |k| k.1)
-        });
+        let seconds = args
+            .seconds
+            .unwrap_or_else(|| known.map_or((scene.steps as f64 * scene.dt).min(2.0), |k| k.1));
         let reference_solver = known.map_or(Solver::SequentialImpulse, |k| k.2);
         specs.push(SceneSpec {
             lesson,

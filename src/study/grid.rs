@@ -136,7 +136,11 @@ pub fn set(config: &mut Config, knob: &str, value: &str) -> Result<(), String> {
         },
         "budget" => match value {
             "converged" => config.budget = Budget::Converged,
-            _ => match value.trim_end_matches('×').trim_end_matches('x').parse::<usize>() {
+            _ => match value
+                .trim_end_matches('×')
+                .trim_end_matches('x')
+                .parse::<usize>()
+            {
                 Ok(n) if (1..=100_000).contains(&n) => config.budget = Budget::PerContact(n),
                 _ => return bad("visits per contact, 1 to 100000, or converged"),
             },
@@ -194,9 +198,12 @@ pub fn set(config: &mut Config, knob: &str, value: &str) -> Result<(), String> {
 
 /// A `--grid KNOB=V1,V2` argument, checked against a default configuration.
 pub fn parse_grid(arg: &str) -> Result<(String, Vec<String>), String> {
-    let (knob, values) = arg
-        .split_once('=')
-        .ok_or_else(|| format!("--grid {arg}: expected KNOB=V1,V2,… (knobs: {})", KNOBS.join(", ")))?;
+    let (knob, values) = arg.split_once('=').ok_or_else(|| {
+        format!(
+            "--grid {arg}: expected KNOB=V1,V2,… (knobs: {})",
+            KNOBS.join(", ")
+        )
+    })?;
     let knob = knob.trim().replace('-', "_");
     let values: Vec<String> = values.split(',').map(|v| v.trim().to_string()).collect();
     let mut probe = probe_config();
@@ -233,7 +240,9 @@ pub struct Features {
 
 pub fn features(lesson: &Lesson) -> Features {
     let friction = lesson.simulation.as_ref().is_some_and(|s| {
-        s.materials.iter().any(|m| m.static_friction > 0.0 || m.dynamic_friction > 0.0)
+        s.materials
+            .iter()
+            .any(|m| m.static_friction > 0.0 || m.dynamic_friction > 0.0)
     });
     let boxes = lesson
         .bodies
@@ -254,7 +263,11 @@ pub fn rows(
     quick: bool,
     user: &[(String, Vec<String>)],
 ) -> Vec<(String, String, Config)> {
-    let mut out = vec![("default".to_string(), default.solver_label().to_string(), *default)];
+    let mut out = vec![(
+        "default".to_string(),
+        default.solver_label().to_string(),
+        *default,
+    )];
     let push = |knob: &str, value: &str, c: Config, out: &mut Vec<(String, String, Config)>| {
         if !out.iter().any(|(_, _, x)| *x == c) {
             out.push((knob.to_string(), value.to_string(), c));
@@ -274,14 +287,22 @@ pub fn rows(
             }
             configs = next;
         }
-        let knob = user.iter().map(|(k, _)| k.as_str()).collect::<Vec<_>>().join("+");
+        let knob = user
+            .iter()
+            .map(|(k, _)| k.as_str())
+            .collect::<Vec<_>>()
+            .join("+");
         for (label, c) in configs {
             push(&knob, &label, c, &mut out);
         }
         return out;
     }
     let budgets: &[Budget] = if quick {
-        &[Budget::PerContact(1), Budget::PerContact(8), Budget::Converged]
+        &[
+            Budget::PerContact(1),
+            Budget::PerContact(8),
+            Budget::Converged,
+        ]
     } else {
         &[
             Budget::PerContact(1),
@@ -293,7 +314,10 @@ pub fn rows(
         ]
     };
     let solvers: &[(Solver, bool)] = if quick {
-        &[(Solver::DeepestFirst, false), (Solver::SequentialImpulse, false)]
+        &[
+            (Solver::DeepestFirst, false),
+            (Solver::SequentialImpulse, false),
+        ]
     } else {
         &[
             (Solver::DeepestFirst, false),
@@ -309,7 +333,12 @@ pub fn rows(
                 budget,
                 ..*default
             };
-            push("budget", &format!("{} {}", c.solver_label(), budget.label()), c, &mut out);
+            push(
+                "budget",
+                &format!("{} {}", c.solver_label(), budget.label()),
+                c,
+                &mut out,
+            );
         }
     }
     let one = |knob: &str, values: &[&str], out: &mut Vec<(String, String, Config)>| {
@@ -328,7 +357,11 @@ pub fn rows(
     one("epsilon", &["0.1", "0.001"], &mut out);
     one("precision", &["f32"], &mut out);
     if features.friction {
-        one("friction_model", &["millington", "kinetic-direction", "velocity-scaling"], &mut out);
+        one(
+            "friction_model",
+            &["millington", "kinetic-direction", "velocity-scaling"],
+            &mut out,
+        );
     }
     one("projection", &["linear", "nonlinear"], &mut out);
     one("relaxation", &["0.5"], &mut out);

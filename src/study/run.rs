@@ -120,7 +120,11 @@ fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measur
     let mut sim = simulation::<T>(lesson, config);
     let n = steps(seconds, config.dt);
     let g = sim.params.world.gravity.map(to_f64);
-    let up = if g.norm() > 0.0 { -g / g.norm() } else { Vector3::zeros() };
+    let up = if g.norm() > 0.0 {
+        -g / g.norm()
+    } else {
+        Vector3::zeros()
+    };
     let position = |sim: &Simulation<T>, i: usize| sim.world.bodies[i].state.position.map(to_f64);
     let movable: Vec<usize> = (0..sim.world.bodies.len())
         .filter(|&i| sim.world.bodies[i].movable)
@@ -128,7 +132,11 @@ fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measur
     let top = movable
         .iter()
         .copied()
-        .max_by(|a, b| position(&sim, *a).dot(&up).total_cmp(&position(&sim, *b).dot(&up)))
+        .max_by(|a, b| {
+            position(&sim, *a)
+                .dot(&up)
+                .total_cmp(&position(&sim, *b).dot(&up))
+        })
         .unwrap_or(0);
     let start = position(&sim, top);
     let energy0 = to_f64(energy::total(&sim.world, &sim.params.world.gravity));
@@ -188,7 +196,8 @@ fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measur
     m.drift = (moved - up * moved.dot(&up)).norm();
     m.positions = movable.iter().map(|&i| position(&sim, i)).collect();
     if m.failure.is_some() || m.positions.iter().any(|p| !p.iter().all(|x| x.is_finite())) {
-        m.failure.get_or_insert_with(|| "a position is not finite".into());
+        m.failure
+            .get_or_insert_with(|| "a position is not finite".into());
         for x in [
             &mut m.max_penetration,
             &mut m.max_closing_velocity,

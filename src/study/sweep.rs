@@ -50,8 +50,7 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
         done += 1;
         progress(done, &lesson.id);
         let mut rows = Vec::new();
-        for (knob, value, config) in
-            grid::rows(&default, grid::features(lesson), o.quick, &o.grid)
+        for (knob, value, config) in grid::rows(&default, grid::features(lesson), o.quick, &o.grid)
         {
             let m = run::measure(lesson, &config, spec.seconds);
             let microseconds = if o.timed && m.failure.is_none() {

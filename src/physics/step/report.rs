@@ -87,12 +87,7 @@ pub enum BlowUp {
 
 /// The first movable body with a non-finite state, as a blow-up.
 pub fn check_finite<T: Real>(world: &World<T>, step: u64) -> Result<(), BlowUp> {
-    for (i, b) in world
-        .bodies
-        .iter()
-        .enumerate()
-        .filter(|(_, b)| b.movable)
-    {
+    for (i, b) in world.bodies.iter().enumerate().filter(|(_, b)| b.movable) {
         let s = &b.state;
         let what = if !s.position.iter().all(|x| x.is_finite()) {
             "position"

@@ -31,7 +31,11 @@ pub fn render(study: &Study) -> String {
     let mut head = vec!["scene", "knob", "value"];
     head.extend(knobs.iter().copied());
     if study.timed {
-        head.extend(["microseconds_per_step", "microseconds_min", "microseconds_max"]);
+        head.extend([
+            "microseconds_per_step",
+            "microseconds_min",
+            "microseconds_max",
+        ]);
     }
     head.extend([
         "contact_visits_per_step",

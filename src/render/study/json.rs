@@ -43,13 +43,19 @@ fn row(r: &Row) -> Value {
     o.insert("config".into(), config(&r.config));
     if let Some([median, lo, hi]) = r.microseconds {
         o.insert("microseconds_per_step".into(), number(median));
-        o.insert("microseconds_spread".into(), json!([number(lo), number(hi)]));
+        o.insert(
+            "microseconds_spread".into(),
+            json!([number(lo), number(hi)]),
+        );
     }
     o.insert("contact_visits_per_step".into(), number(r.visits_per_step));
     o.insert("limit_steps".into(), json!(r.limit_steps));
     o.insert("steps".into(), json!(r.steps));
     o.insert("max_penetration".into(), number(r.max_penetration));
-    o.insert("max_closing_velocity".into(), number(r.max_closing_velocity));
+    o.insert(
+        "max_closing_velocity".into(),
+        number(r.max_closing_velocity),
+    );
     o.insert("energy_gain".into(), number(r.energy_gain));
     o.insert("drift".into(), number(r.drift));
     o.insert("error_vs_reference".into(), number(r.error_vs_reference));

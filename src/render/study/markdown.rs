@@ -26,7 +26,10 @@ pub fn render(study: &Study, fmt: &Fmt) -> String {
         out.push_str(&format!("- {m}\n"));
     }
     if study.timed {
-        out.push_str(&format!("- {} timed runs per configuration\n", study.repeats));
+        out.push_str(&format!(
+            "- {} timed runs per configuration\n",
+            study.repeats
+        ));
     }
     for s in &study.scenes {
         out.push_str(&format!(

@@ -90,7 +90,10 @@ pub fn text(study: &Study, fmt: &Fmt) -> String {
         out.push_str(&format!("   · {m}\n"));
     }
     if study.timed {
-        out.push_str(&format!("   · {} timed runs per configuration\n", study.repeats));
+        out.push_str(&format!(
+            "   · {} timed runs per configuration\n",
+            study.repeats
+        ));
     }
     for s in &study.scenes {
         out.push_str(&format!(
@@ -118,7 +121,9 @@ pub fn text(study: &Study, fmt: &Fmt) -> String {
             }
             l.trim_end().to_string() + "\n"
         };
-        out.push_str(&line(&head.iter().map(|h| h.to_string()).collect::<Vec<_>>()));
+        out.push_str(&line(
+            &head.iter().map(|h| h.to_string()).collect::<Vec<_>>(),
+        ));
         for r in &rows {
             out.push_str(&line(r));
         }

@@ -77,7 +77,10 @@ pub fn render(study: &Study) -> String {
             cursor: None,
             front: (!front.is_empty()).then_some(front),
         };
-        chart.draw(&mut out, (24.0, 80.0 + PANEL * i as f64, WIDTH - 48.0, PANEL - 20.0));
+        chart.draw(
+            &mut out,
+            (24.0, 80.0 + PANEL * i as f64, WIDTH - 48.0, PANEL - 20.0),
+        );
     }
     out.push_str("</svg>\n");
     out

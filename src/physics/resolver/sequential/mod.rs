@@ -68,11 +68,17 @@ impl<T: Real> State<T> {
         self.warm.clear();
         self.warm.resize(n, None);
         self.offset.clear();
-        self.offset
-            .extend(contacts.iter().map(|k| k.velocity - body_velocity(k, bodies)));
+        self.offset.extend(
+            contacts
+                .iter()
+                .map(|k| k.velocity - body_velocity(k, bodies)),
+        );
         self.inverse.clear();
-        self.inverse
-            .extend(friction.iter().map(|f| f.matrix.cholesky().map(|ch| ch.inverse())));
+        self.inverse.extend(
+            friction
+                .iter()
+                .map(|f| f.matrix.cholesky().map(|ch| ch.inverse())),
+        );
     }
 }
 

@@ -127,9 +127,12 @@ pub fn apply_warm_start<T: Real>(r: &mut Resolver<T>) {
             continue;
         };
         let contact = &r.contacts[k];
-        let friction = r.setups[k]
-            .friction
-            .map(|f| (r.friction[f].static_friction, r.friction[f].dynamic_friction));
+        let friction = r.setups[k].friction.map(|f| {
+            (
+                r.friction[f].static_friction,
+                r.friction[f].dynamic_friction,
+            )
+        });
         let (g, _) = clamp_accumulated(contact.basis.tr_mul(&world), friction);
         if g == Vector3::zeros() {
             continue;

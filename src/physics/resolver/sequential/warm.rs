@@ -24,7 +24,9 @@ pub struct WarmCache<T: Real> {
 
 impl<T: Real> Default for WarmCache<T> {
     fn default() -> Self {
-        WarmCache { entries: Vec::new() }
+        WarmCache {
+            entries: Vec::new(),
+        }
     }
 }
 
@@ -73,11 +75,12 @@ impl<T: Real> WarmCache<T> {
     /// Keeps the accumulated impulses `r` ended with for `world`'s contacts.
     pub fn store(&mut self, world: &World<T>, r: &Resolver<T>) {
         self.entries.clear();
-        self.entries.extend(world.contacts.iter().enumerate().map(|(k, contact)| Entry {
-            pair: key(contact.body1, contact.body2),
-            point: contact.input.point,
-            impulse: r.contacts[k].basis * r.sequential.accumulated[k],
-        }));
-        self.entries.sort_by(|a, b| a.pair.cmp(&b.pair));
+        self.entries
+            .extend(world.contacts.iter().enumerate().map(|(k, contact)| Entry {
+                pair: key(contact.body1, contact.body2),
+                point: contact.input.point,
+                impulse: r.contacts[k].basis * r.sequential.accumulated[k],
+            }));
+        self.entries.sort_by_key(|e| e.pair);
     }
 }
