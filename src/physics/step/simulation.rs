@@ -11,10 +11,11 @@ pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
+use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{
     c, to_f64, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Real, ResolverParams,
-    SleepParams, World, WorldParams,
+    SleepParams, Solver, World, WorldParams,
 };
 
 /// Everything a simulation needs beyond its bodies.
@@ -75,6 +76,8 @@ pub struct Simulation<T: Real> {
     generated: Vec<BodyContact<T>>,
     /// The resolver, kept so its storage is reused from step to step.
     resolver: Option<Resolver<T>>,
+    /// Sequential impulses with warm start: last step's accumulated impulses.
+    warm: WarmCache<T>,
     /// Touching pairs of the last step and whether they slid.
     touching: Vec<(BodyId, Option<BodyId>, bool)>,
     /// The energy scale blow-ups are measured against.
@@ -100,6 +103,7 @@ impl<T: Real> Simulation<T> {
             generator: ContactGenerator::new(),
             generated: Vec::new(),
             resolver: None,
+            warm: WarmCache::default(),
             touching: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
@@ -172,8 +176,15 @@ impl<T: Real> Simulation<T> {
             }
             none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
         };
+        let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
+        if warm {
+            self.warm.stage(&self.world, resolver);
+        }
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
+        if warm {
+            self.warm.store(&self.world, resolver);
+        }
         resolver.write_back(&mut self.world);
         let gained = audit::gain(
             kinetic_before,
@@ -213,12 +224,12 @@ impl<T: Real> Simulation<T> {
             });
         }
         self.limits_hit = [position.limit_reached, velocity.limit_reached];
-        self.check_finite()?;
+        super::report::check_finite(&self.world, self.step)?;
         let kinetic = to_f64(energy::kinetic(&self.world));
         if kinetic > 1e6 * self.energy_scale {
             return Err(BlowUp::Energy {
                 step: self.step,
-                body: self.fastest(),
+                body: super::report::fastest(&self.world),
                 energy: kinetic,
                 scale: self.energy_scale,
             });
@@ -452,43 +463,6 @@ impl<T: Real> Simulation<T> {
         }
         events.append(&mut bounces);
         self.touching = pairs;
-    }
-
-    fn check_finite(&self) -> Result<(), BlowUp> {
-        for (i, b) in self
-            .world
-            .bodies
-            .iter()
-            .enumerate()
-            .filter(|(_, b)| b.movable)
-        {
-            let s = &b.state;
-            let what = if !s.position.iter().all(|x| x.is_finite()) {
-                "position"
-            } else if !s.velocity.iter().all(|x| x.is_finite()) {
-                "velocity"
-            } else if !s.angular_velocity.iter().all(|x| x.is_finite()) {
-                "angular velocity"
-            } else if !s.orientation.coords.iter().all(|x| x.is_finite()) {
-                "orientation"
-            } else {
-                continue;
-            };
-            return Err(BlowUp::NonFinite {
-                step: self.step,
-                body: i,
-                what,
-            });
-        }
-        Ok(())
-    }
-
-    fn fastest(&self) -> usize {
-        let speed = |b: &crate::physics::Body<T>| to_f64(b.state.velocity.norm());
-        (0..self.world.bodies.len())
-            .filter(|i| self.world.bodies[*i].movable)
-            .max_by(|a, b| speed(&self.world.bodies[*a]).total_cmp(&speed(&self.world.bodies[*b])))
-            .unwrap_or(0)
     }
 }
 
