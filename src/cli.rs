@@ -389,6 +389,9 @@ pub struct SimulateArgs {
     /// Closing speed below which restitution is 0 (0 switches it off).
     #[arg(long, allow_negative_numbers = true)]
     pub velocity_limit: Option<f64>,
+    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    pub trace_step: Option<u64>,
     #[command(flatten)]
     pub resolver: ResolverArgs,
 }

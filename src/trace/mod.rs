@@ -11,9 +11,12 @@
 mod acceleration;
 pub mod contact;
 pub mod latex;
+mod names;
+pub mod player;
 mod plane;
 pub mod resolver;
 pub mod run;
+pub mod step;
 mod scene;
 mod stage_names;
 mod worked;

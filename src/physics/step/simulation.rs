@@ -160,6 +160,7 @@ impl<T: Real> Simulation<T> {
         }
         let closing_before = self.normal_velocities();
         // 4. Resolve the contacts together.
+        observer.resolving(&self.world);
         let resolver = match &mut self.resolver {
             Some(r) => {
                 r.prepare_again(&self.world, &p.resolver);
