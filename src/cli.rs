@@ -55,9 +55,10 @@ pub enum Command {
 pub struct TuiArgs {
     /// Embedded lesson id or path to a lesson file to open (default: lecture-2).
     pub lesson: Option<std::ffi::OsString>,
-    /// Which contact of the lesson to open (0-based).
-    #[arg(long, short, default_value_t = 0)]
-    pub contact: usize,
+    /// Which contact of the lesson to open (0-based); without it a lesson
+    /// with several contacts opens on its resolver iterations, a scene on its run.
+    #[arg(long, short)]
+    pub contact: Option<usize>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
