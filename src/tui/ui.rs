@@ -93,7 +93,10 @@ fn header(app: &App, area: Rect, buf: &mut Buffer) {
         vec![
             Span::styled(" contact-lab ", t.selected()),
             Span::raw(" "),
-            Span::styled(super::screens::breadcrumb(app), t.title()),
+            Span::styled(
+                super::screens::breadcrumb_fit(app, (area.width as usize).saturating_sub(14)),
+                t.title(),
+            ),
         ]
     } else {
         vec![

@@ -46,6 +46,23 @@ pub fn breadcrumb(app: &App) -> String {
     parts.join(" › ")
 }
 
+/// The breadcrumb in `room` columns: the first levels give way ("… ›") so
+/// the deepest, where the user is, stays in view.
+pub fn breadcrumb_fit(app: &App, room: usize) -> String {
+    let full = breadcrumb(app);
+    if width(&full) <= room {
+        return full;
+    }
+    let parts: Vec<&str> = full.split(" › ").collect();
+    for skip in 1..parts.len() {
+        let text = format!("… › {}", parts[skip..].join(" › "));
+        if width(&text) <= room {
+            return text;
+        }
+    }
+    truncate(parts.last().copied().unwrap_or(""), room)
+}
+
 /// The run or resolver screen, whole.
 pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let [top, body, bottom] = Layout::vertical([
@@ -80,7 +97,7 @@ fn header(app: &App, area: Rect, buf: &mut Buffer) {
     let mut spans = vec![
         Span::styled(" contact-lab ", t.selected()),
         Span::raw(" "),
-        Span::styled(breadcrumb(app), t.title()),
+        Span::styled(breadcrumb_fit(app, (area.width as usize).saturating_sub(14)), t.title()),
     ];
     if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
         let state = if run.playing { "▶ playing" } else { "⏸ paused" };

@@ -15,7 +15,7 @@ use std::cell::Cell;
 
 use ratatui::layout::Rect;
 
-pub use chrome::{breadcrumb, render};
+pub use chrome::{breadcrumb, breadcrumb_fit, render};
 use crate::trace::player::Player;
 use crate::trace::step::StepTrace;
 

@@ -298,7 +298,9 @@ impl App {
         }
     }
 
-    /// The contact or body drawn nearest the cell clicked (within two cells).
+    /// The contact or body drawn nearest the cell clicked (within two
+    /// cells); clicking again where several lie (corners seen edge-on) takes
+    /// the next of them.
     fn pick(&self, col: u16, row: u16) -> Option<Pick> {
         let area = self.targets.picture.get();
         if self.screen == Screen::Contact || !contains(area, col, row) {
@@ -309,7 +311,7 @@ impl App {
         let cx = f64::from(col - area.x) + 0.5;
         let cy = f64::from(row - area.y) + 0.5;
         let points = self.targets.points.borrow();
-        points
+        let mut near: Vec<(f64, Pick)> = points
             .iter()
             .map(|(p, pick)| {
                 let px = (p[0] - x0) / (x1 - x0) * w;
@@ -317,8 +319,14 @@ impl App {
                 ((px - cx).powi(2) + (2.0 * (py - cy)).powi(2), *pick)
             })
             .filter(|(d, _)| *d <= 4.0 * 4.0)
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, pick)| pick)
+            .collect();
+        near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let best = near.first()?.0;
+        // Those drawn in the same cell as the nearest.
+        near.retain(|(d, _)| *d <= best + 1.0);
+        let selected = self.resolver.as_ref().map(|r| Pick::Contact(r.selected));
+        let at = near.iter().position(|(_, p)| Some(*p) == selected);
+        Some(near[at.map_or(0, |i| (i + 1) % near.len())].1)
     }
 }
 

@@ -33,7 +33,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let bodies = r.trace.bodies_at(r.stop);
     let contacts = r.trace.contact_views(r.stop);
     let scene = Scene {
-        title: format!("{} contacts", contacts.len()),
+        title: format!("{} contact(s)", contacts.len()),
         asleep: vec![],
         bodies: &bodies,
         contacts: &contacts,
@@ -94,41 +94,52 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     }
     r.scroll.set(first);
     app.targets.table_first.set(first);
-    let label_w = (inner.width as usize).saturating_sub(2 + 2 * 18).clamp(6, 24);
-    let mut lines = vec![Line::styled(
-        format!("  {:label_w$}  {:<16}  {:<16}", "contact", "penetration", "desired Δv"),
-        t.dim(),
-    )];
-    let change = |k: usize, phase: Phase| {
-        let mine = table.stop.phase == phase;
-        table
-            .changed
-            .iter()
-            .rev()
-            .find(|c| mine && c.0 == k)
-            .map(|c| c.2 - c.1)
+    // Wide: both columns and the change; narrow: the phase's column and the change.
+    let active = table.stop.phase;
+    let wide = inner.width >= 64;
+    let columns: Vec<Phase> = if wide {
+        vec![Phase::Position, Phase::Velocity]
+    } else {
+        vec![active]
     };
+    let label_w = (inner.width as usize)
+        .saturating_sub(2 + columns.len() * 12 + 13)
+        .clamp(4, 30);
+    let heading = |p: Phase| match p {
+        Phase::Position => "penetration",
+        Phase::Velocity => "desired Δv",
+    };
+    let mut head = format!("  {:label_w$}", "contact");
+    for p in &columns {
+        head.push_str(&format!("  {:<10}", heading(*p)));
+    }
+    head.push_str("  change");
+    let mut lines = vec![Line::styled(head, t.dim())];
     for k in first..(first + rows).min(n) {
         let label = r.trace.names.contacts.get(k).cloned().unwrap_or_default();
         let mark = if table.next == Some(k) { "▶ " } else { "  " };
         let row_style = if k == r.selected { t.selected() } else { Style::new() };
+        let change = table.changed.iter().rev().find(|c| c.0 == k).map(|c| c.2 - c.1);
         let mut spans = vec![
             Span::styled(mark, t.ink_style(crate::tui::theme::Ink::Impulse)),
             Span::styled(format!("{:label_w$}", truncate(&label, label_w)), row_style),
         ];
-        for (value, phase) in [
-            (table.penetration[k], Phase::Position),
-            (table.desired[k], Phase::Velocity),
-        ] {
-            let (text, style) = match change(k, phase) {
-                Some(d) => (
-                    format!("{} ({}{})", f.num(value), if d >= 0.0 { "+" } else { "" }, f.num(d)),
-                    t.changed(),
-                ),
-                None => (f.num(value), Style::new()),
+        for p in &columns {
+            let value = match p {
+                Phase::Position => table.penetration[k],
+                Phase::Velocity => table.desired[k],
+            };
+            let style = if *p == active && change.is_some() {
+                t.changed()
+            } else {
+                Style::new()
             };
             spans.push(Span::raw("  "));
-            spans.push(Span::styled(format!("{:<16}", truncate(&text, 16)), style));
+            spans.push(Span::styled(format!("{:<10}", truncate(&f.num(value), 10)), style));
+        }
+        if let Some(d) = change {
+            let sign = if d >= 0.0 { "+" } else { "" };
+            spans.push(Span::styled(format!("  {sign}{}", f.num(d)), t.changed()));
         }
         lines.push(Line::from(spans));
     }
@@ -149,17 +160,6 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
         Phase::Velocity => ("velocity", "desired Δv"),
     };
     let mut lines = vec![];
-    if let Some(prev) = stop.iteration.checked_sub(1).and_then(|i| phase.log.get(i)) {
-        let worse = prev.updated.iter().filter(|u| u.worse()).count();
-        lines.push(Line::raw(format!(
-            "{name} iteration {} took contact {}: {what} {} → {}; it changed {} other contact(s), {worse} for the worse.",
-            prev.iteration,
-            prev.contact,
-            f.num(prev.value),
-            f.num(prev.own_after),
-            prev.updated.len()
-        )));
-    }
     match phase.log.get(stop.iteration) {
         Some(it) => lines.push(Line::styled(
             format!(
@@ -173,7 +173,7 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
         )),
         None if phase.limit_reached => lines.push(Line::styled(
             format!(
-                "{name} iteration limit {} reached: largest {what} left {} at contact {}.",
+                "Iteration limit {} of the {name} phase reached: largest {what} left {} at contact {}.",
                 phase.iteration_limit,
                 f.num(phase.max_after),
                 phase.max_after_contact
@@ -185,6 +185,17 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
             phase.iterations_used,
             f.num(phase.epsilon)
         ))),
+    }
+    if let Some(prev) = stop.iteration.checked_sub(1).and_then(|i| phase.log.get(i)) {
+        let worse = prev.updated.iter().filter(|u| u.worse()).count();
+        lines.push(Line::raw(format!(
+            "Last: {name} iteration {} took contact {}: {what} {} → {}; it changed {} other contact(s), {worse} for the worse.",
+            prev.iteration,
+            prev.contact,
+            f.num(prev.value),
+            f.num(prev.own_after),
+            prev.updated.len()
+        )));
     }
     let block = Block::bordered()
         .border_style(t.border())

@@ -67,7 +67,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         })
         .collect();
     let scene = Scene {
-        title: format!("{} contacts, {} awake", frame.contacts, frame.awake),
+        title: format!("{} contact(s), {} awake", frame.contacts, frame.awake),
         asleep: frame
             .bodies
             .iter()
@@ -147,6 +147,8 @@ pub fn chart(
     if lo > hi {
         (lo, hi) = (0.0, 1.0);
     }
+    // Counts and sizes from zero.
+    lo = lo.min(0.0);
     if hi - lo < 1e-12 {
         hi = lo + 1e-12f64.max(lo.abs() * 1e-6);
     }
