@@ -10,7 +10,7 @@ use crate::lesson::Lesson;
 use crate::physics::step::{BlowUp, Simulation};
 
 /// Steps between two kept copies of the simulation.
-pub const CHECKPOINT: u64 = 32;
+pub const CHECKPOINT: u64 = 8;
 
 #[derive(Debug, Clone)]
 pub struct Player {
