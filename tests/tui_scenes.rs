@@ -311,3 +311,60 @@ fn every_lesson_with_several_contacts_draws_its_resolver_at_every_size() {
         assert!(a.quit, "Esc at the top quits, as it always has");
     }
 }
+
+/// Opens the edit form on the field labelled `label`, types `value`, sets
+/// it and closes the form; returns what the status line said.
+fn edit(app: &mut App, label: &str, value: &str) -> String {
+    key(app, KeyCode::Char('e'));
+    let contact_lab::tui::app::Mode::Edit(form) = &app.mode else {
+        panic!("e opens the form")
+    };
+    let at = form
+        .fields
+        .iter()
+        .position(|f| f.label == label)
+        .unwrap_or_else(|| panic!("no field {label}"));
+    keys(app, KeyCode::Down, at);
+    key(app, KeyCode::Enter);
+    app.key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL));
+    for c in value.chars() {
+        key(app, KeyCode::Char(c));
+    }
+    key(app, KeyCode::Enter);
+    let said = app.status.clone().expect("said").text;
+    key(app, KeyCode::Esc);
+    said
+}
+
+#[test]
+fn an_edit_on_a_scenes_contact_computes_the_run_again_from_that_step() {
+    let mut a = open("stack-5");
+    keys(&mut a, KeyCode::Right, 50);
+    keys(&mut a, KeyCode::Left, 10);
+    let before = a.run.as_ref().unwrap().player.run.clone();
+    assert_eq!(before.frames.len(), 51);
+    key(&mut a, KeyCode::Enter);
+    let start = a.resolver.as_ref().unwrap().trace.velocity_start();
+    keys(&mut a, KeyCode::Right, start);
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.screen, Screen::Contact);
+    let (b1, _) = a.entry().lesson.contacts[a.contact].bodies;
+    let name = a.entry().lesson.bodies[b1].name.clone();
+    let status = edit(&mut a, &format!("{name}: velocity"), "0, 3, 0");
+    assert!(status.contains("the run is computed again from step 40"), "{status}");
+    let run = &a.run.as_ref().unwrap().player;
+    assert_eq!(run.computed(), 40, "computed again up to the step edited");
+    assert_eq!(run.run.frames[..40], before.frames[..40], "earlier frames kept");
+    let (now, then) = (&run.run.frames[40].bodies[b1], &before.frames[40].bodies[b1]);
+    assert!(now.velocity[1] > then.velocity[1] + 0.2, "{now:?} vs {then:?}");
+    // The resolution recorded again: up, it is the new one.
+    key(&mut a, KeyCode::Esc);
+    let r = a.resolver.as_ref().unwrap();
+    assert_eq!(r.trace.step, 40);
+    assert!(r.stop < r.trace.tables.len());
+    // A field that is no input of the run says so and changes nothing.
+    key(&mut a, KeyCode::Enter);
+    let status = edit(&mut a, "penetration", "0.5");
+    assert!(status.contains("the run is unchanged"), "{status}");
+    assert_eq!(a.run.as_ref().unwrap().player.computed(), 40);
+}

@@ -1,7 +1,11 @@
 //! A scene played step by step for the TUI: every frame computed so far is
 //! kept (stepping back is instant), with a copy of the simulation every
 //! [`CHECKPOINT`] steps so that any step's resolution can be recorded again
-//! on request — the fast path records nothing.
+//! on request — the fast path records nothing. [`edit`] changes the run's
+//! input at a step and computes it again from there.
+
+mod edit;
+pub use edit::SceneEdit;
 
 use super::resolver::Names;
 use super::run::RunTrace;
@@ -20,8 +24,9 @@ pub struct Player {
     pub steps: u64,
     names: Names,
     sim: Simulation<f64>,
-    /// `checkpoints[j]`: the simulation after step `j × CHECKPOINT`.
-    checkpoints: Vec<Simulation<f64>>,
+    /// Copies of the simulation after the step they are paired with (every
+    /// `CHECKPOINT`th, and where an edit changed it), in step order.
+    checkpoints: Vec<(u64, Simulation<f64>)>,
 }
 
 impl Player {
@@ -39,7 +44,7 @@ impl Player {
             run,
             steps: scene.steps.max(1),
             names,
-            checkpoints: vec![sim.clone()],
+            checkpoints: vec![(0, sim.clone())],
             sim,
         })
     }
@@ -59,7 +64,7 @@ impl Player {
                 self.run.add_events(&report);
                 self.run.frames.push(RunTrace::frame(&self.sim, &report));
                 if self.sim.step % CHECKPOINT == 0 {
-                    self.checkpoints.push(self.sim.clone());
+                    self.checkpoints.push((self.sim.step, self.sim.clone()));
                 }
                 true
             }
@@ -86,12 +91,18 @@ impl Player {
         if step == 0 || step > self.computed() {
             return None;
         }
-        let from = (step - 1) / CHECKPOINT;
-        let mut sim = self.checkpoints.get(from as usize)?.clone();
-        while sim.step + 1 < step {
+        let mut sim = self.state_after(step - 1)?;
+        record_next(&mut sim, &self.names).ok()
+    }
+
+    /// The simulation after step `step` (≤ computed), from the nearest copy before it.
+    fn state_after(&self, step: u64) -> Option<Simulation<f64>> {
+        let (_, from) = self.checkpoints.iter().rev().find(|(s, _)| *s <= step)?;
+        let mut sim = from.clone();
+        while sim.step < step {
             sim.advance().ok()?;
         }
-        record_next(&mut sim, &self.names).ok()
+        Some(sim)
     }
 }
 

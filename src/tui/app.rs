@@ -11,7 +11,7 @@ use super::event::{self, Action};
 use super::form::{Form, Outcome};
 use super::screens::{ResolverView, RunView, Screen, Targets};
 use super::theme::Theme;
-use super::write::{self, WriteError};
+use super::write;
 use crate::format::Fmt;
 use crate::lesson::{edit, Lesson};
 use crate::trace::{Trace, Value};
@@ -423,6 +423,7 @@ impl App {
                 let field = form.fields[i].clone();
                 let before = self.trace.clone();
                 let entry = self.entry_mut();
+                let lesson_before = entry.lesson.clone();
                 match edit::set(&mut entry.lesson, k, &field, &text) {
                     Ok(said) => {
                         entry.edits.push(said.clone());
@@ -431,61 +432,12 @@ impl App {
                         self.baseline = Some(before);
                         form.input = None;
                         form.error = None;
-                        self.say(format!("{said}: {changed} values changed"), false);
+                        let run = self.scene_edited(&field, &lesson_before).unwrap_or_default();
+                        self.say(format!("{said}: {changed} values changed{run}"), false);
                     }
                     Err(e) => form.error = Some(e),
                 }
                 self.mode = Mode::Edit(form);
-            }
-        }
-    }
-
-    fn write_key(&mut self, mut input: String, error: Option<String>, key: KeyEvent) {
-        match key.code {
-            KeyCode::Esc => self.say("not written".into(), false),
-            KeyCode::Enter if input.trim().is_empty() => {
-                self.mode = Mode::Write {
-                    input,
-                    error: Some("a file name, please".into()),
-                }
-            }
-            KeyCode::Enter => {
-                let path = self.write_dir.join(input.trim());
-                self.write_to(path, false)
-            }
-            code => {
-                match code {
-                    KeyCode::Backspace => {
-                        input.pop();
-                    }
-                    KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                        input.clear()
-                    }
-                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                        return self.say("not written".into(), false);
-                    }
-                    KeyCode::Char(c) if !c.is_control() => input.push(c),
-                    _ => {}
-                }
-                self.mode = Mode::Write { input, error };
-            }
-        }
-    }
-
-    fn write_to(&mut self, path: PathBuf, overwrite: bool) {
-        let text = write::markdown(&self.trace, &self.entry().edits, &self.fmt);
-        match write::write_atomic(&path, &text, overwrite) {
-            Ok(()) => self.say(format!("wrote {}", path.display()), false),
-            Err(WriteError::Exists(p)) => self.mode = Mode::Confirm(p),
-            Err(WriteError::Io(e)) => {
-                let input = path
-                    .file_name()
-                    .map(|n| n.to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                self.mode = Mode::Write {
-                    input,
-                    error: Some(format!("cannot write: {e}")),
-                };
             }
         }
     }

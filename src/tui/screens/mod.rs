@@ -6,6 +6,7 @@
 //! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
 mod chrome;
+mod edit;
 mod nav;
 mod picture;
 mod resolver;
