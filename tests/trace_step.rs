@@ -19,10 +19,19 @@ fn contact_lab(args: &[&str]) -> std::process::Output {
 
 #[test]
 fn trace_step_json_has_resolves_shape_and_the_steps_iterations() {
-    let out = contact_lab(&["simulate", "stack-5", "--trace-step", "75", "--format", "json"]);
+    let out = contact_lab(&[
+        "simulate",
+        "stack-5",
+        "--trace-step",
+        "75",
+        "--format",
+        "json",
+    ]);
     assert_eq!(out.status.code(), Some(0));
     let j: J = serde_json::from_slice(&out.stdout).unwrap();
-    for key in ["lesson", "contacts", "position", "velocity", "seconds", "after"] {
+    for key in [
+        "lesson", "contacts", "position", "velocity", "seconds", "after",
+    ] {
         assert!(j.get(key).is_some(), "no {key}");
     }
     assert_eq!(j["lesson"], "stack-5");
@@ -34,24 +43,53 @@ fn trace_step_json_has_resolves_shape_and_the_steps_iterations() {
     assert_eq!(j["contacts"], row["contacts"]);
     assert_eq!(j["velocity"]["iterations_used"], row["velocity_iterations"]);
     assert_eq!(j["position"]["iterations_used"], row["position_iterations"]);
-    let log = j["velocity"]["log"].as_array().expect("the log is always there");
-    assert_eq!(log.len() as u64, row["velocity_iterations"].as_u64().unwrap());
+    let log = j["velocity"]["log"]
+        .as_array()
+        .expect("the log is always there");
+    assert_eq!(
+        log.len() as u64,
+        row["velocity_iterations"].as_u64().unwrap()
+    );
 }
 
 #[test]
 fn trace_step_text_names_the_step_and_refuses_steps_past_the_end() {
-    let out = contact_lab(&["simulate", "ball-drop", "--trace-step", "460", "--steps", "500"]);
+    let out = contact_lab(&[
+        "simulate",
+        "ball-drop",
+        "--trace-step",
+        "460",
+        "--steps",
+        "500",
+    ]);
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.starts_with("Step 460 (t = 0.46 s)"), "{text}");
     assert!(text.contains("Velocity phase"), "{text}");
-    let out = contact_lab(&["simulate", "ball-drop", "--steps", "10", "--trace-step", "11"]);
+    let out = contact_lab(&[
+        "simulate",
+        "ball-drop",
+        "--steps",
+        "10",
+        "--trace-step",
+        "11",
+    ]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
-    assert!(err.contains("--trace-step 11: the run has 10 step(s)"), "{err}");
+    assert!(
+        err.contains("--trace-step 11: the run has 10 step(s)"),
+        "{err}"
+    );
     let out = contact_lab(&["simulate", "lecture-2", "--trace-step", "1"]);
     assert_eq!(out.status.code(), Some(2));
-    let out = contact_lab(&["simulate", "stack-5", "--trace-step", "3", "--format", "svg"]);
+    let out = contact_lab(&[
+        "simulate",
+        "stack-5",
+        "--trace-step",
+        "3",
+        "--format",
+        "svg",
+    ]);
     assert_eq!(out.status.code(), Some(2));
 }
 

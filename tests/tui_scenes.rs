@@ -70,8 +70,12 @@ fn from_a_frame_to_a_contacts_stage_and_back_up() {
         key(&mut a, KeyCode::Char('n'));
         let step = frame(&a);
         let ev = &a.run.as_ref().unwrap().player.run.events;
-        assert!(ev.iter().any(|e| e.step as usize == step && e.kind == "sleep"));
-        assert!(!ev.iter().any(|e| (e.step as usize) < step && e.kind == "sleep"));
+        assert!(ev
+            .iter()
+            .any(|e| e.step as usize == step && e.kind == "sleep"));
+        assert!(!ev
+            .iter()
+            .any(|e| (e.step as usize) < step && e.kind == "sleep"));
         draw(&mut t, &a);
         snapshot(&format!("tui_scene_run_{w}x{h}"), &t);
         key(&mut a, KeyCode::Enter);
@@ -84,7 +88,8 @@ fn from_a_frame_to_a_contacts_stage_and_back_up() {
         draw(&mut t, &a);
         let crumb = contact_lab::tui::screens::breadcrumb(&a);
         assert!(
-            crumb.starts_with("stack-5 › t = ") && crumb.ends_with(&format!(", step {step} › velocity iteration 12")),
+            crumb.starts_with("stack-5 › t = ")
+                && crumb.ends_with(&format!(", step {step} › velocity iteration 12")),
             "{crumb}"
         );
         snapshot(&format!("tui_scene_resolver_{w}x{h}"), &t);
@@ -98,7 +103,9 @@ fn from_a_frame_to_a_contacts_stage_and_back_up() {
         draw(&mut t, &a);
         let crumb = contact_lab::tui::screens::breadcrumb(&a);
         assert!(
-            crumb.ends_with(&format!("velocity iteration 12 › contact {taken} › impulse")),
+            crumb.ends_with(&format!(
+                "velocity iteration 12 › contact {taken} › impulse"
+            )),
             "{crumb}"
         );
         snapshot(&format!("tui_scene_contact_{w}x{h}"), &t);
@@ -120,7 +127,9 @@ fn the_opened_contact_has_the_bodies_as_the_iteration_finds_them() {
     let r = a.resolver.as_ref().unwrap();
     let stop = r.trace.velocity_start() + 3;
     let views = r.trace.bodies_at(stop);
-    let taken = r.trace.tables[stop].next.expect("an iteration at this stop");
+    let taken = r.trace.tables[stop]
+        .next
+        .expect("an iteration at this stop");
     keys(&mut a, KeyCode::Right, stop);
     key(&mut a, KeyCode::Enter);
     let lesson = &a.entry().lesson;
@@ -158,7 +167,11 @@ fn playback_runs_on_ticks_at_the_chosen_speed_and_steps_back_instantly() {
     assert!(!a.playing());
     keys(&mut a, KeyCode::Left, 12);
     assert_eq!(frame(&a), 20);
-    assert_eq!(a.run.as_ref().unwrap().player.computed(), 32, "kept, not recomputed");
+    assert_eq!(
+        a.run.as_ref().unwrap().player.computed(),
+        32,
+        "kept, not recomputed"
+    );
     keys(&mut a, KeyCode::Right, 2);
     assert_eq!(frame(&a), 22);
     key(&mut a, KeyCode::Char('g'));
@@ -175,7 +188,11 @@ fn playback_runs_on_ticks_at_the_chosen_speed_and_steps_back_instantly() {
 #[test]
 fn clicks_select_table_rows_and_contacts_in_the_picture() {
     let mut a = open("sphere-row");
-    assert_eq!(a.screen, Screen::Resolver, "several contacts: the resolver first");
+    assert_eq!(
+        a.screen,
+        Screen::Resolver,
+        "several contacts: the resolver first"
+    );
     let mut t = term(100, 30);
     draw(&mut t, &a);
     let click = |a: &mut App, column: u16, row: u16| {
@@ -223,7 +240,10 @@ fn help_lists_each_screens_keys_and_the_readme_has_them() {
         let shown = text(t.backend().buffer());
         for (k, what) in list {
             assert!(shown.contains(k), "{lesson}: help lacks {k}\n{shown}");
-            assert!(readme.contains(&format!("| {k} | {what} |")), "README lacks {k}");
+            assert!(
+                readme.contains(&format!("| {k} | {what} |")),
+                "README lacks {k}"
+            );
         }
         key(&mut a, KeyCode::Char('x'));
         assert_eq!(a.mode, contact_lab::tui::app::Mode::Normal);
@@ -232,7 +252,7 @@ fn help_lists_each_screens_keys_and_the_readme_has_them() {
 
 #[test]
 fn a_scene_takes_no_contact_number() {
-    let e = tui::open(Some("stack-5"), Some(0)).err().expect("refused");
+    let e = tui::open(Some("stack-5"), Some(0)).expect_err("refused");
     assert!(e.to_string().contains("is a scene"), "{e}");
 }
 
@@ -351,12 +371,25 @@ fn an_edit_on_a_scenes_contact_computes_the_run_again_from_that_step() {
     let (b1, _) = a.entry().lesson.contacts[a.contact].bodies;
     let name = a.entry().lesson.bodies[b1].name.clone();
     let status = edit(&mut a, &format!("{name}: velocity"), "0, 3, 0");
-    assert!(status.contains("the run is computed again from step 40"), "{status}");
+    assert!(
+        status.contains("the run is computed again from step 40"),
+        "{status}"
+    );
     let run = &a.run.as_ref().unwrap().player;
     assert_eq!(run.computed(), 40, "computed again up to the step edited");
-    assert_eq!(run.run.frames[..40], before.frames[..40], "earlier frames kept");
-    let (now, then) = (&run.run.frames[40].bodies[b1], &before.frames[40].bodies[b1]);
-    assert!(now.velocity[1] > then.velocity[1] + 0.2, "{now:?} vs {then:?}");
+    assert_eq!(
+        run.run.frames[..40],
+        before.frames[..40],
+        "earlier frames kept"
+    );
+    let (now, then) = (
+        &run.run.frames[40].bodies[b1],
+        &before.frames[40].bodies[b1],
+    );
+    assert!(
+        now.velocity[1] > then.velocity[1] + 0.2,
+        "{now:?} vs {then:?}"
+    );
     // The resolution recorded again: up, it is the new one.
     key(&mut a, KeyCode::Esc);
     let r = a.resolver.as_ref().unwrap();

@@ -12,13 +12,13 @@ mod acceleration;
 pub mod contact;
 pub mod latex;
 mod names;
-pub mod player;
 mod plane;
+pub mod player;
 pub mod resolver;
 pub mod run;
-pub mod step;
 mod scene;
 mod stage_names;
+pub mod step;
 mod worked;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};

@@ -63,7 +63,7 @@ impl Player {
             Ok(report) => {
                 self.run.add_events(&report);
                 self.run.frames.push(RunTrace::frame(&self.sim, &report));
-                if self.sim.step % CHECKPOINT == 0 {
+                if self.sim.step.is_multiple_of(CHECKPOINT) {
                     self.checkpoints.push((self.sim.step, self.sim.clone()));
                 }
                 true

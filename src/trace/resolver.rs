@@ -269,7 +269,11 @@ fn rows(names: &Names, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
         .iter()
         .enumerate()
         .map(|(k, c)| ContactRow {
-            label: names.contacts.get(k).cloned().unwrap_or_else(|| k.to_string()),
+            label: names
+                .contacts
+                .get(k)
+                .cloned()
+                .unwrap_or_else(|| k.to_string()),
             penetration: c.penetration,
             separating: c.velocity.x,
             desired: c.desired,

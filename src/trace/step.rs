@@ -59,8 +59,7 @@ impl StepTrace {
         step: u64,
         time: f64,
     ) -> StepTrace {
-        let (resolver, bodies) =
-            describe_world(&world, &names, params, implementation, true, true);
+        let (resolver, bodies) = describe_world(&world, &names, params, implementation, true, true);
         let tables = tables(&resolver);
         StepTrace {
             step,

@@ -432,7 +432,9 @@ impl App {
                         self.baseline = Some(before);
                         form.input = None;
                         form.error = None;
-                        let run = self.scene_edited(&field, &lesson_before).unwrap_or_default();
+                        let run = self
+                            .scene_edited(&field, &lesson_before)
+                            .unwrap_or_default();
                         self.say(format!("{said}: {changed} values changed{run}"), false);
                     }
                     Err(e) => form.error = Some(e),

@@ -45,7 +45,10 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
         "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
     ];
     if app.resolver.is_some() {
-        notes.insert(0, "Esc or Backspace: up to the resolver iterations this contact came from.");
+        notes.insert(
+            0,
+            "Esc or Backspace: up to the resolver iterations this contact came from.",
+        );
     }
     help_list(app, " Keys ", KEYS, &notes, area, buf);
 }

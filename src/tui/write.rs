@@ -60,44 +60,6 @@ pub fn write_atomic(path: &Path, text: &str, overwrite: bool) -> Result<(), Writ
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn dir(name: &str) -> PathBuf {
-        let d = std::env::temp_dir().join(format!("contact-lab-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&d);
-        std::fs::create_dir_all(&d).unwrap();
-        d
-    }
-
-    #[test]
-    fn never_overwrites_without_asking() {
-        let d = dir("write");
-        let p = d.join("a.md");
-        write_atomic(&p, "one", false).unwrap();
-        assert!(matches!(
-            write_atomic(&p, "two", false),
-            Err(WriteError::Exists(_))
-        ));
-        assert_eq!(std::fs::read_to_string(&p).unwrap(), "one");
-        write_atomic(&p, "three", true).unwrap();
-        assert_eq!(std::fs::read_to_string(&p).unwrap(), "three");
-        let left: Vec<_> = std::fs::read_dir(&d).unwrap().collect();
-        assert_eq!(left.len(), 1, "no temporary file left behind");
-        std::fs::remove_dir_all(&d).unwrap();
-    }
-
-    #[test]
-    fn missing_directory_is_an_error() {
-        let p = std::env::temp_dir().join("contact-lab-no-such-dir-xyz/a.md");
-        assert!(matches!(
-            write_atomic(&p, "x", false),
-            Err(WriteError::Io(_))
-        ));
-    }
-}
-
 use super::app::Mode;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
@@ -151,5 +113,43 @@ impl super::app::App {
                 };
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("contact-lab-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn never_overwrites_without_asking() {
+        let d = dir("write");
+        let p = d.join("a.md");
+        write_atomic(&p, "one", false).unwrap();
+        assert!(matches!(
+            write_atomic(&p, "two", false),
+            Err(WriteError::Exists(_))
+        ));
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "one");
+        write_atomic(&p, "three", true).unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "three");
+        let left: Vec<_> = std::fs::read_dir(&d).unwrap().collect();
+        assert_eq!(left.len(), 1, "no temporary file left behind");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn missing_directory_is_an_error() {
+        let p = std::env::temp_dir().join("contact-lab-no-such-dir-xyz/a.md");
+        assert!(matches!(
+            write_atomic(&p, "x", false),
+            Err(WriteError::Io(_))
+        ));
     }
 }

@@ -13,16 +13,34 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 pub enum SceneEdit {
     /// The body's mass (its inertia scaled with it: same shape, same
     /// distribution).
-    Mass { body: usize, mass: f64 },
+    Mass {
+        body: usize,
+        mass: f64,
+    },
     /// Added to the body's velocity at the start of the step.
-    Velocity { body: usize, change: [f64; 3] },
-    AngularVelocity { body: usize, change: [f64; 3] },
+    Velocity {
+        body: usize,
+        change: [f64; 3],
+    },
+    AngularVelocity {
+        body: usize,
+        change: [f64; 3],
+    },
     /// Both bodies of a pair take the value: a pair combines restitution by
     /// the larger and friction by √(μ₁μ₂), so their contacts get exactly it
     /// (and their other pairs change too).
-    Restitution { bodies: Vec<usize>, value: f64 },
-    StaticFriction { bodies: Vec<usize>, value: f64 },
-    DynamicFriction { bodies: Vec<usize>, value: f64 },
+    Restitution {
+        bodies: Vec<usize>,
+        value: f64,
+    },
+    StaticFriction {
+        bodies: Vec<usize>,
+        value: f64,
+    },
+    DynamicFriction {
+        bodies: Vec<usize>,
+        value: f64,
+    },
     /// Settings of every generated contact.
     FrictionModel(FrictionModel),
     VelocityLimit(f64),
@@ -58,17 +76,32 @@ impl SceneEdit {
                 }
             }
             SceneEdit::Restitution { bodies, value } => {
-                for (_, m) in sim.materials.iter_mut().enumerate().filter(|(i, _)| bodies.contains(i)) {
+                for (_, m) in sim
+                    .materials
+                    .iter_mut()
+                    .enumerate()
+                    .filter(|(i, _)| bodies.contains(i))
+                {
                     m.restitution = *value;
                 }
             }
             SceneEdit::StaticFriction { bodies, value } => {
-                for (_, m) in sim.materials.iter_mut().enumerate().filter(|(i, _)| bodies.contains(i)) {
+                for (_, m) in sim
+                    .materials
+                    .iter_mut()
+                    .enumerate()
+                    .filter(|(i, _)| bodies.contains(i))
+                {
                     m.static_friction = *value;
                 }
             }
             SceneEdit::DynamicFriction { bodies, value } => {
-                for (_, m) in sim.materials.iter_mut().enumerate().filter(|(i, _)| bodies.contains(i)) {
+                for (_, m) in sim
+                    .materials
+                    .iter_mut()
+                    .enumerate()
+                    .filter(|(i, _)| bodies.contains(i))
+                {
                     m.dynamic_friction = *value;
                 }
             }

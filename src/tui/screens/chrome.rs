@@ -15,7 +15,6 @@ use crate::tui::wrap::{truncate, width};
 /// Where the user is: `stack-5 › t = 1.250 s, step 75 › velocity iteration
 /// 12 › contact 3 › impulse` (as far down as they went).
 pub fn breadcrumb(app: &App) -> String {
-    let f = crate::format::Fmt::new(4);
     let mut parts = vec![app.lessons[app.lesson].lesson.id.clone()];
     if let Some(run) = &app.run {
         let frame = &run.player.run.frames[run.frame];
@@ -42,7 +41,6 @@ pub fn breadcrumb(app: &App) -> String {
             None => "overview".into(),
         });
     }
-    let _ = f;
     parts.join(" › ")
 }
 
@@ -97,23 +95,23 @@ fn header(app: &App, area: Rect, buf: &mut Buffer) {
     let mut spans = vec![
         Span::styled(" contact-lab ", t.selected()),
         Span::raw(" "),
-        Span::styled(breadcrumb_fit(app, (area.width as usize).saturating_sub(14)), t.title()),
+        Span::styled(
+            breadcrumb_fit(app, (area.width as usize).saturating_sub(14)),
+            t.title(),
+        ),
     ];
     if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
-        let state = if run.playing { "▶ playing" } else { "⏸ paused" };
-        spans.push(Span::raw(format!("  {state} ×{}", speed(SPEEDS[run.speed]))));
+        let state = if run.playing {
+            "▶ playing"
+        } else {
+            "⏸ paused"
+        };
+        spans.push(Span::raw(format!(
+            "  {state} ×{}",
+            ["¼", "½", "1", "2", "4"][run.speed.min(SPEEDS.len() - 1)]
+        )));
     }
     Paragraph::new(Line::from(spans)).render(area, buf);
-}
-
-fn speed(x: f64) -> &'static str {
-    match x {
-        x if x == 0.25 => "¼",
-        x if x == 0.5 => "½",
-        x if x == 1.0 => "1",
-        x if x == 2.0 => "2",
-        _ => "4",
-    }
 }
 
 fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {

@@ -16,9 +16,9 @@ use std::cell::Cell;
 
 use ratatui::layout::Rect;
 
-pub use chrome::{breadcrumb, breadcrumb_fit, render};
 use crate::trace::player::Player;
 use crate::trace::step::StepTrace;
+pub use chrome::{breadcrumb, breadcrumb_fit, render};
 
 /// The screen on show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -114,7 +114,10 @@ pub const RUN_KEYS: &[(&str, &str)] = &[
     ("n / N", "next / previous event (of the kind f chooses)"),
     ("f", "events to jump to: any, bounce, contact, sleep, limit"),
     ("Enter", "this step's resolver iterations"),
-    ("c o s b", "picture: contacts, normals, sleep state, body names"),
+    (
+        "c o s b",
+        "picture: contacts, normals, sleep state, body names",
+    ),
     ("v", "view plane of the picture: xy → yz → zx"),
     ("PgUp / PgDn", "scroll the events list"),
     ("↓ j / ↑ k", "next / previous lesson"),
@@ -124,10 +127,16 @@ pub const RUN_KEYS: &[(&str, &str)] = &[
 
 /// The resolver screen's keys (help overlay and README).
 pub const RESOLVER_KEYS: &[(&str, &str)] = &[
-    ("→ l / ← h", "next / previous iteration (position phase, then velocity)"),
+    (
+        "→ l / ← h",
+        "next / previous iteration (position phase, then velocity)",
+    ),
     ("Home g / End G", "first stop / last stop"),
     ("Tab / Shift-Tab", "select the next / previous contact"),
-    ("Enter", "this contact's stages, bodies as this iteration finds them"),
+    (
+        "Enter",
+        "this contact's stages, bodies as this iteration finds them",
+    ),
     ("Esc Backspace", "up to the run (a scene)"),
     ("v", "view plane of the picture: xy → yz → zx"),
     ("↓ j / ↑ k", "next / previous lesson"),

@@ -3,12 +3,14 @@
 
 use std::cell::Cell;
 
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
+use ratatui::crossterm::event::{
+    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 
 use super::{Pick, ResolverView, RunView, Screen, Toggles, EVENT_KINDS, SPEEDS};
-use crate::tui::app::{App, Entry, Mode};
 use crate::trace::player::Player;
 use crate::trace::step::StepTrace;
+use crate::tui::app::{App, Entry, Mode};
 
 /// At most this many steps are computed in one tick (playback falls behind
 /// real time rather than freezing the app).
@@ -141,7 +143,9 @@ impl App {
                 run.playing = false;
                 run.frame = run.player.computed() as usize;
             }
-            KeyCode::Char('+') | KeyCode::Char('=') => run.speed = (run.speed + 1).min(SPEEDS.len() - 1),
+            KeyCode::Char('+') | KeyCode::Char('=') => {
+                run.speed = (run.speed + 1).min(SPEEDS.len() - 1)
+            }
             KeyCode::Char('-') => run.speed = run.speed.saturating_sub(1),
             KeyCode::Char('f') => run.event_kind = (run.event_kind + 1) % EVENT_KINDS.len(),
             KeyCode::Char('n') => said = jump_event(run, true),
@@ -261,7 +265,10 @@ impl App {
                     if let Some(r) = self.resolver.as_deref_mut() {
                         r.selected = k;
                     }
-                    self.say(format!("contact {k} selected (Enter opens its stages)"), false);
+                    self.say(
+                        format!("contact {k} selected (Enter opens its stages)"),
+                        false,
+                    );
                 }
                 Pick::Body(i) => {
                     let name = self.lessons[self.lesson].lesson.bodies[i].name.clone();
@@ -347,7 +354,10 @@ fn forward(run: &mut RunView) -> bool {
 fn end_of_run(run: &RunView) -> String {
     match &run.player.run.stopped {
         Some(why) => format!("the run stopped: {why}"),
-        None => format!("the scene's last step ({}): Home restarts", run.player.steps),
+        None => format!(
+            "the scene's last step ({}): Home restarts",
+            run.player.steps
+        ),
     }
 }
 

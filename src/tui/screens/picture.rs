@@ -40,14 +40,28 @@ fn flat(plane: Plane, v: [f64; 3]) -> P {
 
 /// Bounds (x0, x1, y0, y1) of the finite bodies' outlines, or the unit box.
 fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
-    let mut b = [f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY];
+    let mut b = [
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ];
     for v in bodies {
-        let Some(o) = v.shape.as_ref().and_then(|s| outline(s, v.position, v.orientation, plane)) else {
+        let Some(o) = v
+            .shape
+            .as_ref()
+            .and_then(|s| outline(s, v.position, v.orientation, plane))
+        else {
             continue;
         };
         for p in o.silhouette.points() {
             if p[0].is_finite() && p[1].is_finite() {
-                b = [b[0].min(p[0]), b[1].max(p[0]), b[2].min(p[1]), b[3].max(p[1])];
+                b = [
+                    b[0].min(p[0]),
+                    b[1].max(p[0]),
+                    b[2].min(p[1]),
+                    b[3].max(p[1]),
+                ];
             }
         }
     }
@@ -74,10 +88,12 @@ fn fit(b: [f64; 4], cols: u16, rows: u16) -> [f64; 4] {
 pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let plane = app.plane;
-    let block = Block::bordered().border_style(t.border()).title(Span::styled(
-        format!(" {} · {} plane (v) ", scene.title, plane.name()),
-        t.title(),
-    ));
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(
+            format!(" {} · {} plane (v) ", scene.title, plane.name()),
+            t.title(),
+        ));
     let inner = block.inner(area);
     block.render(area, buf);
     app.targets.picture.set(inner);
@@ -112,11 +128,21 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
                 let q = flat(plane, v.position);
                 let far = 4.0 * extent;
                 let ink = t.ink(Ink::Ground);
-                segs.push(([q[0] - along[0] * far, q[1] - along[1] * far], [q[0] + along[0] * far, q[1] + along[1] * far], ink));
+                segs.push((
+                    [q[0] - along[0] * far, q[1] - along[1] * far],
+                    [q[0] + along[0] * far, q[1] + along[1] * far],
+                    ink,
+                ));
                 let step = extent / 16.0;
                 for k in -64..=64 {
-                    let base = [q[0] + along[0] * step * k as f64, q[1] + along[1] * step * k as f64];
-                    let tip = [base[0] - (n[0] - along[0]) * 0.4 * step, base[1] - (n[1] - along[1]) * 0.4 * step];
+                    let base = [
+                        q[0] + along[0] * step * k as f64,
+                        q[1] + along[1] * step * k as f64,
+                    ];
+                    let tip = [
+                        base[0] - (n[0] - along[0]) * 0.4 * step,
+                        base[1] - (n[1] - along[1]) * 0.4 * step,
+                    ];
                     segs.push((base, tip, ink));
                 }
             }

@@ -49,7 +49,12 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
 }
 
 fn convergence(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
-    let max = |v: &[f64]| v.iter().copied().filter(|x| x.is_finite()).fold(0.0f64, f64::max);
+    let max = |v: &[f64]| {
+        v.iter()
+            .copied()
+            .filter(|x| x.is_finite())
+            .fold(0.0f64, f64::max)
+    };
     let mut pen = vec![];
     let mut dv = vec![];
     for (i, t) in r.trace.tables.iter().enumerate() {
@@ -74,10 +79,12 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let f = Fmt::new(4);
     let table = &r.trace.tables[r.stop];
-    let block = Block::bordered().border_style(t.border()).title(Span::styled(
-        " Contacts · ▶ taken next · ⇥ selects · Enter opens ",
-        t.title(),
-    ));
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(
+            " Contacts · ▶ taken next · ⇥ selects · Enter opens ",
+            t.title(),
+        ));
     let inner = block.inner(area);
     block.render(area, buf);
     app.targets.table.set(area);
@@ -118,8 +125,17 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     for k in first..(first + rows).min(n) {
         let label = r.trace.names.contacts.get(k).cloned().unwrap_or_default();
         let mark = if table.next == Some(k) { "▶ " } else { "  " };
-        let row_style = if k == r.selected { t.selected() } else { Style::new() };
-        let change = table.changed.iter().rev().find(|c| c.0 == k).map(|c| c.2 - c.1);
+        let row_style = if k == r.selected {
+            t.selected()
+        } else {
+            Style::new()
+        };
+        let change = table
+            .changed
+            .iter()
+            .rev()
+            .find(|c| c.0 == k)
+            .map(|c| c.2 - c.1);
         let mut spans = vec![
             Span::styled(mark, t.ink_style(crate::tui::theme::Ink::Impulse)),
             Span::styled(format!("{:label_w$}", truncate(&label, label_w)), row_style),
@@ -135,7 +151,10 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
                 Style::new()
             };
             spans.push(Span::raw("  "));
-            spans.push(Span::styled(format!("{:<10}", truncate(&f.num(value), 10)), style));
+            spans.push(Span::styled(
+                format!("{:<10}", truncate(&f.num(value), 10)),
+                style,
+            ));
         }
         if let Some(d) = change {
             let sign = if d >= 0.0 { "+" } else { "" };
@@ -199,7 +218,10 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     }
     let block = Block::bordered()
         .border_style(t.border())
-        .title(Span::styled(format!(" Stop {} of {} ", r.stop, r.trace.tables.len() - 1), t.title()));
+        .title(Span::styled(
+            format!(" Stop {} of {} ", r.stop, r.trace.tables.len() - 1),
+            t.title(),
+        ));
     Paragraph::new(lines)
         .wrap(Wrap { trim: true })
         .block(block)

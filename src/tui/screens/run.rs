@@ -153,7 +153,13 @@ pub fn chart(
         hi = lo + 1e-12f64.max(lo.abs() * 1e-6);
     }
     let cursor = [(now, lo), (now, hi)];
-    let colour = |c: Color| if t.color { Style::new().fg(c) } else { Style::new() };
+    let colour = |c: Color| {
+        if t.color {
+            Style::new().fg(c)
+        } else {
+            Style::new()
+        }
+    };
     let mut sets: Vec<Dataset> = series
         .iter()
         .map(|(points, c)| {
@@ -190,17 +196,23 @@ fn render_events(app: &App, run: &RunView, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let trace = &run.player.run;
     let step = run.frame as u64;
-    let block = Block::bordered().border_style(t.border()).title(Span::styled(
-        format!(
-            " Events · n/N jump to {} (f) · {} ",
-            EVENT_KINDS[run.event_kind],
-            match &trace.stopped {
-                Some(why) => why.clone(),
-                None => format!("{} of {} steps computed", trace.frames.len() - 1, run.player.steps),
-            }
-        ),
-        t.title(),
-    ));
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(
+            format!(
+                " Events · n/N jump to {} (f) · {} ",
+                EVENT_KINDS[run.event_kind],
+                match &trace.stopped {
+                    Some(why) => why.clone(),
+                    None => format!(
+                        "{} of {} steps computed",
+                        trace.frames.len() - 1,
+                        run.player.steps
+                    ),
+                }
+            ),
+            t.title(),
+        ));
     let inner = block.inner(area);
     block.render(area, buf);
     let shown = trace.events.iter().filter(|e| e.step <= step).count();
@@ -211,7 +223,11 @@ fn render_events(app: &App, run: &RunView, area: Rect, buf: &mut Buffer) {
     let lines: Vec<Line> = trace.events[start..end]
         .iter()
         .map(|e| {
-            let style = if e.step == step { t.selected() } else { Style::new() };
+            let style = if e.step == step {
+                t.selected()
+            } else {
+                Style::new()
+            };
             Line::styled(
                 truncate(&format!("{:>8.3} s  {:>5}  {}", e.time, e.step, e.text), w),
                 style,
