@@ -37,7 +37,7 @@ pub fn breadcrumb(app: &App) -> String {
     if app.screen == Screen::Contact {
         parts.push(format!("contact {}", app.contact));
         parts.push(match app.stage() {
-            Some(s) => app.trace.stages[s].id.json_name().to_string(),
+            Some(s) => app.trace.stages[s].id.label().to_lowercase(),
             None => "overview".into(),
         });
     }
