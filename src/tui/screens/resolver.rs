@@ -103,14 +103,14 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     app.targets.table_first.set(first);
     // Wide: both columns and the change; narrow: the phase's column and the change.
     let active = table.stop.phase;
-    let wide = inner.width >= 64;
+    let wide = inner.width >= 2 + 12 + 2 * 13 + 10;
     let columns: Vec<Phase> = if wide {
         vec![Phase::Position, Phase::Velocity]
     } else {
         vec![active]
     };
     let label_w = (inner.width as usize)
-        .saturating_sub(2 + columns.len() * 12 + 13)
+        .saturating_sub(2 + columns.len() * 13 + 10)
         .clamp(4, 30);
     let heading = |p: Phase| match p {
         Phase::Position => "penetration",
@@ -118,7 +118,7 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     };
     let mut head = format!("  {:label_w$}", "contact");
     for p in &columns {
-        head.push_str(&format!("  {:<10}", heading(*p)));
+        head.push_str(&format!("  {:<11}", heading(*p)));
     }
     head.push_str("  change");
     let mut lines = vec![Line::styled(head, t.dim())];
@@ -152,7 +152,7 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
             };
             spans.push(Span::raw("  "));
             spans.push(Span::styled(
-                format!("{:<10}", truncate(&f.num(value), 10)),
+                format!("{:<11}", truncate(&f.num(value), 11)),
                 style,
             ));
         }
