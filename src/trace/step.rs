@@ -128,8 +128,18 @@ impl StepTrace {
             .collect()
     }
 
-    /// The contacts for a picture (bodies by world index), penetration at stop `t`.
+    /// The contacts for a picture (bodies by world index), penetration at
+    /// stop `t`; the contact the velocity iteration just before `t` took
+    /// carries the impulse it applied.
     pub fn contact_views(&self, t: usize) -> Vec<ContactView> {
+        let stop = self.tables[t].stop;
+        let last = match stop.phase {
+            Phase::Velocity => stop
+                .iteration
+                .checked_sub(1)
+                .and_then(|i| self.resolver.velocity.log.get(i)),
+            Phase::Position => None,
+        };
         self.world
             .contacts
             .iter()
@@ -140,7 +150,9 @@ impl StepTrace {
                 point: c.input.point.into(),
                 normal: c.input.normal.into(),
                 penetration: self.tables[t].penetration.get(k).copied().unwrap_or(0.0),
-                impulse: None,
+                impulse: last
+                    .filter(|it| it.contact == k)
+                    .and_then(|it| it.impulse_world),
             })
             .collect()
     }

@@ -171,6 +171,19 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
             let tip = [q[0] + d[0] * 0.08 * extent, q[1] + d[1] * 0.08 * extent];
             segs.push((q, tip, t.ink(Ink::Normal)));
         }
+        if let Some(g) = c.impulse {
+            // The impulse the last iteration applied to body 1, its direction.
+            let g = flat(plane, g);
+            let len = g[0].hypot(g[1]);
+            if len > 0.0 && len.is_finite() {
+                let tip = [
+                    q[0] + g[0] / len * 0.15 * extent,
+                    q[1] + g[1] / len * 0.15 * extent,
+                ];
+                segs.push((q, tip, t.ink(Ink::Impulse)));
+                labels.push((tip, "g".into(), t.ink_style(Ink::Impulse)));
+            }
+        }
         if scene.toggles.contacts || chosen || next {
             let style = if next {
                 t.ink_style(Ink::Impulse)
