@@ -401,3 +401,66 @@ fn an_edit_on_a_scenes_contact_computes_the_run_again_from_that_step() {
     assert!(status.contains("the run is unchanged"), "{status}");
     assert_eq!(a.run.as_ref().unwrap().player.computed(), 40);
 }
+
+/// The cell where `text` starts on the screen.
+fn find(buf: &Buffer, text: &str) -> (u16, u16) {
+    for y in 0..buf.area.height {
+        let row: Vec<&str> = (0..buf.area.width).map(|x| buf[(x, y)].symbol()).collect();
+        let line = row.concat();
+        if let Some(at) = line.find(text) {
+            // Cells up to the byte offset (symbols may be wider than a byte).
+            let mut bytes = 0;
+            for (x, s) in row.iter().enumerate() {
+                if bytes == at {
+                    return (x as u16, y);
+                }
+                bytes += s.len();
+            }
+        }
+    }
+    panic!("{text} not on screen:\n{}", self::text(buf))
+}
+
+#[test]
+fn highlighting_marks_the_next_contact_the_changes_and_sleeping_bodies() {
+    use ratatui::style::{Color, Modifier};
+    let mut a = open("box-four-corners");
+    key(&mut a, KeyCode::Right);
+    let mut t = term(100, 30);
+    draw(&mut t, &a);
+    let r = a.resolver.as_ref().unwrap();
+    let table = r.trace.tables[1].clone();
+    let buf = t.backend().buffer();
+    // The contact the next iteration takes: ▶ in the impulse's red.
+    let next = table.next.expect("an iteration follows");
+    let label = &r.trace.names.contacts[next];
+    let (x, y) = find(
+        buf,
+        &format!("▶ {}", &label[..label.find(':').unwrap() + 1]),
+    );
+    assert_eq!(buf[(x, y)].fg, Color::Red);
+    // A value the last iteration changed, and its change, highlighted.
+    let (k, from, to) = table.changed[0];
+    let f = contact_lab::format::Fmt::new(4);
+    let row = find(buf, &format!("{}: ", k)).1;
+    let (x, y) = find(buf, &f.num(to - from).to_string());
+    assert_eq!(y, row);
+    assert_eq!(buf[(x, y)].fg, Color::Yellow);
+    assert!(buf[(x, y)].modifier.contains(Modifier::UNDERLINED));
+    // Sleeping bodies: dimmed and named so.
+    let mut a = open("stack-5");
+    keys(&mut a, KeyCode::Char('f'), 3);
+    key(&mut a, KeyCode::Char('n'));
+    draw(&mut t, &a);
+    let buf = t.backend().buffer();
+    let (x, y) = find(buf, "box1 (asleep)");
+    assert_eq!(buf[(x, y)].fg, Color::DarkGray);
+    let (x, y) = find(buf, "box5");
+    assert_eq!(buf[(x, y)].fg, Color::White);
+    key(&mut a, KeyCode::Char('s'));
+    draw(&mut t, &a);
+    assert!(
+        !text(t.backend().buffer()).contains("(asleep)"),
+        "s hides the sleep state"
+    );
+}

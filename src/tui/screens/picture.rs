@@ -105,8 +105,9 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
     let b = fit(bounds(&all, plane), inner.width, inner.height);
     app.targets.bounds.set(b);
     let extent = (b[1] - b[0]).max(b[3] - b[2]);
+    let asleep = |i: usize| scene.toggles.sleep && scene.asleep.get(i).copied().unwrap_or(false);
     let body_ink = |i: usize| {
-        if scene.toggles.sleep && scene.asleep.get(i).copied().unwrap_or(false) {
+        if asleep(i) && t.color {
             Color::DarkGray
         } else {
             t.ink(Ink::Body)
@@ -155,7 +156,12 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
                 let c = flat(plane, v.position);
                 points.push((c, Pick::Body(i)));
                 if scene.toggles.names && v.movable {
-                    labels.push((c, v.name.clone(), Style::new().fg(body_ink(i))));
+                    let name = if asleep(i) {
+                        format!("{} (asleep)", v.name)
+                    } else {
+                        v.name.clone()
+                    };
+                    labels.push((c, name, Style::new().fg(body_ink(i))));
                 }
             }
             None => {}
