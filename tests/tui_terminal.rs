@@ -144,3 +144,68 @@ fn sighup_restores_the_terminal() {
         assert_restored(&text, "SIGHUP", 1);
     }
 }
+
+/// The state letter of process `pid` (`None` once it is gone; `Z` a zombie
+/// nobody has reaped yet, which has ended too).
+fn state(pid: &str) -> Option<char> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    stat.rsplit(')').next()?.trim().chars().next()
+}
+
+#[test]
+fn a_terminal_that_hangs_up_ends_the_app() {
+    if Command::new("script").arg("--version").output().is_err() {
+        println!("skipped: `script` (util-linux) is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let pidfile = dir.path().join("app.pid");
+    let bin = env!("CARGO_BIN_EXE_contact-lab");
+    // The app is the terminal's session leader; killing `script` closes the
+    // terminal under it (the kernel sends SIGHUP), as closing a window does.
+    let mut script = Command::new("script")
+        .args([
+            "-q",
+            "-e",
+            "-c",
+            &format!(
+                "stty cols 100 rows 30; echo $$ > {}; exec {bin} tui stack-5",
+                pidfile.display()
+            ),
+            "/dev/null",
+        ])
+        .env("TERM", "xterm-256color")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("script runs");
+    let mut pid = String::new();
+    for _ in 0..100 {
+        pid = std::fs::read_to_string(&pidfile)
+            .unwrap_or_default()
+            .trim()
+            .to_string();
+        if !pid.is_empty() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    assert!(!pid.is_empty(), "the app started");
+    std::thread::sleep(std::time::Duration::from_secs(1));
+    script.kill().unwrap();
+    let _ = script.wait();
+    // The app must end (a stuck terminal read once kept it spinning forever).
+    let mut ended = false;
+    for _ in 0..200 {
+        if matches!(state(&pid), None | Some('Z') | Some('X')) {
+            ended = true;
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    if !ended {
+        let _ = Command::new("kill").args(["-KILL", &pid]).status();
+    }
+    assert!(ended, "the app ended after its terminal hung up");
+}

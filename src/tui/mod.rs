@@ -89,6 +89,7 @@ pub fn open<N: AsRef<OsStr> + ?Sized>(
 /// the terminal, then dies of the same signal, as its parent expects).
 pub fn run(mut app: App) -> Result<(), AppError> {
     let signal = signals::watch()?;
+    signals::watchdog(std::sync::Arc::clone(&signal));
     let mut terminal = ratatui::try_init().map_err(|e| {
         // Raw mode may be on although the alternate screen failed.
         ratatui::restore();
@@ -168,6 +169,21 @@ mod signals {
     #[cfg(not(unix))]
     pub fn watch() -> Result<Arc<AtomicUsize>, AppError> {
         Ok(Arc::new(AtomicUsize::new(0)))
+    }
+
+    /// A signalled app whose loop does not end is ended anyway: a second
+    /// after the signal this thread ends the process by it. (A terminal that
+    /// hung up keeps the terminal library reading end-of-file, holding its
+    /// locks, and never returns to the loop; such a terminal is gone, so
+    /// there is nothing to restore.)
+    pub fn watchdog(flag: Arc<AtomicUsize>) {
+        std::thread::spawn(move || loop {
+            std::thread::sleep(std::time::Duration::from_millis(100));
+            if flag.load(Ordering::Relaxed) != 0 {
+                std::thread::sleep(std::time::Duration::from_secs(1));
+                end_if_signalled(&flag);
+            }
+        });
     }
 
     /// After the terminal is restored: end the process by the signal that
