@@ -158,3 +158,38 @@ fn tables_follow_the_log_stop_by_stop() {
     }
     assert_eq!(at.contacts.len(), lesson.contacts.len());
 }
+
+#[test]
+fn a_warm_started_step_is_recorded_as_the_run_took_it() {
+    // Sequential impulses start from last step's impulses: the recording
+    // must start from the same warm-started resolver, not a fresh one.
+    let flags = [
+        "--solver",
+        "sequential_impulse",
+        "--warm-start",
+        "--format",
+        "json",
+    ];
+    let mut args = vec!["simulate", "stack-5", "--trace-step", "40"];
+    args.extend(flags);
+    let out = contact_lab(&args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let j: J = serde_json::from_slice(&out.stdout).unwrap();
+    let mut args = vec!["simulate", "stack-5", "--steps", "40"];
+    args.extend(flags);
+    let r: J = serde_json::from_slice(&contact_lab(&args).stdout).unwrap();
+    let row = r["steps"].as_array().unwrap().last().unwrap().clone();
+    assert_eq!(row["step"], 40);
+    // The bodies after both phases are the run's velocities after step 40.
+    for (name, body) in row["bodies"].as_object().unwrap() {
+        assert_eq!(
+            j["after"][name]["velocity"], body["velocity"],
+            "{name}: the recorded resolution ends where the run's did"
+        );
+    }
+}

@@ -16,7 +16,7 @@ use crate::physics::resolver::{
     ResolverContact, VelocityImpulse,
 };
 use crate::physics::stages::FrictionRegime;
-use crate::physics::{ResolverParams, RestitutionFrom, World};
+use crate::physics::{ResolverParams, RestitutionFrom, Solver, World};
 
 /// One contact's bookkeeping at a moment (before or after the phases).
 #[derive(Debug, Clone, PartialEq)]
@@ -97,6 +97,8 @@ pub struct PhaseTrace {
     /// Iterations that made at least one other contact worse.
     pub worsening_iterations: usize,
     pub log: Vec<Iteration>,
+    /// The solver that ran the phase (iterations are contact visits for both).
+    pub solver: Solver,
 }
 
 /// The worked resolution of a whole scene.
@@ -281,7 +283,7 @@ fn rows(names: &Names, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
         .collect()
 }
 
-fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>) -> PhaseTrace {
+fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>, solver: Solver) -> PhaseTrace {
     let worsening_iterations = log
         .iter()
         .filter(|it| it.updated.iter().any(Update::worse))
@@ -297,6 +299,7 @@ fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>) -> PhaseTrace {
         limit_reached: outcome.limit_reached,
         worsening_iterations,
         log,
+        solver,
     }
 }
 
@@ -324,7 +327,29 @@ pub fn describe_world(
     record: bool,
     bodies: bool,
 ) -> (ResolverTrace, [Vec<Vec<ResolverBody<f64>>>; 2]) {
-    let mut resolver = Resolver::prepare(world, params);
+    let resolver = Resolver::prepare(world, params);
+    describe_prepared(
+        world,
+        resolver,
+        names,
+        params,
+        implementation,
+        record,
+        bodies,
+    )
+}
+
+/// As [`describe_world`], from `resolver` as prepared for `world` (a time
+/// step's, warm-started where it is).
+pub fn describe_prepared(
+    world: &World<f64>,
+    mut resolver: Resolver<f64>,
+    names: &Names,
+    params: &ResolverParams,
+    implementation: Implementation,
+    record: bool,
+    bodies: bool,
+) -> (ResolverTrace, [Vec<Vec<ResolverBody<f64>>>; 2]) {
     let before = rows(names, &resolver.contacts);
     let mut recorder = Recorder::named(&names.bodies, &resolver);
     recorder.keep_bodies = bodies;
@@ -357,8 +382,8 @@ pub fn describe_world(
         implementation,
         restitution_from: params.restitution_from,
         before,
-        position: phase_trace(&position, position_log),
-        velocity: phase_trace(&velocity, velocity_log),
+        position: phase_trace(&position, position_log, params.solver),
+        velocity: phase_trace(&velocity, velocity_log, params.solver),
         contacts_after: rows(names, &resolver.contacts),
         after: after(&names.bodies, &resolver.bodies),
         verdicts: verdicts(&names.bodies, &checks, &position, &velocity),

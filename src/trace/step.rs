@@ -3,10 +3,10 @@
 //! lesson's contacts), the bodies as each iteration finds them, and the
 //! contact table (penetration, desired Δv) at every stop of both phases.
 
-use super::resolver::{describe_world, Names, ResolverTrace};
+use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
 use super::{BodyView, ContactView};
 use crate::lesson::{ContactDef, Lesson, Settings};
-use crate::physics::resolver::{Implementation, Observer, Phase, ResolverBody};
+use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
 use crate::physics::step::{BlowUp, Simulation};
 use crate::physics::World;
 
@@ -50,16 +50,21 @@ pub struct StepTrace {
 }
 
 impl StepTrace {
-    /// Resolves `world` (indexed, as a time step does) and records every stop.
+    /// Resolves `world` and records every stop; from `prepared` when given
+    /// (a time step's resolver, warm-started where it is).
     pub fn of_world(
         world: World<f64>,
+        prepared: Option<Resolver<f64>>,
         names: Names,
         params: &crate::physics::ResolverParams,
         implementation: Implementation,
         step: u64,
         time: f64,
     ) -> StepTrace {
-        let (resolver, bodies) = describe_world(&world, &names, params, implementation, true, true);
+        let (resolver, bodies) = match prepared {
+            Some(r) => describe_prepared(&world, r, &names, params, implementation, true, true),
+            None => describe_world(&world, &names, params, implementation, true, true),
+        };
         let tables = tables(&resolver);
         StepTrace {
             step,
@@ -76,6 +81,7 @@ impl StepTrace {
     pub fn of_lesson(lesson: &Lesson) -> StepTrace {
         StepTrace::of_world(
             lesson.world(),
+            None,
             Names::of_lesson(lesson),
             &lesson.resolver,
             Implementation::Indexed,
@@ -263,13 +269,14 @@ fn tables(trace: &ResolverTrace) -> Vec<Table> {
     out
 }
 
-/// Keeps a copy of the world a time step hands the resolver.
+/// Keeps a copy of the world a time step hands the resolver, and of the
+/// resolver as prepared for it.
 #[derive(Default)]
-struct Grab(Option<World<f64>>);
+struct Grab(Option<(World<f64>, Resolver<f64>)>);
 
 impl Observer<f64> for Grab {
-    fn resolving(&mut self, world: &World<f64>) {
-        self.0 = Some(world.clone());
+    fn resolving(&mut self, world: &World<f64>, resolver: &Resolver<f64>) {
+        self.0 = Some((world.clone(), resolver.clone()));
     }
 }
 
@@ -278,7 +285,10 @@ impl Observer<f64> for Grab {
 pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
     let mut grab = Grab::default();
     sim.advance_observed(&mut grab)?;
-    let world = grab.0.unwrap_or_else(|| sim.world.clone());
+    let (world, prepared) = match grab.0 {
+        Some((w, r)) => (w, Some(r)),
+        None => (sim.world.clone(), None),
+    };
     let mut names = names.clone();
     names.contacts = world
         .contacts
@@ -289,6 +299,7 @@ pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace
     let params = sim.params.resolver;
     Ok(StepTrace::of_world(
         world,
+        prepared,
         names,
         &params,
         Implementation::Indexed,

@@ -52,7 +52,7 @@ impl Default for Toggles {
 }
 
 /// Which events `n` / `N` jump to.
-pub const EVENT_KINDS: [&str; 5] = ["any", "bounce", "contact", "sleep", "limit"];
+pub const EVENT_KINDS: [&str; 6] = ["any", "bounce", "contact", "sleep", "limit", "energy"];
 
 /// A scene's run on the run screen.
 #[derive(Debug, Clone)]
@@ -112,7 +112,10 @@ pub const RUN_KEYS: &[(&str, &str)] = &[
     ("Home g / End G", "restart at step 0 / last step computed"),
     ("+ / -", "speed ¼× … 4×"),
     ("n / N", "next / previous event (of the kind f chooses)"),
-    ("f", "events to jump to: any, bounce, contact, sleep, limit"),
+    (
+        "f",
+        "events to jump to: any, bounce, contact, sleep, limit, energy",
+    ),
     ("Enter", "this step's resolver iterations"),
     (
         "c o s b",
