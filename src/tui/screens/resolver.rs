@@ -182,11 +182,15 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     match phase.log.get(stop.iteration) {
         Some(it) => lines.push(Line::styled(
             format!(
-                "Next: {name} iteration {} takes contact {} at {what} {} (the largest above ε = {}).",
+                "Next: {name} iteration {} takes contact {} at {what} {} ({}).",
                 it.iteration,
                 it.contact,
                 f.num(it.value),
-                f.num(phase.epsilon)
+                match phase.solver {
+                    crate::physics::Solver::SequentialImpulse =>
+                        "sequential impulses visit the contacts in turn".to_string(),
+                    _ => format!("the largest above ε = {}", f.num(phase.epsilon)),
+                }
             ),
             t.title(),
         )),
