@@ -1,6 +1,8 @@
 //! Time from a key press to a redrawn frame: the key's update (solving the
 //! contact again where the key changes it) plus drawing the whole screen into
-//! a `TestBackend` buffer. One 60 Hz frame is 16.7 ms.
+//! a `TestBackend` buffer. One 60 Hz frame is 16.7 ms; playback must advance
+//! a step and redraw the run screen in under 5 ms. Also: opening a frame's
+//! resolver screen (recording that step again from the nearest checkpoint).
 
 use contact_lab::tui::{self, App, Theme};
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
@@ -84,5 +86,45 @@ fn benches(c: &mut Criterion) {
     );
 }
 
-criterion_group!(tui_benches, benches);
+/// stack-5 on its run screen, `steps` steps played (all of them computed).
+fn played(steps: usize) -> App {
+    let mut a = tui::open(Some("stack-5"), None).unwrap();
+    a.theme = Theme { color: true };
+    for _ in 0..steps {
+        press(&mut a, KeyCode::Right);
+    }
+    a
+}
+
+fn scenes(c: &mut Criterion) {
+    // → on the last computed frame computes the next step, then the redraw.
+    for size in [(100, 30), (200, 60)] {
+        key_to_frame(
+            c,
+            &format!(
+                "run screen: advance one step + redraw (stack-5 at step 90, {}×{})",
+                size.0, size.1
+            ),
+            played(90),
+            KeyCode::Right,
+            size,
+        );
+    }
+    // Enter on a frame: record its step again from the nearest checkpoint
+    // and draw it. The best case replays no step; the worst CHECKPOINT − 1.
+    let k = contact_lab::trace::player::CHECKPOINT as usize;
+    for (step, replayed) in [(12 * k + 1, 0), (16 * k, k - 1)] {
+        key_to_frame(
+            c,
+            &format!(
+                "open a frame's resolver screen (stack-5 step {step}, {replayed} steps replayed, 100×30)"
+            ),
+            played(step),
+            KeyCode::Enter,
+            (100, 30),
+        );
+    }
+}
+
+criterion_group!(tui_benches, benches, scenes);
 criterion_main!(tui_benches);

@@ -59,9 +59,10 @@ pub enum Command {
 pub struct TuiArgs {
     /// Embedded lesson id or path to a lesson file to open (default: lecture-2).
     pub lesson: Option<std::ffi::OsString>,
-    /// Which contact of the lesson to open (0-based).
-    #[arg(long, short, default_value_t = 0)]
-    pub contact: usize,
+    /// Which contact of the lesson to open (0-based); without it a lesson
+    /// with several contacts opens on its resolver iterations, a scene on its run.
+    #[arg(long, short)]
+    pub contact: Option<usize>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -410,6 +411,9 @@ pub struct SimulateArgs {
     /// Closing speed below which restitution is 0 (0 switches it off).
     #[arg(long, allow_negative_numbers = true)]
     pub velocity_limit: Option<f64>,
+    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    pub trace_step: Option<u64>,
     #[command(flatten)]
     pub resolver: ResolverArgs,
 }

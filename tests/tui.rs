@@ -357,8 +357,11 @@ fn keys_move_between_lessons_contacts_and_stages() {
     key(&mut a, KeyCode::Up);
     assert_eq!(a.trace.lesson, "lecture-1");
     key(&mut a, KeyCode::Up);
-    let last = *contact_lab::lesson::embedded::ids().last().unwrap();
-    assert_eq!(a.trace.lesson, last, "wraps around");
+    // The list holds the lessons, then the scenes: wrapping around opens the
+    // last scene on its run.
+    let last = *contact_lab::lesson::embedded::scene_ids().last().unwrap();
+    assert_eq!(a.entry().lesson.id, last, "wraps around");
+    assert_eq!(a.screen, contact_lab::tui::screens::Screen::Run);
     let mut a = app("spinning-ball", true);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Tab);
@@ -465,7 +468,7 @@ fn readme_lists_every_tui_key() {
 
 #[test]
 fn predict_mode_hides_the_narrative_that_quotes_results() {
-    let mut app = tui::open(Some("lecture-2"), 0).unwrap();
+    let mut app = tui::open(Some("lecture-2"), None).unwrap();
     let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap();
     terminal.draw(|f| f.render_widget(&app, f.area())).unwrap();
     assert!(buffer_text(terminal.backend().buffer()).contains("(18.73)"));

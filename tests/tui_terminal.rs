@@ -3,7 +3,7 @@
 //! panics after its first frame when CONTACT_LAB_TEST_PANIC is set; the
 //! signals are sent by the shell; `script` gives the app a terminal, and
 //! `stty -a` run afterwards in the same terminal shows whether raw mode was
-//! undone.
+//! undone, and the escape codes whether mouse reports were switched off.
 
 use std::process::Command;
 
@@ -57,12 +57,24 @@ fn a_panic_inside_the_app_restores_the_terminal() {
         stty.contains(" echo ") && !stty.contains("-echo "),
         "echo restored:\n{stty}"
     );
+    assert_mouse_off(&text, "panic");
+}
+
+/// Mouse reports (`?1000h`) were switched on, and off (`?1000l`) after.
+fn assert_mouse_off(text: &str, case: &str) {
+    let on = text
+        .find("\x1b[?1000h")
+        .unwrap_or_else(|| panic!("{case}: mouse reports switched on"));
+    let off = text
+        .rfind("\x1b[?1000l")
+        .unwrap_or_else(|| panic!("{case}: mouse reports switched off"));
+    assert!(off > on, "{case}: switched off after on");
 }
 
 /// The app in a pseudo-terminal, sent `signal` a second after it starts;
 /// returns everything the terminal showed (the app's output, the exit
 /// status the shell saw, then `stty -a`).
-fn run_and_signal(signal: &str) -> Option<String> {
+fn run_and_signal(signal: &str, lesson: &str) -> Option<String> {
     if Command::new("script").arg("--version").output().is_err() {
         println!("skipped: `script` (util-linux) is not installed");
         return None;
@@ -70,7 +82,7 @@ fn run_and_signal(signal: &str) -> Option<String> {
     let bin = env!("CARGO_BIN_EXE_contact-lab");
     // In `sh -c` a background job's stdin is /dev/null unless redirected.
     let shell = format!(
-        "{bin} tui lecture-2 </dev/tty & pid=$!; sleep 1; kill -{signal} $pid; wait $pid; echo \"status=$?\"; stty -a"
+        "stty cols 100 rows 30; {bin} tui {lesson} </dev/tty & pid=$!; sleep 1; kill -{signal} $pid; wait $pid; echo \"status=$?\"; stty -a"
     );
     let out = Command::new("script")
         .args(["-q", "-e", "-c", &shell, "/dev/null"])
@@ -105,18 +117,95 @@ fn assert_restored(text: &str, signal: &str, number: i32) {
         stty.contains(" echo ") && !stty.contains("-echo "),
         "{signal}: echo restored:\n{stty}"
     );
+    assert_mouse_off(text, signal);
 }
 
 #[test]
 fn sigterm_restores_the_terminal() {
-    if let Some(text) = run_and_signal("TERM") {
+    if let Some(text) = run_and_signal("TERM", "lecture-2") {
+        assert_restored(&text, "SIGTERM", 15);
+    }
+}
+
+#[test]
+fn sigterm_on_a_scenes_run_restores_the_terminal() {
+    if let Some(text) = run_and_signal("TERM", "stack-5") {
+        assert!(
+            text.contains("stack-5") && text.contains("paused"),
+            "the run screen showed"
+        );
         assert_restored(&text, "SIGTERM", 15);
     }
 }
 
 #[test]
 fn sighup_restores_the_terminal() {
-    if let Some(text) = run_and_signal("HUP") {
+    if let Some(text) = run_and_signal("HUP", "lecture-2") {
         assert_restored(&text, "SIGHUP", 1);
     }
+}
+
+/// The state letter of process `pid` (`None` once it is gone; `Z` a zombie
+/// nobody has reaped yet, which has ended too).
+fn state(pid: &str) -> Option<char> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    stat.rsplit(')').next()?.trim().chars().next()
+}
+
+#[test]
+fn a_terminal_that_hangs_up_ends_the_app() {
+    if Command::new("script").arg("--version").output().is_err() {
+        println!("skipped: `script` (util-linux) is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let pidfile = dir.path().join("app.pid");
+    let bin = env!("CARGO_BIN_EXE_contact-lab");
+    // The app is the terminal's session leader; killing `script` closes the
+    // terminal under it (the kernel sends SIGHUP), as closing a window does.
+    let mut script = Command::new("script")
+        .args([
+            "-q",
+            "-e",
+            "-c",
+            &format!(
+                "stty cols 100 rows 30; echo $$ > {}; exec {bin} tui stack-5",
+                pidfile.display()
+            ),
+            "/dev/null",
+        ])
+        .env("TERM", "xterm-256color")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("script runs");
+    let mut pid = String::new();
+    for _ in 0..100 {
+        pid = std::fs::read_to_string(&pidfile)
+            .unwrap_or_default()
+            .trim()
+            .to_string();
+        if !pid.is_empty() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    assert!(!pid.is_empty(), "the app started");
+    std::thread::sleep(std::time::Duration::from_secs(1));
+    script.kill().unwrap();
+    let _ = script.wait();
+    // The app must end (a stuck terminal read once kept it spinning forever).
+    let mut ended = false;
+    for _ in 0..200 {
+        if matches!(state(&pid), None | Some('Z') | Some('X')) {
+            ended = true;
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    if !ended {
+        let _ = Command::new("kill").args(["-KILL", &pid]).status();
+    }
+    assert!(ended, "the app ended after its terminal hung up");
 }

@@ -20,7 +20,7 @@ use crate::physics::{FrictionModel, ProjectionMethod};
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     match cli.command {
-        None if interactive() => crate::tui::run(crate::tui::open(None::<&std::ffi::OsStr>, 0)?),
+        None if interactive() => crate::tui::run(crate::tui::open(None::<&std::ffi::OsStr>, None)?),
         None => list::welcome(out),
         Some(Command::Tui(args)) => {
             let app = crate::tui::open(args.lesson.as_deref(), args.contact)?;

@@ -26,6 +26,9 @@ pub fn simulate(
     let lesson = Lesson::load(&args.lesson)?;
     warn(&lesson, err);
     let (mut sim, steps) = simulation(&lesson, args)?;
+    if let Some(n) = args.trace_step {
+        return trace_step(&lesson, args, sim, steps, n, out);
+    }
     let names = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let mut trace = RunTrace::new(&lesson.id, &lesson.title, names, &sim);
     trace.frames.push(RunTrace::initial(&sim));
@@ -37,16 +40,7 @@ pub fn simulate(
                     trace.frames.push(RunTrace::frame(&sim, &report));
                 }
             }
-            Err(blow_up) => {
-                let body = match &blow_up {
-                    crate::physics::step::BlowUp::NonFinite { body, .. }
-                    | crate::physics::step::BlowUp::Energy { body, .. } => *body,
-                };
-                return Err(AppError::Runtime(format!(
-                    "{}: the scene blew up: {blow_up} (body '{}'); try a smaller --dt or more iterations",
-                    lesson.id, lesson.bodies[body].name
-                )));
-            }
+            Err(blow_up) => return Err(blew_up(&lesson, &blow_up)),
         }
     }
     let text = match args.format {
@@ -58,6 +52,60 @@ pub fn simulate(
             s
         }
         RunFormat::Svg => run::svg(&trace, plane(args.plane)),
+    };
+    out.write_all(text.as_bytes()).map_err(io)
+}
+
+fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
+    let names = crate::trace::resolver::Names::of_lesson(lesson);
+    AppError::Runtime(format!(
+        "{}: {}; try a smaller --dt or more iterations",
+        lesson.id,
+        crate::trace::player::blew_up(&names, e)
+    ))
+}
+
+/// `--trace-step N`: the run up to step N − 1 unrecorded, then step N's
+/// resolution recorded and printed as `resolve` prints a lesson's.
+fn trace_step(
+    lesson: &Lesson,
+    args: &SimulateArgs,
+    mut sim: Simulation<f64>,
+    steps: u64,
+    n: u64,
+    out: &mut dyn Write,
+) -> Result<(), AppError> {
+    if n > steps {
+        return Err(AppError::Usage(format!(
+            "--trace-step {n}: the run has {steps} step(s), numbered from 1"
+        )));
+    }
+    for _ in 1..n {
+        sim.advance().map_err(|e| blew_up(lesson, &e))?;
+    }
+    let names = crate::trace::resolver::Names::of_lesson(lesson);
+    let step =
+        crate::trace::step::record_next(&mut sim, &names).map_err(|e| blew_up(lesson, &e))?;
+    let fmt = Fmt::new(args.digits as usize);
+    let text = match args.format {
+        RunFormat::Text => {
+            let head = format!(
+                "Step {n} (t = {} s): the resolution of its {} contact(s).\n\n",
+                fmt.num(step.time),
+                step.world.contacts.len()
+            );
+            head + &crate::render::resolve::text::render(&step.resolver, &fmt)
+        }
+        RunFormat::Json => crate::render::resolve::json::render(
+            &step.resolver,
+            &crate::render::resolve::Seconds::default(),
+            true,
+        ),
+        RunFormat::Svg => {
+            return Err(AppError::Usage(
+                "--trace-step prints text or json, not svg".into(),
+            ))
+        }
     };
     out.write_all(text.as_bytes()).map_err(io)
 }

@@ -11,11 +11,14 @@
 mod acceleration;
 pub mod contact;
 pub mod latex;
+mod names;
 mod plane;
+pub mod player;
 pub mod resolver;
 pub mod run;
 mod scene;
 mod stage_names;
+pub mod step;
 mod worked;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};

@@ -2,10 +2,12 @@
 //! together. A [`Recorder`] (a resolver observer) keeps each iteration — the
 //! contact taken, its penetration or desired Δv, the moves or the impulse,
 //! every other contact it changed from → to — and [`describe`] turns the
-//! resolver's records into the trace the renderers read.
+//! resolver's records into the trace the renderers read. [`describe_world`]
+//! does the same for any world with its [`Names`] (one step of a run).
 
 use nalgebra::Vector3;
 
+pub use super::names::Names;
 use super::{AfterState, Verdict};
 use crate::lesson::Lesson;
 use crate::physics::resolver::checks::{scene_checks, SceneChecks};
@@ -126,20 +128,35 @@ pub struct Recorder {
     position: Vec<Iteration>,
     velocity: Vec<Iteration>,
     phase: Option<Phase>,
+    /// When kept: the resolver's bodies before each iteration, per phase.
+    keep_bodies: bool,
+    pub(crate) bodies: [Vec<Vec<ResolverBody<f64>>>; 2],
 }
 
 impl Recorder {
     /// A recorder for `resolver`'s bodies, named from `lesson`.
     pub fn new(lesson: &Lesson, resolver: &Resolver<f64>) -> Self {
+        let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
+        Recorder::named(&names, resolver)
+    }
+
+    /// A recorder for `resolver`'s bodies, named by world body index.
+    pub fn named(names: &[String], resolver: &Resolver<f64>) -> Self {
         let names = resolver
             .bodies
             .iter()
-            .map(|b| lesson.bodies[b.id.0].name.clone())
+            .map(|b| names.get(b.id.0).cloned().unwrap_or_default())
             .collect();
         Recorder {
             names,
             ..Recorder::default()
         }
+    }
+
+    /// Also keep the bodies as each iteration finds them.
+    pub fn keeping_bodies(mut self) -> Self {
+        self.keep_bodies = true;
+        self
     }
 
     fn current(&mut self) -> Option<&mut Iteration> {
@@ -183,6 +200,18 @@ fn arr(v: &Vector3<f64>) -> [f64; 3] {
 }
 
 impl Observer<f64> for Recorder {
+    fn before_position(&mut self, _i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
+        if self.keep_bodies {
+            self.bodies[0].push(bodies.to_vec());
+        }
+    }
+
+    fn before_velocity(&mut self, _i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
+        if self.keep_bodies {
+            self.bodies[1].push(bodies.to_vec());
+        }
+    }
+
     fn position_taken(&mut self, i: usize, k: usize, penetration: f64, moves: &PositionMoves<f64>) {
         self.phase = Some(Phase::Position);
         let mut it = Recorder::iteration(i, k, penetration);
@@ -237,12 +266,16 @@ fn sort_updates(log: &mut [Iteration]) {
     }
 }
 
-fn rows(lesson: &Lesson, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
+fn rows(names: &Names, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
     contacts
         .iter()
         .enumerate()
         .map(|(k, c)| ContactRow {
-            label: lesson.contact_label(k),
+            label: names
+                .contacts
+                .get(k)
+                .cloned()
+                .unwrap_or_else(|| k.to_string()),
             penetration: c.penetration,
             separating: c.velocity.x,
             desired: c.desired,
@@ -279,9 +312,47 @@ pub fn describe(
     record: bool,
 ) -> ResolverTrace {
     let world: World<f64> = lesson.world();
-    let mut resolver = Resolver::prepare(&world, params);
-    let before = rows(lesson, &resolver.contacts);
-    let mut recorder = Recorder::new(lesson, &resolver);
+    let names = Names::of_lesson(lesson);
+    describe_world(&world, &names, params, implementation, record, false).0
+}
+
+/// Resolves `world`'s contacts together and describes it with `names`; with
+/// `record` the iterations are kept, with `bodies` also the resolver's
+/// bodies before each iteration (position phase, velocity phase).
+pub fn describe_world(
+    world: &World<f64>,
+    names: &Names,
+    params: &ResolverParams,
+    implementation: Implementation,
+    record: bool,
+    bodies: bool,
+) -> (ResolverTrace, [Vec<Vec<ResolverBody<f64>>>; 2]) {
+    let resolver = Resolver::prepare(world, params);
+    describe_prepared(
+        world,
+        resolver,
+        names,
+        params,
+        implementation,
+        record,
+        bodies,
+    )
+}
+
+/// As [`describe_world`], from `resolver` as prepared for `world` (a time
+/// step's, warm-started where it is).
+pub fn describe_prepared(
+    world: &World<f64>,
+    mut resolver: Resolver<f64>,
+    names: &Names,
+    params: &ResolverParams,
+    implementation: Implementation,
+    record: bool,
+    bodies: bool,
+) -> (ResolverTrace, [Vec<Vec<ResolverBody<f64>>>; 2]) {
+    let before = rows(names, &resolver.contacts);
+    let mut recorder = Recorder::named(&names.bodies, &resolver);
+    recorder.keep_bodies = bodies;
     let [position, velocity] = if record {
         [
             resolver.position_phase(implementation, &mut recorder),
@@ -298,32 +369,38 @@ pub fn describe(
     let mut velocity_log = std::mem::take(&mut recorder.velocity);
     sort_updates(&mut position_log);
     sort_updates(&mut velocity_log);
-    let checks = scene_checks(&world, &resolver);
-    ResolverTrace {
-        lesson: lesson.id.clone(),
-        title: lesson.title.clone(),
-        source: lesson.source.clone(),
-        summary: lesson.summary.clone(),
+    if bodies {
+        // The bodies after both phases close the velocity list.
+        recorder.bodies[1].push(resolver.bodies.clone());
+    }
+    let checks = scene_checks(world, &resolver);
+    let trace = ResolverTrace {
+        lesson: names.lesson.clone(),
+        title: names.title.clone(),
+        source: names.source.clone(),
+        summary: names.summary.clone(),
         implementation,
         restitution_from: params.restitution_from,
         before,
         position: phase_trace(&position, position_log, params.solver),
         velocity: phase_trace(&velocity, velocity_log, params.solver),
-        contacts_after: rows(lesson, &resolver.contacts),
-        after: after(lesson, &resolver.bodies),
-        verdicts: verdicts(lesson, &checks, &position, &velocity),
-        warnings: lesson.warnings.iter().map(|w| w.to_string()).collect(),
-    }
+        contacts_after: rows(names, &resolver.contacts),
+        after: after(&names.bodies, &resolver.bodies),
+        verdicts: verdicts(&names.bodies, &checks, &position, &velocity),
+        warnings: names.warnings.clone(),
+    };
+    (trace, std::mem::take(&mut recorder.bodies))
 }
 
-/// Every movable body's state after both phases (orientation normalised).
-pub fn after(lesson: &Lesson, bodies: &[ResolverBody<f64>]) -> Vec<(String, AfterState)> {
+/// Every movable body's state after both phases (orientation normalised),
+/// named by world body index.
+pub fn after(names: &[String], bodies: &[ResolverBody<f64>]) -> Vec<(String, AfterState)> {
     bodies
         .iter()
         .map(|b| {
             let q = b.unit_orientation();
             (
-                lesson.bodies[b.id.0].name.clone(),
+                names.get(b.id.0).cloned().unwrap_or_default(),
                 AfterState {
                     position: arr(&b.position),
                     orientation: [q.w, q.i, q.j, q.k],
@@ -336,7 +413,7 @@ pub fn after(lesson: &Lesson, bodies: &[ResolverBody<f64>]) -> Vec<(String, Afte
 }
 
 fn verdicts(
-    lesson: &Lesson,
+    names: &[String],
     c: &SceneChecks<f64>,
     position: &PhaseOutcome<f64>,
     velocity: &PhaseOutcome<f64>,
@@ -354,7 +431,7 @@ fn verdicts(
         let names: Vec<&str> = c
             .free_bodies
             .iter()
-            .map(|b| lesson.bodies[b.0].name.as_str())
+            .map(|b| names.get(b.0).map_or("?", String::as_str))
             .collect();
         out.push(Verdict {
             label: "linear momentum".into(),

@@ -9,8 +9,9 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use super::event::{self, Action};
 use super::form::{Form, Outcome};
+use super::screens::{ResolverView, RunView, Screen, Targets};
 use super::theme::Theme;
-use super::write::{self, WriteError};
+use super::write;
 use crate::format::Fmt;
 use crate::lesson::{edit, Lesson};
 use crate::trace::{Trace, Value};
@@ -75,13 +76,26 @@ pub struct App {
     /// Where `w` writes.
     pub write_dir: PathBuf,
     pub quit: bool,
+    /// The screen on show: run, resolver or this contact stepper.
+    pub screen: Screen,
+    /// A scene's run (time), when the lesson has time settings.
+    pub run: Option<Box<RunView>>,
+    /// One resolution's iterations, when opened.
+    pub resolver: Option<Box<ResolverView>>,
+    /// The lesson the stepper shows when opened from a resolver iteration:
+    /// the bodies as that iteration finds them (the lesson list keeps its own).
+    pub opened: Option<Entry>,
+    /// Where things were drawn, for the mouse.
+    pub targets: Targets,
 }
 
 impl App {
-    /// Opens on `lessons[lesson]`, contact `contact` (both must exist).
+    /// Opens on `lessons[lesson]`, contact `contact` (both must exist); a
+    /// scene (a lesson with time settings) opens on its run instead.
     pub fn new(lessons: Vec<Lesson>, lesson: usize, contact: usize, theme: Theme) -> Self {
+        let scene = lessons.get(lesson).is_some_and(|l| l.simulation.is_some());
         assert!(
-            lesson < lessons.len() && contact < lessons[lesson].contacts.len(),
+            lesson < lessons.len() && (scene || contact < lessons[lesson].contacts.len()),
             "App::new: lesson {lesson} contact {contact} out of range"
         );
         let lessons: Vec<Entry> = lessons
@@ -92,7 +106,18 @@ impl App {
                 edits: vec![],
             })
             .collect();
-        let trace = crate::worked_solution(&lessons[lesson].lesson, contact);
+        // A scene has no contact of its own until one is opened: the stepper
+        // holds the first lesson with contacts meanwhile (never on show).
+        let shown = if scene {
+            lessons
+                .iter()
+                .position(|e| !e.lesson.contacts.is_empty())
+                .expect("an embedded lesson has contacts")
+        } else {
+            lesson
+        };
+        let contact = if scene { 0 } else { contact };
+        let trace = crate::worked_solution(&lessons[shown].lesson, contact);
         let mut app = App {
             lessons,
             lesson,
@@ -112,13 +137,29 @@ impl App {
             fmt: Fmt::new(6),
             write_dir: PathBuf::from("."),
             quit: false,
+            screen: Screen::Contact,
+            run: None,
+            resolver: None,
+            opened: None,
+            targets: Targets::default(),
         };
         app.plane = app.natural_plane();
+        if scene {
+            app.open_lesson_screen(false);
+        }
         app
     }
 
+    /// The lesson the stepper works on.
     pub fn entry(&self) -> &Entry {
-        &self.lessons[self.lesson]
+        self.opened.as_ref().unwrap_or(&self.lessons[self.lesson])
+    }
+
+    pub(super) fn entry_mut(&mut self) -> &mut Entry {
+        match &mut self.opened {
+            Some(e) => e,
+            None => &mut self.lessons[self.lesson],
+        }
     }
 
     pub fn pages(&self) -> usize {
@@ -131,7 +172,7 @@ impl App {
     }
 
     /// Solves the current contact again and keeps the place.
-    fn recompute(&mut self) {
+    pub(super) fn recompute(&mut self) {
         self.trace = crate::worked_solution(&self.entry().lesson, self.contact);
         self.page = self.page.min(self.pages() - 1);
         self.revealed = vec![0; self.trace.stages.len()];
@@ -139,7 +180,7 @@ impl App {
 
     /// The plane in which the scene moves: the one the velocities, normal and
     /// arms lie in, xy when they all do.
-    fn natural_plane(&self) -> Plane {
+    pub(super) fn natural_plane(&self) -> Plane {
         let s = &self.trace.scene;
         let mut weight = [0.0f64; 3];
         let mut add = |v: [f64; 3]| {
@@ -164,17 +205,26 @@ impl App {
         }
     }
 
-    fn goto_lesson(&mut self, i: usize) {
+    pub(super) fn goto_lesson(&mut self, i: usize) {
         self.lesson = i;
         self.contact = 0;
         self.page = 0;
         self.baseline = None;
         self.scroll = 0;
+        self.opened = None;
+        self.run = None;
+        self.resolver = None;
+        self.screen = Screen::Contact;
+        if self.lessons[i].lesson.simulation.is_some() {
+            self.open_lesson_screen(false);
+            return;
+        }
         self.recompute();
         self.plane = self.natural_plane();
+        self.open_lesson_screen(true);
     }
 
-    fn goto_contact(&mut self, k: usize) {
+    pub(super) fn goto_contact(&mut self, k: usize) {
         self.contact = k;
         self.baseline = None;
         self.scroll = 0;
@@ -247,6 +297,8 @@ impl App {
         }
         self.status = None;
         match std::mem::replace(&mut self.mode, Mode::Normal) {
+            Mode::Normal if self.screen != Screen::Contact => self.screen_key(key),
+            Mode::Normal if self.up_key(key) => {}
             Mode::Normal => {
                 if let Some(a) = event::action(key) {
                     self.update(a);
@@ -312,7 +364,7 @@ impl App {
                 self.mode = Mode::Edit(Form::new(fields));
             }
             Reset => {
-                let e = &mut self.lessons[self.lesson];
+                let e = self.entry_mut();
                 if e.edits.is_empty() {
                     self.say(
                         "nothing to reset: the lesson has its file's values".into(),
@@ -352,7 +404,7 @@ impl App {
         }
     }
 
-    fn say(&mut self, text: String, error: bool) {
+    pub(super) fn say(&mut self, text: String, error: bool) {
         self.status = Some(Status { text, error });
     }
 
@@ -369,71 +421,25 @@ impl App {
             Outcome::Close => {}
             Outcome::Set(i, text) => {
                 let field = form.fields[i].clone();
-                let entry = &mut self.lessons[self.lesson];
+                let before = self.trace.clone();
+                let entry = self.entry_mut();
+                let lesson_before = entry.lesson.clone();
                 match edit::set(&mut entry.lesson, k, &field, &text) {
                     Ok(said) => {
-                        let before = self.trace.clone();
                         entry.edits.push(said.clone());
                         self.recompute();
                         let changed = count_changed(&before, &self.trace);
                         self.baseline = Some(before);
                         form.input = None;
                         form.error = None;
-                        self.say(format!("{said}: {changed} values changed"), false);
+                        let run = self
+                            .scene_edited(&field, &lesson_before)
+                            .unwrap_or_default();
+                        self.say(format!("{said}: {changed} values changed{run}"), false);
                     }
                     Err(e) => form.error = Some(e),
                 }
                 self.mode = Mode::Edit(form);
-            }
-        }
-    }
-
-    fn write_key(&mut self, mut input: String, error: Option<String>, key: KeyEvent) {
-        match key.code {
-            KeyCode::Esc => self.say("not written".into(), false),
-            KeyCode::Enter if input.trim().is_empty() => {
-                self.mode = Mode::Write {
-                    input,
-                    error: Some("a file name, please".into()),
-                }
-            }
-            KeyCode::Enter => {
-                let path = self.write_dir.join(input.trim());
-                self.write_to(path, false)
-            }
-            code => {
-                match code {
-                    KeyCode::Backspace => {
-                        input.pop();
-                    }
-                    KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                        input.clear()
-                    }
-                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                        return self.say("not written".into(), false);
-                    }
-                    KeyCode::Char(c) if !c.is_control() => input.push(c),
-                    _ => {}
-                }
-                self.mode = Mode::Write { input, error };
-            }
-        }
-    }
-
-    fn write_to(&mut self, path: PathBuf, overwrite: bool) {
-        let text = write::markdown(&self.trace, &self.entry().edits, &self.fmt);
-        match write::write_atomic(&path, &text, overwrite) {
-            Ok(()) => self.say(format!("wrote {}", path.display()), false),
-            Err(WriteError::Exists(p)) => self.mode = Mode::Confirm(p),
-            Err(WriteError::Io(e)) => {
-                let input = path
-                    .file_name()
-                    .map(|n| n.to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                self.mode = Mode::Write {
-                    input,
-                    error: Some(format!("cannot write: {e}")),
-                };
             }
         }
     }

@@ -2,7 +2,8 @@
 //! (The edit form and the write prompt read keys themselves: they take text.)
 
 use ratatui::crossterm::event::{
-    self, Event as CtEvent, KeyCode, KeyEvent, KeyEventKind, KeyModifiers,
+    self, Event as CtEvent, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent,
+    MouseEventKind,
 };
 
 /// What the main screen does with a key.
@@ -89,26 +90,47 @@ pub fn action(key: KeyEvent) -> Option<Action> {
 }
 
 /// A terminal event the app cares about.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Event {
     Key(KeyEvent),
+    Mouse(MouseEvent),
+    /// Playback's clock: this many seconds passed since the last tick.
+    Tick(f64),
     /// The terminal changed size: draw again.
     Resize,
 }
 
-/// Waits for the next key press or resize (other events are skipped);
-/// `None` as soon as `stop` is set (a signal asked the app to end), checked
-/// every 100 ms while no key comes.
-pub fn next(stop: &std::sync::atomic::AtomicUsize) -> std::io::Result<Option<Event>> {
+/// Waits for the next key press, mouse event or resize (other events are
+/// skipped), or with `tick` until that much time has passed (a
+/// [`Event::Tick`]); `None` as soon as `stop` is set (a signal asked the app
+/// to end), checked every 100 ms while nothing comes.
+pub fn next(
+    stop: &std::sync::atomic::AtomicUsize,
+    tick: Option<std::time::Duration>,
+) -> std::io::Result<Option<Event>> {
+    let start = std::time::Instant::now();
     loop {
         if stop.load(std::sync::atomic::Ordering::Relaxed) != 0 {
             return Ok(None);
         }
-        if !event::poll(std::time::Duration::from_millis(100))? {
+        let wait = match tick {
+            Some(t) => {
+                let gone = start.elapsed();
+                if gone >= t {
+                    return Ok(Some(Event::Tick(gone.as_secs_f64())));
+                }
+                (t - gone).min(std::time::Duration::from_millis(100))
+            }
+            None => std::time::Duration::from_millis(100),
+        };
+        if !event::poll(wait)? {
             continue;
         }
         match event::read()? {
             CtEvent::Key(k) if k.kind == KeyEventKind::Press => return Ok(Some(Event::Key(k))),
+            CtEvent::Mouse(m) if m.kind != MouseEventKind::Moved => {
+                return Ok(Some(Event::Mouse(m)))
+            }
             CtEvent::Resize(..) => return Ok(Some(Event::Resize)),
             _ => {}
         }

@@ -39,12 +39,14 @@ fn render_lessons(app: &App, area: Rect, buf: &mut Buffer) {
             style,
         )));
         if here {
-            for k in 0..e.lesson.contacts.len() {
+            // The stepper's lesson: a scene's step when opened from one.
+            let shown = &app.entry().lesson;
+            for k in 0..shown.contacts.len() {
                 if k == app.contact {
                     selected = items.len();
                 }
                 items.push(ListItem::new(Line::raw(truncate(
-                    &format!("  {}", e.lesson.contact_label(k)),
+                    &format!("  {}", shown.contact_label(k)),
                     w,
                 ))));
             }

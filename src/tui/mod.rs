@@ -8,6 +8,7 @@ pub mod form;
 mod lists;
 mod overlay;
 pub mod scene;
+pub mod screens;
 mod stage;
 pub mod theme;
 pub mod ui;
@@ -21,13 +22,14 @@ use crate::lesson::{embedded, Lesson};
 pub use app::App;
 pub use theme::Theme;
 
-/// The embedded lessons, plus `lesson` when it names a file; returns them
-/// and the index to open.
+/// The embedded lessons and scenes, plus `lesson` when it names a file;
+/// returns them and the index to open.
 pub fn lessons<N: AsRef<OsStr> + ?Sized>(
     lesson: Option<&N>,
 ) -> Result<(Vec<Lesson>, usize), AppError> {
     let mut all: Vec<Lesson> = embedded::ids()
         .into_iter()
+        .chain(embedded::scene_ids())
         .map(Lesson::load)
         .collect::<Result<_, _>>()
         .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
@@ -47,17 +49,36 @@ pub fn lessons<N: AsRef<OsStr> + ?Sized>(
     Ok((all, at))
 }
 
-/// The app on `lesson` (embedded id or path; lecture-2 when `None`) and contact `contact`.
-pub fn open<N: AsRef<OsStr> + ?Sized>(lesson: Option<&N>, contact: usize) -> Result<App, AppError> {
+/// The app on `lesson` (embedded id or path; lecture-2 when `None`): a
+/// scene on its run; contact `contact`'s stages when given; else a lesson
+/// with several contacts on its resolver iterations, one with one contact
+/// on its stages.
+pub fn open<N: AsRef<OsStr> + ?Sized>(
+    lesson: Option<&N>,
+    contact: Option<usize>,
+) -> Result<App, AppError> {
     let (all, at) = lessons(lesson)?;
     let n = all[at].contacts.len();
-    if contact >= n {
-        return Err(AppError::Usage(format!(
-            "--contact {contact}: lesson '{}' has {n} contact(s), numbered from 0",
-            all[at].id
-        )));
+    let scene = all[at].simulation.is_some();
+    match contact {
+        Some(k) if scene => {
+            return Err(AppError::Usage(format!(
+                "--contact {k}: '{}' is a scene: its contacts are generated at each step (open a step's resolver iterations with Enter)",
+                all[at].id
+            )))
+        }
+        Some(k) if k >= n => {
+            return Err(AppError::Usage(format!(
+                "--contact {k}: lesson '{}' has {n} contact(s), numbered from 0",
+                all[at].id
+            )))
+        }
+        _ => {}
     }
-    let mut app = App::new(all, at, contact, Theme::from_env());
+    let mut app = App::new(all, at, contact.unwrap_or(0), Theme::from_env());
+    if contact.is_none() && !scene {
+        app.open_lesson_screen(true);
+    }
     app.write_dir = std::env::current_dir().unwrap_or_else(|_| ".".into());
     Ok(app)
 }
@@ -68,16 +89,39 @@ pub fn open<N: AsRef<OsStr> + ?Sized>(lesson: Option<&N>, contact: usize) -> Res
 /// the terminal, then dies of the same signal, as its parent expects).
 pub fn run(mut app: App) -> Result<(), AppError> {
     let signal = signals::watch()?;
+    signals::watchdog(std::sync::Arc::clone(&signal));
     let mut terminal = ratatui::try_init().map_err(|e| {
         // Raw mode may be on although the alternate screen failed.
         ratatui::restore();
         AppError::Runtime(format!("cannot open the terminal: {e}"))
     })?;
+    // Mouse reports off again however the app ends (the panic hook first).
+    let hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        mouse(false);
+        hook(info)
+    }));
+    mouse(true);
     let result = run_loop(&mut terminal, &mut app, &signal);
+    mouse(false);
     ratatui::restore();
     signals::end_if_signalled(&signal);
     result.map_err(|e| AppError::Runtime(format!("terminal: {e}")))
 }
+
+/// Switches the terminal's mouse reports on or off.
+fn mouse(on: bool) {
+    use ratatui::crossterm::event::{DisableMouseCapture, EnableMouseCapture};
+    let mut out = std::io::stdout();
+    let _ = if on {
+        ratatui::crossterm::execute!(out, EnableMouseCapture)
+    } else {
+        ratatui::crossterm::execute!(out, DisableMouseCapture)
+    };
+}
+
+/// Playback redraws at 60 frames per second.
+const TICK: std::time::Duration = std::time::Duration::from_micros(16_667);
 
 fn run_loop(
     terminal: &mut ratatui::DefaultTerminal,
@@ -91,8 +135,11 @@ fn run_loop(
         if std::env::var_os("CONTACT_LAB_TEST_PANIC").is_some() {
             panic!("CONTACT_LAB_TEST_PANIC: a deliberate panic after the first frame");
         }
-        match event::next(signal)? {
+        let tick = app.playing().then_some(TICK);
+        match event::next(signal, tick)? {
             Some(event::Event::Key(k)) => app.key(k),
+            Some(event::Event::Mouse(m)) => app.mouse(m),
+            Some(event::Event::Tick(seconds)) => app.tick(seconds),
             Some(event::Event::Resize) => {}
             None => break,
         }
@@ -122,6 +169,21 @@ mod signals {
     #[cfg(not(unix))]
     pub fn watch() -> Result<Arc<AtomicUsize>, AppError> {
         Ok(Arc::new(AtomicUsize::new(0)))
+    }
+
+    /// A signalled app whose loop does not end is ended anyway: a second
+    /// after the signal this thread ends the process by it. (A terminal that
+    /// hung up keeps the terminal library reading end-of-file, holding its
+    /// locks, and never returns to the loop; such a terminal is gone, so
+    /// there is nothing to restore.)
+    pub fn watchdog(flag: Arc<AtomicUsize>) {
+        std::thread::spawn(move || loop {
+            std::thread::sleep(std::time::Duration::from_millis(100));
+            if flag.load(Ordering::Relaxed) != 0 {
+                std::thread::sleep(std::time::Duration::from_secs(1));
+                end_if_signalled(&flag);
+            }
+        });
     }
 
     /// After the terminal is restored: end the process by the signal that

@@ -39,12 +39,35 @@ fn frame(app: &App, title: &str, area: Rect, buf: &mut Buffer) -> Rect {
 }
 
 pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
+    let mut notes = vec![
+        "Edit form: ↑↓ field, Enter edits (or cycles a choice), Enter sets, Esc goes back.",
+        "● changed by the last edit · ? results predict mode still hides",
+        "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
+    ];
+    if app.resolver.is_some() {
+        notes.insert(
+            0,
+            "Esc or Backspace: up to the resolver iterations this contact came from.",
+        );
+    }
+    help_list(app, " Keys ", KEYS, &notes, area, buf);
+}
+
+/// A help overlay: `keys` (key, what it does), then `notes`.
+pub fn help_list(
+    app: &App,
+    title: &str,
+    keys: &[(&str, &str)],
+    notes: &[&str],
+    area: Rect,
+    buf: &mut Buffer,
+) {
     let t = &app.theme;
     let rect_w = 92.min(area.width.saturating_sub(2));
     let text_w = rect_w.saturating_sub(3) as usize;
-    let kw = KEYS.iter().map(|(k, _)| width(k)).max().unwrap_or(0);
+    let kw = keys.iter().map(|(k, _)| width(k)).max().unwrap_or(0);
     let mut lines: Vec<Line> = Vec::new();
-    for (k, what) in KEYS {
+    for (k, what) in keys {
         let wrapped = wrap(what, text_w.saturating_sub(kw + 2), 0);
         for (i, piece) in wrapped.into_iter().enumerate() {
             let key = if i == 0 { *k } else { "" };
@@ -54,17 +77,13 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
             ]));
         }
     }
-    for text in [
-        "Edit form: ↑↓ field, Enter edits (or cycles a choice), Enter sets, Esc goes back.",
-        "● changed by the last edit · ? results predict mode still hides",
-        "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
-    ] {
+    for text in notes {
         for piece in wrap(text, text_w, 0) {
             lines.push(Line::styled(format!(" {piece}"), t.dim()));
         }
     }
     let rect = centered(area, rect_w, lines.len() as u16 + 2);
-    let inner = frame(app, " Keys ", rect, buf);
+    let inner = frame(app, title, rect, buf);
     Paragraph::new(lines).render(inner, buf);
 }
 

@@ -21,6 +21,10 @@ impl Widget for &App {
             too_small(area, buf);
             return;
         }
+        if self.screen != super::screens::Screen::Contact {
+            super::screens::render(self, area, buf);
+            return;
+        }
         let [top, body, bottom] = Layout::vertical([
             Constraint::Length(1),
             Constraint::Fill(1),
@@ -84,11 +88,23 @@ fn too_small(area: Rect, buf: &mut Buffer) {
 fn header(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let tr = &app.trace;
-    let mut spans = vec![
-        Span::styled(" contact-lab ", t.selected()),
-        Span::styled(format!(" {} ", tr.lesson), t.title()),
-        Span::raw(format!("· {} · contact {}", tr.title, tr.contact_label)),
-    ];
+    let mut spans = if app.resolver.is_some() {
+        // Opened from a resolver iteration: where it came from.
+        vec![
+            Span::styled(" contact-lab ", t.selected()),
+            Span::raw(" "),
+            Span::styled(
+                super::screens::breadcrumb_fit(app, (area.width as usize).saturating_sub(14)),
+                t.title(),
+            ),
+        ]
+    } else {
+        vec![
+            Span::styled(" contact-lab ", t.selected()),
+            Span::styled(format!(" {} ", tr.lesson), t.title()),
+            Span::raw(format!("· {} · contact {}", tr.title, tr.contact_label)),
+        ]
+    };
     if app.predict {
         spans.push(Span::styled("  [predict]", t.hidden()));
     }
@@ -116,6 +132,18 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
         Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
         Mode::Help => &[("any key", "closes this help")],
+        Mode::Normal if app.resolver.is_some() => &[
+            ("←→", "stage"),
+            ("Esc", "up"),
+            ("⇥", "contact"),
+            ("e", "edit"),
+            ("p", "predict"),
+            ("w", "write"),
+            ("v", "plane"),
+            ("z", "zoom"),
+            ("?", "help"),
+            ("q", "quit"),
+        ],
         Mode::Normal => &[
             ("←→", "stage"),
             ("⇥", "contact"),

@@ -60,6 +60,62 @@ pub fn write_atomic(path: &Path, text: &str, overwrite: bool) -> Result<(), Writ
     }
 }
 
+use super::app::Mode;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+/// The write prompt's keys (the file name is text: it reads keys itself).
+impl super::app::App {
+    pub(super) fn write_key(&mut self, mut input: String, error: Option<String>, key: KeyEvent) {
+        match key.code {
+            KeyCode::Esc => self.say("not written".into(), false),
+            KeyCode::Enter if input.trim().is_empty() => {
+                self.mode = Mode::Write {
+                    input,
+                    error: Some("a file name, please".into()),
+                }
+            }
+            KeyCode::Enter => {
+                let path = self.write_dir.join(input.trim());
+                self.write_to(path, false)
+            }
+            code => {
+                match code {
+                    KeyCode::Backspace => {
+                        input.pop();
+                    }
+                    KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                        input.clear()
+                    }
+                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                        return self.say("not written".into(), false);
+                    }
+                    KeyCode::Char(c) if !c.is_control() => input.push(c),
+                    _ => {}
+                }
+                self.mode = Mode::Write { input, error };
+            }
+        }
+    }
+
+    pub(super) fn write_to(&mut self, path: PathBuf, overwrite: bool) {
+        let text = markdown(&self.trace, &self.entry().edits, &self.fmt);
+        match write_atomic(&path, &text, overwrite) {
+            Ok(()) => self.say(format!("wrote {}", path.display()), false),
+            Err(WriteError::Exists(p)) => self.mode = Mode::Confirm(p),
+            Err(WriteError::Io(e)) => {
+                let input = path
+                    .file_name()
+                    .map(|n| n.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                self.mode = Mode::Write {
+                    input,
+                    error: Some(format!("cannot write: {e}")),
+                };
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -66,6 +66,10 @@ pub trait Observer<T: Real> {
     fn desired_updated(&mut self, _contact: usize, _from: T, _to: T) {}
     /// A phase ended.
     fn phase_end(&mut self, _phase: Phase, _outcome: &PhaseOutcome<T>) {}
+    /// A time step is about to resolve `world` (its contacts generated, its
+    /// velocities integrated) with `resolver`, prepared (and warm-started
+    /// where it is); called by the stepper, not the resolver.
+    fn resolving(&mut self, _world: &crate::physics::World<T>, _resolver: &super::Resolver<T>) {}
 }
 
 /// The observer of the fast path: reports go nowhere.

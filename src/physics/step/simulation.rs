@@ -180,6 +180,7 @@ impl<T: Real> Simulation<T> {
         if warm {
             self.warm.stage(&self.world, resolver);
         }
+        observer.resolving(&self.world, resolver);
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         if warm {

@@ -1,0 +1,309 @@
+//! One resolution recorded stop by stop, for the TUI's resolver screen and
+//! `simulate --trace-step`: the resolver trace of a time step (or of a
+//! lesson's contacts), the bodies as each iteration finds them, and the
+//! contact table (penetration, desired Δv) at every stop of both phases.
+
+use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
+use super::{BodyView, ContactView};
+use crate::lesson::{ContactDef, Lesson, Settings};
+use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
+use crate::physics::step::{BlowUp, Simulation};
+use crate::physics::World;
+
+/// A moment of the resolution: before iteration `iteration` of `phase`
+/// (`iteration` = iterations used: the phase is done).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Stop {
+    pub phase: Phase,
+    pub iteration: usize,
+}
+
+/// The contact table at a stop.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    pub stop: Stop,
+    /// The resolver's bookkeeping, per contact.
+    pub penetration: Vec<f64>,
+    pub desired: Vec<f64>,
+    /// The contact the next iteration takes (`None` when the phase is done).
+    pub next: Option<usize>,
+    /// What the iteration just before this stop changed: contact, from, to
+    /// (its own contact included).
+    pub changed: Vec<(usize, f64, f64)>,
+}
+
+/// One resolution, recorded for stepping through.
+#[derive(Debug, Clone)]
+pub struct StepTrace {
+    /// The time step (0 for a lesson's contacts) and the time after it.
+    pub step: u64,
+    pub time: f64,
+    /// The world as the resolver is handed it.
+    pub world: World<f64>,
+    pub names: Names,
+    pub resolver: ResolverTrace,
+    /// Per stop, in order: the position phase's, then the velocity phase's.
+    pub tables: Vec<Table>,
+    /// Resolver bodies before each position iteration; before each velocity
+    /// iteration and, last, after both phases.
+    bodies: [Vec<Vec<ResolverBody<f64>>>; 2],
+}
+
+impl StepTrace {
+    /// Resolves `world` and records every stop; from `prepared` when given
+    /// (a time step's resolver, warm-started where it is).
+    pub fn of_world(
+        world: World<f64>,
+        prepared: Option<Resolver<f64>>,
+        names: Names,
+        params: &crate::physics::ResolverParams,
+        implementation: Implementation,
+        step: u64,
+        time: f64,
+    ) -> StepTrace {
+        let (resolver, bodies) = match prepared {
+            Some(r) => describe_prepared(&world, r, &names, params, implementation, true, true),
+            None => describe_world(&world, &names, params, implementation, true, true),
+        };
+        let tables = tables(&resolver);
+        StepTrace {
+            step,
+            time,
+            world,
+            names,
+            resolver,
+            tables,
+            bodies,
+        }
+    }
+
+    /// A lesson's contacts resolved together, as `resolve` does.
+    pub fn of_lesson(lesson: &Lesson) -> StepTrace {
+        StepTrace::of_world(
+            lesson.world(),
+            None,
+            Names::of_lesson(lesson),
+            &lesson.resolver,
+            Implementation::Indexed,
+            0,
+            0.0,
+        )
+    }
+
+    /// The bodies at the stop at `t` (an index into `tables`), every world body.
+    pub fn bodies_at(&self, t: usize) -> Vec<BodyView> {
+        let stop = self.tables[t].stop;
+        let resolver = match stop.phase {
+            Phase::Position => self.bodies[0]
+                .get(stop.iteration)
+                .or_else(|| self.bodies[1].first()),
+            Phase::Velocity => self.bodies[1].get(stop.iteration),
+        };
+        self.world
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(i, b)| {
+                let s = &b.state;
+                let mut position: [f64; 3] = s.position.into();
+                let mut q = s.orientation;
+                let mut velocity: [f64; 3] = s.velocity.into();
+                let mut spin: [f64; 3] = s.angular_velocity.into();
+                if let Some(r) = resolver.and_then(|r| r.iter().find(|r| r.id.0 == i)) {
+                    position = r.position.into();
+                    q = r.unit_orientation();
+                    velocity = r.velocity.into();
+                    spin = r.angular_velocity.into();
+                }
+                let orientation = [q.w, q.i, q.j, q.k];
+                BodyView {
+                    name: self.names.bodies.get(i).cloned().unwrap_or_default(),
+                    movable: b.movable,
+                    slot: 0,
+                    shape: b.shape,
+                    position,
+                    orientation,
+                    position_after: position,
+                    orientation_after: orientation,
+                    velocity,
+                    velocity_after: velocity,
+                    angular_velocity: spin,
+                    angular_velocity_after: spin,
+                }
+            })
+            .collect()
+    }
+
+    /// The contacts for a picture (bodies by world index), penetration at
+    /// stop `t`; the contact the velocity iteration just before `t` took
+    /// carries the impulse it applied.
+    pub fn contact_views(&self, t: usize) -> Vec<ContactView> {
+        let stop = self.tables[t].stop;
+        let last = match stop.phase {
+            Phase::Velocity => stop
+                .iteration
+                .checked_sub(1)
+                .and_then(|i| self.resolver.velocity.log.get(i)),
+            Phase::Position => None,
+        };
+        self.world
+            .contacts
+            .iter()
+            .enumerate()
+            .map(|(k, c)| ContactView {
+                number: k,
+                bodies: [Some(c.body1.0), c.body2.map(|b| b.0)],
+                point: c.input.point.into(),
+                normal: c.input.normal.into(),
+                penetration: self.tables[t].penetration.get(k).copied().unwrap_or(0.0),
+                impulse: last
+                    .filter(|it| it.contact == k)
+                    .and_then(|it| it.impulse_world),
+            })
+            .collect()
+    }
+
+    /// The index of the first stop of the velocity phase.
+    pub fn velocity_start(&self) -> usize {
+        self.resolver.position.iterations_used + 1
+    }
+
+    /// `lesson` with the bodies as stop `t` finds them and contact `k` as
+    /// the resolver sees it, for the single-contact stages. A scene's
+    /// contacts are the step's generated ones (the lesson has none); at a
+    /// velocity stop the penetration is left out (0): the position phase
+    /// has dealt with it.
+    pub fn lesson_at(&self, lesson: &Lesson, t: usize) -> Lesson {
+        let mut at = lesson.clone();
+        for (def, b) in at.bodies.iter_mut().zip(self.bodies_at(t)) {
+            def.position = b.position.into();
+            let q = b.orientation;
+            def.orientation = nalgebra::Quaternion::new(q[0], q[1], q[2], q[3]);
+            def.velocity = b.velocity.into();
+            def.angular_velocity = b.angular_velocity.into();
+        }
+        if lesson.simulation.is_some() {
+            let duration = self.world.step.duration;
+            at.settings.duration = duration;
+            at.contacts = self
+                .world
+                .contacts
+                .iter()
+                .map(|c| {
+                    let i = &c.input;
+                    ContactDef {
+                        name: None,
+                        bodies: (c.body1.0, c.body2.map(|b| b.0)),
+                        point: i.point,
+                        normal: i.normal,
+                        normal_length: 1.0,
+                        penetration: i.penetration,
+                        restitution: i.restitution,
+                        static_friction: i.static_friction,
+                        dynamic_friction: i.dynamic_friction,
+                        friction_model: i.friction_model,
+                        settings: Settings {
+                            velocity_limit: i.settings.velocity_limit,
+                            angular_limit: i.settings.angular_limit,
+                            relaxation: i.settings.relaxation,
+                            duration: c.duration.unwrap_or(duration),
+                            projection: i.settings.projection,
+                        },
+                    }
+                })
+                .collect();
+            for (def, b) in at.bodies.iter_mut().zip(&self.world.bodies) {
+                def.acceleration = b.state.acceleration;
+            }
+        }
+        let velocity = self.tables[t].stop.phase == Phase::Velocity;
+        for (k, c) in at.contacts.iter_mut().enumerate() {
+            c.penetration = if velocity {
+                0.0
+            } else {
+                self.tables[t].penetration.get(k).copied().unwrap_or(0.0)
+            };
+        }
+        at
+    }
+}
+
+/// The table at every stop, from the contacts before and each iteration's updates.
+fn tables(trace: &ResolverTrace) -> Vec<Table> {
+    let mut penetration: Vec<f64> = trace.before.iter().map(|r| r.penetration).collect();
+    let mut desired: Vec<f64> = trace.before.iter().map(|r| r.desired).collect();
+    let mut out = vec![];
+    for (phase, log) in [
+        (Phase::Position, &trace.position.log),
+        (Phase::Velocity, &trace.velocity.log),
+    ] {
+        let mut changed = vec![];
+        for i in 0..=log.len() {
+            out.push(Table {
+                stop: Stop {
+                    phase,
+                    iteration: i,
+                },
+                penetration: penetration.clone(),
+                desired: desired.clone(),
+                next: log.get(i).map(|it| it.contact),
+                changed: std::mem::take(&mut changed),
+            });
+            let Some(it) = log.get(i) else { break };
+            let values = match phase {
+                Phase::Position => &mut penetration,
+                Phase::Velocity => &mut desired,
+            };
+            changed.push((it.contact, it.value, it.own_after));
+            if let Some(v) = values.get_mut(it.contact) {
+                *v = it.own_after;
+            }
+            for u in &it.updated {
+                changed.push((u.contact, u.from, u.to));
+                if let Some(v) = values.get_mut(u.contact) {
+                    *v = u.to;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Keeps a copy of the world a time step hands the resolver, and of the
+/// resolver as prepared for it.
+#[derive(Default)]
+struct Grab(Option<(World<f64>, Resolver<f64>)>);
+
+impl Observer<f64> for Grab {
+    fn resolving(&mut self, world: &World<f64>, resolver: &Resolver<f64>) {
+        self.0 = Some((world.clone(), resolver.clone()));
+    }
+}
+
+/// Advances `sim` one step and records its resolution; `names` holds the
+/// lesson's names and its bodies' (contacts are labelled from the step's).
+pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
+    let mut grab = Grab::default();
+    sim.advance_observed(&mut grab)?;
+    let (world, prepared) = match grab.0 {
+        Some((w, r)) => (w, Some(r)),
+        None => (sim.world.clone(), None),
+    };
+    let mut names = names.clone();
+    names.contacts = world
+        .contacts
+        .iter()
+        .enumerate()
+        .map(|(k, c)| Names::pair_label(&names.bodies, k, c.body1.0, c.body2.map(|b| b.0)))
+        .collect();
+    let params = sim.params.resolver;
+    Ok(StepTrace::of_world(
+        world,
+        prepared,
+        names,
+        &params,
+        Implementation::Indexed,
+        sim.step,
+        sim.time,
+    ))
+}

@@ -1,0 +1,98 @@
+//! An edit made on the stepper of a scene's step, carried into the run: the
+//! field edited becomes a [`SceneEdit`] from the start of that step, and the
+//! run is computed again from there (the step's resolution recorded anew).
+
+use crate::lesson::edit::{Field, Key};
+use crate::lesson::Lesson;
+use crate::trace::player::SceneEdit;
+use crate::tui::app::App;
+
+/// The change to the run that an edit of `field` (contact `k`, `before` →
+/// `after`) stands for, or why it has none.
+fn scene_edit(
+    field: &Field,
+    before: &Lesson,
+    after: &Lesson,
+    k: usize,
+) -> Result<SceneEdit, &'static str> {
+    let c = &after.contacts[k];
+    let pair = || {
+        std::iter::once(c.bodies.0)
+            .chain(c.bodies.1)
+            .collect::<Vec<_>>()
+    };
+    let change =
+        |a: nalgebra::Vector3<f64>, b: nalgebra::Vector3<f64>| [a.x - b.x, a.y - b.y, a.z - b.z];
+    Ok(match (field.key, field.body) {
+        (Key::Restitution, _) => SceneEdit::Restitution {
+            bodies: pair(),
+            value: c.restitution,
+        },
+        (Key::StaticFriction, _) => SceneEdit::StaticFriction {
+            bodies: pair(),
+            value: c.static_friction,
+        },
+        (Key::DynamicFriction, _) => SceneEdit::DynamicFriction {
+            bodies: pair(),
+            value: c.dynamic_friction,
+        },
+        (Key::FrictionModel, _) => SceneEdit::FrictionModel(c.friction_model),
+        (Key::VelocityLimit, _) => SceneEdit::VelocityLimit(c.settings.velocity_limit),
+        (Key::AngularLimit, _) => SceneEdit::AngularLimit(c.settings.angular_limit),
+        (Key::Relaxation, _) => SceneEdit::Relaxation(c.settings.relaxation),
+        (Key::Projection, _) => SceneEdit::Projection(c.settings.projection),
+        (Key::Mass, Some(b)) => SceneEdit::Mass {
+            body: b,
+            mass: after.bodies[b].mass,
+        },
+        (Key::Velocity, Some(b)) => SceneEdit::Velocity {
+            body: b,
+            change: change(after.bodies[b].velocity, before.bodies[b].velocity),
+        },
+        (Key::AngularVelocity, Some(b)) => SceneEdit::AngularVelocity {
+            body: b,
+            change: change(
+                after.bodies[b].angular_velocity,
+                before.bodies[b].angular_velocity,
+            ),
+        },
+        (Key::Penetration, _) => {
+            return Err("a scene's penetrations come from its shapes at each step")
+        }
+        (Key::Duration, _) => return Err("a scene's contacts last its time step"),
+        (Key::Acceleration, _) => {
+            return Err("in a run a body's acceleration is what gravity and damping give it")
+        }
+        (_, None) => return Err("no body"),
+    })
+}
+
+impl App {
+    /// After an edit on the stepper: when it was opened from a scene's
+    /// step, the run is computed again from that step; the words to add to
+    /// the status line.
+    pub(crate) fn scene_edited(&mut self, field: &Field, before: &Lesson) -> Option<String> {
+        let (Some(run), Some(r), Some(opened)) = (
+            self.run.as_deref_mut(),
+            self.resolver.as_deref_mut(),
+            self.opened.as_ref(),
+        ) else {
+            return None;
+        };
+        let step = r.trace.step;
+        let edit = match scene_edit(field, before, &opened.lesson, self.contact) {
+            Ok(e) => e,
+            Err(why) => return Some(format!("; the run is unchanged ({why})")),
+        };
+        if !run.player.edit(step, &edit) {
+            return Some(format!("; the run stopped before step {step}: unchanged"));
+        }
+        run.frame = step as usize;
+        if let Some(trace) = run.player.record(step) {
+            r.stop = r.stop.min(trace.tables.len() - 1);
+            r.selected = r.selected.min(trace.world.contacts.len().saturating_sub(1));
+            r.trace = trace;
+        }
+        Some(format!("; the run is computed again from step {step}"))
+    }
+}

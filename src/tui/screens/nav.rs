@@ -1,0 +1,403 @@
+//! Keys, ticks and clicks of the run and resolver screens, and the moves
+//! between the three levels (run → resolver → contact and back up).
+
+use std::cell::Cell;
+
+use ratatui::crossterm::event::{
+    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
+
+use super::{Pick, ResolverView, RunView, Screen, Toggles, EVENT_KINDS, SPEEDS};
+use crate::trace::player::Player;
+use crate::trace::step::StepTrace;
+use crate::tui::app::{App, Entry, Mode};
+
+/// At most this many steps are computed in one tick (playback falls behind
+/// real time rather than freezing the app).
+const STEPS_PER_TICK: usize = 64;
+
+impl App {
+    /// Opens the lesson's top screen: a scene's run; the resolver for a
+    /// lesson with several contacts when `several`; else the stepper as it is.
+    pub(crate) fn open_lesson_screen(&mut self, several: bool) {
+        let lesson = &self.lessons[self.lesson].lesson;
+        if let Some(player) = Player::new(lesson) {
+            self.run = Some(Box::new(RunView {
+                player,
+                frame: 0,
+                playing: false,
+                speed: 2,
+                owed: 0.0,
+                toggles: Toggles::default(),
+                event_kind: 0,
+                events_scroll: 0,
+            }));
+            self.screen = Screen::Run;
+        } else if several && lesson.contacts.len() > 1 {
+            let trace = StepTrace::of_lesson(lesson);
+            self.show_resolver(trace);
+        }
+    }
+
+    fn show_resolver(&mut self, trace: StepTrace) {
+        let selected = trace.tables.first().and_then(|t| t.next).unwrap_or(0);
+        self.resolver = Some(Box::new(ResolverView {
+            trace,
+            stop: 0,
+            selected,
+            scroll: Cell::new(0),
+        }));
+        self.screen = Screen::Resolver;
+    }
+
+    /// Whether the run is playing (the terminal loop then ticks).
+    pub fn playing(&self) -> bool {
+        self.screen == Screen::Run && self.run.as_ref().is_some_and(|r| r.playing)
+    }
+
+    /// Playback: `seconds` of real time passed.
+    pub fn tick(&mut self, seconds: f64) {
+        if !self.playing() {
+            return;
+        }
+        let Some(run) = self.run.as_deref_mut() else {
+            return;
+        };
+        let dt = run.player.run.dt;
+        run.owed += seconds * SPEEDS[run.speed];
+        let mut steps = 0;
+        while run.owed >= dt && steps < STEPS_PER_TICK {
+            run.owed -= dt;
+            steps += 1;
+            if !forward(run) {
+                run.playing = false;
+                run.owed = 0.0;
+                break;
+            }
+        }
+        if steps == STEPS_PER_TICK {
+            run.owed = 0.0;
+        }
+    }
+
+    /// Esc or Backspace on the stepper: up a level when there is one.
+    pub(crate) fn up_key(&mut self, key: KeyEvent) -> bool {
+        if !matches!(key.code, KeyCode::Esc | KeyCode::Backspace) || self.resolver.is_none() {
+            return false;
+        }
+        self.opened = None;
+        self.baseline = None;
+        self.screen = Screen::Resolver;
+        true
+    }
+
+    /// A key on the run or resolver screen.
+    pub(crate) fn screen_key(&mut self, key: KeyEvent) {
+        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+        match key.code {
+            KeyCode::Char('c') if ctrl => self.quit = true,
+            _ if ctrl => {}
+            KeyCode::Char('q') => self.quit = true,
+            KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('v') => self.plane = self.plane.next(),
+            KeyCode::Down | KeyCode::Char('j') => {
+                self.goto_lesson((self.lesson + 1) % self.lessons.len())
+            }
+            KeyCode::Up | KeyCode::Char('k') => {
+                let n = self.lessons.len();
+                self.goto_lesson((self.lesson + n - 1) % n)
+            }
+            _ if self.screen == Screen::Run => self.run_key(key.code),
+            _ => self.resolver_key(key.code),
+        }
+    }
+
+    fn run_key(&mut self, code: KeyCode) {
+        let Some(run) = self.run.as_deref_mut() else {
+            return;
+        };
+        let mut said = None;
+        match code {
+            KeyCode::Char(' ') => {
+                if !run.playing && run.frame as u64 >= run.player.steps {
+                    run.frame = 0;
+                }
+                run.playing = !run.playing;
+                run.owed = 0.0;
+            }
+            KeyCode::Right | KeyCode::Char('l') => {
+                run.playing = false;
+                if !forward(run) {
+                    said = Some(end_of_run(run));
+                }
+            }
+            KeyCode::Left | KeyCode::Char('h') => {
+                run.playing = false;
+                run.frame = run.frame.saturating_sub(1);
+            }
+            KeyCode::Home | KeyCode::Char('g') => {
+                run.playing = false;
+                run.frame = 0;
+            }
+            KeyCode::End | KeyCode::Char('G') => {
+                run.playing = false;
+                run.frame = run.player.computed() as usize;
+            }
+            KeyCode::Char('+') | KeyCode::Char('=') => {
+                run.speed = (run.speed + 1).min(SPEEDS.len() - 1)
+            }
+            KeyCode::Char('-') => run.speed = run.speed.saturating_sub(1),
+            KeyCode::Char('f') => run.event_kind = (run.event_kind + 1) % EVENT_KINDS.len(),
+            KeyCode::Char('n') => said = jump_event(run, true),
+            KeyCode::Char('N') => said = jump_event(run, false),
+            KeyCode::Char('c') => run.toggles.contacts = !run.toggles.contacts,
+            KeyCode::Char('o') => run.toggles.normals = !run.toggles.normals,
+            KeyCode::Char('s') => run.toggles.sleep = !run.toggles.sleep,
+            KeyCode::Char('b') => run.toggles.names = !run.toggles.names,
+            KeyCode::PageUp => run.events_scroll += 5,
+            KeyCode::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
+            KeyCode::Enter => {
+                run.playing = false;
+                let frame = run.frame as u64;
+                match run.player.record(frame) {
+                    Some(trace) => self.show_resolver(trace),
+                    None => said = Some("step 0 is the state before the first step: nothing is resolved yet (→ takes a step)".into()),
+                }
+            }
+            KeyCode::Esc => self.quit = true,
+            _ => {}
+        }
+        if let Some(text) = said {
+            self.say(text, false);
+        }
+    }
+
+    fn resolver_key(&mut self, code: KeyCode) {
+        let Some(r) = self.resolver.as_deref_mut() else {
+            return;
+        };
+        let last = r.trace.tables.len().saturating_sub(1);
+        let contacts = r.trace.world.contacts.len();
+        let stop = match code {
+            KeyCode::Right | KeyCode::Char('l') => Some((r.stop + 1).min(last)),
+            KeyCode::Left | KeyCode::Char('h') => Some(r.stop.saturating_sub(1)),
+            KeyCode::Home | KeyCode::Char('g') => Some(0),
+            KeyCode::End | KeyCode::Char('G') => Some(last),
+            _ => None,
+        };
+        if let Some(s) = stop {
+            r.stop = s;
+            if let Some(k) = r.trace.tables[s].next {
+                r.selected = k;
+            }
+            return;
+        }
+        match code {
+            KeyCode::Tab if contacts > 0 => r.selected = (r.selected + 1) % contacts,
+            KeyCode::BackTab if contacts > 0 => r.selected = (r.selected + contacts - 1) % contacts,
+            KeyCode::Enter if contacts == 0 => self.say("this step has no contacts".into(), false),
+            KeyCode::Enter => self.open_contact(),
+            KeyCode::Esc | KeyCode::Backspace if self.run.is_some() => {
+                self.resolver = None;
+                self.screen = Screen::Run;
+            }
+            KeyCode::Esc => self.quit = true,
+            _ => {}
+        }
+    }
+
+    /// The stepper on the selected contact, bodies as the stop finds them.
+    fn open_contact(&mut self) {
+        let Some(r) = self.resolver.as_deref() else {
+            return;
+        };
+        let lesson = r.trace.lesson_at(&self.lessons[self.lesson].lesson, r.stop);
+        let k = r.selected.min(lesson.contacts.len().saturating_sub(1));
+        self.opened = Some(Entry {
+            pristine: lesson.clone(),
+            lesson,
+            edits: vec![],
+        });
+        self.contact = k;
+        self.page = 0;
+        self.scroll = 0;
+        self.baseline = None;
+        self.recompute();
+        self.screen = Screen::Contact;
+    }
+
+    /// A mouse event: a click picks a contact, a body or a table row; the
+    /// wheel scrolls.
+    pub fn mouse(&mut self, m: MouseEvent) {
+        if self.mode != Mode::Normal {
+            return;
+        }
+        let up = match m.kind {
+            MouseEventKind::ScrollUp => Some(true),
+            MouseEventKind::ScrollDown => Some(false),
+            _ => None,
+        };
+        if let Some(up) = up {
+            return self.wheel(up);
+        }
+        if m.kind != MouseEventKind::Down(MouseButton::Left) {
+            return;
+        }
+        self.status = None;
+        let table = self.targets.table.get();
+        if self.screen == Screen::Resolver && contains(table, m.column, m.row) {
+            let first = self.targets.table_first.get();
+            let Some(r) = self.resolver.as_deref_mut() else {
+                return;
+            };
+            // One line of border and one of headings above the rows.
+            if let Some(row) = (m.row as usize).checked_sub(table.y as usize + 2) {
+                let k = first + row;
+                if k < r.trace.world.contacts.len() {
+                    r.selected = k;
+                }
+            }
+            return;
+        }
+        if let Some(pick) = self.pick(m.column, m.row) {
+            match pick {
+                Pick::Contact(k) => {
+                    if let Some(r) = self.resolver.as_deref_mut() {
+                        r.selected = k;
+                    }
+                    self.say(
+                        format!("contact {k} selected (Enter opens its stages)"),
+                        false,
+                    );
+                }
+                Pick::Body(i) => {
+                    let name = self.lessons[self.lesson].lesson.bodies[i].name.clone();
+                    self.say(format!("body {i}: {name}"), false);
+                }
+            }
+        }
+    }
+
+    fn wheel(&mut self, up: bool) {
+        match self.screen {
+            Screen::Run => {
+                if let Some(run) = self.run.as_deref_mut() {
+                    run.events_scroll = if up {
+                        run.events_scroll + 1
+                    } else {
+                        run.events_scroll.saturating_sub(1)
+                    };
+                }
+            }
+            Screen::Resolver => {
+                if let Some(r) = self.resolver.as_deref() {
+                    let s = r.scroll.get();
+                    r.scroll.set(if up { s.saturating_sub(1) } else { s + 1 });
+                }
+            }
+            Screen::Contact => {
+                self.scroll = if up {
+                    self.scroll.saturating_sub(1)
+                } else {
+                    (self.scroll + 1).min(self.scroll_max.get())
+                }
+            }
+        }
+    }
+
+    /// The contact or body drawn nearest the cell clicked (within two
+    /// cells); clicking again where several lie (corners seen edge-on) takes
+    /// the next of them.
+    fn pick(&self, col: u16, row: u16) -> Option<Pick> {
+        let area = self.targets.picture.get();
+        if self.screen == Screen::Contact || !contains(area, col, row) {
+            return None;
+        }
+        let [x0, x1, y0, y1] = self.targets.bounds.get();
+        let (w, h) = (f64::from(area.width.max(2)), f64::from(area.height.max(2)));
+        let cx = f64::from(col - area.x) + 0.5;
+        let cy = f64::from(row - area.y) + 0.5;
+        let points = self.targets.points.borrow();
+        let mut near: Vec<(f64, Pick)> = points
+            .iter()
+            .map(|(p, pick)| {
+                let px = (p[0] - x0) / (x1 - x0) * w;
+                let py = (y1 - p[1]) / (y1 - y0) * h;
+                ((px - cx).powi(2) + (2.0 * (py - cy)).powi(2), *pick)
+            })
+            .filter(|(d, _)| *d <= 4.0 * 4.0)
+            .collect();
+        near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let best = near.first()?.0;
+        // Those drawn in the same cell as the nearest.
+        near.retain(|(d, _)| *d <= best + 1.0);
+        let selected = self.resolver.as_ref().map(|r| Pick::Contact(r.selected));
+        let at = near.iter().position(|(_, p)| Some(*p) == selected);
+        Some(near[at.map_or(0, |i| (i + 1) % near.len())].1)
+    }
+}
+
+fn contains(r: ratatui::layout::Rect, col: u16, row: u16) -> bool {
+    col >= r.x && col < r.x + r.width && row >= r.y && row < r.y + r.height
+}
+
+/// One frame forward, computing it when needed; false at the run's end.
+fn forward(run: &mut RunView) -> bool {
+    if (run.frame as u64) < run.player.computed() || run.player.advance() {
+        run.frame += 1;
+        true
+    } else {
+        false
+    }
+}
+
+fn end_of_run(run: &RunView) -> String {
+    match &run.player.run.stopped {
+        Some(why) => format!("the run stopped: {why}"),
+        None => format!(
+            "the scene's last step ({}): Home restarts",
+            run.player.steps
+        ),
+    }
+}
+
+/// Moves to the next (or previous) event of the chosen kind, computing steps
+/// until one comes; says so when there is none.
+fn jump_event(run: &mut RunView, next: bool) -> Option<String> {
+    run.playing = false;
+    let kind = EVENT_KINDS[run.event_kind];
+    let step = run.frame as u64;
+    let fits = |k: &str| kind == "any" || kind == k;
+    if next {
+        loop {
+            let hit = run
+                .player
+                .run
+                .events
+                .iter()
+                .find(|e| e.step > step && fits(e.kind))
+                .map(|e| e.step);
+            if let Some(s) = hit {
+                run.frame = s as usize;
+                return None;
+            }
+            if !run.player.advance() {
+                return Some(format!("no {kind} event after step {step}"));
+            }
+        }
+    }
+    match run
+        .player
+        .run
+        .events
+        .iter()
+        .rev()
+        .find(|e| e.step < step && fits(e.kind))
+    {
+        Some(e) => {
+            run.frame = e.step as usize;
+            None
+        }
+        None => Some(format!("no {kind} event before step {step}")),
+    }
+}

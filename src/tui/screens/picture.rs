@@ -1,0 +1,227 @@
+//! The scene picture of the run and resolver screens (Canvas, braille):
+//! every body's outline in the view plane, half-spaces as hatched lines,
+//! contact points numbered, normals, names; sleeping bodies dimmed. It
+//! records where it put the bodies and contacts, for the mouse.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::Span;
+use ratatui::widgets::canvas::{Canvas, Line};
+use ratatui::widgets::{Block, Widget};
+
+use super::{Pick, Toggles};
+use crate::physics::Shape;
+use crate::render::figure::{outline, P};
+use crate::trace::{BodyView, ContactView, Plane};
+use crate::tui::app::App;
+use crate::tui::theme::Ink;
+
+/// What to draw.
+pub struct Scene<'a> {
+    pub title: String,
+    pub bodies: &'a [BodyView],
+    /// Per body: asleep (drawn dimmed when the toggle is on).
+    pub asleep: Vec<bool>,
+    pub contacts: &'a [ContactView],
+    /// The contact the next iteration takes, and the one selected.
+    pub next: Option<usize>,
+    pub selected: Option<usize>,
+    pub toggles: Toggles,
+    /// Bodies whose outlines set the view besides these (the run's first frame).
+    pub also: &'a [BodyView],
+}
+
+fn flat(plane: Plane, v: [f64; 3]) -> P {
+    let (a, b, _) = plane.axes();
+    [v[a], v[b]]
+}
+
+/// Bounds (x0, x1, y0, y1) of the finite bodies' outlines, or the unit box.
+fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
+    let mut b = [
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for v in bodies {
+        let Some(o) = v
+            .shape
+            .as_ref()
+            .and_then(|s| outline(s, v.position, v.orientation, plane))
+        else {
+            continue;
+        };
+        for p in o.silhouette.points() {
+            if p[0].is_finite() && p[1].is_finite() {
+                b = [
+                    b[0].min(p[0]),
+                    b[1].max(p[0]),
+                    b[2].min(p[1]),
+                    b[3].max(p[1]),
+                ];
+            }
+        }
+    }
+    if b[0] > b[1] {
+        return [-1.0, 1.0, -1.0, 1.0];
+    }
+    b
+}
+
+/// Bounds with a margin, widened so a braille dot is as wide as it is tall.
+fn fit(b: [f64; 4], cols: u16, rows: u16) -> [f64; 4] {
+    let (cx, cy) = ((b[0] + b[1]) / 2.0, (b[2] + b[3]) / 2.0);
+    let mut w = (b[1] - b[0]).max(1e-9) * 1.25;
+    let mut h = (b[3] - b[2]).max(1e-9) * 1.25;
+    let (dx, dy) = (f64::from(cols.max(1)) * 2.0, f64::from(rows.max(1)) * 4.0);
+    if w / dx > h / dy {
+        h = w / dx * dy;
+    } else {
+        w = h / dy * dx;
+    }
+    [cx - w / 2.0, cx + w / 2.0, cy - h / 2.0, cy + h / 2.0]
+}
+
+pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let plane = app.plane;
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(
+            format!(" {} · {} plane (v) ", scene.title, plane.name()),
+            t.title(),
+        ));
+    let inner = block.inner(area);
+    block.render(area, buf);
+    app.targets.picture.set(inner);
+    app.targets.points.borrow_mut().clear();
+    if inner.width < 2 || inner.height < 2 {
+        return;
+    }
+    let all: Vec<&BodyView> = scene.bodies.iter().chain(scene.also).collect();
+    let b = fit(bounds(&all, plane), inner.width, inner.height);
+    app.targets.bounds.set(b);
+    let extent = (b[1] - b[0]).max(b[3] - b[2]);
+    let asleep = |i: usize| scene.toggles.sleep && scene.asleep.get(i).copied().unwrap_or(false);
+    let body_ink = |i: usize| {
+        if asleep(i) && t.color {
+            Color::DarkGray
+        } else {
+            t.ink(Ink::Body)
+        }
+    };
+    let mut segs: Vec<(P, P, Color)> = vec![];
+    let mut labels: Vec<(P, String, Style)> = vec![];
+    let mut points = app.targets.points.borrow_mut();
+    for (i, v) in scene.bodies.iter().enumerate() {
+        match v.shape {
+            Some(Shape::HalfSpace { normal }) => {
+                let n = flat(plane, normal);
+                let len = n[0].hypot(n[1]);
+                if len < 1e-9 {
+                    continue;
+                }
+                let n = [n[0] / len, n[1] / len];
+                let along = [-n[1], n[0]];
+                let q = flat(plane, v.position);
+                let far = 4.0 * extent;
+                let ink = t.ink(Ink::Ground);
+                segs.push((
+                    [q[0] - along[0] * far, q[1] - along[1] * far],
+                    [q[0] + along[0] * far, q[1] + along[1] * far],
+                    ink,
+                ));
+                let step = extent / 16.0;
+                for k in -64..=64 {
+                    let base = [
+                        q[0] + along[0] * step * k as f64,
+                        q[1] + along[1] * step * k as f64,
+                    ];
+                    let tip = [
+                        base[0] - (n[0] - along[0]) * 0.4 * step,
+                        base[1] - (n[1] - along[1]) * 0.4 * step,
+                    ];
+                    segs.push((base, tip, ink));
+                }
+            }
+            Some(ref s) => {
+                if let Some(o) = outline(s, v.position, v.orientation, plane) {
+                    for [a, c] in &o.edges {
+                        segs.push((*a, *c, body_ink(i)));
+                    }
+                }
+                let c = flat(plane, v.position);
+                points.push((c, Pick::Body(i)));
+                if scene.toggles.names && v.movable {
+                    let name = if asleep(i) {
+                        format!("{} (asleep)", v.name)
+                    } else {
+                        v.name.clone()
+                    };
+                    labels.push((c, name, Style::new().fg(body_ink(i))));
+                }
+            }
+            None => {}
+        }
+    }
+    for c in scene.contacts {
+        let q = flat(plane, c.point);
+        points.push((q, Pick::Contact(c.number)));
+        let chosen = scene.selected == Some(c.number);
+        let next = scene.next == Some(c.number);
+        if scene.toggles.normals {
+            let d = flat(plane, c.normal);
+            let tip = [q[0] + d[0] * 0.08 * extent, q[1] + d[1] * 0.08 * extent];
+            segs.push((q, tip, t.ink(Ink::Normal)));
+        }
+        if let Some(g) = c.impulse {
+            // The impulse the last iteration applied to body 1, its direction.
+            let g = flat(plane, g);
+            let len = g[0].hypot(g[1]);
+            if len > 0.0 && len.is_finite() {
+                let tip = [
+                    q[0] + g[0] / len * 0.15 * extent,
+                    q[1] + g[1] / len * 0.15 * extent,
+                ];
+                segs.push((q, tip, t.ink(Ink::Impulse)));
+                labels.push((tip, "g".into(), t.ink_style(Ink::Impulse)));
+            }
+        }
+        if scene.toggles.contacts || chosen || next {
+            let style = if next {
+                t.ink_style(Ink::Impulse)
+            } else if chosen {
+                t.selected()
+            } else {
+                t.ink_style(Ink::Point)
+            };
+            let text = if scene.next.is_some() || scene.selected.is_some() {
+                c.number.to_string()
+            } else {
+                "•".to_string()
+            };
+            labels.push((q, text, style));
+        }
+    }
+    drop(points);
+    Canvas::default()
+        .marker(Marker::Braille)
+        .background_color(Color::Reset)
+        .x_bounds([b[0], b[1]])
+        .y_bounds([b[2], b[3]])
+        .paint(|ctx| {
+            for (a, c, color) in &segs {
+                ctx.draw(&Line::new(a[0], a[1], c[0], c[1], *color));
+            }
+            ctx.layer();
+            for (p, text, style) in &labels {
+                if (b[0]..=b[1]).contains(&p[0]) && (b[2]..=b[3]).contains(&p[1]) {
+                    ctx.print(p[0], p[1], Span::styled(text.clone(), *style));
+                }
+            }
+        })
+        .render(inner, buf);
+}
