@@ -193,3 +193,30 @@ fn a_warm_started_step_is_recorded_as_the_run_took_it() {
         );
     }
 }
+
+/// A step without contacts (the ball in flight) says so: no `-inf` for the
+/// deepest penetration of nothing, no "at contact 0" of no contact.
+#[test]
+fn a_step_without_contacts_says_there_are_none() {
+    let out = contact_lab(&["simulate", "ball-drop", "--trace-step", "5"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text.matches("No contacts: nothing to resolve.").count(), 2, "{text}");
+    assert!(text.contains("penetration left: no contacts"), "{text}");
+    assert!(!text.contains("inf"), "{text}");
+    let out = contact_lab(&["simulate", "ball-drop", "--trace-step", "5", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["position"]["max_penetration_before"], 0.0);
+    assert_eq!(json["velocity"]["max_desired_after"], 0.0);
+}
+
+/// `resolve` on a scene that writes no contact points to `--trace-step`
+/// (exit 2, nothing on stdout) rather than resolving nothing.
+#[test]
+fn resolve_of_a_scene_without_contacts_points_to_trace_step() {
+    let out = contact_lab(&["resolve", "stack-5"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("simulate stack-5 --trace-step N"), "{err}");
+}

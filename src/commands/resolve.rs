@@ -126,6 +126,14 @@ pub fn resolve(
 ) -> Result<(), AppError> {
     let lesson = load(&args.lesson, &args.model, None)?;
     warn(&lesson, err);
+    if lesson.contacts.is_empty() {
+        // Only a scene may write no contact: its contacts come from its shapes.
+        return Err(AppError::Usage(format!(
+            "{} is a scene and writes no [[contact]]: its contacts are generated from the shapes at every step. \
+             Resolve one step's contacts with `contact-lab simulate {} --trace-step N`",
+            lesson.id, args.lesson.to_string_lossy()
+        )));
+    }
     let params = params(&lesson.resolver, &args.resolver)?;
     let implementation = implementation(args);
     crate::lesson::overflow::check_resolve(&lesson, &params, implementation)

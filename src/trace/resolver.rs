@@ -99,6 +99,8 @@ pub struct PhaseTrace {
     pub log: Vec<Iteration>,
     /// The solver that ran the phase (iterations are contact visits for both).
     pub solver: Solver,
+    /// How many contacts the phase had to resolve.
+    pub contacts: usize,
 }
 
 /// The worked resolution of a whole scene.
@@ -283,7 +285,12 @@ fn rows(names: &Names, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
         .collect()
 }
 
-fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>, solver: Solver) -> PhaseTrace {
+fn phase_trace(
+    outcome: &PhaseOutcome<f64>,
+    log: Vec<Iteration>,
+    solver: Solver,
+    contacts: usize,
+) -> PhaseTrace {
     let worsening_iterations = log
         .iter()
         .filter(|it| it.updated.iter().any(Update::worse))
@@ -300,6 +307,7 @@ fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>, solver: Solver)
         worsening_iterations,
         log,
         solver,
+        contacts,
     }
 }
 
@@ -382,11 +390,11 @@ pub fn describe_prepared(
         implementation,
         restitution_from: params.restitution_from,
         before,
-        position: phase_trace(&position, position_log, params.solver),
-        velocity: phase_trace(&velocity, velocity_log, params.solver),
+        position: phase_trace(&position, position_log, params.solver, resolver.contacts.len()),
+        velocity: phase_trace(&velocity, velocity_log, params.solver, resolver.contacts.len()),
         contacts_after: rows(names, &resolver.contacts),
         after: after(&names.bodies, &resolver.bodies),
-        verdicts: verdicts(&names.bodies, &checks, &position, &velocity),
+        verdicts: verdicts(&names.bodies, &checks, &position, &velocity, resolver.contacts.len()),
         warnings: names.warnings.clone(),
     };
     (trace, std::mem::take(&mut recorder.bodies))
@@ -417,6 +425,7 @@ fn verdicts(
     c: &SceneChecks<f64>,
     position: &PhaseOutcome<f64>,
     velocity: &PhaseOutcome<f64>,
+    contacts: usize,
 ) -> Vec<Verdict> {
     let f = crate::format::Fmt::default();
     let v = |x: &Vector3<f64>| format!("({})", f.list(&arr(x)));
@@ -461,6 +470,16 @@ fn verdicts(
             f.num(change)
         ),
     });
+    if contacts == 0 {
+        for label in ["penetration left", "closing velocity left"] {
+            out.push(Verdict {
+                label: label.into(),
+                passed: Some(true),
+                detail: "no contacts".into(),
+            });
+        }
+        return out;
+    }
     out.push(Verdict {
         label: "penetration left".into(),
         passed: Some(c.penetration_left.0 <= position.epsilon),

@@ -250,7 +250,11 @@ impl<T: Real> Resolver<T> {
             Phase::Position => c.penetration,
             Phase::Velocity => c.desired,
         };
-        let mut best = (-c::<T>(f64::INFINITY), 0);
+        // With no contacts nothing penetrates and nothing is wanted: 0.
+        let Some(first) = self.contacts.first() else {
+            return (T::zero(), 0);
+        };
+        let mut best = (value(first), 0);
         for (k, contact) in self.contacts.iter().enumerate() {
             if value(contact) > best.0 {
                 best = (value(contact), k);

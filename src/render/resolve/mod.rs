@@ -75,6 +75,9 @@ pub fn phase_notes(p: &PhaseTrace, fmt: &Fmt) -> Vec<String> {
         Phase::Position => "deepest penetration",
         Phase::Velocity => "largest desired Δv",
     };
+    if p.contacts == 0 {
+        return vec!["No contacts: nothing to resolve.".into()];
+    }
     let mut out = vec![format!(
         "{} iteration(s) of {}; {what} before {}, left {} at contact {}.",
         p.iterations_used,
