@@ -6,6 +6,7 @@ use std::fmt::Write;
 
 use crate::format::Fmt;
 use crate::trace::latex::{escape_text, prose};
+use crate::physics::StageId;
 use crate::trace::{Formula, Step, Trace};
 
 /// Packages a fragment needs; the standalone document loads them.
@@ -88,6 +89,25 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
     let mut out = heading(depth, &format!("Contact {}", prose(&trace.contact_label)));
     for (i, step) in trace.stages.iter().enumerate() {
         stage(&mut out, i + 1, step, fmt, depth + 1);
+        // The checks stage shows its verdicts; a separating contact has none
+        // (and an empty itemize does not compile).
+        if step.id == StageId::Checks && step.skipped.is_none() && !trace.verdicts.is_empty() {
+            out.push_str("\\begin{itemize}\n");
+            for v in &trace.verdicts {
+                let mark = match v.passed {
+                    Some(true) => "$\\checkmark$",
+                    Some(false) => "$\\times$",
+                    None => "$\\cdot$",
+                };
+                let _ = writeln!(
+                    out,
+                    "\\item[{mark}] {}: {}",
+                    prose(&v.label),
+                    note(&v.detail, step, fmt)
+                );
+            }
+            out.push_str("\\end{itemize}\n");
+        }
     }
     out.push('\n');
     out.push_str(&heading(depth + 1, "After"));
@@ -118,26 +138,6 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
         );
     }
     out.push_str("\\end{description}\n");
-    // A separating contact has no verdicts: an empty itemize does not compile.
-    if let Some(checks) = trace.stage("checks").filter(|_| !trace.verdicts.is_empty()) {
-        out.push('\n');
-        out.push_str(&heading(depth + 1, "Verdicts"));
-        out.push_str("\\begin{itemize}\n");
-        for v in &trace.verdicts {
-            let mark = match v.passed {
-                Some(true) => "$\\checkmark$",
-                Some(false) => "$\\times$",
-                None => "$\\cdot$",
-            };
-            let _ = writeln!(
-                out,
-                "\\item[{mark}] {}: {}",
-                prose(&v.label),
-                note(&v.detail, checks, fmt)
-            );
-        }
-        out.push_str("\\end{itemize}\n");
-    }
     out
 }
 

@@ -6,6 +6,7 @@ use std::fmt::Write;
 
 use super::latex::aligned_rows;
 use crate::format::Fmt;
+use crate::physics::StageId;
 use crate::trace::{Step, Trace};
 
 /// Escapes what Markdown would read as markup in running text, and no more,
@@ -105,6 +106,19 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
     }
     for (i, step) in trace.stages.iter().enumerate() {
         stage(&mut out, i + 1, step, fmt, level + 1);
+        // The checks stage shows its verdicts (a separating contact has none).
+        if step.id == StageId::Checks && step.skipped.is_none() && !trace.verdicts.is_empty() {
+            for v in &trace.verdicts {
+                let _ = writeln!(
+                    out,
+                    "- {} {}: {}",
+                    v.mark(),
+                    escape(&v.label),
+                    note(&v.detail, step, fmt)
+                );
+            }
+            out.push('\n');
+        }
     }
     out.push_str(&heading(level + 1, "After"));
     out.push_str("| body | position | orientation | velocity | angular velocity |\n");
@@ -122,20 +136,6 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
         );
     }
     out.push('\n');
-    // A separating contact has no verdicts: no empty heading.
-    if let Some(checks) = trace.stage("checks").filter(|_| !trace.verdicts.is_empty()) {
-        out.push_str(&heading(level + 1, "Verdicts"));
-        for v in &trace.verdicts {
-            let mark = v.mark();
-            let _ = writeln!(
-                out,
-                "- {mark} {}: {}",
-                escape(&v.label),
-                note(&v.detail, checks, fmt)
-            );
-        }
-        out.push('\n');
-    }
     out
 }
 

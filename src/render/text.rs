@@ -4,6 +4,7 @@
 use std::fmt::Write;
 
 use crate::format::Fmt;
+use crate::physics::StageId;
 use crate::trace::{Formula, Step, Trace};
 
 /// `lhs = rhs`, `= numbers`, `= result`, aligned under the `=`.
@@ -66,24 +67,23 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
                 for note in &step.notes {
                     let _ = writeln!(out, "   · {}", fmt.fill(note, step, false));
                 }
+                // The checks stage shows its verdicts, not only its formulas.
+                if step.id == StageId::Checks {
+                    for v in &trace.verdicts {
+                        let _ = writeln!(
+                            out,
+                            "   {} {}: {}",
+                            v.mark(),
+                            v.label,
+                            fmt.fill(&v.detail, step, false)
+                        );
+                    }
+                }
             }
         }
     }
     let _ = writeln!(out);
     after(&mut out, &trace.after, fmt);
-    if let Some(checks) = trace.stage("checks") {
-        let _ = writeln!(out);
-        let _ = writeln!(out, "Checks");
-        for v in &trace.verdicts {
-            let mark = v.mark();
-            let _ = writeln!(
-                out,
-                "   {mark} {}: {}",
-                v.label,
-                fmt.fill(&v.detail, checks, false)
-            );
-        }
-    }
     out
 }
 

@@ -243,6 +243,8 @@ fn symbol(c: char) -> Option<String> {
         'λ' => "\\lambda",
         'ε' => "\\varepsilon",
         'π' => "\\pi",
+        'φ' => "\\varphi",
+        'δ' => "\\delta",
         'ṗ' => "\\dot{p}",
         '∞' => "\\infty",
         '×' => "\\times",
