@@ -62,6 +62,7 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
         let _ = writeln!(out, "\\emph{{Skipped:}} {}", prose(why));
         return;
     }
+    let _ = writeln!(out, "\\emph{{Why:}} {}\n", prose(step.id.why()));
     let rows: Vec<String> = step
         .formulas
         .iter()

@@ -82,6 +82,7 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, level: usize) {
         }
         None => {
             out.push_str(&heading(level, &format!("{n}. {}", step.title)));
+            let _ = writeln!(out, "*Why:* {}\n", escape(step.id.why()));
             out.push_str(&formulas(step, fmt));
             for text in &step.notes {
                 let _ = writeln!(out, "- {}", note(text, step, fmt));

@@ -59,6 +59,7 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
             }
             None => {
                 let _ = writeln!(out, "{}. {} [{}]", i + 1, step.title, step.id.json_name());
+                let _ = writeln!(out, "   Why: {}", step.id.why());
                 for f in &step.formulas {
                     for line in formula_lines(f, step, fmt) {
                         let _ = writeln!(out, "   {line}");

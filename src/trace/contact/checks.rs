@@ -75,7 +75,34 @@ pub fn checks(c: &SolvedContact) -> Step {
     }
     if checks.get(CheckKind::Restitution).is_some() {
         b.input("desired", c.solution.desired.desired);
-        b.f("v_s′", "(q̇₁′ − q̇₂′) · d̂", None, Some("separating_velocity"));
+        // The contact point's velocity on each body after the impulse,
+        // q̇ᵢ′ = ωᵢ′ × rᵢ + vᵢ′, from the applied record (as stage 3 did before).
+        let d = c.solution.frame.normal();
+        b.input("d", d);
+        let mut diff = Vec::new();
+        if let Some(applied) = &c.solution.applied {
+            for i in c.movable() {
+                let n = i + 1;
+                let change = applied.bodies[i].as_ref().expect("movable");
+                b.input(
+                    format!("point_velocity_after{n}"),
+                    change.w.cross(&c.r(i)) + change.v,
+                );
+                diff.push(format!("{{point_velocity_after{n}}}"));
+            }
+        }
+        let substituted = match (diff.len(), c.movable().first()) {
+            (2, _) => Some(format!("({} − {}) · {{d}}", diff[0], diff[1])),
+            (1, Some(1)) => Some(format!("(−{}) · {{d}}", diff[0])),
+            (1, _) => Some(format!("{} · {{d}}", diff[0])),
+            _ => None,
+        };
+        b.f(
+            "v_s′",
+            "(q̇₁′ − q̇₂′) · d̂",
+            substituted.as_deref(),
+            Some("separating_velocity"),
+        );
         b.f(
             "v_target",
             "v_s + Δv",

@@ -104,8 +104,17 @@ pub fn friction(c: &SolvedContact) -> Step {
             }
         }
         FrictionModel::VelocityScaling => {
-            b.f("|v_planar|", "√(v_y² + v_z²)", None, Some("planar"));
-            b.f("v_max", "−μ_s v_s", None, Some("limit"));
+            let v = c.solution.desired.contact_velocity;
+            b.input("vx", v.x);
+            b.input("vy", v.y);
+            b.input("vz", v.z);
+            b.f(
+                "|v_planar|",
+                "√(v_y² + v_z²)",
+                Some("√(({vy})² + ({vz})²)"),
+                Some("planar"),
+            );
+            b.f("v_max", "−μ_s v_s", Some("−{mu_s} · ({vx})"), Some("limit"));
             if f.regime == FrictionRegime::Static {
                 b.note("Seed 004's model: |v_planar| ≤ v_max = −μ_s v_s, so all planar velocity is removed (the sticking impulse). Here planar and limit are velocities, not impulses.");
             } else {
@@ -119,17 +128,21 @@ pub fn friction(c: &SolvedContact) -> Step {
             }
         }
         FrictionModel::KineticDirection => {
+            let v = c.solution.desired.contact_velocity;
             b.input("direction", f.direction);
+            b.input("vy", v.y);
+            b.input("vz", v.z);
+            b.input("closed_form_j", g.closed_form_j);
             b.f(
                 "f̂",
                 "(0, −v_y, −v_z) / √(v_y² + v_z²)",
-                None,
+                Some("(0, −({vy}), −({vz})) / √(({vy})² + ({vz})²)"),
                 Some("direction"),
             );
             b.f(
                 "g_contact",
                 "g_closed ((1, 0, 0) + μ_d f̂)",
-                None,
+                Some("{closed_form_j} ((1, 0, 0) + {mu_d} {direction})"),
                 Some("impulse_contact"),
             );
             if f.issue == Some(FrictionIssue::UndefinedDirection) {
