@@ -47,8 +47,17 @@ pub enum Command {
     Errata(ErrataArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
+    /// Every symbol of the worked solutions: meaning, unit, stages, the lectures' names.
+    Glossary(GlossaryArgs),
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
     Tui(TuiArgs),
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct GlossaryArgs {
+    /// text, json, md (Markdown) or latex (a standalone document).
+    #[arg(long, short, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
 }
 
 #[derive(Debug, Clone, Args)]

@@ -92,7 +92,7 @@ friction = 1.0
     assert_eq!(verdict(&t, "slip speed"), None);
     let n = notes(&t);
     assert!(
-        n.contains("SLIP FROM LAST FRAME'S ACCELERATION") && n.contains("(0.03)"),
+        n.contains("SLIP FROM LAST FRAME'S ACCELERATION") && n.contains("(0.03 m/s)"),
         "{n}"
     );
     let text = render::text::render(&t, &Fmt::default());

@@ -7,7 +7,7 @@ use std::fmt::Write;
 use crate::format::Fmt;
 use crate::trace::latex::{escape_text, prose};
 use crate::physics::StageId;
-use crate::trace::{Formula, Step, Trace};
+use crate::trace::{glossary, Formula, Step, Trace};
 
 /// Packages a fragment needs; the standalone document loads them.
 pub const PACKAGES: &str = "\\usepackage{amsmath}\n\\usepackage{amssymb}";
@@ -24,10 +24,14 @@ pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
     if let Some(s) = f.substituted_latex() {
         right.push(fmt.fill(&s, step, true));
     }
-    if let Some(r) = f.result.as_ref().and_then(|r| step.lookup(r)) {
+    if let Some((name, r)) = f.result.as_ref().and_then(|n| Some((n, step.lookup(n)?))) {
         let r = fmt.value_latex(r);
         if right.last() != Some(&r) {
             right.push(r);
+        }
+        // The result carries its unit.
+        if let Some(last) = right.last_mut() {
+            last.push_str(&glossary::unit_latex(glossary::unit(step, name)));
         }
     }
     let mut rows = Vec::new();
@@ -52,7 +56,13 @@ pub fn heading(depth: usize, text: &str) -> String {
 }
 
 fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
-    fmt.fill_with(text, step, &prose, &|v| format!("${}$", fmt.value_latex(v)))
+    fmt.fill_named(text, step, &prose, &|name, v| {
+        format!(
+            "${}{}$",
+            fmt.value_latex(v),
+            glossary::unit_latex(glossary::unit_to_add(text, name, glossary::unit(step, name)))
+        )
+    })
 }
 
 fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
@@ -131,7 +141,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
             .join(", ");
         let _ = writeln!(
             out,
-            "\\item[{}] position ${}$, orientation $[{q}]$,\\\\\n velocity ${}$, angular velocity ${}$.",
+            "\\item[{}] position ${}\\,\\mathrm{{m}}$, orientation $[{q}]$,\\\\\n velocity ${}\\,\\mathrm{{m/s}}$, angular velocity ${}\\,\\mathrm{{rad/s}}$.",
             prose(name),
             v(&a.position),
             v(&a.velocity),

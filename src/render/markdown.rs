@@ -7,7 +7,7 @@ use std::fmt::Write;
 use super::latex::aligned_rows;
 use crate::format::Fmt;
 use crate::physics::StageId;
-use crate::trace::{Step, Trace};
+use crate::trace::{glossary, Step, Trace};
 
 /// Escapes what Markdown would read as markup in running text, and no more,
 /// so the source stays readable: `\\`, `*` and `$` (which starts math)
@@ -71,7 +71,10 @@ pub fn formulas(step: &Step, fmt: &Fmt) -> String {
 }
 
 fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
-    fmt.fill_with(text, step, &escape, &|v| escape(&fmt.value(v)))
+    fmt.fill_named(text, step, &escape, &|name, v| {
+        let u = glossary::unit_to_add(text, name, glossary::unit(step, name));
+        escape(&glossary::with_unit(&fmt.value(v), u))
+    })
 }
 
 fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, level: usize) {
@@ -122,7 +125,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
         }
     }
     out.push_str(&heading(level + 1, "After"));
-    out.push_str("| body | position | orientation | velocity | angular velocity |\n");
+    out.push_str("| body | position (m) | orientation | velocity (m/s) | angular velocity (rad/s) |\n");
     out.push_str("|---|---|---|---|---|\n");
     for (name, a) in &trace.after {
         let v = |x: &[f64]| format!("({})", fmt.list(x));
