@@ -210,8 +210,8 @@ pub enum SheetFormat {
 #[derive(Debug, Clone, Args)]
 pub struct ExerciseArgs {
     /// Seed: the same seed gives the same exercises, byte for byte.
-    #[arg(long)]
-    pub seed: u64,
+    #[arg(long, required_unless_present = "grade")]
+    pub seed: Option<u64>,
     /// What the exercises practise.
     #[arg(long, value_enum, default_value_t = ExerciseKind::Mixed)]
     pub kind: ExerciseKind,
@@ -230,6 +230,15 @@ pub struct ExerciseArgs {
     /// Significant digits of the answers.
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Print an answer file to fill in (TOML: seed, kind, count, one
+    /// [[exercise]] table of empty answers each), for --grade.
+    #[arg(long, conflicts_with_all = ["answers", "grade", "dir"])]
+    pub answer_template: bool,
+    /// Grade a student's answer file (made from --answer-template): each
+    /// answer against the worked solution, with the right answer, the
+    /// difference and a score.
+    #[arg(long, value_name = "ANSWERS.toml")]
+    pub grade: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -7,11 +7,13 @@
 //! - [`latex`]: the Unicode formulas in LaTeX, converted when rendered;
 //! - `scene`: what a picture of the contact needs ([`SceneView`]);
 //! - `stage_names`: each stage's title, short label and why it exists;
-//! - [`glossary`]: every symbol with its meaning, unit and stages.
+//! - [`glossary`]: every symbol with its meaning, unit and stages;
+//! - [`grade`]: a student's answer graded against a value (predict mode, exercises).
 
 mod acceleration;
 pub mod contact;
 pub mod glossary;
+pub mod grade;
 pub mod latex;
 mod plane;
 pub mod resolver;
