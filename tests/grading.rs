@@ -58,3 +58,44 @@ fn a_broken_answer_file_is_a_usage_error() {
     assert!(out.is_empty());
     assert!(err.contains("seed"), "{err}");
 }
+
+/// Predict mode grades what a stage reveals: every result of every stage of
+/// every lesson, typed back as the text shows it, is right; the same
+/// answer 10 % off is wrong.
+#[test]
+fn every_revealed_result_typed_as_shown_is_right_and_ten_percent_off_is_wrong() {
+    use contact_lab::format::Fmt;
+    use contact_lab::lesson::Lesson;
+    use contact_lab::trace::grade::{grade, Score};
+    use contact_lab::trace::Value;
+    let fmt = Fmt::default();
+    let mut score = Score::default();
+    for id in contact_lab::lesson::embedded::ids() {
+        let l = Lesson::load(id).unwrap();
+        for k in 0..l.contacts.len() {
+            let t = contact_lab::worked_solution(&l, k);
+            for step in t.stages.iter().filter(|s| s.skipped.is_none()) {
+                for f in &step.formulas {
+                    let Some(v) = f.result.as_ref().and_then(|r| step.lookup(r)) else {
+                        continue;
+                    };
+                    let shown = fmt.value(v);
+                    let g = grade(&shown, v);
+                    assert!(g.correct, "{id} #{k} {}: {shown} graded wrong: {g:?}", f.lhs);
+                    score.record(&g);
+                    let off: Vec<f64> = v.numbers().iter().map(|x| x * 1.1 + 1.0).collect();
+                    if !off.is_empty() {
+                        let wrong = format!("({})", fmt.list(&off));
+                        let expected = match v {
+                            Value::Scalar(_) => fmt.list(&off),
+                            _ => wrong,
+                        };
+                        assert!(!grade(&expected, v).correct, "{id} {}: {expected}", f.lhs);
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(score.correct, score.graded);
+    assert!(score.graded > 500, "{}", score.summary());
+}

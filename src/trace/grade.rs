@@ -1,8 +1,8 @@
 //! Grading a student's answer against a value of the trace (predict mode in
 //! the TUI, `exercise --grade`): parse a scalar, vector or word, compare it
 //! with the tolerance of the lecture check (2 units in the answer's last
-//! digit plus 0.1 % of its size, `PrintedNum::tolerance`), report the right
-//! answer and the difference, and keep a score. Pure functions, no I/O.
+//! digit, at four decimals at most, plus 0.1 % of its size), report the
+//! right answer and the difference, and keep a score. Pure functions, no I/O.
 
 use crate::lesson::printed::{decimals_of, PrintedNum};
 use crate::trace::Value;
@@ -102,7 +102,7 @@ pub fn grade(answer: &str, expected: &Value) -> Grade {
         };
         return fail(format!("the answer has {} number(s); {what} expected", got.len()), given);
     }
-    let tolerance: Vec<f64> = got.iter().map(PrintedNum::tolerance).collect();
+    let tolerance: Vec<f64> = got.iter().map(tolerance).collect();
     let difference: Vec<f64> = want.iter().zip(&given).map(|(w, g)| w - g).collect();
     Grade {
         correct: difference.iter().zip(&tolerance).all(|(d, t)| d.abs() <= *t),
@@ -112,6 +112,18 @@ pub fn grade(answer: &str, expected: &Value) -> Grade {
         tolerance,
         problem: None,
     }
+}
+
+/// The lecture check's tolerance for a number written like `n` (2 units in
+/// its last digit plus 0.1 %), counted at four decimals at most: writing
+/// fewer digits ("20" for 18.7337, "1" for 0.0000007) does not buy a wider
+/// tolerance than the sheet's "work to four decimals".
+pub fn tolerance(n: &PrintedNum) -> f64 {
+    PrintedNum {
+        decimals: n.decimals.max(4),
+        ..*n
+    }
+    .tolerance()
 }
 
 /// The score of a lesson or an exercise sheet.
@@ -164,8 +176,11 @@ mod tests {
         let g = grade("18.73", &Value::Scalar(18.733766));
         assert!(g.correct, "{g:?}");
         assert!((g.difference[0] - 0.003766).abs() < 1e-9);
-        // Two units in the last digit (0.02) + 0.1 % (0.0187): 18.69 is out.
+        // Two units in the fourth decimal + 0.1 % (0.0189): 18.69 is out.
         assert!(!grade("18.69", &Value::Scalar(18.733766)).correct);
+        // Fewer digits do not widen the tolerance.
+        assert!(!grade("20", &Value::Scalar(18.733766)).correct);
+        assert!(!grade("1", &Value::Scalar(6.9e-7)).correct);
         // The lecture's erratum (0, 18, 7337, 0) has four numbers: not comparable.
         let g = grade("(0, 18, 7337, 0)", &Value::Vector([0.0, 18.7337, 0.0]));
         assert!(!g.correct);
