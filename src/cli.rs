@@ -166,8 +166,21 @@ pub struct FigureArgs {
     /// The plane the figure shows.
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,
+    /// Draw the state this stage works on (e.g. impulse: velocities before,
+    /// the impulse; apply_impulse: before and after); default: every mark.
+    #[arg(long, value_name = "STAGE", value_parser = parse_stage)]
+    pub stage: Option<crate::physics::StageId>,
     #[command(flatten)]
     pub model: ModelArgs,
+}
+
+fn parse_stage(s: &str) -> Result<crate::physics::StageId, String> {
+    crate::physics::StageId::from_json_name(s).ok_or_else(|| {
+        format!(
+            "unknown stage (stages: {})",
+            crate::physics::StageId::ALL.map(crate::physics::StageId::json_name).join(", ")
+        )
+    })
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

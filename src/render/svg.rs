@@ -223,9 +223,18 @@ fn points(p: &mut Page, fig: &Figure) {
     }
 }
 
-/// The figure of `trace`'s contact seen in `plane`.
+/// The figure of `trace`'s contact seen in `plane`: every stage's marks.
 pub fn render(trace: &Trace, plane: Plane) -> String {
+    render_at(trace, plane, None)
+}
+
+/// The figure as `stage` sees it (`Figure::at_stage`), or whole (`None`).
+pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::StageId>) -> String {
     let fig = Figure::of_contact(&trace.scene, plane);
+    let fig = match stage {
+        Some(s) => fig.at_stage(s),
+        None => fig,
+    };
     let reach = fig.scene_length;
     let v_scale = if fig.top_speed > 0.0 {
         0.9 * reach / fig.top_speed
@@ -244,13 +253,14 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
     // Everything drawn stays in the drawing area, however far a value reaches.
     p.out.push_str("  <g clip-path=\"url(#area)\">\n");
     bodies(&mut p, &fig);
-    // Spin about the view axis, before (dashed) and after.
-    for s in fig.spins.iter().filter(|s| fig.notable_spin(s.rate)) {
-        let (ink, radius) = if s.after {
-            (page::AFTER, 42.0)
-        } else {
-            (page::BEFORE, 30.0)
-        };
+    // Spin about the view axis, before (dashed) and after; the arc's radius
+    // grows with |ω| (the fastest spin drawn gets 46 px, none less than 18).
+    let notable: Vec<&crate::render::figure::Spin> =
+        fig.spins.iter().filter(|s| fig.notable_spin(s.rate)).collect();
+    let fastest = notable.iter().map(|s| s.rate.abs()).fold(0.0, f64::max);
+    for s in notable {
+        let ink = if s.after { page::AFTER } else { page::BEFORE };
+        let radius = 18.0 + 28.0 * s.rate.abs() / fastest;
         p.spin(flat(s.at), s.rate, radius, ink, !s.after);
     }
     for a in &arrows {
