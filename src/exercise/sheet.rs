@@ -381,6 +381,15 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
             "\\end{{tabular}}\n\\end{{center}}\n{}",
             prose(&contact_line(l, &inputs))
         );
+        // The set-up as the question sees it: no impulse, nothing after.
+        if let Some(fig) =
+            crate::render::latex_figure::picture(
+                &e.trace.scene,
+                Some(crate::physics::StageId::ContactFrame),
+            )
+        {
+            body.push_str(&fig);
+        }
         body.push_str("\\begin{enumerate}\n");
         for q in questions(e) {
             let _ = writeln!(body, "\\item {}", prose(q));

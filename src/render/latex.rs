@@ -98,6 +98,10 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
 /// after and the checks.
 pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
     let mut out = heading(depth, &format!("Contact {}", prose(&trace.contact_label)));
+    // The figure with every mark: before and after, the projection's move.
+    if let Some(fig) = super::latex_figure::picture(&trace.scene, None) {
+        out.push_str(&fig);
+    }
     for (i, step) in trace.stages.iter().enumerate() {
         stage(&mut out, i + 1, step, fmt, depth + 1);
         // The checks stage shows its verdicts; a separating contact has none

@@ -7,6 +7,7 @@ pub mod figure;
 pub mod glossary;
 pub mod json;
 pub mod latex;
+pub mod latex_figure;
 pub mod markdown;
 pub mod resolve;
 pub mod run;
