@@ -178,7 +178,9 @@ fn parse_stage(s: &str) -> Result<crate::physics::StageId, String> {
     crate::physics::StageId::from_json_name(s).ok_or_else(|| {
         format!(
             "unknown stage (stages: {})",
-            crate::physics::StageId::ALL.map(crate::physics::StageId::json_name).join(", ")
+            crate::physics::StageId::ALL
+                .map(crate::physics::StageId::json_name)
+                .join(", ")
         )
     })
 }

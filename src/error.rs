@@ -72,9 +72,15 @@ impl AppError {
 fn without_header(report: &str) -> String {
     let mut lines = report.lines().peekable();
     let mut out = String::new();
-    if lines.peek().is_some_and(|l| l.trim_start().starts_with('×')) {
+    if lines
+        .peek()
+        .is_some_and(|l| l.trim_start().starts_with('×'))
+    {
         lines.next();
-        while lines.peek().is_some_and(|l| l.trim_start().starts_with('│')) {
+        while lines
+            .peek()
+            .is_some_and(|l| l.trim_start().starts_with('│'))
+        {
             lines.next();
         }
     }
@@ -89,7 +95,8 @@ fn without_header(report: &str) -> String {
 mod tests {
     #[test]
     fn the_report_header_is_dropped_once() {
-        let r = "  × a.toml:8:9: bad\n  │ (more)\n   ╭─[a.toml:8:9]\n 8 │ x\n   ╰────\n  help: fix\n";
+        let r =
+            "  × a.toml:8:9: bad\n  │ (more)\n   ╭─[a.toml:8:9]\n 8 │ x\n   ╰────\n  help: fix\n";
         assert_eq!(
             super::without_header(r),
             "   ╭─[a.toml:8:9]\n 8 │ x\n   ╰────\n  help: fix\n"

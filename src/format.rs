@@ -146,7 +146,10 @@ impl Fmt {
     pub fn fill_units(&self, template: &str, step: &Step) -> String {
         use crate::trace::glossary::{unit, unit_to_add, with_unit};
         self.fill_named(template, step, &|s| s.to_string(), &|name, v| {
-            with_unit(&self.value(v), unit_to_add(template, name, unit(step, name)))
+            with_unit(
+                &self.value(v),
+                unit_to_add(template, name, unit(step, name)),
+            )
         })
     }
 

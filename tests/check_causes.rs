@@ -121,10 +121,7 @@ fn kinetic_direction_misses_the_restitution_target_and_says_why() {
     });
     for k in 0..2 {
         let t = contact_lab::worked_solution(&l, k);
-        assert_eq!(
-            verdict(&t, "separating velocity"),
-            Some(false)
-        );
+        assert_eq!(verdict(&t, "separating velocity"), Some(false));
         assert!(
             notes(&t).contains("MISSED TARGET: the kinetic-direction model (seeds 002/003) takes the normal impulse from the closed form g_closed (the companion lectures' j)"),
             "contact {k}: {}",
@@ -137,10 +134,7 @@ fn kinetic_direction_misses_the_restitution_target_and_says_why() {
         "friction = 0.5\nfriction_model = \"kinetic-direction\"",
     );
     let t = trace(&l);
-    assert_eq!(
-        verdict(&t, "separating velocity"),
-        Some(false)
-    );
+    assert_eq!(verdict(&t, "separating velocity"), Some(false));
     assert!(notes(&t).contains("knows neither the acceleration compensation"));
 }
 
@@ -168,10 +162,7 @@ fn energy_raised_by_the_acceleration_compensation_is_blamed_on_it() {
         "velocity = [0.0, -1.25, 0.0]\nacceleration = [0.0, -90.0, 0.0]",
         "",
     );
-    assert_eq!(
-        verdict(&trace(&l), "kinetic energy"),
-        Some(true)
-    );
+    assert_eq!(verdict(&trace(&l), "kinetic energy"), Some(true));
 }
 
 #[test]

@@ -57,14 +57,23 @@ fn every_stage_shows_the_state_it_works_on_and_its_legend_is_drawn() {
                     let kinds: Vec<ArrowKind> = f.arrows.iter().map(|a| a.kind).collect();
                     let ctx = format!("{id} #{k} {plane:?} {}", stage.json_name());
                     if at < order(StageId::Impulse) {
-                        assert!(!kinds.contains(&ArrowKind::Impulse), "{ctx}: impulse too early");
+                        assert!(
+                            !kinds.contains(&ArrowKind::Impulse),
+                            "{ctx}: impulse too early"
+                        );
                     }
                     if at < order(StageId::ApplyImpulse) {
-                        assert!(!kinds.contains(&ArrowKind::VelocityAfter), "{ctx}: after too early");
+                        assert!(
+                            !kinds.contains(&ArrowKind::VelocityAfter),
+                            "{ctx}: after too early"
+                        );
                         assert!(f.spins.iter().all(|s| !s.after), "{ctx}");
                     }
                     if at > order(StageId::ApplyImpulse) {
-                        assert!(!kinds.contains(&ArrowKind::Velocity), "{ctx}: before too late");
+                        assert!(
+                            !kinds.contains(&ArrowKind::Velocity),
+                            "{ctx}: before too late"
+                        );
                         assert!(f.spins.iter().all(|s| s.after), "{ctx}");
                     }
                     if at < order(StageId::NonlinearProjection) {

@@ -77,7 +77,12 @@ fn every_symbol_a_formula_defines_is_in_the_glossary_with_the_unit_it_prints() {
                     continue;
                 }
                 let e = entry(&f.lhs).unwrap_or_else(|| {
-                    panic!("{} {}: «{}» is not in the glossary", t.lesson, step.id.json_name(), f.lhs)
+                    panic!(
+                        "{} {}: «{}» is not in the glossary",
+                        t.lesson,
+                        step.id.json_name(),
+                        f.lhs
+                    )
                 });
                 assert!(
                     e.stages.contains(&step.id),
@@ -111,7 +116,10 @@ fn the_companion_lectures_names_are_said_once() {
         .map(|s| s.symbol)
         .collect();
     for s in ["g_closed", "d̂", "v_s", "μ_d"] {
-        assert!(companion.contains(&s), "{s} does not say its companion name");
+        assert!(
+            companion.contains(&s),
+            "{s} does not say its companion name"
+        );
     }
 }
 

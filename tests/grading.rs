@@ -6,7 +6,11 @@
 use assert_cmd::Command;
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::cargo_bin("contact-lab").unwrap().args(args).output().unwrap();
+    let out = Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8(out.stdout).unwrap(),
@@ -28,7 +32,14 @@ fn the_answer_key_is_given_to_four_decimals() {
 
 #[test]
 fn a_filled_answer_file_is_graded_with_the_right_answers_and_a_score() {
-    let (code, template, _) = run(&["exercise", "--seed", "1", "--count", "1", "--answer-template"]);
+    let (code, template, _) = run(&[
+        "exercise",
+        "--seed",
+        "1",
+        "--count",
+        "1",
+        "--answer-template",
+    ]);
     assert_eq!(code, 0);
     assert!(template.contains("seed = 1\n"), "{template}");
     // One right (from the key, four decimals), one a little off, one wrong.
@@ -43,8 +54,14 @@ fn a_filled_answer_file_is_graded_with_the_right_answers_and_a_score() {
     assert_eq!(code, 0, "{err}");
     assert!(report.contains("✓ Δv = 2.0160"), "{report}");
     assert!(report.contains("✓ v_s = −1.6801 m/s"), "{report}");
-    assert!(report.contains("✗ Δq̇_t = 0.5   right: 0.2117 (m/s)/(N·s), difference -0.2883"), "{report}");
-    assert!(report.contains("· g_world: no answer (right: (0.0000, 9.5229, 0.0000) N·s)"), "{report}");
+    assert!(
+        report.contains("✗ Δq̇_t = 0.5   right: 0.2117 (m/s)/(N·s), difference -0.2883"),
+        "{report}"
+    );
+    assert!(
+        report.contains("· g_world: no answer (right: (0.0000, 9.5229, 0.0000) N·s)"),
+        "{report}"
+    );
     assert!(report.ends_with("Score: 2/3 (67 %)\n"), "{report}");
 }
 
@@ -81,7 +98,11 @@ fn every_revealed_result_typed_as_shown_is_right_and_ten_percent_off_is_wrong() 
                     };
                     let shown = fmt.value(v);
                     let g = grade(&shown, v);
-                    assert!(g.correct, "{id} #{k} {}: {shown} graded wrong: {g:?}", f.lhs);
+                    assert!(
+                        g.correct,
+                        "{id} #{k} {}: {shown} graded wrong: {g:?}",
+                        f.lhs
+                    );
                     score.record(&g);
                     let off: Vec<f64> = v.numbers().iter().map(|x| x * 1.1 + 1.0).collect();
                     if !off.is_empty() {

@@ -128,7 +128,10 @@ fn a_rising_slip_is_labelled_as_rising() {
             }
         }
     }
-    assert!(found, "no lesson shows a rising slip: the label is untested");
+    assert!(
+        found,
+        "no lesson shows a rising slip: the label is untested"
+    );
 }
 
 #[test]
@@ -141,7 +144,10 @@ fn the_checker_catches_a_contradiction() {
         passed: Some(true),
         detail: String::new(),
     };
-    assert!(consistent(&bad, checks).is_err(), "31.25 → 28.91 did not rise");
+    assert!(
+        consistent(&bad, checks).is_err(),
+        "31.25 → 28.91 did not rise"
+    );
     let old = Verdict {
         label: "kinetic energy does not rise".into(),
         passed: Some(true),

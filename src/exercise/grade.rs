@@ -41,7 +41,9 @@ pub type Answers = Vec<Vec<(String, String)>>;
 
 /// Reads an answer file: the sheet id and, per exercise, key → answer text.
 pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
-    let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| e.message().to_string())?;
+    let doc: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| e.message().to_string())?;
     let seed = match doc.get("seed") {
         Some(toml::Value::Integer(n)) if *n >= 0 => *n as u64,
         _ => return Err("`seed` (a whole number ≥ 0) is missing".into()),
@@ -83,7 +85,12 @@ pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
                         .collect();
                     format!("({})", parts.join(", "))
                 }
-                other => return Err(format!("exercise {}: `{key}` = {other} is not an answer", i + 1)),
+                other => {
+                    return Err(format!(
+                        "exercise {}: `{key}` = {other} is not an answer",
+                        i + 1
+                    ))
+                }
             };
             row.push((key.clone(), text));
         }
@@ -104,7 +111,10 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
         let keys = short_answers(e.kind, &e.trace);
         for a in &keys {
             let right = with_unit(&four_decimals(a.value), unit(a.step, a.name));
-            let Some((_, text)) = given.iter().find(|(key, t)| key == a.key && !t.trim().is_empty()) else {
+            let Some((_, text)) = given
+                .iter()
+                .find(|(key, t)| key == a.key && !t.trim().is_empty())
+            else {
                 let _ = writeln!(out, "   · {}: no answer (right: {right})", a.label);
                 continue;
             };
@@ -115,7 +125,15 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
             if let Some(problem) = &g.problem {
                 let _ = writeln!(out, "   right: {right} ({problem})");
             } else if g.difference.is_empty() {
-                let _ = writeln!(out, "{}", if g.correct { String::new() } else { format!("   right: {right}") });
+                let _ = writeln!(
+                    out,
+                    "{}",
+                    if g.correct {
+                        String::new()
+                    } else {
+                        format!("   right: {right}")
+                    }
+                );
             } else {
                 let diff = match g.difference.as_slice() {
                     [d] => fmt.num(*d),
@@ -126,7 +144,10 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
         }
         for (key, _) in given {
             if !keys.iter().any(|a| a.key == key) {
-                let _ = writeln!(out, "   ? `{key}` is not an answer of this exercise (not graded)");
+                let _ = writeln!(
+                    out,
+                    "   ? `{key}` is not an answer of this exercise (not graded)"
+                );
             }
         }
         out.push('\n');
@@ -146,21 +167,39 @@ mod tests {
     #[test]
     fn a_filled_template_grades_right_wrong_and_missing_answers() {
         let exercises = crate::exercise::generate(1, Some(Kind::Frictionless), 1).unwrap();
-        let id = SheetId { seed: 1, kind: "frictionless".into(), count: 1 };
+        let id = SheetId {
+            seed: 1,
+            kind: "frictionless".into(),
+            count: 1,
+        };
         let t = template(&id, &exercises);
         assert!(t.contains("dv = \"\""), "{t}");
         let (read_id, empty) = read(&t).unwrap();
         assert_eq!(read_id, id);
         // Fill in: Δv right (to four decimals), v_s wrong, the rest blank.
-        let right = exercises[0].trace.value("desired_delta_velocity", "desired").unwrap().clone();
+        let right = exercises[0]
+            .trace
+            .value("desired_delta_velocity", "desired")
+            .unwrap()
+            .clone();
         let filled = t
             .replace("dv = \"\"", &format!("dv = \"{}\"", four_decimals(&right)))
             .replace("v_s = \"\"", "v_s = \"+3\"");
         let (_, answers) = read(&filled).unwrap();
         let (text, score) = report(&exercises, &answers);
-        assert_eq!(score, Score { correct: 1, graded: 2 }, "{text}");
+        assert_eq!(
+            score,
+            Score {
+                correct: 1,
+                graded: 2
+            },
+            "{text}"
+        );
         assert!(text.contains("✓ Δv = "), "{text}");
-        assert!(text.contains("✗ v_s = +3   right: -1.6800 m/s, difference -4.68"), "{text}");
+        assert!(
+            text.contains("✗ v_s = +3   right: -1.6800 m/s, difference -4.68"),
+            "{text}"
+        );
         assert!(text.contains("· g_world: no answer"), "{text}");
         assert!(text.ends_with("Score: 1/2 (50 %)\n"), "{text}");
         let (none, _) = report(&exercises, &empty);
@@ -171,6 +210,8 @@ mod tests {
     fn a_bad_answer_file_says_what_is_missing() {
         assert!(read("kind = \"mixed\"").unwrap_err().contains("seed"));
         assert!(read("seed = 1").unwrap_err().contains("count"));
-        assert!(read("seed = 1\ncount = 1\nexercise = 3").unwrap_err().contains("array of tables"));
+        assert!(read("seed = 1\ncount = 1\nexercise = 3")
+            .unwrap_err()
+            .contains("array of tables"));
     }
 }

@@ -69,7 +69,12 @@ pub fn short_answers(kind: Kind, t: &Trace) -> Vec<ShortAnswer<'_>> {
         ("w2", "ω₂′", "apply_impulse", "w2"),
     ];
     let impulse: [Want; 3] = [
-        ("v_s", "v_s", "desired_delta_velocity", "separating_velocity"),
+        (
+            "v_s",
+            "v_s",
+            "desired_delta_velocity",
+            "separating_velocity",
+        ),
         ("dv", "Δv", "desired_delta_velocity", "desired"),
         ("dq_t", "Δq̇_t", "unit_impulse", "total"),
     ];
@@ -82,10 +87,20 @@ pub fn short_answers(kind: Kind, t: &Trace) -> Vec<ShortAnswer<'_>> {
         Kind::StaticFriction | Kind::DynamicFriction => {
             wanted.extend(impulse);
             wanted.extend([
-                ("g_sticking", "sticking impulse g_contact", "impulse", "impulse_contact"),
+                (
+                    "g_sticking",
+                    "sticking impulse g_contact",
+                    "impulse",
+                    "impulse_contact",
+                ),
                 ("g_planar", "|g_planar|", "friction_clamp", "planar"),
                 ("g_max", "g_max = μ_s g_x", "friction_clamp", "limit"),
-                ("regime", "regime (static or dynamic)", "friction_clamp", "regime"),
+                (
+                    "regime",
+                    "regime (static or dynamic)",
+                    "friction_clamp",
+                    "regime",
+                ),
                 ("g_world", "g_world", "friction_clamp", "impulse_world"),
             ]);
             wanted.extend(velocities);
@@ -106,8 +121,18 @@ pub fn short_answers(kind: Kind, t: &Trace) -> Vec<ShortAnswer<'_>> {
                 ("p2", "p₂′", p, "position2"),
                 ("turn1", "Δθ₁", p, "angular_change1"),
                 ("turn2", "Δθ₂", p, "angular_change2"),
-                ("theta1", "θ₁′ / |θ₁′|", "orientation_update", "orientation1"),
-                ("theta2", "θ₂′ / |θ₂′|", "orientation_update", "orientation2"),
+                (
+                    "theta1",
+                    "θ₁′ / |θ₁′|",
+                    "orientation_update",
+                    "orientation1",
+                ),
+                (
+                    "theta2",
+                    "θ₂′ / |θ₂′|",
+                    "orientation_update",
+                    "orientation2",
+                ),
                 ("g_world", "g_world", "impulse", "impulse_world"),
             ]);
             wanted.extend(velocities);
@@ -382,12 +407,10 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
             prose(&contact_line(l, &inputs))
         );
         // The set-up as the question sees it: no impulse, nothing after.
-        if let Some(fig) =
-            crate::render::latex_figure::picture(
-                &e.trace.scene,
-                Some(crate::physics::StageId::ContactFrame),
-            )
-        {
+        if let Some(fig) = crate::render::latex_figure::picture(
+            &e.trace.scene,
+            Some(crate::physics::StageId::ContactFrame),
+        ) {
             body.push_str(&fig);
         }
         body.push_str("\\begin{enumerate}\n");
@@ -402,7 +425,12 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
             let _ = writeln!(body, "\n\\subsection*{{{}}}", prose(&e.lesson.title));
             body.push_str("\\begin{itemize}\n");
             for a in short_answers(e.kind, &e.trace) {
-                let _ = writeln!(body, "\\item {} $=$ {}", prose(a.label), prose(&key_text(&a)));
+                let _ = writeln!(
+                    body,
+                    "\\item {} $=$ {}",
+                    prose(a.label),
+                    prose(&key_text(&a))
+                );
             }
             body.push_str("\\end{itemize}\n\n");
             body.push_str(&latex::contact(&e.trace, fmt, 2));

@@ -10,7 +10,14 @@ use crate::trace::latex::{prose, to_latex};
 fn stages(s: &Symbol) -> String {
     s.stages
         .iter()
-        .map(|id| (crate::physics::StageId::ALL.iter().position(|x| x == id).unwrap_or(0) + 1).to_string())
+        .map(|id| {
+            (crate::physics::StageId::ALL
+                .iter()
+                .position(|x| x == id)
+                .unwrap_or(0)
+                + 1)
+            .to_string()
+        })
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -29,7 +36,11 @@ pub fn text() -> String {
         "Symbols of the worked solution (subscript ᵢ: body 1 or 2; stages: 1 contact frame … 9 checks)\n\n",
     );
     // Combining accents (d̂, q̇) take no column.
-    let cols = |t: &str| t.chars().filter(|c| !('\u{300}'..='\u{36f}').contains(c)).count();
+    let cols = |t: &str| {
+        t.chars()
+            .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+            .count()
+    };
     let width = GLOSSARY.iter().map(|s| cols(s.symbol)).max().unwrap_or(0);
     for s in GLOSSARY {
         let pad = " ".repeat(width - cols(s.symbol));
@@ -80,7 +91,10 @@ pub fn latex() -> String {
             let unit = if s.unit.is_empty() {
                 "---".to_string()
             } else {
-                format!("${}$", crate::trace::glossary::unit_latex(s.unit).trim_start_matches("\\,"))
+                format!(
+                    "${}$",
+                    crate::trace::glossary::unit_latex(s.unit).trim_start_matches("\\,")
+                )
             };
             let _ = writeln!(
                 body,

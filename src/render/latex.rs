@@ -5,8 +5,8 @@
 use std::fmt::Write;
 
 use crate::format::Fmt;
-use crate::trace::latex::{escape_text, prose};
 use crate::physics::StageId;
+use crate::trace::latex::{escape_text, prose};
 use crate::trace::{glossary, Formula, Step, Trace};
 
 /// Packages a fragment needs; the standalone document loads them.
@@ -60,7 +60,11 @@ fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
         format!(
             "${}{}$",
             fmt.value_latex(v),
-            glossary::unit_latex(glossary::unit_to_add(text, name, glossary::unit(step, name)))
+            glossary::unit_latex(glossary::unit_to_add(
+                text,
+                name,
+                glossary::unit(step, name)
+            ))
         )
     })
 }

@@ -23,7 +23,10 @@ struct Canvas {
 
 impl Canvas {
     fn at(&self, p: P) -> P {
-        [(p[0] - self.lo[0]) * self.scale, (p[1] - self.lo[1]) * self.scale]
+        [
+            (p[0] - self.lo[0]) * self.scale,
+            (p[1] - self.lo[1]) * self.scale,
+        ]
     }
 
     fn line(&mut self, a: P, b: P) {
@@ -68,7 +71,10 @@ impl Canvas {
         let (ux, uy) = (dx / len, dy / len);
         for side in [1.0f64, -1.0] {
             let (c, s) = (0.93f64, 0.36 * side);
-            let back = [t[0] - 6.0 * (ux * c - uy * s), t[1] - 6.0 * (uy * c + ux * s)];
+            let back = [
+                t[0] - 6.0 * (ux * c - uy * s),
+                t[1] - 6.0 * (uy * c + ux * s),
+            ];
             let _ = writeln!(
                 self.out,
                 "\\qbezier({:.1},{:.1})({:.1},{:.1})({:.1},{:.1})",
@@ -171,8 +177,14 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
         finite.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min),
     ];
     let hi = [
-        finite.iter().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max),
-        finite.iter().map(|p| p[1]).fold(f64::NEG_INFINITY, f64::max),
+        finite
+            .iter()
+            .map(|p| p[0])
+            .fold(f64::NEG_INFINITY, f64::max),
+        finite
+            .iter()
+            .map(|p| p[1])
+            .fold(f64::NEG_INFINITY, f64::max),
     ];
     let span = [(hi[0] - lo[0]).max(1e-12), (hi[1] - lo[1]).max(1e-12)];
     let scale = (WIDTH / span[0]).min(MAX_HEIGHT / span[1]);

@@ -125,7 +125,9 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
         }
     }
     out.push_str(&heading(level + 1, "After"));
-    out.push_str("| body | position (m) | orientation | velocity (m/s) | angular velocity (rad/s) |\n");
+    out.push_str(
+        "| body | position (m) | orientation | velocity (m/s) | angular velocity (rad/s) |\n",
+    );
     out.push_str("|---|---|---|---|---|\n");
     for (name, a) in &trace.after {
         let v = |x: &[f64]| format!("({})", fmt.list(x));

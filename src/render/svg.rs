@@ -255,8 +255,11 @@ pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::Stag
     bodies(&mut p, &fig);
     // Spin about the view axis, before (dashed) and after; the arc's radius
     // grows with |ω| (the fastest spin drawn gets 46 px, none less than 18).
-    let notable: Vec<&crate::render::figure::Spin> =
-        fig.spins.iter().filter(|s| fig.notable_spin(s.rate)).collect();
+    let notable: Vec<&crate::render::figure::Spin> = fig
+        .spins
+        .iter()
+        .filter(|s| fig.notable_spin(s.rate))
+        .collect();
     let fastest = notable.iter().map(|s| s.rate.abs()).fold(0.0, f64::max);
     for s in notable {
         let ink = if s.after { page::AFTER } else { page::BEFORE };

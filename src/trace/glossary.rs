@@ -38,7 +38,8 @@ const fn s(
     }
 }
 
-/// Every symbol, in the order the stages first use them.
+/// Every symbol, in the order the stages first use them (one line each).
+#[rustfmt::skip]
 pub const GLOSSARY: &[Symbol] = &[
     s("q", "contact point (world coordinates)", "m", &[CF, DV, CH], ""),
     s("d̂", "contact normal, unit vector pointing from body 2 toward body 1", "", &[CF, UI, DV, IM, FC, AI, NP, CH], "n in lectures 002/003"),
@@ -145,8 +146,7 @@ fn contains_symbol(text: &str, name: &str) -> bool {
         let after = text[end..].chars().next();
         let name_last = name.chars().next_back();
         let subscripted = name_last.is_some_and(|c| "ᵢ₀₁₂".contains(c));
-        let extends_after =
-            after.is_some_and(|c| part(c) || (!subscripted && "ᵢ₀₁₂⁻".contains(c)));
+        let extends_after = after.is_some_and(|c| part(c) || (!subscripted && "ᵢ₀₁₂⁻".contains(c)));
         let extends_before = before.is_some_and(|c| part(c) && !"Δ".contains(c))
             || (name.starts_with(|c: char| c.is_alphabetic()) && before == Some('Δ'));
         if !extends_after && !extends_before {
@@ -161,8 +161,7 @@ fn contains_symbol(text: &str, name: &str) -> bool {
 /// The body digit in a name (`r1`, `v2_before`) does not matter.
 pub fn unit(step: &crate::trace::Step, name: &str) -> &'static str {
     let base = without_body_digit(name);
-    let velocity_scaling =
-        matches!(step.value("model"), Some(crate::trace::Value::Text(m)) if m == "velocity-scaling");
+    let velocity_scaling = matches!(step.value("model"), Some(crate::trace::Value::Text(m)) if m == "velocity-scaling");
     match (step.id, base.as_str()) {
         (FC, "planar" | "limit") if velocity_scaling => "m/s",
         (FC, "planar" | "limit") => "N·s",
@@ -184,7 +183,10 @@ pub fn unit(step: &crate::trace::Step, name: &str) -> &'static str {
         (_, "inertia" | "shape_inertia") => "kg·m²",
         (_, "inverse_inertia_world") => "kg⁻¹·m⁻²",
         (_, "linear_inertia" | "angular_inertia" | "total_inertia") => "kg⁻¹",
-        (_, "v" | "v_before" | "dv" | "point_velocity" | "normal_velocity" | "contact_velocity")
+        (
+            _,
+            "v" | "v_before" | "dv" | "point_velocity" | "normal_velocity" | "contact_velocity",
+        )
         | (_, "separating_velocity" | "closing_velocity" | "velocity_from_acceleration")
         | (_, "desired" | "separating_velocity_before" | "separating_velocity_expected")
         | (_, "slip_speed_before" | "slip_speed_after" | "velocity_limit" | "vx" | "vy" | "vz")

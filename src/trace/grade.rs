@@ -35,7 +35,10 @@ pub fn parse(answer: &str) -> Result<Vec<PrintedNum>, String> {
         .map(|c| if "()[]{};".contains(c) { ' ' } else { c })
         .collect();
     let mut numbers = Vec::new();
-    for token in cleaned.split([',', ' ', '\t', '\n']).filter(|t| !t.is_empty()) {
+    for token in cleaned
+        .split([',', ' ', '\t', '\n'])
+        .filter(|t| !t.is_empty())
+    {
         match token.parse::<f64>() {
             Ok(x) if x.is_finite() => numbers.push(PrintedNum {
                 value: x,
@@ -100,12 +103,18 @@ pub fn grade(answer: &str, expected: &Value) -> Grade {
             1 => "one number".to_string(),
             n => format!("{n} numbers"),
         };
-        return fail(format!("the answer has {} number(s); {what} expected", got.len()), given);
+        return fail(
+            format!("the answer has {} number(s); {what} expected", got.len()),
+            given,
+        );
     }
     let tolerance: Vec<f64> = got.iter().map(tolerance).collect();
     let difference: Vec<f64> = want.iter().zip(&given).map(|(w, g)| w - g).collect();
     Grade {
-        correct: difference.iter().zip(&tolerance).all(|(d, t)| d.abs() <= *t),
+        correct: difference
+            .iter()
+            .zip(&tolerance)
+            .all(|(d, t)| d.abs() <= *t),
         given,
         expected: want,
         difference,
@@ -158,7 +167,13 @@ mod tests {
 
     #[test]
     fn scalars_vectors_units_and_unicode_minus_parse() {
-        let v = |s: &str| parse(s).unwrap().iter().map(|n| n.value).collect::<Vec<_>>();
+        let v = |s: &str| {
+            parse(s)
+                .unwrap()
+                .iter()
+                .map(|n| n.value)
+                .collect::<Vec<_>>()
+        };
         assert_eq!(v("18.7337"), vec![18.7337]);
         assert_eq!(v("(0, 18.7337, 0) N·s"), vec![0.0, 18.7337, 0.0]);
         assert_eq!(v("[1, 0, 0, −0.0687]"), vec![1.0, 0.0, 0.0, -0.0687]);
@@ -210,7 +225,13 @@ mod tests {
         s.record(&grade("2.25", &Value::Scalar(2.25)));
         s.record(&grade("2.5", &Value::Scalar(2.25)));
         s.record(&grade("0.1201", &Value::Scalar(0.120104)));
-        assert_eq!(s, Score { correct: 2, graded: 3 });
+        assert_eq!(
+            s,
+            Score {
+                correct: 2,
+                graded: 3
+            }
+        );
         assert_eq!(s.summary(), "2/3 (67 %)");
     }
 }

@@ -27,7 +27,8 @@ impl Figure {
             ArrowKind::VelocityAfter => applied,
             ArrowKind::Arm | ArrowKind::Normal => true,
         });
-        self.spins.retain(|s| if s.after { applied } else { before });
+        self.spins
+            .retain(|s| if s.after { applied } else { before });
         if !projected {
             for b in &mut self.bodies {
                 b.outline_after = None;

@@ -125,9 +125,7 @@ pub fn checks(c: &SolvedContact) -> Step {
             b.note(d.note);
         }
     }
-    let rose = |c: &crate::physics::checks::CheckItem<f64>| {
-        matches!(c.measured, Measured::Slip { before, after } if after > before)
-    };
+    let rose = |c: &crate::physics::checks::CheckItem<f64>| matches!(c.measured, Measured::Slip { before, after } if after > before);
     if checks
         .get(CheckKind::Slip)
         .is_some_and(|c| c.passed.is_none() && c.cause.is_none() && rose(c))

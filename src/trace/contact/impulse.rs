@@ -23,7 +23,12 @@ pub fn impulse(c: &SolvedContact) -> Step {
         None => {
             b.input("g", g.impulse_contact.x);
             b.f("g", "Δv / Δq̇_t", Some("{desired} / {total}"), Some("g"));
-            b.f("g_contact", "(g, 0, 0)", Some("({g}, 0, 0)"), Some("impulse_contact"));
+            b.f(
+                "g_contact",
+                "(g, 0, 0)",
+                Some("({g}, 0, 0)"),
+                Some("impulse_contact"),
+            );
             b.f(
                 "g_world",
                 "C g_contact = g d̂",

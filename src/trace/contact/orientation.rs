@@ -44,9 +44,7 @@ pub fn orientation(c: &SolvedContact) -> Step {
         b.f(
             &format!("θ{s}′ / |θ{s}′|"),
             "",
-            Some(&format!(
-                "{{orientation{n}_unnormalised}} / {{norm{n}}}"
-            )),
+            Some(&format!("{{orientation{n}_unnormalised}} / {{norm{n}}}")),
             Some(&format!("orientation{n}")),
         );
         b.f(

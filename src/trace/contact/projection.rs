@@ -54,9 +54,7 @@ pub fn projection(c: &SolvedContact) -> Step {
             b.f(
                 &format!("Δθ̇_d{s}"),
                 &format!("I{s}⁻¹(r{s} × d̂)"),
-                Some(&format!(
-                    "{{inverse_inertia_world{n}}} ({{r{n}}} × {{d}})"
-                )),
+                Some(&format!("{{inverse_inertia_world{n}}} ({{r{n}}} × {{d}})")),
                 Some(&format!("rotation_per_unit{n}")),
             );
             b.f(
@@ -73,11 +71,19 @@ pub fn projection(c: &SolvedContact) -> Step {
     b.value("total_inertia", p.total_inertia);
     b.f(
         "I_t",
-        if nonlinear { "Σ (I_lᵢ + I_aᵢ)" } else { "Σ I_lᵢ" },
+        if nonlinear {
+            "Σ (I_lᵢ + I_aᵢ)"
+        } else {
+            "Σ I_lᵢ"
+        },
         Some(&total.join(" + ")),
         Some("total_inertia"),
     );
-    let depth = if relaxed { "{resolved_depth}" } else { "{d_pen}" };
+    let depth = if relaxed {
+        "{resolved_depth}"
+    } else {
+        "{d_pen}"
+    };
     for i in c.movable() {
         let n = i + 1;
         let s = SUB[i];
