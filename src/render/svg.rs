@@ -191,7 +191,7 @@ fn points(p: &mut Page, fig: &Figure) {
                 } else {
                     format!("{} (m = ∞)", b.name)
                 };
-                p.text(
+                p.label(
                     [at[0] - 50.0, at[1] + 7.0],
                     20.0,
                     "end",
@@ -217,7 +217,7 @@ fn points(p: &mut Page, fig: &Figure) {
                     (-0.7, 0.7)
                 };
                 let label_at = [at[0] - 26.0 * t.0.abs(), at[1] + 26.0 * t.1.abs() + 8.0];
-                p.text(label_at, 22.0, "end", "bold", INK, &point.label);
+                p.label(label_at, 22.0, "end", "bold", INK, &point.label);
             }
         }
     }
@@ -248,6 +248,8 @@ pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::Stag
     let mut p = Page {
         view,
         out: String::new(),
+        placed: vec![],
+        pending: vec![],
     };
     header(&mut p, trace, plane);
     // Everything drawn stays in the drawing area, however far a value reaches.
@@ -270,6 +272,7 @@ pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::Stag
         p.arrow(a);
     }
     points(&mut p, &fig);
+    p.place_labels();
     p.out.push_str("  </g>\n");
     legend::legend(&mut p, &fig);
     p.out.push_str("</svg>\n");
