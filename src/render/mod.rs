@@ -11,5 +11,6 @@ pub mod latex_figure;
 pub mod markdown;
 pub mod resolve;
 pub mod run;
+pub mod study;
 pub mod svg;
 pub mod text;
