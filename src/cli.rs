@@ -51,8 +51,17 @@ pub enum Command {
     Errata(ErrataArgs),
     /// Generate exercises with worked answers, the same for the same seed.
     Exercise(ExerciseArgs),
+    /// Every symbol of the worked solutions: meaning, unit, stages, the lectures' names.
+    Glossary(GlossaryArgs),
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
     Tui(TuiArgs),
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct GlossaryArgs {
+    /// text, json, md (Markdown) or latex (a standalone document).
+    #[arg(long, short, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -162,8 +171,23 @@ pub struct FigureArgs {
     /// The plane the figure shows.
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,
+    /// Draw the state this stage works on (e.g. impulse: velocities before,
+    /// the impulse; apply_impulse: before and after); default: every mark.
+    #[arg(long, value_name = "STAGE", value_parser = parse_stage)]
+    pub stage: Option<crate::physics::StageId>,
     #[command(flatten)]
     pub model: ModelArgs,
+}
+
+fn parse_stage(s: &str) -> Result<crate::physics::StageId, String> {
+    crate::physics::StageId::from_json_name(s).ok_or_else(|| {
+        format!(
+            "unknown stage (stages: {})",
+            crate::physics::StageId::ALL
+                .map(crate::physics::StageId::json_name)
+                .join(", ")
+        )
+    })
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -206,8 +230,8 @@ pub enum SheetFormat {
 #[derive(Debug, Clone, Args)]
 pub struct ExerciseArgs {
     /// Seed: the same seed gives the same exercises, byte for byte.
-    #[arg(long)]
-    pub seed: u64,
+    #[arg(long, required_unless_present = "grade")]
+    pub seed: Option<u64>,
     /// What the exercises practise.
     #[arg(long, value_enum, default_value_t = ExerciseKind::Mixed)]
     pub kind: ExerciseKind,
@@ -226,6 +250,15 @@ pub struct ExerciseArgs {
     /// Significant digits of the answers.
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Print an answer file to fill in (TOML: seed, kind, count, one
+    /// [[exercise]] table of empty answers each), for --grade.
+    #[arg(long, conflicts_with_all = ["answers", "grade", "dir"])]
+    pub answer_template: bool,
+    /// Grade a student's answer file (made from --answer-template): each
+    /// answer against the worked solution, with the right answer, the
+    /// difference and a score.
+    #[arg(long, value_name = "ANSWERS.toml")]
+    pub grade: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -51,7 +51,9 @@ impl AppError {
                 let mut out = String::new();
                 for d in diagnostics {
                     out.push_str(&format!("error: {d}\n"));
-                    let _ = handler.render_report(&mut out, d);
+                    let mut report = String::new();
+                    let _ = handler.render_report(&mut report, d);
+                    out.push_str(&without_header(&report));
                 }
                 if *omitted > 0 {
                     out.push_str(&format!(
@@ -62,5 +64,42 @@ impl AppError {
             }
             other => format!("error: {other}\n"),
         }
+    }
+}
+
+/// A miette report without its `× message` header (and the header's
+/// wrapped lines): the `error:` line above already says it, once.
+fn without_header(report: &str) -> String {
+    let mut lines = report.lines().peekable();
+    let mut out = String::new();
+    if lines
+        .peek()
+        .is_some_and(|l| l.trim_start().starts_with('×'))
+    {
+        lines.next();
+        while lines
+            .peek()
+            .is_some_and(|l| l.trim_start().starts_with('│'))
+        {
+            lines.next();
+        }
+    }
+    for l in lines {
+        out.push_str(l);
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_report_header_is_dropped_once() {
+        let r =
+            "  × a.toml:8:9: bad\n  │ (more)\n   ╭─[a.toml:8:9]\n 8 │ x\n   ╰────\n  help: fix\n";
+        assert_eq!(
+            super::without_header(r),
+            "   ╭─[a.toml:8:9]\n 8 │ x\n   ╰────\n  help: fix\n"
+        );
     }
 }

@@ -136,6 +136,31 @@ impl Fmt {
         literal: &dyn Fn(&str) -> String,
         value: &dyn Fn(&Value) -> String,
     ) -> String {
+        self.fill_named(template, step, literal, &|_, v| value(v))
+    }
+
+    /// [`Fmt::fill`] for prose (notes, verdicts): each number followed by its
+    /// unit from the glossary (`closing at 1.25 m/s`).
+    /// A unit the template already writes after the placeholder
+    /// (`{rotation_degrees1}°`) is not added again.
+    pub fn fill_units(&self, template: &str, step: &Step) -> String {
+        use crate::trace::glossary::{unit, unit_to_add, with_unit};
+        self.fill_named(template, step, &|s| s.to_string(), &|name, v| {
+            with_unit(
+                &self.value(v),
+                unit_to_add(template, name, unit(step, name)),
+            )
+        })
+    }
+
+    /// Like [`Fmt::fill_with`], with the value's name passed to `value`.
+    pub fn fill_named(
+        &self,
+        template: &str,
+        step: &Step,
+        literal: &dyn Fn(&str) -> String,
+        value: &dyn Fn(&str, &Value) -> String,
+    ) -> String {
         let mut out = String::new();
         let mut text = String::new();
         let mut rest = template;
@@ -148,7 +173,7 @@ impl Fmt {
                     match step.lookup(name) {
                         Some(v) => {
                             out.push_str(&literal(&std::mem::take(&mut text)));
-                            out.push_str(&value(v));
+                            out.push_str(&value(name, v));
                         }
                         None => text.push_str(&rest[open..open + close + 2]),
                     }

@@ -71,12 +71,19 @@ fn row(buf: &Buffer, y: u16) -> String {
     (0..buf.area.width).map(|x| buf[(x, y)].symbol()).collect()
 }
 
-/// Position of the first cell where `text` starts.
+/// Position of the first cell where `text` starts (counted in cells: a
+/// cell may hold a letter with its combining accent, e.g. d̂).
 fn find(buf: &Buffer, text: &str) -> (u16, u16) {
     for y in 0..buf.area.height {
         let r = row(buf, y);
         if let Some(byte) = r.find(text) {
-            let x = r[..byte].chars().count() as u16;
+            let mut len = 0;
+            let x = (0..buf.area.width)
+                .take_while(|&x| {
+                    len += buf[(x, y)].symbol().len();
+                    len <= byte
+                })
+                .count() as u16;
             return (x, y);
         }
     }

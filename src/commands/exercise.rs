@@ -18,7 +18,34 @@ fn kind(k: ExerciseKind) -> (Option<Kind>, &'static str) {
     }
 }
 
+/// The kind named in an answer file.
+fn kind_named(name: &str) -> Result<ExerciseKind, AppError> {
+    use clap::ValueEnum;
+    ExerciseKind::from_str(name, false).map_err(|_| {
+        AppError::Usage(format!(
+            "unknown exercise kind \"{name}\" (kinds: mixed, frictionless, static-friction, dynamic-friction, penetration)"
+        ))
+    })
+}
+
+/// `exercise --grade FILE`: the sheet regenerated from the file's seed, each
+/// answer graded, the report and the score.
+fn grade_file(path: &std::path::Path, out: &mut dyn Write) -> Result<(), AppError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| AppError::Runtime(format!("cannot read {}: {e}", path.display())))?;
+    let (id, answers) = exercise::grade::read(&text)
+        .map_err(|e| AppError::Usage(format!("{}: {e}", path.display())))?;
+    let (k, _) = kind(kind_named(&id.kind)?);
+    let exercises = exercise::generate(id.seed, k, id.count).map_err(AppError::Runtime)?;
+    let (report, _) = exercise::grade::report(&exercises, &answers);
+    out.write_all(report.as_bytes()).map_err(io)
+}
+
 pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError> {
+    if let Some(path) = &args.grade {
+        return grade_file(path, out);
+    }
+    let seed = args.seed.expect("clap requires --seed without --grade");
     let count = args.count as usize;
     if args.format == SheetFormat::Toml && count > 1 && args.dir.is_none() {
         return Err(AppError::Usage(
@@ -30,9 +57,18 @@ pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError
         return Err(AppError::Usage("--dir applies to --format toml".into()));
     }
     let (k, name) = kind(args.kind);
-    let exercises = exercise::generate(args.seed, k, count).map_err(AppError::Runtime)?;
+    let exercises = exercise::generate(seed, k, count).map_err(AppError::Runtime)?;
+    if args.answer_template {
+        let id = exercise::grade::SheetId {
+            seed,
+            kind: name.to_string(),
+            count,
+        };
+        let text = exercise::grade::template(&id, &exercises);
+        return out.write_all(text.as_bytes()).map_err(io);
+    }
     let request = sheet::Request {
-        seed: args.seed,
+        seed,
         kind: name,
         count,
     };

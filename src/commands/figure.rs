@@ -19,7 +19,7 @@ pub fn figure(args: &FigureArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
     let lesson = load(&args.lesson, &args.model, Some(args.contact))?;
     warn(&lesson, err);
     let trace = crate::worked_solution(&lesson, args.contact);
-    let text = svg::render(&trace, plane(args.plane));
+    let text = svg::render_at(&trace, plane(args.plane), args.stage);
     match &args.output {
         Some(path) => write_atomic(path, text.as_bytes()),
         None => out.write_all(text.as_bytes()).map_err(io),

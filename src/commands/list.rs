@@ -57,7 +57,17 @@ pub fn welcome(out: &mut dyn Write) -> Result<(), AppError> {
     table(out)?;
     writeln!(
         out,
-        "\nStart with:  contact-lab solve lecture-2      (the lecture's second worked example)\n             contact-lab solve LESSON --format json\n             contact-lab resolve box-four-corners   (a scene's contacts resolved together)\n             contact-lab --help"
+        "\nStart with:  contact-lab solve lecture-2      (the lecture's second worked example)\n             contact-lab glossary             (every symbol: meaning, unit, stages)\n             contact-lab solve LESSON --format json\n             contact-lab resolve box-four-corners   (a scene's contacts resolved together)\n             contact-lab --help"
     )
-    .map_err(io)
+    .map_err(io)?;
+    // Run by a path (./target/release/contact-lab), the bare name may not be
+    // on PATH: say how to run it as it was run, or install it.
+    if let Some(program) = std::env::args().next().filter(|p| p.contains('/')) {
+        writeln!(
+            out,
+            "\n`contact-lab` above means this program: run it as {program} (e.g. {program} solve lecture-2),\nor put it on your PATH with `cargo install --path .`."
+        )
+        .map_err(io)?;
+    }
+    Ok(())
 }

@@ -39,6 +39,17 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::Study(args)) => study::study(&args, out, err),
         Some(Command::Errata(args)) => errata::errata(&args, out),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
+        Some(Command::Glossary(args)) => {
+            use crate::cli::Format;
+            use crate::render::glossary;
+            let text = match args.format {
+                Format::Text => glossary::text(),
+                Format::Json => glossary::json(),
+                Format::Md => glossary::markdown(),
+                Format::Latex => glossary::latex(),
+            };
+            out.write_all(text.as_bytes()).map_err(io)
+        }
     }
 }
 

@@ -48,67 +48,144 @@ fn questions(e: &Exercise) -> Vec<&'static str> {
     }
 }
 
-/// `(label, value)` of the short answers, where the trace has them.
-fn short_answers(kind: Kind, t: &Trace) -> Vec<(&'static str, &Value)> {
-    let mut wanted: Vec<(&'static str, &'static str, &'static str)> = Vec::new();
-    let velocities = [
-        ("v₁′", "apply_impulse", "v1"),
-        ("ω₁′", "apply_impulse", "w1"),
-        ("v₂′", "apply_impulse", "v2"),
-        ("ω₂′", "apply_impulse", "w2"),
+/// One short answer: the key a student's answer file uses, the label on the
+/// sheet, and where the trace has it.
+pub struct ShortAnswer<'a> {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub step: &'a crate::trace::Step,
+    pub name: &'static str,
+    pub value: &'a Value,
+}
+
+/// The short answers of an exercise, where the trace has them.
+pub fn short_answers(kind: Kind, t: &Trace) -> Vec<ShortAnswer<'_>> {
+    type Want = (&'static str, &'static str, &'static str, &'static str);
+    let mut wanted: Vec<Want> = Vec::new();
+    let velocities: [Want; 4] = [
+        ("v1", "v₁′", "apply_impulse", "v1"),
+        ("w1", "ω₁′", "apply_impulse", "w1"),
+        ("v2", "v₂′", "apply_impulse", "v2"),
+        ("w2", "ω₂′", "apply_impulse", "w2"),
     ];
-    let impulse = [
-        ("v_s", "desired_delta_velocity", "separating_velocity"),
-        ("Δv", "desired_delta_velocity", "desired"),
-        ("Δq̇_t", "unit_impulse", "total"),
+    let impulse: [Want; 3] = [
+        (
+            "v_s",
+            "v_s",
+            "desired_delta_velocity",
+            "separating_velocity",
+        ),
+        ("dv", "Δv", "desired_delta_velocity", "desired"),
+        ("dq_t", "Δq̇_t", "unit_impulse", "total"),
     ];
     match kind {
         Kind::Frictionless => {
             wanted.extend(impulse);
-            wanted.push(("g (world)", "impulse", "impulse_world"));
+            wanted.push(("g_world", "g_world", "impulse", "impulse_world"));
             wanted.extend(velocities);
         }
         Kind::StaticFriction | Kind::DynamicFriction => {
             wanted.extend(impulse);
             wanted.extend([
-                ("sticking impulse (contact)", "impulse", "impulse_contact"),
-                ("|g_planar|", "friction_clamp", "planar"),
-                ("μ_s g_n", "friction_clamp", "limit"),
-                ("regime", "friction_clamp", "regime"),
-                ("g (world)", "friction_clamp", "impulse_world"),
+                (
+                    "g_sticking",
+                    "sticking impulse g_contact",
+                    "impulse",
+                    "impulse_contact",
+                ),
+                ("g_planar", "|g_planar|", "friction_clamp", "planar"),
+                ("g_max", "g_max = μ_s g_x", "friction_clamp", "limit"),
+                (
+                    "regime",
+                    "regime (static or dynamic)",
+                    "friction_clamp",
+                    "regime",
+                ),
+                ("g_world", "g_world", "friction_clamp", "impulse_world"),
             ]);
             wanted.extend(velocities);
         }
         Kind::Penetration => {
             let p = "nonlinear_projection";
             wanted.extend([
-                ("I_l₁", p, "linear_inertia1"),
-                ("I_a₁", p, "angular_inertia1"),
-                ("I_l₂", p, "linear_inertia2"),
-                ("I_a₂", p, "angular_inertia2"),
-                ("I_t", p, "total_inertia"),
-                ("Δ_l₁", p, "linear_move1"),
-                ("Δ_a₁", p, "angular_move1"),
-                ("Δ_l₂", p, "linear_move2"),
-                ("Δ_a₂", p, "angular_move2"),
-                ("p₁′", p, "position1"),
-                ("p₂′", p, "position2"),
-                ("Δθ₁", p, "angular_change1"),
-                ("Δθ₂", p, "angular_change2"),
-                ("θ₁′", "orientation_update", "orientation1"),
-                ("θ₂′", "orientation_update", "orientation2"),
-                ("g (world)", "impulse", "impulse_world"),
+                ("I_l1", "I_l₁", p, "linear_inertia1"),
+                ("I_a1", "I_a₁", p, "angular_inertia1"),
+                ("I_l2", "I_l₂", p, "linear_inertia2"),
+                ("I_a2", "I_a₂", p, "angular_inertia2"),
+                ("I_t", "I_t", p, "total_inertia"),
+                ("move_l1", "Δ_l₁", p, "linear_move1"),
+                ("move_a1", "Δ_a₁", p, "angular_move1"),
+                ("move_l2", "Δ_l₂", p, "linear_move2"),
+                ("move_a2", "Δ_a₂", p, "angular_move2"),
+                ("p1", "p₁′", p, "position1"),
+                ("p2", "p₂′", p, "position2"),
+                ("turn1", "Δθ₁", p, "angular_change1"),
+                ("turn2", "Δθ₂", p, "angular_change2"),
+                (
+                    "theta1",
+                    "θ₁′ / |θ₁′|",
+                    "orientation_update",
+                    "orientation1",
+                ),
+                (
+                    "theta2",
+                    "θ₂′ / |θ₂′|",
+                    "orientation_update",
+                    "orientation2",
+                ),
+                ("g_world", "g_world", "impulse", "impulse_world"),
             ]);
             wanted.extend(velocities);
         }
     }
     wanted
         .into_iter()
-        .filter_map(|(label, stage, name)| {
-            let s = t.stage(stage).filter(|s| s.skipped.is_none())?;
-            Some((label, s.value(name)?))
+        .filter_map(|(key, label, stage, name)| {
+            let step = t.stage(stage).filter(|s| s.skipped.is_none())?;
+            Some(ShortAnswer {
+                key,
+                label,
+                step,
+                name,
+                value: step.value(name)?,
+            })
         })
         .collect()
+}
+
+/// The sheet asks for four decimals: the answer key gives exactly that.
+pub const DECIMALS: u32 = 4;
+
+/// A value to four decimals (`(0.0000, 18.7337, 0.0000)`), words as they are.
+pub fn four_decimals(v: &Value) -> String {
+    let f = Fmt::default();
+    let list = |xs: &[f64]| {
+        xs.iter()
+            .map(|x| f.fixed(*x, DECIMALS))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    match v {
+        Value::Scalar(x) => f.fixed(*x, DECIMALS),
+        Value::Vector(a) => format!("({})", list(a)),
+        Value::Quaternion(q) => format!("[{}]", list(q)),
+        Value::Matrix(m) => format!(
+            "[{}]",
+            m.iter()
+                .map(|r| format!("[{}]", list(r)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Value::Text(t) => t.clone(),
+    }
+}
+
+/// The short answer with its unit, to four decimals.
+fn key_text(a: &ShortAnswer) -> String {
+    crate::trace::glossary::with_unit(
+        &four_decimals(a.value),
+        crate::trace::glossary::unit(a.step, a.name),
+    )
 }
 
 fn shape(s: &Option<Shape>) -> String {
@@ -273,12 +350,12 @@ pub fn markdown(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -
         out.push_str("# Answers\n\n");
         for e in exercises {
             let _ = writeln!(out, "## {}\n", markdown::escape(&e.lesson.title));
-            for (label, v) in short_answers(e.kind, &e.trace) {
+            for a in short_answers(e.kind, &e.trace) {
                 let _ = writeln!(
                     out,
                     "- {} = {}",
-                    markdown::escape(label),
-                    markdown::escape(&fmt.value(v))
+                    markdown::escape(a.label),
+                    markdown::escape(&key_text(&a))
                 );
             }
             out.push('\n');
@@ -329,6 +406,13 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
             "\\end{{tabular}}\n\\end{{center}}\n{}",
             prose(&contact_line(l, &inputs))
         );
+        // The set-up as the question sees it: no impulse, nothing after.
+        if let Some(fig) = crate::render::latex_figure::picture(
+            &e.trace.scene,
+            Some(crate::physics::StageId::ContactFrame),
+        ) {
+            body.push_str(&fig);
+        }
         body.push_str("\\begin{enumerate}\n");
         for q in questions(e) {
             let _ = writeln!(body, "\\item {}", prose(q));
@@ -340,8 +424,13 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
         for e in exercises {
             let _ = writeln!(body, "\n\\subsection*{{{}}}", prose(&e.lesson.title));
             body.push_str("\\begin{itemize}\n");
-            for (label, v) in short_answers(e.kind, &e.trace) {
-                let _ = writeln!(body, "\\item {} $= {}$", prose(label), fmt.value_latex(v));
+            for a in short_answers(e.kind, &e.trace) {
+                let _ = writeln!(
+                    body,
+                    "\\item {} $=$ {}",
+                    prose(a.label),
+                    prose(&key_text(&a))
+                );
             }
             body.push_str("\\end{itemize}\n\n");
             body.push_str(&latex::contact(&e.trace, fmt, 2));

@@ -52,7 +52,8 @@ pub struct Printed {
     pub erratum: Option<String>,
 }
 
-fn decimals_of(text: &str) -> u32 {
+/// Decimals a number was written with (`1.25` → 2, `1.5e-3` → 4).
+pub fn decimals_of(text: &str) -> u32 {
     let mantissa = text.split(['e', 'E']).next().unwrap_or(text);
     let exponent: i32 = text
         .split(['e', 'E'])

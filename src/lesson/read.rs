@@ -29,9 +29,15 @@ fn open_error(e: &std::io::Error, shown: &str) -> LessonError {
     let path = shown.to_string();
     match e.kind() {
         std::io::ErrorKind::NotFound | std::io::ErrorKind::NotADirectory => LessonError::Missing {
+            reason: match nearest_id(&path) {
+                Some(id) => format!(
+                    "no such file, and no embedded lesson has this id; did you mean {id}? (see `contact-lab list`)"
+                ),
+                None => {
+                    "no such file, and no embedded lesson has this id (see `contact-lab list`)".into()
+                }
+            },
             path,
-            reason: "no such file, and no embedded lesson has this id (see `contact-lab list`)"
-                .into(),
         },
         std::io::ErrorKind::PermissionDenied => LessonError::Unreadable {
             path,
@@ -86,5 +92,51 @@ mod tests {
             open_error(&Error::other("disk on fire"), "a.toml"),
             LessonError::Unreadable { .. }
         ));
+    }
+}
+
+/// The embedded lesson id nearest to what was typed (`lectur-2` →
+/// `lecture-2`), when it is close: at most a third of its letters differ.
+pub fn nearest_id(typed: &str) -> Option<&'static str> {
+    let typed = typed.trim_end_matches(".toml");
+    let typed = typed.rsplit('/').next().unwrap_or(typed);
+    super::embedded::ids()
+        .into_iter()
+        .map(|id| (edit_distance(typed, id), id))
+        .filter(|(d, id)| *d > 0 && *d * 3 <= id.chars().count().max(3))
+        .min()
+        .map(|(_, id)| id)
+}
+
+/// Levenshtein distance over characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let here = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb))
+                .min(row[j] + 1)
+                .min(here + 1);
+            prev = here;
+        }
+    }
+    row[b.len()]
+}
+
+#[cfg(test)]
+mod suggestion_tests {
+    use super::nearest_id;
+
+    #[test]
+    fn a_near_miss_suggests_the_embedded_id() {
+        assert_eq!(nearest_id("lectur-2"), Some("lecture-2"));
+        assert_eq!(nearest_id("lecture2"), Some("lecture-2"));
+        assert_eq!(nearest_id("frictoin-cube"), Some("friction-cube"));
+        assert!(nearest_id("lessons/lecture-4.toml").is_some());
+        assert_eq!(nearest_id("completely-different-thing"), None);
+        assert_eq!(nearest_id("xyz"), None);
     }
 }

@@ -5,8 +5,9 @@
 use std::fmt::Write;
 
 use crate::format::Fmt;
+use crate::physics::StageId;
 use crate::trace::latex::{escape_text, prose};
-use crate::trace::{Formula, Step, Trace};
+use crate::trace::{glossary, Formula, Step, Trace};
 
 /// Packages a fragment needs; the standalone document loads them.
 pub const PACKAGES: &str = "\\usepackage{amsmath}\n\\usepackage{amssymb}";
@@ -23,10 +24,14 @@ pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
     if let Some(s) = f.substituted_latex() {
         right.push(fmt.fill(&s, step, true));
     }
-    if let Some(r) = f.result.as_ref().and_then(|r| step.lookup(r)) {
+    if let Some((name, r)) = f.result.as_ref().and_then(|n| Some((n, step.lookup(n)?))) {
         let r = fmt.value_latex(r);
         if right.last() != Some(&r) {
             right.push(r);
+        }
+        // The result carries its unit.
+        if let Some(last) = right.last_mut() {
+            last.push_str(&glossary::unit_latex(glossary::unit(step, name)));
         }
     }
     let mut rows = Vec::new();
@@ -51,7 +56,17 @@ pub fn heading(depth: usize, text: &str) -> String {
 }
 
 fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
-    fmt.fill_with(text, step, &prose, &|v| format!("${}$", fmt.value_latex(v)))
+    fmt.fill_named(text, step, &prose, &|name, v| {
+        format!(
+            "${}{}$",
+            fmt.value_latex(v),
+            glossary::unit_latex(glossary::unit_to_add(
+                text,
+                name,
+                glossary::unit(step, name)
+            ))
+        )
+    })
 }
 
 fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
@@ -61,6 +76,7 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
         let _ = writeln!(out, "\\emph{{Skipped:}} {}", prose(why));
         return;
     }
+    let _ = writeln!(out, "\\emph{{Why:}} {}\n", prose(step.id.why()));
     let rows: Vec<String> = step
         .formulas
         .iter()
@@ -86,8 +102,31 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, depth: usize) {
 /// after and the checks.
 pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
     let mut out = heading(depth, &format!("Contact {}", prose(&trace.contact_label)));
+    // The figure with every mark: before and after, the projection's move.
+    if let Some(fig) = super::latex_figure::picture(&trace.scene, None) {
+        out.push_str(&fig);
+    }
     for (i, step) in trace.stages.iter().enumerate() {
         stage(&mut out, i + 1, step, fmt, depth + 1);
+        // The checks stage shows its verdicts; a separating contact has none
+        // (and an empty itemize does not compile).
+        if step.id == StageId::Checks && step.skipped.is_none() && !trace.verdicts.is_empty() {
+            out.push_str("\\begin{itemize}\n");
+            for v in &trace.verdicts {
+                let mark = match v.passed {
+                    Some(true) => "$\\checkmark$",
+                    Some(false) => "$\\times$",
+                    None => "$\\cdot$",
+                };
+                let _ = writeln!(
+                    out,
+                    "\\item[{mark}] {}: {}",
+                    prose(&v.label),
+                    note(&v.detail, step, fmt)
+                );
+            }
+            out.push_str("\\end{itemize}\n");
+        }
     }
     out.push('\n');
     out.push_str(&heading(depth + 1, "After"));
@@ -110,7 +149,7 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
             .join(", ");
         let _ = writeln!(
             out,
-            "\\item[{}] position ${}$, orientation $[{q}]$,\\\\\n velocity ${}$, angular velocity ${}$.",
+            "\\item[{}] position ${}\\,\\mathrm{{m}}$, orientation $[{q}]$,\\\\\n velocity ${}\\,\\mathrm{{m/s}}$, angular velocity ${}\\,\\mathrm{{rad/s}}$.",
             prose(name),
             v(&a.position),
             v(&a.velocity),
@@ -118,26 +157,6 @@ pub fn contact(trace: &Trace, fmt: &Fmt, depth: usize) -> String {
         );
     }
     out.push_str("\\end{description}\n");
-    // A separating contact has no verdicts: an empty itemize does not compile.
-    if let Some(checks) = trace.stage("checks").filter(|_| !trace.verdicts.is_empty()) {
-        out.push('\n');
-        out.push_str(&heading(depth + 1, "Verdicts"));
-        out.push_str("\\begin{itemize}\n");
-        for v in &trace.verdicts {
-            let mark = match v.passed {
-                Some(true) => "$\\checkmark$",
-                Some(false) => "$\\times$",
-                None => "$\\cdot$",
-            };
-            let _ = writeln!(
-                out,
-                "\\item[{mark}] {}: {}",
-                prose(&v.label),
-                note(&v.detail, checks, fmt)
-            );
-        }
-        out.push_str("\\end{itemize}\n");
-    }
     out
 }
 

@@ -6,7 +6,8 @@ use std::fmt::Write;
 
 use super::latex::aligned_rows;
 use crate::format::Fmt;
-use crate::trace::{Step, Trace};
+use crate::physics::StageId;
+use crate::trace::{glossary, Step, Trace};
 
 /// Escapes what Markdown would read as markup in running text, and no more,
 /// so the source stays readable: `\\`, `*` and `$` (which starts math)
@@ -70,7 +71,10 @@ pub fn formulas(step: &Step, fmt: &Fmt) -> String {
 }
 
 fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
-    fmt.fill_with(text, step, &escape, &|v| escape(&fmt.value(v)))
+    fmt.fill_named(text, step, &escape, &|name, v| {
+        let u = glossary::unit_to_add(text, name, glossary::unit(step, name));
+        escape(&glossary::with_unit(&fmt.value(v), u))
+    })
 }
 
 fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, level: usize) {
@@ -81,6 +85,7 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, level: usize) {
         }
         None => {
             out.push_str(&heading(level, &format!("{n}. {}", step.title)));
+            let _ = writeln!(out, "*Why:* {}\n", escape(step.id.why()));
             out.push_str(&formulas(step, fmt));
             for text in &step.notes {
                 let _ = writeln!(out, "- {}", note(text, step, fmt));
@@ -105,9 +110,24 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
     }
     for (i, step) in trace.stages.iter().enumerate() {
         stage(&mut out, i + 1, step, fmt, level + 1);
+        // The checks stage shows its verdicts (a separating contact has none).
+        if step.id == StageId::Checks && step.skipped.is_none() && !trace.verdicts.is_empty() {
+            for v in &trace.verdicts {
+                let _ = writeln!(
+                    out,
+                    "- {} {}: {}",
+                    v.mark(),
+                    escape(&v.label),
+                    note(&v.detail, step, fmt)
+                );
+            }
+            out.push('\n');
+        }
     }
     out.push_str(&heading(level + 1, "After"));
-    out.push_str("| body | position | orientation | velocity | angular velocity |\n");
+    out.push_str(
+        "| body | position (m) | orientation | velocity (m/s) | angular velocity (rad/s) |\n",
+    );
     out.push_str("|---|---|---|---|---|\n");
     for (name, a) in &trace.after {
         let v = |x: &[f64]| format!("({})", fmt.list(x));
@@ -122,20 +142,6 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
         );
     }
     out.push('\n');
-    // A separating contact has no verdicts: no empty heading.
-    if let Some(checks) = trace.stage("checks").filter(|_| !trace.verdicts.is_empty()) {
-        out.push_str(&heading(level + 1, "Verdicts"));
-        for v in &trace.verdicts {
-            let mark = v.mark();
-            let _ = writeln!(
-                out,
-                "- {mark} {}: {}",
-                escape(&v.label),
-                note(&v.detail, checks, fmt)
-            );
-        }
-        out.push('\n');
-    }
     out
 }
 

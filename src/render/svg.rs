@@ -191,7 +191,7 @@ fn points(p: &mut Page, fig: &Figure) {
                 } else {
                     format!("{} (m = ∞)", b.name)
                 };
-                p.text(
+                p.label(
                     [at[0] - 50.0, at[1] + 7.0],
                     20.0,
                     "end",
@@ -217,15 +217,24 @@ fn points(p: &mut Page, fig: &Figure) {
                     (-0.7, 0.7)
                 };
                 let label_at = [at[0] - 26.0 * t.0.abs(), at[1] + 26.0 * t.1.abs() + 8.0];
-                p.text(label_at, 22.0, "end", "bold", INK, &point.label);
+                p.label(label_at, 22.0, "end", "bold", INK, &point.label);
             }
         }
     }
 }
 
-/// The figure of `trace`'s contact seen in `plane`.
+/// The figure of `trace`'s contact seen in `plane`: every stage's marks.
 pub fn render(trace: &Trace, plane: Plane) -> String {
+    render_at(trace, plane, None)
+}
+
+/// The figure as `stage` sees it (`Figure::at_stage`), or whole (`None`).
+pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::StageId>) -> String {
     let fig = Figure::of_contact(&trace.scene, plane);
+    let fig = match stage {
+        Some(s) => fig.at_stage(s),
+        None => fig,
+    };
     let reach = fig.scene_length;
     let v_scale = if fig.top_speed > 0.0 {
         0.9 * reach / fig.top_speed
@@ -239,24 +248,31 @@ pub fn render(trace: &Trace, plane: Plane) -> String {
     let mut p = Page {
         view,
         out: String::new(),
+        placed: vec![],
+        pending: vec![],
     };
     header(&mut p, trace, plane);
     // Everything drawn stays in the drawing area, however far a value reaches.
     p.out.push_str("  <g clip-path=\"url(#area)\">\n");
     bodies(&mut p, &fig);
-    // Spin about the view axis, before (dashed) and after.
-    for s in fig.spins.iter().filter(|s| fig.notable_spin(s.rate)) {
-        let (ink, radius) = if s.after {
-            (page::AFTER, 42.0)
-        } else {
-            (page::BEFORE, 30.0)
-        };
+    // Spin about the view axis, before (dashed) and after; the arc's radius
+    // grows with |ω| (the fastest spin drawn gets 46 px, none less than 18).
+    let notable: Vec<&crate::render::figure::Spin> = fig
+        .spins
+        .iter()
+        .filter(|s| fig.notable_spin(s.rate))
+        .collect();
+    let fastest = notable.iter().map(|s| s.rate.abs()).fold(0.0, f64::max);
+    for s in notable {
+        let ink = if s.after { page::AFTER } else { page::BEFORE };
+        let radius = 18.0 + 28.0 * s.rate.abs() / fastest;
         p.spin(flat(s.at), s.rate, radius, ink, !s.after);
     }
     for a in &arrows {
         p.arrow(a);
     }
     points(&mut p, &fig);
+    p.place_labels();
     p.out.push_str("  </g>\n");
     legend::legend(&mut p, &fig);
     p.out.push_str("</svg>\n");

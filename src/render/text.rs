@@ -4,7 +4,8 @@
 use std::fmt::Write;
 
 use crate::format::Fmt;
-use crate::trace::{Formula, Step, Trace};
+use crate::physics::StageId;
+use crate::trace::{glossary, Formula, Step, Trace};
 
 /// `lhs = rhs`, `= numbers`, `= result`, aligned under the `=`.
 pub fn formula_lines(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
@@ -15,10 +16,15 @@ pub fn formula_lines(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
     if let Some(s) = &f.substituted {
         rhs.push(fmt.fill(s, step, false));
     }
-    if let Some(r) = f.result.as_ref().and_then(|r| step.lookup(r)) {
+    if let Some((name, r)) = f.result.as_ref().and_then(|n| Some((n, step.lookup(n)?))) {
         let r = fmt.value(r);
         if rhs.last() != Some(&r) {
             rhs.push(r);
+        }
+        // The result carries its unit (the substituted numbers do not: the
+        // glossary gives every symbol's unit).
+        if let Some(last) = rhs.last_mut() {
+            *last = glossary::with_unit(last, glossary::unit(step, name));
         }
     }
     let pad = " ".repeat(f.lhs.chars().count());
@@ -58,32 +64,32 @@ pub fn render(trace: &Trace, fmt: &Fmt) -> String {
             }
             None => {
                 let _ = writeln!(out, "{}. {} [{}]", i + 1, step.title, step.id.json_name());
+                let _ = writeln!(out, "   Why: {}", step.id.why());
                 for f in &step.formulas {
                     for line in formula_lines(f, step, fmt) {
                         let _ = writeln!(out, "   {line}");
                     }
                 }
                 for note in &step.notes {
-                    let _ = writeln!(out, "   · {}", fmt.fill(note, step, false));
+                    let _ = writeln!(out, "   · {}", fmt.fill_units(note, step));
+                }
+                // The checks stage shows its verdicts, not only its formulas.
+                if step.id == StageId::Checks {
+                    for v in &trace.verdicts {
+                        let _ = writeln!(
+                            out,
+                            "   {} {}: {}",
+                            v.mark(),
+                            v.label,
+                            fmt.fill_units(&v.detail, step)
+                        );
+                    }
                 }
             }
         }
     }
     let _ = writeln!(out);
     after(&mut out, &trace.after, fmt);
-    if let Some(checks) = trace.stage("checks") {
-        let _ = writeln!(out);
-        let _ = writeln!(out, "Checks");
-        for v in &trace.verdicts {
-            let mark = v.mark();
-            let _ = writeln!(
-                out,
-                "   {mark} {}: {}",
-                v.label,
-                fmt.fill(&v.detail, checks, false)
-            );
-        }
-    }
     out
 }
 
@@ -94,13 +100,13 @@ pub(crate) fn after(out: &mut String, bodies: &[(String, crate::trace::AfterStat
         let v = |x: &[f64]| format!("({})", fmt.list(x));
         let _ = writeln!(
             out,
-            "   {name}: position {}, orientation [{}]",
+            "   {name}: position {} m, orientation [{}]",
             v(&a.position),
             fmt.list(&a.orientation)
         );
         let _ = writeln!(
             out,
-            "   {}  velocity {}, angular velocity {}",
+            "   {}  velocity {} m/s, angular velocity {} rad/s",
             " ".repeat(name.chars().count()),
             v(&a.velocity),
             v(&a.angular_velocity)

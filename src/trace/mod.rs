@@ -6,10 +6,14 @@
 //! - `worked`: a lesson contact's whole [`Trace`] ([`build`]);
 //! - [`latex`]: the Unicode formulas in LaTeX, converted when rendered;
 //! - `scene`: what a picture of the contact needs ([`SceneView`]);
-//! - `stage_names`: each stage's title and short label.
+//! - `stage_names`: each stage's title, short label and why it exists;
+//! - [`glossary`]: every symbol with its meaning, unit and stages;
+//! - [`grade`]: a student's answer graded against a value (predict mode, exercises).
 
 mod acceleration;
 pub mod contact;
+pub mod glossary;
+pub mod grade;
 pub mod latex;
 mod names;
 mod plane;

@@ -8,6 +8,7 @@
 mod build;
 mod model;
 mod outline;
+mod stage;
 #[cfg(test)]
 mod tests;
 
@@ -32,7 +33,9 @@ impl Figure {
         contact.bodies = contact
             .bodies
             .map(|b| b.and_then(|b| shown.iter().position(|i| *i == b)));
-        build::build(&bodies, &[contact], plane)
+        let mut f = build::build(&bodies, &[contact], plane);
+        f.prune_legend();
+        f
     }
 
     /// A figure of a whole scene: every body given and every contact between
@@ -41,6 +44,8 @@ impl Figure {
     /// [`Figure::of_contact`] draws one: q, and bodies 1 and 2.
     pub fn of_scene(bodies: &[BodyView], contacts: &[ContactView], plane: Plane) -> Figure {
         let bodies: Vec<&BodyView> = bodies.iter().collect();
-        build::build(&bodies, contacts, plane)
+        let mut f = build::build(&bodies, contacts, plane);
+        f.prune_legend();
+        f
     }
 }

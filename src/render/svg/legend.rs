@@ -108,14 +108,24 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                 after,
             } => {
                 let n = tag(body);
-                out.line(
-                    Some((BEFORE, true, 3.5)),
-                    &format!("v{n} before {}", v(before)),
-                );
-                out.line(
-                    Some((AFTER, false, 3.5)),
-                    &format!("v{n}′ after {}", v(after)),
-                );
+                // Only the arrows drawn (a stage's figure may hold one of them).
+                let drawn = |kind| {
+                    fig.arrows
+                        .iter()
+                        .any(|a| a.body == Some(body) && a.kind == kind)
+                };
+                if drawn(crate::render::figure::ArrowKind::Velocity) {
+                    out.line(
+                        Some((BEFORE, true, 3.5)),
+                        &format!("v{n} before {}", v(before)),
+                    );
+                }
+                if drawn(crate::render::figure::ArrowKind::VelocityAfter) {
+                    out.line(
+                        Some((AFTER, false, 3.5)),
+                        &format!("v{n}′ after {}", v(after)),
+                    );
+                }
             }
             LegendItem::Spin {
                 body,

@@ -126,9 +126,101 @@ pub struct PageArrow {
 pub struct Page {
     pub view: View,
     pub out: String,
+    /// Boxes of the labels placed in the drawing so far, `[x0, y0, x1, y1]`.
+    pub placed: Vec<[f64; 4]>,
+    /// Labels waiting for [`Page::place_labels`].
+    pub pending: Vec<Pending>,
+}
+
+/// A label not yet placed.
+pub struct Pending {
+    at: P,
+    size: f64,
+    anchor: String,
+    weight: String,
+    fill: String,
+    text: String,
+}
+
+/// The box a label of `size` px takes when written at `at` with `anchor`
+/// (an estimate: 0.55 em a character, combining accents take no room).
+pub fn label_box(at: P, size: f64, anchor: &str, s: &str) -> [f64; 4] {
+    let chars = s
+        .chars()
+        .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+        .count() as f64;
+    let w = 0.55 * size * chars;
+    let x0 = match anchor {
+        "middle" => at[0] - w / 2.0,
+        "end" => at[0] - w,
+        _ => at[0],
+    };
+    [x0, at[1] - 0.75 * size, x0 + w, at[1] + 0.2 * size]
+}
+
+/// Whether two boxes overlap by more than 2 px each way.
+pub fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    a[2].min(b[2]) - a[0].max(b[0]) > 2.0 && a[3].min(b[3]) - a[1].max(b[1]) > 2.0
 }
 
 impl Page {
+    /// A label in the drawing, placed by [`Page::place_labels`].
+    pub fn label(&mut self, at: P, size: f64, anchor: &str, weight: &str, fill: &str, s: &str) {
+        self.pending.push(Pending {
+            at,
+            size,
+            anchor: anchor.to_string(),
+            weight: weight.to_string(),
+            fill: fill.to_string(),
+            text: s.to_string(),
+        });
+    }
+
+    /// Writes the pending labels, the contact point's and the centres' first,
+    /// then the normal, the impulse, velocities, arms, names: each where it
+    /// overlaps no label placed before it (at its place, else nudged 22 or
+    /// 44 px in one of eight directions); where none is free it is left out
+    /// (the legend names every mark).
+    pub fn place_labels(&mut self) {
+        let rank = |t: &str| match t.chars().next() {
+            Some('q') => 0,
+            Some('p') => 1,
+            Some('d') => 2,
+            Some('g') | Some('−') => 3,
+            Some('v') | Some('ω') => 4,
+            Some('r') => 5,
+            _ => 6,
+        };
+        let mut pending = std::mem::take(&mut self.pending);
+        pending.sort_by_key(|l| rank(&l.text));
+        for l in pending {
+            let mut candidates = vec![l.at];
+            for r in [22.0, 44.0] {
+                for (dx, dy) in [
+                    (0.0, -1.0),
+                    (0.0, 1.0),
+                    (1.0, 0.0),
+                    (-1.0, 0.0),
+                    (1.0, -1.0),
+                    (-1.0, -1.0),
+                    (1.0, 1.0),
+                    (-1.0, 1.0),
+                ] {
+                    candidates.push([l.at[0] + r * dx, l.at[1] + r * dy]);
+                }
+            }
+            let free = candidates.into_iter().find_map(|p| {
+                let b = label_box(p, l.size, &l.anchor, &l.text);
+                let inside = b[0] >= AREA.0 && b[2] <= AREA.2 && b[1] >= AREA.1 && b[3] <= AREA.3;
+                (inside && !self.placed.iter().any(|o| overlap(o, &b))).then_some((p, b))
+            });
+            if let Some((p, b)) = free {
+                self.placed.push(b);
+                self.text(p, l.size, &l.anchor, &l.weight, &l.fill, &l.text);
+            }
+        }
+    }
+
     pub fn text(&mut self, at: P, size: f64, anchor: &str, weight: &str, fill: &str, s: &str) {
         let _ = writeln!(
             self.out,
@@ -211,7 +303,7 @@ impl Page {
                 (p[1] + q[1]) / 2.0 - 16.0 * dir.0 + 7.0,
             ],
         };
-        self.text(at, 20.0, "middle", "bold", a.colour, &a.label);
+        self.label(at, 20.0, "middle", "bold", a.colour, &a.label);
     }
 
     /// An arrow along the view axis, seen end on at `q`: ⊙ toward the viewer, ⊗ away.
@@ -249,7 +341,7 @@ impl Page {
             );
         }
         let at = [q[0] + 16.0, q[1] - 12.0];
-        self.text(at, 20.0, "start", "bold", a.colour, &a.label);
+        self.label(at, 20.0, "start", "bold", a.colour, &a.label);
     }
 
     /// A spin arrow about the view axis around `centre`, of `radius` px.
@@ -314,6 +406,6 @@ impl Page {
             q[1] + 0.9 * reach * t.1 + 0.25 * reach * d.1,
         ]);
         let name = format!("{name} (m = ∞)");
-        self.text(label, 20.0, "middle", "normal", INK, &name);
+        self.label(label, 20.0, "middle", "normal", INK, &name);
     }
 }

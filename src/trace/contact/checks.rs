@@ -75,9 +75,36 @@ pub fn checks(c: &SolvedContact) -> Step {
     }
     if checks.get(CheckKind::Restitution).is_some() {
         b.input("desired", c.solution.desired.desired);
-        b.f("v_s′", "(q̇₁′ − q̇₂′) · d̂", None, Some("separating_velocity"));
+        // The contact point's velocity on each body after the impulse,
+        // q̇ᵢ′ = ωᵢ′ × rᵢ + vᵢ′, from the applied record (as stage 3 did before).
+        let d = c.solution.frame.normal();
+        b.input("d", d);
+        let mut diff = Vec::new();
+        if let Some(applied) = &c.solution.applied {
+            for i in c.movable() {
+                let n = i + 1;
+                let change = applied.bodies[i].as_ref().expect("movable");
+                b.input(
+                    format!("point_velocity_after{n}"),
+                    change.w.cross(&c.r(i)) + change.v,
+                );
+                diff.push(format!("{{point_velocity_after{n}}}"));
+            }
+        }
+        let substituted = match (diff.len(), c.movable().first()) {
+            (2, _) => Some(format!("({} − {}) · {{d}}", diff[0], diff[1])),
+            (1, Some(1)) => Some(format!("(−{}) · {{d}}", diff[0])),
+            (1, _) => Some(format!("{} · {{d}}", diff[0])),
+            _ => None,
+        };
         b.f(
-            "target",
+            "v_s′",
+            "(q̇₁′ − q̇₂′) · d̂",
+            substituted.as_deref(),
+            Some("separating_velocity"),
+        );
+        b.f(
+            "v_target",
             "v_s + Δv",
             Some("{separating_velocity_before} + {desired}"),
             Some("separating_velocity_expected"),
@@ -98,16 +125,22 @@ pub fn checks(c: &SolvedContact) -> Step {
             b.note(d.note);
         }
     }
+    let rose = |c: &crate::physics::checks::CheckItem<f64>| matches!(c.measured, Measured::Slip { before, after } if after > before);
     if checks
         .get(CheckKind::Slip)
-        .is_some_and(|c| c.passed.is_none() && c.cause.is_none())
+        .is_some_and(|c| c.passed.is_none() && c.cause.is_none() && rose(c))
     {
         b.note("The slip speed rose ({slip_speed_before} → {slip_speed_after}) while sliding: the normal impulse itself drives the contact point sideways (M₀₁, M₀₂ ≠ 0), more than friction capped at μ g_n can take away. This is Coulomb friction working as intended, not an error.");
     }
     if checks.get(CheckKind::ResidualPenetration).is_some() {
+        let depth_symbol = if c.problem.contact.settings.relaxation != 1.0 {
+            "d_res"
+        } else {
+            "d_pen"
+        };
         b.f(
-            "residual",
-            "d_pen − Σ (−1)^(i+1) (qᵢ′ − q) · d̂",
+            "d_left",
+            &format!("{depth_symbol} − Σ (−1)^(i+1) (qᵢ′ − q) · d̂"),
             Some("{depth_to_resolve} − {separation_gained}"),
             Some("residual_penetration"),
         );
@@ -116,49 +149,86 @@ pub fn checks(c: &SolvedContact) -> Step {
     b.done()
 }
 
-/// One verdict per check: a label, pass/fail (or informs), and a detail
-/// whose `{name}` placeholders are values of the `checks` stage.
+/// One verdict per check: a label that states what the numbers show (it
+/// never claims "does not rise" beside numbers that rise), pass/fail (or
+/// informs), and a detail whose `{name}` placeholders are values of the
+/// `checks` stage.
 pub fn verdicts(c: &SolvedContact) -> Vec<Verdict> {
     c.solution
         .checks
         .items
         .iter()
         .map(|item| {
-            let (label, detail) = match item.kind() {
-                CheckKind::LinearMomentum => (
-                    "linear momentum conserved".to_string(),
+            let failed = item.passed == Some(false);
+            let (label, detail) = match (item.kind(), &item.measured) {
+                (CheckKind::LinearMomentum, _) => (
+                    if failed {
+                        "linear momentum changed"
+                    } else {
+                        "linear momentum conserved"
+                    }
+                    .to_string(),
                     "error {linear_momentum_error}".to_string(),
                 ),
-                CheckKind::AngularMomentum(i) => (
-                    format!("angular momentum of {} about q conserved", c.name(i)),
+                (CheckKind::AngularMomentum(i), _) => (
+                    format!(
+                        "angular momentum of {} about q {}",
+                        c.name(i),
+                        if failed { "changed" } else { "conserved" }
+                    ),
                     format!("error {{angular_momentum_error{}}}", i + 1),
                 ),
-                CheckKind::Restitution => (
-                    "separating velocity meets the target".to_string(),
-                    "v_s′ = {separating_velocity}, target {separating_velocity_expected}"
+                (CheckKind::Restitution, _) => (
+                    if failed {
+                        "separating velocity misses the target"
+                    } else {
+                        "separating velocity meets the target"
+                    }
+                    .to_string(),
+                    "v_s′ = {separating_velocity}, v_target = {separating_velocity_expected}"
                         .to_string(),
                 ),
-                CheckKind::Energy => (
-                    "kinetic energy does not rise".to_string(),
+                (CheckKind::Energy, Measured::Energy { before, after, .. }) => (
+                    format!("kinetic energy {}", trend(*before, *after)),
                     "{energy_before} → {energy_after}".to_string(),
                 ),
-                CheckKind::FrictionCone => (
-                    "impulse inside the friction cone".to_string(),
-                    "g_n = {normal_impulse}, |g_t| = {tangential_impulse} ≤ {cone_limit}"
+                (
+                    CheckKind::FrictionCone,
+                    Measured::FrictionCone {
+                        tangential, limit, ..
+                    },
+                ) => {
+                    let inside = tangential <= limit;
+                    (
+                        match (inside, failed) {
+                            (true, _) => "impulse inside the friction cone",
+                            (false, false) => "impulse on the friction cone's edge (outside by round-off only)",
+                            (false, true) => "impulse outside the friction cone",
+                        }
                         .to_string(),
-                ),
-                CheckKind::Slip => (
-                    "slip speed does not rise".to_string(),
+                        format!(
+                            "g_n = {{normal_impulse}}, |g_planar| = {{tangential_impulse}} {} μ g_n = {{cone_limit}}",
+                            if inside { "≤" } else { ">" }
+                        ),
+                    )
+                }
+                (CheckKind::Slip, Measured::Slip { before, after }) => (
+                    format!("slip speed {}", trend(*before, *after)),
                     "{slip_speed_before} → {slip_speed_after}".to_string(),
                 ),
-                CheckKind::ResidualPenetration => (
+                (CheckKind::ResidualPenetration, _) => (
                     "penetration left after the finite move".to_string(),
                     "{residual_penetration} of {depth_to_resolve}".to_string(),
                 ),
-                CheckKind::UnitQuaternion(i) => (
-                    format!("{}'s orientation is a unit quaternion", c.name(i)),
+                (CheckKind::UnitQuaternion(i), _) => (
+                    format!(
+                        "{}'s orientation {} a unit quaternion",
+                        c.name(i),
+                        if failed { "is not" } else { "is" }
+                    ),
                     format!("| |θ′| − 1 | = {{orientation_norm_error{}}}", i + 1),
                 ),
+                (kind, measured) => unreachable!("{kind:?} measured as {measured:?}"),
             };
             Verdict {
                 label,
@@ -167,4 +237,15 @@ pub fn verdicts(c: &SolvedContact) -> Vec<Verdict> {
             }
         })
         .collect()
+}
+
+/// "rose", "fell" or "stayed the same": what a measured quantity did.
+pub fn trend(before: f64, after: f64) -> &'static str {
+    if after > before {
+        "rose"
+    } else if after < before {
+        "fell"
+    } else {
+        "stayed the same"
+    }
 }

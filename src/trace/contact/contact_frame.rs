@@ -25,7 +25,7 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
     b.value("tangent1", f.contact_to_world.column(2).into_owned());
     b.f(
         "t₀",
-        "g × d̂ / |g × d̂|",
+        "â × d̂ / |â × d̂|",
         Some("{guess} × {d} / |{guess} × {d}|"),
         Some("tangent0"),
     );
@@ -43,7 +43,7 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
         );
     }
     b.note(format!(
-        "The guess axis is world {} because |d.x| {} |d.y|; the basis columns d̂, t₀, t₁ are orthonormal and right-handed (t₁ = d̂ × t₀).",
+        "The guess axis â is world {} because |d.x| {} |d.y|; the basis columns d̂, t₀, t₁ are orthonormal and right-handed (t₁ = d̂ × t₀).",
         guess.1,
         if guess.1 == "y" { ">" } else { "≤" }
     ));

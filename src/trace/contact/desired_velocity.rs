@@ -52,7 +52,12 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
         Some(&world),
         Some("contact_velocity"),
     );
-    b.f("v_s", "v_c · x̂", None, Some("separating_velocity"));
+    b.f(
+        "v_s",
+        "v_c · x̂",
+        Some("{contact_velocity} · (1, 0, 0)"),
+        Some("separating_velocity"),
+    );
     b.input("c_given", dv.restitution_given);
     b.value("restitution", dv.restitution);
     b.value("velocity_from_acceleration", dv.velocity_from_acceleration);

@@ -23,11 +23,16 @@ pub fn impulse(c: &SolvedContact) -> Step {
         None => {
             b.input("g", g.impulse_contact.x);
             b.f("g", "Δv / Δq̇_t", Some("{desired} / {total}"), Some("g"));
-            b.f("g_contact", "(g, 0, 0)", None, Some("impulse_contact"));
+            b.f(
+                "g_contact",
+                "(g, 0, 0)",
+                Some("({g}, 0, 0)"),
+                Some("impulse_contact"),
+            );
             b.f(
                 "g_world",
                 "C g_contact = g d̂",
-                Some("{g} × {d}"),
+                Some("{g} {d}"),
                 Some("impulse_world"),
             );
         }
@@ -64,18 +69,34 @@ pub fn impulse(c: &SolvedContact) -> Step {
         "closed_form_relative_difference",
         g.closed_form_relative_difference,
     );
+    b.input("restitution", c.solution.desired.restitution);
+    b.input("separating_velocity", c.solution.desired.separating());
+    let mut denominator = vec!["{linear}".to_string()];
+    b.input("linear", c.solution.unit.linear);
+    for i in c.movable() {
+        let n = i + 1;
+        b.input(
+            format!("angular{n}"),
+            c.solution.unit.bodies[i].as_ref().expect("movable").angular,
+        );
+        denominator.push(format!("{{angular{n}}}"));
+    }
     b.f(
-        "j",
-        "−(1 + c)(v_rel · n) / (Σ 1/mᵢ + Σ (rᵢ × n)ᵀ Iᵢ⁻¹ (rᵢ × n))",
-        None,
+        "g_closed",
+        "−(1 + c) v_s / (Σ 1/mᵢ + Σ (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂))",
+        Some(&format!(
+            "−(1 + {{restitution}})({{separating_velocity}}) / ({})",
+            denominator.join(" + ")
+        )),
         Some("closed_form_j"),
     );
+    b.note("The companion lectures (002/003) write this closed form as j = −(1 + C_R)(v_rel · n) / (…): their j is g here, n is d̂, v_rel · n is v_s and C_R is c. Each (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂) equals Δq̇_dᵢ of stage 2.");
     if g.solve.is_some() {
-        b.note("For comparison, without friction the companion lectures' closed form gives j = {closed_form_j} along the normal.");
+        b.note("For comparison, without friction the closed form gives g_closed = {closed_form_j} along the normal.");
     } else if c.solution.desired.velocity_from_acceleration == 0.0 {
-        b.note("The companion lectures' closed form j = {closed_form_j} agrees with Δv / Δq̇_t to a relative {closed_form_relative_difference}: the same number by a different route ((r × n)ᵀ I⁻¹ (r × n) = ((I⁻¹(r × n)) × r) · n).");
+        b.note("The closed form g_closed = {closed_form_j} agrees with Δv / Δq̇_t to a relative {closed_form_relative_difference}: the same number by a different route ((r × d̂)ᵀ I⁻¹ (r × d̂) = ((I⁻¹(r × d̂)) × r) · d̂).");
     } else {
-        b.note("The closed form j = {closed_form_j} has no acceleration compensation, so it differs from Δv / Δq̇_t here (relative {closed_form_relative_difference}).");
+        b.note("The closed form g_closed = {closed_form_j} has no acceleration compensation, so it differs from Δv / Δq̇_t here (relative {closed_form_relative_difference}).");
     }
     b.done()
 }

@@ -40,15 +40,16 @@ pub fn orientation(c: &SolvedContact) -> Step {
             )),
             Some(&format!("orientation{n}_unnormalised")),
         );
+        b.input(format!("norm{n}"), u.unnormalised.norm());
         b.f(
             &format!("θ{s}′ / |θ{s}′|"),
             "",
-            None,
+            Some(&format!("{{orientation{n}_unnormalised}} / {{norm{n}}}")),
             Some(&format!("orientation{n}")),
         );
         b.f(
-            "angle",
-            "2 atan2(|v|, w) of θ′ θ⁻¹",
+            &format!("φ{s}"),
+            &format!("2 atan2(|δ_xyz|, δ_w), δ = (θ{s}′ / |θ{s}′|) θ{s}⁻¹"),
             None,
             Some(&format!("rotation_degrees{n}")),
         );
@@ -65,13 +66,13 @@ pub fn orientation(c: &SolvedContact) -> Step {
         let rounding = through_centre(&c.r(i), &c.solution.frame.normal());
         match about_one_axis(&u.rotation) {
             _ if rounding => b.note(format!(
-                "{name} turns only {{rotation_degrees{n}}}°: its contact arm lies along the normal to within the data's rounding, so this is what the rounding leaves."
+                "{name} turns only φ{s} = {{rotation_degrees{n}}}°: its contact arm lies along the normal to within the data's rounding, so this is what the rounding leaves."
             )),
             Some((axis, ccw)) => b.note(format!(
-                "{name} turns {{rotation_degrees{n}}}° {} about the {axis}-axis (seen from +{axis}); |Δθ| = {{rotation_vector_degrees{n}}}° is the small-angle estimate of the same turn.",
+                "{name} turns φ{s} = {{rotation_degrees{n}}}° {} about the {axis}-axis (seen from +{axis}); |Δθ{s}| = {{rotation_vector_degrees{n}}}° is the small-angle estimate of the same turn.",
                 sense(ccw)
             )),
-            None => b.note(format!("{name} turns {{rotation_degrees{n}}}° about the axis {{rotation_axis{n}}}.")),
+            None => b.note(format!("{name} turns φ{s} = {{rotation_degrees{n}}}° about the axis {{rotation_axis{n}}}.")),
         }
         b.note(format!("Euler angles of the new orientation, intrinsic z-y′-x″ (yaw, pitch, roll): {{euler_zyx_degrees{n}}}°."));
     }

@@ -39,20 +39,20 @@ pub fn unit_impulse(c: &SolvedContact) -> Step {
         b.value(format!("velocity{n}"), r.velocity_per_unit_impulse);
         b.value(format!("angular{n}"), r.angular);
         b.f(
-            &format!("u{s}"),
+            &format!("u_d{s}"),
             &format!("r{s} × d̂"),
             Some(&format!("{{r{n}}} × {{d}}")),
             Some(&format!("torque{n}")),
         );
         b.f(
-            &format!("Δθ̇{s}"),
-            &format!("I{s}⁻¹ u{s}"),
+            &format!("Δθ̇_d{s}"),
+            &format!("I{s}⁻¹ u_d{s}"),
             Some(&format!("{{inverse_inertia_world{n}}} {{torque{n}}}")),
             Some(&format!("rotation{n}")),
         );
         b.f(
             &format!("Δq̇{s}"),
-            &format!("Δθ̇{s} × r{s}"),
+            &format!("Δθ̇_d{s} × r{s}"),
             Some(&format!("{{rotation{n}}} × {{r{n}}}")),
             Some(&format!("velocity{n}")),
         );
@@ -110,10 +110,24 @@ fn matrix(c: &SolvedContact, b: &mut B, m: nalgebra::Matrix3<f64>) {
         }
     }
     b.value("matrix", m);
+    b.input("contact_to_world", c.solution.frame.contact_to_world);
+    let sum = c
+        .movable()
+        .into_iter()
+        .filter(|&i| {
+            let r = c.solution.unit.bodies[i].as_ref().expect("movable");
+            r.angular_matrix_world.is_some()
+        })
+        .map(|i| format!("{{angular_matrix_world{}}}", i + 1))
+        .collect::<Vec<_>>()
+        .join(" + ");
+    let sum = if sum.is_empty() { "0".to_string() } else { sum };
     b.f(
         "M",
         "Cᵀ (Σ −[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙",
-        None,
+        Some(&format!(
+            "{{contact_to_world}}ᵀ ({sum}) {{contact_to_world}} + {{linear}} 𝟙"
+        )),
         Some("matrix"),
     );
     b.note("With friction all three contact directions matter: M maps an impulse in contact coordinates to the velocity change it causes. M[0][0] equals Δq̇_t.");

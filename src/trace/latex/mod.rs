@@ -14,6 +14,7 @@ pub use prose::{escape_text, prose};
 pub fn to_latex(s: &str) -> String {
     let chars: Vec<char> = s.chars().collect();
     let mut out = String::new();
+    let mut square = 0usize;
     let mut i = 0;
     while i < chars.len() {
         let ch = chars[i];
@@ -115,6 +116,18 @@ pub fn to_latex(s: &str) -> String {
                 i = close + 1;
                 continue;
             }
+        }
+        // Inside square brackets a space separates columns ([d̂ t₀ t₁]):
+        // math mode would swallow it.
+        if ch == ' ' && square > 0 {
+            out.push_str("\\;");
+            i += 1;
+            continue;
+        }
+        match ch {
+            '[' => square += 1,
+            ']' => square = square.saturating_sub(1),
+            _ => {}
         }
         match symbol(ch) {
             Some(t) => {
@@ -243,6 +256,8 @@ fn symbol(c: char) -> Option<String> {
         'λ' => "\\lambda",
         'ε' => "\\varepsilon",
         'π' => "\\pi",
+        'φ' => "\\varphi",
+        'δ' => "\\delta",
         'ṗ' => "\\dot{p}",
         '∞' => "\\infty",
         '×' => "\\times",

@@ -1,0 +1,217 @@
+//! `exercise --answer-template` and `exercise --grade ANSWERS.toml`: a
+//! student's answer file, filled in from the template, graded answer by
+//! answer with `trace::grade` (the lecture check's tolerance), with the
+//! right answer, the difference and the score.
+
+use std::fmt::Write;
+
+use super::sheet::{four_decimals, short_answers};
+use super::{Exercise, Kind};
+use crate::format::Fmt;
+use crate::trace::glossary::{unit, with_unit};
+use crate::trace::grade::{grade, Score};
+
+/// What an answer file must say to regenerate its sheet.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SheetId {
+    pub seed: u64,
+    /// `mixed`, `frictionless`, `static-friction`, `dynamic-friction` or `penetration`.
+    pub kind: String,
+    pub count: usize,
+}
+
+/// The answer file to fill in: the sheet's id, then per exercise every
+/// short answer's key with an empty string.
+pub fn template(id: &SheetId, exercises: &[Exercise]) -> String {
+    let mut out = format!(
+        "# Answers to `contact-lab exercise --seed {} --kind {} --count {}`.\n# Write each answer as on paper, four decimals: \"2.2500\", \"(0.0000, 18.7337, 0.0000)\",\n# \"static\" or \"dynamic\"; a unit after the numbers is allowed. Leave \"\" to skip one.\n# Grade with: contact-lab exercise --grade THIS-FILE\nseed = {}\nkind = \"{}\"\ncount = {}\n",
+        id.seed, id.kind, id.count, id.seed, id.kind, id.count
+    );
+    for e in exercises {
+        let _ = writeln!(out, "\n[[exercise]]  # {}", e.lesson.title);
+        for a in short_answers(e.kind, &e.trace) {
+            let _ = writeln!(out, "{} = \"\"  # {}", a.key, a.label);
+        }
+    }
+    out
+}
+
+/// Per exercise, the (key, answer text) pairs of an answer file.
+pub type Answers = Vec<Vec<(String, String)>>;
+
+/// Reads an answer file: the sheet id and, per exercise, key → answer text.
+pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
+    let doc: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| e.message().to_string())?;
+    let seed = match doc.get("seed") {
+        Some(toml::Value::Integer(n)) if *n >= 0 => *n as u64,
+        _ => return Err("`seed` (a whole number ≥ 0) is missing".into()),
+    };
+    let kind = match doc.get("kind") {
+        None => "mixed".to_string(),
+        Some(toml::Value::String(k)) => k.clone(),
+        Some(_) => return Err("`kind` must be a string".into()),
+    };
+    let tables = match doc.get("exercise") {
+        Some(toml::Value::Array(a)) => a.clone(),
+        None => vec![],
+        Some(_) => return Err("`exercise` must be an array of tables ([[exercise]])".into()),
+    };
+    let count = match doc.get("count") {
+        Some(toml::Value::Integer(n)) if (1..=50).contains(n) => *n as usize,
+        None if !tables.is_empty() => tables.len(),
+        _ => return Err("`count` (1 to 50) is missing".into()),
+    };
+    let mut answers = Vec::new();
+    for (i, t) in tables.iter().enumerate() {
+        let toml::Value::Table(t) = t else {
+            return Err(format!("exercise {} is not a table", i + 1));
+        };
+        let mut row = Vec::new();
+        for (key, v) in t {
+            let text = match v {
+                toml::Value::String(s) => s.clone(),
+                toml::Value::Float(x) => format!("{x}"),
+                toml::Value::Integer(n) => n.to_string(),
+                toml::Value::Array(xs) => {
+                    let parts: Vec<String> = xs
+                        .iter()
+                        .map(|x| match x {
+                            toml::Value::Float(x) => format!("{x}"),
+                            toml::Value::Integer(n) => n.to_string(),
+                            other => other.to_string(),
+                        })
+                        .collect();
+                    format!("({})", parts.join(", "))
+                }
+                other => {
+                    return Err(format!(
+                        "exercise {}: `{key}` = {other} is not an answer",
+                        i + 1
+                    ))
+                }
+            };
+            row.push((key.clone(), text));
+        }
+        answers.push(row);
+    }
+    Ok((SheetId { seed, kind, count }, answers))
+}
+
+/// The graded file as text: per exercise each answer ✓ or ✗ with the right
+/// answer and the difference, unknown keys named, and the score.
+pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (String, Score) {
+    let fmt = Fmt::default();
+    let mut out = String::new();
+    let mut score = Score::default();
+    for (k, e) in exercises.iter().enumerate() {
+        let _ = writeln!(out, "{} ({})", e.lesson.title, kind_name(e.kind));
+        let given = answers.get(k).map(Vec::as_slice).unwrap_or(&[]);
+        let keys = short_answers(e.kind, &e.trace);
+        for a in &keys {
+            let right = with_unit(&four_decimals(a.value), unit(a.step, a.name));
+            let Some((_, text)) = given
+                .iter()
+                .find(|(key, t)| key == a.key && !t.trim().is_empty())
+            else {
+                let _ = writeln!(out, "   · {}: no answer (right: {right})", a.label);
+                continue;
+            };
+            let g = grade(text, a.value);
+            score.record(&g);
+            let mark = if g.correct { "✓" } else { "✗" };
+            let _ = write!(out, "   {mark} {} = {}", a.label, text.trim());
+            if let Some(problem) = &g.problem {
+                let _ = writeln!(out, "   right: {right} ({problem})");
+            } else if g.difference.is_empty() {
+                let _ = writeln!(
+                    out,
+                    "{}",
+                    if g.correct {
+                        String::new()
+                    } else {
+                        format!("   right: {right}")
+                    }
+                );
+            } else {
+                let diff = match g.difference.as_slice() {
+                    [d] => fmt.num(*d),
+                    ds => format!("({})", fmt.list(ds)),
+                };
+                let _ = writeln!(out, "   right: {right}, difference {diff}");
+            }
+        }
+        for (key, _) in given {
+            if !keys.iter().any(|a| a.key == key) {
+                let _ = writeln!(
+                    out,
+                    "   ? `{key}` is not an answer of this exercise (not graded)"
+                );
+            }
+        }
+        out.push('\n');
+    }
+    let _ = writeln!(out, "Score: {}", score.summary());
+    (out, score)
+}
+
+fn kind_name(k: Kind) -> &'static str {
+    k.name()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_filled_template_grades_right_wrong_and_missing_answers() {
+        let exercises = crate::exercise::generate(1, Some(Kind::Frictionless), 1).unwrap();
+        let id = SheetId {
+            seed: 1,
+            kind: "frictionless".into(),
+            count: 1,
+        };
+        let t = template(&id, &exercises);
+        assert!(t.contains("dv = \"\""), "{t}");
+        let (read_id, empty) = read(&t).unwrap();
+        assert_eq!(read_id, id);
+        // Fill in: Δv right (to four decimals), v_s wrong, the rest blank.
+        let right = exercises[0]
+            .trace
+            .value("desired_delta_velocity", "desired")
+            .unwrap()
+            .clone();
+        let filled = t
+            .replace("dv = \"\"", &format!("dv = \"{}\"", four_decimals(&right)))
+            .replace("v_s = \"\"", "v_s = \"+3\"");
+        let (_, answers) = read(&filled).unwrap();
+        let (text, score) = report(&exercises, &answers);
+        assert_eq!(
+            score,
+            Score {
+                correct: 1,
+                graded: 2
+            },
+            "{text}"
+        );
+        assert!(text.contains("✓ Δv = "), "{text}");
+        assert!(
+            text.contains("✗ v_s = +3   right: -1.6800 m/s, difference -4.68"),
+            "{text}"
+        );
+        assert!(text.contains("· g_world: no answer"), "{text}");
+        assert!(text.ends_with("Score: 1/2 (50 %)\n"), "{text}");
+        let (none, _) = report(&exercises, &empty);
+        assert!(none.contains("Score: 0/0"), "{none}");
+    }
+
+    #[test]
+    fn a_bad_answer_file_says_what_is_missing() {
+        assert!(read("kind = \"mixed\"").unwrap_err().contains("seed"));
+        assert!(read("seed = 1").unwrap_err().contains("count"));
+        assert!(read("seed = 1\ncount = 1\nexercise = 3")
+            .unwrap_err()
+            .contains("array of tables"));
+    }
+}

@@ -1,0 +1,126 @@
+//! `contact-lab glossary`: every symbol of the worked solution with its
+//! meaning, unit, the stages that use it and the lectures' names, as text,
+//! Markdown or LaTeX (all read from `trace::glossary`).
+
+use std::fmt::Write;
+
+use crate::trace::glossary::{Symbol, GLOSSARY};
+use crate::trace::latex::{prose, to_latex};
+
+fn stages(s: &Symbol) -> String {
+    s.stages
+        .iter()
+        .map(|id| {
+            (crate::physics::StageId::ALL
+                .iter()
+                .position(|x| x == id)
+                .unwrap_or(0)
+                + 1)
+            .to_string()
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn unit_text(s: &Symbol) -> &'static str {
+    if s.unit.is_empty() {
+        "—"
+    } else {
+        s.unit
+    }
+}
+
+/// Plain text: one symbol a line, aligned.
+pub fn text() -> String {
+    let mut out = String::from(
+        "Symbols of the worked solution (subscript ᵢ: body 1 or 2; stages: 1 contact frame … 9 checks)\n\n",
+    );
+    // Combining accents (d̂, q̇) take no column.
+    let cols = |t: &str| {
+        t.chars()
+            .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+            .count()
+    };
+    let width = GLOSSARY.iter().map(|s| cols(s.symbol)).max().unwrap_or(0);
+    for s in GLOSSARY {
+        let pad = " ".repeat(width - cols(s.symbol));
+        let _ = write!(
+            out,
+            "{}{pad}  {} [{}; stages {}]",
+            s.symbol,
+            s.meaning,
+            unit_text(s),
+            stages(s)
+        );
+        if !s.elsewhere.is_empty() {
+            let _ = write!(out, " — {}", s.elsewhere);
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// A Markdown table with the symbols as inline maths.
+pub fn markdown() -> String {
+    let mut out = String::from("# Glossary\n\nSubscript $i$: body 1 or 2. Stages: 1 contact frame, 2 unit impulse, 3 desired Δv, 4 impulse, 5 friction, 6 applying the impulse, 7 projection, 8 orientation, 9 checks.\n\n| symbol | meaning | unit | stages | in the lectures |\n|---|---|---|---|---|\n");
+    for s in GLOSSARY {
+        let _ = writeln!(
+            out,
+            "| ${}$ | {} | {} | {} | {} |",
+            to_latex(s.symbol).replace('|', "\\vert "),
+            super::markdown::cell(s.meaning),
+            unit_text(s),
+            stages(s),
+            super::markdown::cell(s.elsewhere)
+        );
+    }
+    out
+}
+
+/// A standalone LaTeX document with one `longtable`-free tabular per page
+/// (only `amsmath`/`amssymb`, as the worked solutions need).
+pub fn latex() -> String {
+    let mut body = String::from("\\section*{Glossary}\nSubscript $i$: body 1 or 2. Stages: 1 contact frame, 2 unit impulse, 3 desired $\\Delta v$, 4 impulse, 5 friction, 6 applying the impulse, 7 projection, 8 orientation, 9 checks.\n\n");
+    for chunk in GLOSSARY.chunks(25) {
+        body.push_str("\\begin{tabular}{l p{7.5cm} l l}\n\\hline\nsymbol & meaning & unit & stages \\\\\n\\hline\n");
+        for s in chunk {
+            let mut meaning = prose(s.meaning);
+            if !s.elsewhere.is_empty() {
+                meaning.push_str(&format!(" \\emph{{({})}}", prose(s.elsewhere)));
+            }
+            let unit = if s.unit.is_empty() {
+                "---".to_string()
+            } else {
+                format!(
+                    "${}$",
+                    crate::trace::glossary::unit_latex(s.unit).trim_start_matches("\\,")
+                )
+            };
+            let _ = writeln!(
+                body,
+                "${}$ & {meaning} & {unit} & {} \\\\",
+                to_latex(s.symbol),
+                stages(s)
+            );
+        }
+        body.push_str("\\hline\n\\end{tabular}\n\n\\bigskip\n");
+    }
+    super::latex::standalone(&body)
+}
+
+/// JSON: `{"symbols": [{"symbol", "meaning", "unit", "stages": [stage ids], "elsewhere"}]}`.
+pub fn json() -> String {
+    let symbols: Vec<serde_json::Value> = GLOSSARY
+        .iter()
+        .map(|s| {
+            serde_json::json!({
+                "symbol": s.symbol,
+                "meaning": s.meaning,
+                "unit": s.unit,
+                "stages": s.stages.iter().map(|id| id.json_name()).collect::<Vec<_>>(),
+                "elsewhere": s.elsewhere,
+            })
+        })
+        .collect();
+    serde_json::to_string_pretty(&serde_json::json!({ "symbols": symbols })).expect("JSON") + "\n"
+}
