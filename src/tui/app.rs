@@ -14,7 +14,8 @@ use super::theme::Theme;
 use super::write;
 use crate::format::Fmt;
 use crate::lesson::{edit, Lesson};
-use crate::trace::{Trace, Value};
+use crate::trace::grade::{self, Score};
+use crate::trace::{glossary, Trace, Value};
 
 /// A lesson as loaded, and as edited in this session.
 #[derive(Debug, Clone)]
@@ -32,6 +33,13 @@ pub use crate::trace::Plane;
 pub enum Mode {
     Normal,
     Help,
+    /// Help's second page, the glossary, scrolled this many lines.
+    Glossary(u16),
+    /// Predict mode: the student's answer to the hidden result, being typed.
+    Answer {
+        input: String,
+        error: Option<String>,
+    },
     Edit(Form),
     /// Asking for the Markdown file name.
     Write {
@@ -63,6 +71,12 @@ pub struct App {
     pub predict: bool,
     /// Predict mode: results shown so far, per stage.
     pub revealed: Vec<usize>,
+    /// Predict mode: answers graded in this lesson (reset with the lesson).
+    pub score: Score,
+    /// The stage panel lists the symbols of the formulas on show (`s`).
+    pub symbols: bool,
+    /// How far the glossary page can scroll, as last drawn.
+    pub glossary_max: Cell<u16>,
     /// Lines the stage panel is scrolled down.
     pub scroll: u16,
     /// How far the stage panel can scroll, as last drawn.
@@ -128,6 +142,9 @@ impl App {
             baseline: None,
             plane: Plane::Xy,
             predict: false,
+            score: Score::default(),
+            symbols: false,
+            glossary_max: Cell::new(0),
             scroll: 0,
             scroll_max: Cell::new(0),
             zoom: false,
@@ -207,6 +224,7 @@ impl App {
 
     pub(super) fn goto_lesson(&mut self, i: usize) {
         self.lesson = i;
+        self.score = Score::default();
         self.contact = 0;
         self.page = 0;
         self.baseline = None;
@@ -299,16 +317,39 @@ impl App {
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal if self.screen != Screen::Contact => self.screen_key(key),
             Mode::Normal if self.up_key(key) => {}
+            Mode::Normal if self.answer_start(key) => {}
             Mode::Normal => {
                 if let Some(a) = event::action(key) {
                     self.update(a);
                 }
             }
-            Mode::Help => {
-                if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
-                    self.quit = true;
+            Mode::Help => match key.code {
+                KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                    self.quit = true
+                }
+                KeyCode::Char('?') | KeyCode::PageDown | KeyCode::Right => {
+                    self.mode = Mode::Glossary(0)
+                }
+                _ => {}
+            },
+            Mode::Glossary(at) => {
+                let max = self.glossary_max.get();
+                let to = |n: u16| Mode::Glossary(n.min(max));
+                match key.code {
+                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                        self.quit = true
+                    }
+                    KeyCode::Char('j') | KeyCode::Down => self.mode = to(at.saturating_add(1)),
+                    KeyCode::Char('k') | KeyCode::Up => self.mode = to(at.saturating_sub(1)),
+                    KeyCode::PageDown | KeyCode::Char(' ') => {
+                        self.mode = to(at.saturating_add(10))
+                    }
+                    KeyCode::PageUp => self.mode = to(at.min(max).saturating_sub(10)),
+                    KeyCode::Left | KeyCode::Char('?') => self.mode = Mode::Help,
+                    _ => {}
                 }
             }
+            Mode::Answer { input, error } => self.answer_key(input, error, key),
             Mode::Edit(form) => self.edit_key(form, key),
             Mode::Write { input, error } => self.write_key(input, error, key),
             Mode::Confirm(path) => match key.code {
@@ -380,10 +421,11 @@ impl App {
             }
             Predict => {
                 self.predict = !self.predict;
+                self.score = Score::default();
                 self.revealed = vec![0; self.trace.stages.len()];
                 self.say(
                     if self.predict {
-                        "predict mode: work out each result, then Space / Enter reveals it"
+                        "predict mode: work out each result, type it and Enter to grade (or Space reveals)"
                     } else {
                         "predict mode off: every result shown"
                     }
@@ -393,6 +435,7 @@ impl App {
             }
             Plane => self.plane = self.plane.next(),
             Zoom => self.zoom = !self.zoom,
+            Symbols => self.symbols = !self.symbols,
             Write => {
                 self.mode = Mode::Write {
                     input: write::default_name(&self.trace),
@@ -402,6 +445,111 @@ impl App {
             Help => self.mode = Mode::Help,
             Quit => self.quit = true,
         }
+    }
+
+    /// The result predict mode hides next on this page: its stage, value
+    /// name and value, if it has one to grade.
+    pub fn hidden_result(&self) -> Option<(usize, &str, &Value)> {
+        if !self.hidden_here() {
+            return None;
+        }
+        let s = self.page - 1;
+        let step = &self.trace.stages[s];
+        let name = step.formulas.get(self.revealed[s])?.result.as_deref()?;
+        Some((s, name, step.lookup(name)?))
+    }
+
+    /// A key that starts an answer to the hidden result: a digit, a sign,
+    /// a bracket or `a` (an empty answer, for words). Returns whether it did.
+    fn answer_start(&mut self, key: KeyEvent) -> bool {
+        let KeyCode::Char(c) = key.code else {
+            return false;
+        };
+        if key.modifiers.contains(KeyModifiers::CONTROL)
+            || !(c.is_ascii_digit() || "-.([a".contains(c))
+            || self.hidden_result().is_none()
+        {
+            return false;
+        }
+        let input = if c == 'a' { String::new() } else { c.to_string() };
+        self.mode = Mode::Answer { input, error: None };
+        true
+    }
+
+    fn answer_key(&mut self, mut input: String, error: Option<String>, key: KeyEvent) {
+        match key.code {
+            KeyCode::Esc => {}
+            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => self.quit = true,
+            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => {
+                self.mode = Mode::Answer {
+                    input: String::new(),
+                    error: None,
+                }
+            }
+            KeyCode::Backspace => {
+                input.pop();
+                self.mode = Mode::Answer { input, error: None };
+            }
+            KeyCode::Char(c) => {
+                input.push(c);
+                self.mode = Mode::Answer { input, error: None };
+            }
+            KeyCode::Enter => self.grade_answer(input),
+            _ => self.mode = Mode::Answer { input, error },
+        }
+    }
+
+    /// Grades `input` against the hidden result: a refusal keeps the prompt
+    /// open; a graded answer is scored, the result revealed and the right
+    /// answer and the difference said.
+    fn grade_answer(&mut self, input: String) {
+        let Some((s, name, value)) = self
+            .hidden_result()
+            .map(|(s, n, v)| (s, n.to_string(), v.clone()))
+        else {
+            return;
+        };
+        let g = grade::grade(&input, &value);
+        if let Some(problem) = g.problem.clone() {
+            self.mode = Mode::Answer {
+                input,
+                error: Some(problem),
+            };
+            return;
+        }
+        let step = &self.trace.stages[s];
+        let unit = glossary::unit(step, &name);
+        let right = glossary::with_unit(&self.fmt.value(&value), unit);
+        let text = if g.expected.is_empty() {
+            let mark = if g.correct { "✓ right" } else { "✗ not quite" };
+            format!("{mark}: the answer is {right}")
+        } else {
+            let diff = g
+                .difference
+                .iter()
+                .map(|d| self.fmt.num(*d))
+                .collect::<Vec<_>>()
+                .join(", ");
+            let diff = if g.difference.len() > 1 {
+                format!("({diff})")
+            } else {
+                diff
+            };
+            let mark = if g.correct {
+                "✓ right"
+            } else {
+                "✗ outside the tolerance"
+            };
+            format!(
+                "{mark}: {right}; yours {}, difference {}",
+                input.trim(),
+                glossary::with_unit(&diff, unit)
+            )
+        };
+        self.score.record(&g);
+        self.revealed[s] += 1;
+        let score = self.score.summary();
+        self.say(format!("{text} · score {score}"), !g.correct);
     }
 
     pub(super) fn say(&mut self, text: String, error: bool) {

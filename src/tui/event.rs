@@ -26,6 +26,7 @@ pub enum Action {
     Predict,
     Plane,
     Zoom,
+    Symbols,
     Write,
     Help,
     Quit,
@@ -51,8 +52,13 @@ pub const KEYS: &[(&str, &str)] = &[
     ("p", "predict mode: hide each result until Space reveals it"),
     ("v", "view plane of the picture: xy → yz → zx"),
     ("z", "picture full size / beside the stages"),
+    ("s", "list the symbols of the stage's formulas, with meaning and unit"),
+    (
+        "0-9 - ( a",
+        "predict mode: type your answer to the hidden result (a: in words); Enter grades it",
+    ),
     ("w", "write this worked solution to a Markdown file"),
-    ("?", "this help"),
+    ("?", "this help; ? again: the glossary of every symbol"),
     ("q Esc Ctrl-C", "quit"),
 ];
 
@@ -82,6 +88,7 @@ pub fn action(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('p') => Predict,
         KeyCode::Char('v') => Plane,
         KeyCode::Char('z') => Zoom,
+        KeyCode::Char('s') => Symbols,
         KeyCode::Char('w') => Write,
         KeyCode::Char('?') => Help,
         KeyCode::Char('q') | KeyCode::Esc => Quit,

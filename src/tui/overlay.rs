@@ -43,6 +43,7 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
         "Edit form: ↑↓ field, Enter edits (or cycles a choice), Enter sets, Esc goes back.",
         "● changed by the last edit · ? results predict mode still hides",
         "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
+        "? again (or PgDn): page 2, the glossary of every symbol. Any other key closes this help.",
     ];
     if app.resolver.is_some() {
         notes.insert(
@@ -51,6 +52,66 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
         );
     }
     help_list(app, " Keys ", KEYS, &notes, area, buf);
+}
+
+/// Help's second page: every symbol with its meaning, unit, stages and the
+/// lectures' name, scrolled by `scroll` lines (as far as it goes).
+pub fn glossary(app: &App, scroll: u16, area: Rect, buf: &mut Buffer) {
+    use crate::trace::glossary::GLOSSARY;
+    let t = &app.theme;
+    let rect_w = 92.min(area.width.saturating_sub(2));
+    let text_w = rect_w.saturating_sub(3) as usize;
+    let kw = GLOSSARY.iter().map(|s| width(s.symbol)).max().unwrap_or(0);
+    let mut lines: Vec<Line> = Vec::new();
+    for piece in wrap(
+        "Subscript ᵢ: body 1 or 2. Stages: 1 contact frame, 2 unit impulse, 3 desired Δv, 4 impulse, 5 friction, 6 apply, 7 projection, 8 orientation, 9 checks.",
+        text_w,
+        0,
+    ) {
+        lines.push(Line::styled(format!(" {piece}"), t.dim()));
+    }
+    for sym in GLOSSARY {
+        let stages: Vec<String> = sym
+            .stages
+            .iter()
+            .map(|id| {
+                (crate::physics::StageId::ALL
+                    .iter()
+                    .position(|x| x == id)
+                    .unwrap_or(0)
+                    + 1)
+                .to_string()
+            })
+            .collect();
+        let unit = if sym.unit.is_empty() { "no unit" } else { sym.unit };
+        let mut what = format!("{} [{unit}; stages {}]", sym.meaning, stages.join(", "));
+        if !sym.elsewhere.is_empty() {
+            what.push_str(&format!("; {}", sym.elsewhere));
+        }
+        for (i, piece) in wrap(&what, text_w.saturating_sub(kw + 2), 0)
+            .into_iter()
+            .enumerate()
+        {
+            let key = if i == 0 { sym.symbol } else { "" };
+            let pad = " ".repeat(kw.saturating_sub(width(key)));
+            lines.push(Line::from(vec![
+                Span::styled(format!(" {key}{pad}  "), t.key()),
+                Span::raw(piece),
+            ]));
+        }
+    }
+    let rect = centered(area, rect_w, lines.len() as u16 + 2);
+    let inner_h = rect.height.saturating_sub(2);
+    let overflow = (lines.len() as u16).saturating_sub(inner_h);
+    app.glossary_max.set(overflow);
+    let scroll = scroll.min(overflow);
+    let title = if overflow > 0 {
+        format!(" Glossary (2/2) · j/k ↑↓ PgDn/PgUp scroll · {}/{} ", scroll, overflow)
+    } else {
+        " Glossary (2/2) ".to_string()
+    };
+    let inner = frame(app, &title, rect, buf);
+    Paragraph::new(lines).scroll((scroll, 0)).render(inner, buf);
 }
 
 /// A help overlay: `keys` (key, what it does), then `notes`.

@@ -16,7 +16,7 @@ use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 use super::app::App;
 use super::theme::{Ink, Theme};
-use crate::render::figure::{Figure, P};
+use crate::render::figure::{ArrowKind, Figure, P};
 use picture::{picture, Mark, Show};
 
 /// Bounds with a margin, widened so a braille dot is as wide as it is tall
@@ -106,7 +106,10 @@ fn place_labels(
 
 /// The key to the picture's colours and labels; `compact` keeps to the symbols.
 fn legend(t: &Theme, show: &Show, moved: bool, compact: bool) -> TextLine<'static> {
-    let mut items = vec![(Ink::VelocityBefore, "v", "before")];
+    let mut items = vec![];
+    if show.before_velocity {
+        items.push((Ink::VelocityBefore, "v", "before"));
+    }
     if show.after_velocity {
         items.push((Ink::VelocityAfter, "v′", "after"));
     }
@@ -140,12 +143,21 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         ));
     let inner = block.inner(area);
     block.render(area, buf);
+    // The state the current stage works on (the overview shows it all).
+    let mut fig = Figure::of_contact(&app.trace.scene, app.plane);
+    if let Some(s) = app.stage() {
+        fig = fig.at_stage(app.trace.stages[s].id);
+    }
+    let has = |k: ArrowKind| fig.arrows.iter().any(|a| a.kind == k);
     let show = Show {
-        impulse: app.shown("impulse") && app.shown("friction_clamp"),
-        after_velocity: app.shown("apply_impulse"),
-        after_pose: app.shown("nonlinear_projection") && app.shown("orientation_update"),
+        before_velocity: has(ArrowKind::Velocity) || fig.spins.iter().any(|s| !s.after),
+        impulse: app.shown("impulse") && app.shown("friction_clamp") && has(ArrowKind::Impulse),
+        after_velocity: app.shown("apply_impulse")
+            && (has(ArrowKind::VelocityAfter) || fig.spins.iter().any(|s| s.after)),
+        after_pose: app.shown("nonlinear_projection")
+            && app.shown("orientation_update")
+            && fig.bodies.iter().any(|b| b.outline_after.is_some()),
     };
-    let fig = Figure::of_contact(&app.trace.scene, app.plane);
     let moved = fig.bodies.iter().any(|b| b.pose_change > 0.0);
     let full = legend(t, &show, moved, false);
     let rows_for = |l: &TextLine| (l.width() as u16).div_ceil(inner.width.max(1));

@@ -225,33 +225,47 @@ fn formula_rows(app: &App, step: &Step, f: &Formula, hide_result: bool) -> Vec<R
 fn stage_rows(app: &App, s: usize) -> Vec<Row> {
     let t = &app.theme;
     let step = &app.trace.stages[s];
-    if let Some(why) = &step.skipped {
-        return vec![
-            Row::new(format!("Skipped: {why}"), t.dim()),
+    // Why before how: what the stage is for, above its formulas.
+    let why = [
+        Row {
+            indent: 0,
+            ..Row::new(step.id.why(), t.note())
+        },
+        Row::new("", Style::new()),
+    ];
+    if let Some(reason) = &step.skipped {
+        return why
+            .into_iter()
+            .chain([
+            Row::new(format!("Skipped: {reason}"), t.dim()),
             Row::new("", Style::new()),
             Row::new(
                 "The contact does not need this stage, so the resolver does no work here.",
                 t.dim(),
             ),
-        ];
+            ])
+            .collect();
     }
     let shown = if app.predict {
         app.revealed[s].min(step.formulas.len())
     } else {
         step.formulas.len()
     };
-    let mut rows = Vec::new();
+    let mut rows: Vec<Row> = why.into_iter().collect();
     for (i, f) in step.formulas.iter().enumerate() {
         if i > shown {
             break;
         }
         rows.extend(formula_rows(app, step, f, i == shown));
     }
+    if app.symbols {
+        rows.extend(symbol_rows(app, step, shown));
+    }
     if shown < step.formulas.len() {
         let left = step.formulas.len() - shown;
         rows.push(Row::new("", Style::new()));
         rows.push(Row::new(
-            format!("predict: {left} result(s) to go in this stage"),
+            format!("predict: {left} result(s) to go in this stage; type your answer (digits, or a to answer in words), or Space reveals"),
             t.hidden(),
         ));
         return rows;
@@ -265,6 +279,34 @@ fn stage_rows(app: &App, s: usize) -> Vec<Row> {
                 .iter()
                 .any(|n| app.changed(step.id.json_name(), n)),
             ..Row::new(format!("· {}", app.fmt.fill(note, step, false)), t.note())
+        });
+    }
+    rows
+}
+
+/// `s`: the symbols of the formulas on show, each with its meaning and unit
+/// (from the glossary).
+fn symbol_rows(app: &App, step: &Step, shown: usize) -> Vec<Row> {
+    let t = &app.theme;
+    let text: String = step
+        .formulas
+        .iter()
+        .take(shown + 1)
+        .map(|f| format!("{} = {}\n", f.lhs, f.rhs))
+        .collect();
+    let mut rows = vec![
+        Row::new("", Style::new()),
+        Row::new("Symbols in these formulas (s hides)", t.title()),
+    ];
+    for sym in crate::trace::glossary::symbols_in(&text) {
+        let unit = if sym.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" [{}]", sym.unit)
+        };
+        rows.push(Row {
+            indent: 4,
+            ..Row::new(format!("{}: {}{unit}", sym.symbol, sym.meaning), t.formula())
         });
     }
     rows

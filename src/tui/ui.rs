@@ -66,6 +66,8 @@ impl Widget for &App {
         match &self.mode {
             Mode::Normal => {}
             Mode::Help => overlay::help(self, area, buf),
+            Mode::Glossary(scroll) => overlay::glossary(self, *scroll, area, buf),
+            Mode::Answer { .. } => {}
             Mode::Edit(form) => overlay::form(self, form, area, buf),
             Mode::Write { input, error } => {
                 overlay::write_prompt(self, input, error.as_deref(), area, buf)
@@ -106,7 +108,12 @@ fn header(app: &App, area: Rect, buf: &mut Buffer) {
         ]
     };
     if app.predict {
-        spans.push(Span::styled("  [predict]", t.hidden()));
+        let score = if app.score.graded > 0 {
+            format!("  [predict {}/{}]", app.score.correct, app.score.graded)
+        } else {
+            "  [predict]".to_string()
+        };
+        spans.push(Span::styled(score, t.hidden()));
     }
     if !app.entry().edits.is_empty() {
         spans.push(Span::styled(
@@ -124,6 +131,19 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Paragraph::new(Line::styled(format!(" {}", s.text), style)).render(area, buf);
         return;
     }
+    if let Mode::Answer { input, error } = &app.mode {
+        let mut spans = vec![
+            Span::styled(" your answer: ", t.key()),
+            Span::raw(super::wrap::tail(input, (area.width as usize).saturating_sub(40))),
+            Span::styled("▏", t.key()),
+        ];
+        match error {
+            Some(e) => spans.push(Span::styled(format!("  {e}"), t.error())),
+            None => spans.push(Span::styled("  Enter grades · Esc cancels", t.dim())),
+        }
+        Paragraph::new(Line::from(spans)).render(area, buf);
+        return;
+    }
     let keys: &[(&str, &str)] = match app.mode {
         Mode::Edit(ref f) if f.input.is_some() => {
             &[("Enter", "set"), ("Esc", "cancel"), ("Ctrl-U", "clear")]
@@ -131,7 +151,9 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
         Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
-        Mode::Help => &[("any key", "closes this help")],
+        Mode::Help => &[("?", "glossary"), ("any other key", "closes this help")],
+        Mode::Glossary(_) => &[("j k ↑↓ PgDn PgUp", "scroll"), ("← ?", "keys"), ("any other key", "closes")],
+        Mode::Answer { .. } => &[],
         Mode::Normal if app.resolver.is_some() => &[
             ("←→", "stage"),
             ("Esc", "up"),

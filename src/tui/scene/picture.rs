@@ -88,6 +88,8 @@ fn scale(a: P, s: f64) -> P {
 
 /// What to show, given which results predict mode still hides.
 pub(super) struct Show {
+    /// The stage works on the motion before the impulse.
+    pub(super) before_velocity: bool,
     pub(super) impulse: bool,
     pub(super) after_velocity: bool,
     pub(super) after_pose: bool,

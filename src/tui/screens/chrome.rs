@@ -82,9 +82,13 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         };
         crate::tui::overlay::help_list(app, title, keys, &NOTES, area, buf);
     }
+    if let Mode::Glossary(scroll) = app.mode {
+        crate::tui::overlay::glossary(app, scroll, area, buf);
+    }
 }
 
-const NOTES: [&str; 3] = [
+const NOTES: [&str; 4] = [
+    "? again (or PgDn): page 2, the glossary of every symbol.",
     "Enter goes down a level: a step → its resolver iterations → an iteration's contact and its stages. Esc or Backspace goes back up.",
     "Mouse: click a contact or a body in the picture, or a table row, to select it; the wheel scrolls.",
     "The contact screen has its own keys (? there).",
@@ -126,7 +130,10 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     }
     let keys: &[(&str, &str)] = match (app.mode == Mode::Help, app.screen) {
-        (true, _) => &[("any key", "closes this help")],
+        (true, _) => &[("?", "glossary"), ("any other key", "closes this help")],
+        _ if matches!(app.mode, Mode::Glossary(_)) => {
+            &[("j k ↑↓ PgDn PgUp", "scroll"), ("any other key", "closes")]
+        }
         (false, Screen::Run) => &[
             ("Space", "play"),
             ("←→", "step"),
