@@ -77,6 +77,9 @@ pub struct App {
     pub symbols: bool,
     /// How far the glossary page can scroll, as last drawn.
     pub glossary_max: Cell<u16>,
+    /// Lines the help page is scrolled down, and how far it can, as drawn.
+    pub help_scroll: u16,
+    pub help_max: Cell<u16>,
     /// Lines the stage panel is scrolled down.
     pub scroll: u16,
     /// How far the stage panel can scroll, as last drawn.
@@ -145,6 +148,8 @@ impl App {
             score: Score::default(),
             symbols: false,
             glossary_max: Cell::new(0),
+            help_scroll: 0,
+            help_max: Cell::new(0),
             scroll: 0,
             scroll_max: Cell::new(0),
             zoom: false,
@@ -330,6 +335,14 @@ impl App {
                 KeyCode::Char('?') | KeyCode::PageDown | KeyCode::Right => {
                     self.mode = Mode::Glossary(0)
                 }
+                KeyCode::Char('j') | KeyCode::Down => {
+                    self.help_scroll = (self.help_scroll + 1).min(self.help_max.get());
+                    self.mode = Mode::Help;
+                }
+                KeyCode::Char('k') | KeyCode::Up => {
+                    self.help_scroll = self.help_scroll.saturating_sub(1);
+                    self.mode = Mode::Help;
+                }
                 _ => {}
             },
             Mode::Glossary(at) => {
@@ -442,7 +455,10 @@ impl App {
                     error: None,
                 }
             }
-            Help => self.mode = Mode::Help,
+            Help => {
+                self.help_scroll = 0;
+                self.mode = Mode::Help;
+            }
             Quit => self.quit = true,
         }
     }
@@ -460,19 +476,21 @@ impl App {
     }
 
     /// A key that starts an answer to the hidden result: a digit, a sign,
-    /// a bracket or `a` (an empty answer, for words). Returns whether it did.
+    /// a point or a bracket. Returns whether it did.
     fn answer_start(&mut self, key: KeyEvent) -> bool {
         let KeyCode::Char(c) = key.code else {
             return false;
         };
         if key.modifiers.contains(KeyModifiers::CONTROL)
-            || !(c.is_ascii_digit() || "-.([a".contains(c))
+            || !(c.is_ascii_digit() || "-.([".contains(c))
             || self.hidden_result().is_none()
         {
             return false;
         }
-        let input = if c == 'a' { String::new() } else { c.to_string() };
-        self.mode = Mode::Answer { input, error: None };
+        self.mode = Mode::Answer {
+            input: c.to_string(),
+            error: None,
+        };
         true
     }
 

@@ -54,8 +54,8 @@ pub const KEYS: &[(&str, &str)] = &[
     ("z", "picture full size / beside the stages"),
     ("s", "list the symbols of the stage's formulas, with meaning and unit"),
     (
-        "0-9 - ( a",
-        "predict mode: type your answer to the hidden result (a: in words); Enter grades it",
+        "0-9 - . ( [",
+        "predict mode: type your answer to the hidden result (number or vector); Enter grades it",
     ),
     ("w", "write this worked solution to a Markdown file"),
     ("?", "this help; ? again: the glossary of every symbol"),

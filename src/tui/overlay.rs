@@ -100,18 +100,15 @@ pub fn glossary(app: &App, scroll: u16, area: Rect, buf: &mut Buffer) {
             ]));
         }
     }
-    let rect = centered(area, rect_w, lines.len() as u16 + 2);
-    let inner_h = rect.height.saturating_sub(2);
-    let overflow = (lines.len() as u16).saturating_sub(inner_h);
-    app.glossary_max.set(overflow);
-    let scroll = scroll.min(overflow);
-    let title = if overflow > 0 {
-        format!(" Glossary (2/2) · j/k ↑↓ PgDn/PgUp scroll · {}/{} ", scroll, overflow)
-    } else {
-        " Glossary (2/2) ".to_string()
-    };
-    let inner = frame(app, &title, rect, buf);
-    Paragraph::new(lines).scroll((scroll, 0)).render(inner, buf);
+    app.glossary_max.set(scrolled(
+        app,
+        " Glossary (2/2) ",
+        lines,
+        scroll,
+        rect_w,
+        area,
+        buf,
+    ));
 }
 
 /// A help overlay: `keys` (key, what it does), then `notes`.
@@ -143,9 +140,38 @@ pub fn help_list(
             lines.push(Line::styled(format!(" {piece}"), t.dim()));
         }
     }
-    let rect = centered(area, rect_w, lines.len() as u16 + 2);
-    let inner = frame(app, title, rect, buf);
-    Paragraph::new(lines).render(inner, buf);
+    app.help_max
+        .set(scrolled(app, title, lines, app.help_scroll, rect_w, area, buf));
+}
+
+/// `lines` in a centred box `w` wide, as tall as they need or the screen
+/// allows, scrolled by `scroll` (as far as it goes; the title says how to
+/// scroll when they do not fit). Returns how far they can scroll.
+fn scrolled(
+    app: &App,
+    title: &str,
+    lines: Vec<Line>,
+    scroll: u16,
+    w: u16,
+    area: Rect,
+    buf: &mut Buffer,
+) -> u16 {
+    // The key bar's row stays in view: it says how to scroll and close.
+    let area = Rect {
+        height: area.height.saturating_sub(1),
+        ..area
+    };
+    let rect = centered(area, w, lines.len() as u16 + 2);
+    let overflow = (lines.len() as u16).saturating_sub(rect.height.saturating_sub(2));
+    let scroll = scroll.min(overflow);
+    let title = if overflow > 0 {
+        format!("{title}· j/k ↑↓ scroll · {scroll}/{overflow} ")
+    } else {
+        title.to_string()
+    };
+    let inner = frame(app, &title, rect, buf);
+    Paragraph::new(lines).scroll((scroll, 0)).render(inner, buf);
+    overflow
 }
 
 pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {

@@ -265,7 +265,7 @@ fn stage_rows(app: &App, s: usize) -> Vec<Row> {
         let left = step.formulas.len() - shown;
         rows.push(Row::new("", Style::new()));
         rows.push(Row::new(
-            format!("predict: {left} result(s) to go in this stage; type your answer (digits, or a to answer in words), or Space reveals"),
+            format!("predict: {left} result(s) to go in this stage; type your answer and Enter grades it, or Space reveals"),
             t.hidden(),
         ));
         return rows;

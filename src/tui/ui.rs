@@ -151,7 +151,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
         Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
-        Mode::Help => &[("?", "glossary"), ("any other key", "closes this help")],
+        Mode::Help => &[("?", "glossary"), ("j k", "scroll"), ("any other key", "closes")],
         Mode::Glossary(_) => &[("j k ↑↓ PgDn PgUp", "scroll"), ("← ?", "keys"), ("any other key", "closes")],
         Mode::Answer { .. } => &[],
         Mode::Normal if app.resolver.is_some() => &[

@@ -98,7 +98,10 @@ impl App {
             KeyCode::Char('c') if ctrl => self.quit = true,
             _ if ctrl => {}
             KeyCode::Char('q') => self.quit = true,
-            KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('?') => {
+                self.help_scroll = 0;
+                self.mode = Mode::Help;
+            }
             KeyCode::Char('v') => self.plane = self.plane.next(),
             KeyCode::Down | KeyCode::Char('j') => {
                 self.goto_lesson((self.lesson + 1) % self.lessons.len())

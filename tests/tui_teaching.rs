@@ -1,0 +1,196 @@
+//! The TUI as a teacher (issue #16): the stage's "why" above its formulas,
+//! the picture at the stage, help's glossary page, the symbols panel, and
+//! predict-mode answers typed, graded and scored. Scripted keys into a
+//! `TestBackend`.
+
+use contact_lab::tui::app::Mode;
+use contact_lab::tui::{self, App, Theme};
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::Terminal;
+
+fn app(lesson: &str) -> App {
+    let (lessons, at) = tui::lessons(Some(lesson)).expect("lesson loads");
+    App::new(lessons, at, 0, Theme { color: false })
+}
+
+fn key(app: &mut App, code: KeyCode) {
+    app.key(KeyEvent::new(code, KeyModifiers::NONE));
+}
+
+fn type_text(app: &mut App, text: &str) {
+    for c in text.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+/// The screen at `w × h`, row by row.
+fn screen(app: &App, w: u16, h: u16) -> Vec<String> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    let buf = t.backend().buffer();
+    (0..h)
+        .map(|y| (0..w).map(|x| buf[(x, y)].symbol()).collect())
+        .collect()
+}
+
+fn row_of(rows: &[String], text: &str) -> Option<usize> {
+    rows.iter().position(|r| r.contains(text))
+}
+
+/// Goes to stage `n` (1-based) of the open contact.
+fn stage(app: &mut App, n: usize) {
+    key(app, KeyCode::Home);
+    for _ in 0..n {
+        key(app, KeyCode::Right);
+    }
+}
+
+#[test]
+fn each_stage_says_why_above_its_formulas() {
+    let mut a = app("lecture-2");
+    stage(&mut a, 1);
+    let rows = screen(&a, 100, 30);
+    let why = row_of(&rows, "An impulse is easiest to find").expect("why sentence shown");
+    let formula = row_of(&rows, "t₀ = ").expect("first formula shown");
+    assert!(why < formula, "why at row {why}, formula at row {formula}");
+    stage(&mut a, 4);
+    let rows = screen(&a, 100, 30);
+    assert!(row_of(&rows, "Dividing the change we want").is_some());
+}
+
+#[test]
+fn the_picture_shows_the_state_its_stage_works_on() {
+    let mut a = app("lecture-2");
+    // Legend: the impulse appears at stage 4; after-velocities when stage 6
+    // applies it; before-velocities go once it has been applied.
+    let legend = |a: &mut App, n: usize| {
+        stage(a, n);
+        screen(a, 100, 30).join("\n")
+    };
+    let s1 = legend(&mut a, 1);
+    assert!(s1.contains("v before") && !s1.contains("g impulse") && !s1.contains("v′ after"));
+    let s4 = legend(&mut a, 4);
+    assert!(s4.contains("g impulse") && s4.contains("v before") && !s4.contains("v′ after"));
+    let s6 = legend(&mut a, 6);
+    assert!(s6.contains("v before") && s6.contains("v′ after"));
+    let s9 = legend(&mut a, 9);
+    assert!(s9.contains("v′ after") && !s9.contains("v before"), "{s9}");
+}
+
+#[test]
+fn help_has_a_second_page_with_the_glossary() {
+    let mut a = app("lecture-2");
+    key(&mut a, KeyCode::Char('?'));
+    assert_eq!(a.mode, Mode::Help);
+    key(&mut a, KeyCode::Char('?'));
+    assert_eq!(a.mode, Mode::Glossary(0));
+    let rows = screen(&a, 100, 30).join("\n");
+    assert!(rows.contains("Glossary (2/2)"), "{rows}");
+    assert!(rows.contains("contact normal, unit vector pointing from body 2 toward body 1"));
+    assert!(rows.contains("n in lectures 002/003"));
+    // It scrolls, no further than its end, and j/k do not switch lessons meanwhile.
+    let lesson = a.lesson;
+    for _ in 0..200 {
+        key(&mut a, KeyCode::Char('j'));
+    }
+    let Mode::Glossary(at) = a.mode else {
+        panic!("still on the glossary")
+    };
+    assert!(at > 0 && at == a.glossary_max.get(), "scrolled {at}");
+    let rows = screen(&a, 100, 30).join("\n");
+    assert!(rows.contains("kinetic energy of the bodies"), "the last symbol: {rows}");
+    assert_eq!(a.lesson, lesson);
+    key(&mut a, KeyCode::Char('x'));
+    assert_eq!(a.mode, Mode::Normal);
+}
+
+#[test]
+fn s_lists_the_symbols_of_the_formulas_with_meaning_and_unit() {
+    let mut a = app("lecture-2");
+    stage(&mut a, 2);
+    key(&mut a, KeyCode::Char('z')); // the stage panel alone is taller
+    key(&mut a, KeyCode::Char('z'));
+    key(&mut a, KeyCode::Char('s'));
+    assert!(a.symbols);
+    // Scroll to the end of the panel (as drawn), where the list is.
+    screen(&a, 120, 60);
+    for _ in 0..20 {
+        key(&mut a, KeyCode::PageDown);
+    }
+    let rows = screen(&a, 120, 60).join("\n");
+    assert!(rows.contains("Symbols in these formulas"), "{rows}");
+    assert!(
+        rows.contains("Δṗ_d: change of linear velocity per unit impulse"),
+        "{rows}"
+    );
+    assert!(rows.contains("[(m/s)/(N·s)]"), "{rows}");
+    key(&mut a, KeyCode::Char('s'));
+    let rows = screen(&a, 120, 60).join("\n");
+    assert!(!rows.contains("Symbols in these formulas"));
+}
+
+#[test]
+fn predict_answers_are_graded_and_scored() {
+    let mut a = app("lecture-2");
+    // Outside predict mode a digit does nothing.
+    stage(&mut a, 4);
+    key(&mut a, KeyCode::Char('1'));
+    assert_eq!(a.mode, Mode::Normal);
+    key(&mut a, KeyCode::Char('p'));
+    stage(&mut a, 4);
+    // g = 18.7337 N·s: 18.73 is within the lecture check's tolerance.
+    type_text(&mut a, "18.73");
+    assert!(matches!(&a.mode, Mode::Answer { input, .. } if input == "18.73"));
+    let rows = screen(&a, 100, 30);
+    assert!(rows[29].contains("your answer: 18.73"), "{}", rows[29]);
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!((a.score.correct, a.score.graded), (1, 1), "{:?}", a.status);
+    assert_eq!(a.revealed[3], 1, "the graded result is revealed");
+    let said = a.status.clone().expect("a verdict").text;
+    assert!(said.starts_with("✓ right: 18.7337 N·s"), "{said}");
+    assert!(said.contains("yours 18.73, difference 0.0037"), "{said}");
+    let rows = screen(&a, 100, 30);
+    assert!(rows[0].contains("[predict 1/1]"), "{}", rows[0]);
+    // g_contact = (18.7337, 0, 0): a wrong vector is graded wrong, with the difference.
+    type_text(&mut a, "(18.7, 1, 0)");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!((a.score.correct, a.score.graded), (1, 2));
+    let s = a.status.clone().unwrap();
+    assert!(s.error, "a wrong answer is shown as one");
+    assert!(s.text.contains("(18.7337, 0, 0) N·s"), "{}", s.text);
+    assert!(s.text.contains("difference (0.0337046, -1, 0) N·s"), "{}", s.text);
+    // An answer that cannot be compared is refused, not scored, and stays open.
+    type_text(&mut a, "1 2");
+    key(&mut a, KeyCode::Enter);
+    assert!(
+        matches!(&a.mode, Mode::Answer { error: Some(e), .. } if e.contains("3 numbers expected")),
+        "{:?}",
+        a.mode
+    );
+    assert_eq!(a.score.graded, 2);
+    key(&mut a, KeyCode::Esc);
+    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.revealed[3], 2, "Esc reveals nothing");
+    // Another lesson starts a new score.
+    key(&mut a, KeyCode::Down);
+    assert_eq!(a.score.graded, 0);
+}
+
+#[test]
+fn help_scrolls_when_the_terminal_is_short() {
+    let mut a = app("lecture-2");
+    key(&mut a, KeyCode::Char('?'));
+    let rows = screen(&a, 80, 24).join("\n");
+    assert!(rows.contains("j/k ↑↓ scroll"), "{rows}");
+    assert!(!rows.contains("page 2, the glossary"), "the last note is below");
+    for _ in 0..40 {
+        key(&mut a, KeyCode::Char('j'));
+    }
+    assert_eq!(a.mode, Mode::Help);
+    assert!(a.help_scroll > 0 && a.help_scroll == a.help_max.get());
+    let rows = screen(&a, 80, 24).join("\n");
+    assert!(rows.contains("page 2, the glossary"), "{rows}");
+    assert_eq!(a.lesson, app("lecture-2").lesson, "j scrolled, it did not switch lessons");
+}
