@@ -174,7 +174,7 @@ fn predict_answers_are_graded_and_scored() {
     assert_eq!(a.mode, Mode::Normal);
     assert_eq!(a.revealed[3], 2, "Esc reveals nothing");
     // Another lesson starts a new score.
-    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char(']'));
     assert_eq!(a.score.graded, 0);
 }
 
@@ -193,4 +193,61 @@ fn help_scrolls_when_the_terminal_is_short() {
     let rows = screen(&a, 80, 24).join("\n");
     assert!(rows.contains("page 2, the glossary"), "{rows}");
     assert_eq!(a.lesson, app("lecture-2").lesson, "j scrolled, it did not switch lessons");
+}
+
+#[test]
+fn j_k_scroll_a_line_pgdn_a_page_and_brackets_switch_lessons() {
+    let mut a = app("lecture-2");
+    stage(&mut a, 2);
+    screen(&a, 80, 24);
+    let page = a.page_rows.get();
+    assert!(a.scroll_max.get() > page, "stage 2 is longer than two pages at 80×24");
+    key(&mut a, KeyCode::Char('j'));
+    key(&mut a, KeyCode::Down);
+    assert_eq!(a.scroll, 2);
+    key(&mut a, KeyCode::Char('k'));
+    assert_eq!(a.scroll, 1);
+    key(&mut a, KeyCode::PageDown);
+    assert_eq!(a.scroll, page, "a page keeps one line of the last in view");
+    key(&mut a, KeyCode::PageUp);
+    key(&mut a, KeyCode::PageUp);
+    assert_eq!(a.scroll, 0);
+    assert_eq!(a.trace.lesson, "lecture-2", "j/k and PgDn do not switch lessons");
+    key(&mut a, KeyCode::Char(']'));
+    assert_eq!(a.trace.lesson, "lecture-3");
+    key(&mut a, KeyCode::Char('['));
+    assert_eq!(a.trace.lesson, "lecture-2");
+}
+
+#[test]
+fn the_header_fits_80_columns_with_its_tags() {
+    let mut a = app("lecture-2");
+    key(&mut a, KeyCode::Char('p'));
+    stage(&mut a, 4);
+    type_text(&mut a, "18.73");
+    key(&mut a, KeyCode::Enter);
+    let rows = screen(&a, 80, 24);
+    assert!(rows[0].trim_end().ends_with("[predict 1/1]"), "{}", rows[0]);
+    assert!(rows[0].contains("lecture-2 · Cube hits the floor"), "{}", rows[0]);
+    assert!(rows[0].contains('…'), "the title gives way: {}", rows[0]);
+}
+
+#[test]
+fn no_key_acts_while_the_terminal_is_too_small() {
+    let mut a = app("lecture-2");
+    let rows = screen(&a, 50, 12).join("\n");
+    assert!(rows.contains("Terminal too small"), "{rows}");
+    for c in ['l', 'e', 'p', ']', 'w', '?'] {
+        key(&mut a, KeyCode::Char(c));
+    }
+    key(&mut a, KeyCode::Enter);
+    assert_eq!((a.page, a.predict, a.mode.clone()), (0, false, Mode::Normal));
+    assert_eq!(a.trace.lesson, "lecture-2");
+    // Large enough again: keys act.
+    screen(&a, 80, 24);
+    key(&mut a, KeyCode::Char('l'));
+    assert_eq!(a.page, 1);
+    screen(&a, 50, 12);
+    key(&mut a, KeyCode::Char('q'));
+    assert!(a.quit, "q still quits");
 }

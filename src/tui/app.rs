@@ -75,6 +75,8 @@ pub struct App {
     pub score: Score,
     /// The stage panel lists the symbols of the formulas on show (`s`).
     pub symbols: bool,
+    /// The last frame said "terminal too small": keys other than quit do nothing.
+    pub too_small: Cell<bool>,
     /// How far the glossary page can scroll, as last drawn.
     pub glossary_max: Cell<u16>,
     /// Lines the help page is scrolled down, and how far it can, as drawn.
@@ -84,6 +86,8 @@ pub struct App {
     pub scroll: u16,
     /// How far the stage panel can scroll, as last drawn.
     pub scroll_max: Cell<u16>,
+    /// Rows of text the stage panel shows, as last drawn (a page).
+    pub page_rows: Cell<u16>,
     /// The picture fills the right-hand side.
     pub zoom: bool,
     pub mode: Mode,
@@ -148,10 +152,12 @@ impl App {
             score: Score::default(),
             symbols: false,
             glossary_max: Cell::new(0),
+            too_small: Cell::new(false),
             help_scroll: 0,
             help_max: Cell::new(0),
             scroll: 0,
             scroll_max: Cell::new(0),
+            page_rows: Cell::new(0),
             zoom: false,
             mode: Mode::Normal,
             status: None,
@@ -319,6 +325,14 @@ impl App {
             return;
         }
         self.status = None;
+        if self.too_small.get() {
+            // Nothing of the app is on show: only quitting acts.
+            let ctrl_c = key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL);
+            if ctrl_c || key.code == KeyCode::Char('q') {
+                self.quit = true;
+            }
+            return;
+        }
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal if self.screen != Screen::Contact => self.screen_key(key),
             Mode::Normal if self.up_key(key) => {}
@@ -411,8 +425,11 @@ impl App {
                 let n = self.lessons.len();
                 self.goto_lesson((self.lesson + n - 1) % n)
             }
-            ScrollDown => self.scroll = self.scroll.saturating_add(5).min(self.scroll_max.get()),
-            ScrollUp => self.scroll = self.scroll.min(self.scroll_max.get()).saturating_sub(5),
+            // A page keeps one line of the last in view.
+            ScrollDown => self.scroll_by(i32::from(self.page_rows.get().max(2)) - 1),
+            ScrollUp => self.scroll_by(1 - i32::from(self.page_rows.get().max(2))),
+            LineDown => self.scroll_by(1),
+            LineUp => self.scroll_by(-1),
             Edit => {
                 let fields = edit::fields(&self.entry().lesson, self.contact);
                 self.mode = Mode::Edit(Form::new(fields));
@@ -568,6 +585,13 @@ impl App {
         self.revealed[s] += 1;
         let score = self.score.summary();
         self.say(format!("{text} · score {score}"), !g.correct);
+    }
+
+    /// Scrolls the stage panel by `lines` (down when positive), within its text.
+    fn scroll_by(&mut self, lines: i32) {
+        let max = i32::from(self.scroll_max.get());
+        let at = i32::from(self.scroll.min(self.scroll_max.get()));
+        self.scroll = (at + lines).clamp(0, max) as u16;
     }
 
     pub(super) fn say(&mut self, text: String, error: bool) {

@@ -54,7 +54,7 @@ fn render_lessons(app: &App, area: Rect, buf: &mut Buffer) {
     }
     let block = Block::bordered()
         .border_style(t.border())
-        .title(Span::styled(" Lessons ↑↓ ⇥ ", t.title()));
+        .title(Span::styled(" Lessons [ ] ⇥ ", t.title()));
     let list = List::new(items)
         .block(block)
         .highlight_style(t.selected())

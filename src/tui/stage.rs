@@ -80,6 +80,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     }
     let overflow = (lines.len() as u16).saturating_sub(inner.height);
     app.scroll_max.set(overflow);
+    app.page_rows.set(inner.height);
     let scroll = app.scroll.min(overflow);
     let mut block = block;
     if overflow > 0 {

@@ -17,7 +17,9 @@ pub const MIN_HEIGHT: u16 = 18;
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
+        let small = area.width < MIN_WIDTH || area.height < MIN_HEIGHT;
+        self.too_small.set(small);
+        if small {
             too_small(area, buf);
             return;
         }
@@ -90,37 +92,46 @@ fn too_small(area: Rect, buf: &mut Buffer) {
 fn header(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let tr = &app.trace;
-    let mut spans = if app.resolver.is_some() {
-        // Opened from a resolver iteration: where it came from.
-        vec![
-            Span::styled(" contact-lab ", t.selected()),
-            Span::raw(" "),
-            Span::styled(
-                super::screens::breadcrumb_fit(app, (area.width as usize).saturating_sub(14)),
-                t.title(),
-            ),
-        ]
-    } else {
-        vec![
-            Span::styled(" contact-lab ", t.selected()),
-            Span::styled(format!(" {} ", tr.lesson), t.title()),
-            Span::raw(format!("· {} · contact {}", tr.title, tr.contact_label)),
-        ]
-    };
+    // The tags at the end (predict score, edits) always show: the title
+    // gives way, shortened with an ellipsis.
+    let mut tags = vec![];
     if app.predict {
         let score = if app.score.graded > 0 {
             format!("  [predict {}/{}]", app.score.correct, app.score.graded)
         } else {
             "  [predict]".to_string()
         };
-        spans.push(Span::styled(score, t.hidden()));
+        tags.push(Span::styled(score, t.hidden()));
     }
     if !app.entry().edits.is_empty() {
-        spans.push(Span::styled(
+        tags.push(Span::styled(
             format!("  [edited ×{}]", app.entry().edits.len()),
             t.warning(),
         ));
     }
+    let tags_w: usize = tags.iter().map(|s| s.width()).sum();
+    let room = (area.width as usize).saturating_sub(tags_w);
+    let mut spans = if app.resolver.is_some() {
+        // Opened from a resolver iteration: where it came from.
+        vec![
+            Span::styled(" contact-lab ", t.selected()),
+            Span::raw(" "),
+            Span::styled(
+                super::screens::breadcrumb_fit(app, room.saturating_sub(14)),
+                t.title(),
+            ),
+        ]
+    } else {
+        let lesson = format!(" {} ", tr.lesson);
+        let rest = format!("· {} · contact {}", tr.title, tr.contact_label);
+        let left = room.saturating_sub(13 + super::wrap::width(&lesson));
+        vec![
+            Span::styled(" contact-lab ", t.selected()),
+            Span::styled(lesson, t.title()),
+            Span::raw(super::wrap::truncate(&rest, left)),
+        ]
+    };
+    spans.extend(tags);
     Paragraph::new(Line::from(spans)).render(area, buf);
 }
 
@@ -169,7 +180,8 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Normal => &[
             ("←→", "stage"),
             ("⇥", "contact"),
-            ("↑↓", "lesson"),
+            ("[]", "lesson"),
+            ("jk", "scroll"),
             ("e", "edit"),
             ("p", "predict"),
             ("w", "write"),

@@ -103,13 +103,13 @@ impl App {
                 self.mode = Mode::Help;
             }
             KeyCode::Char('v') => self.plane = self.plane.next(),
-            KeyCode::Down | KeyCode::Char('j') => {
-                self.goto_lesson((self.lesson + 1) % self.lessons.len())
-            }
-            KeyCode::Up | KeyCode::Char('k') => {
+            KeyCode::Char(']') => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
+            KeyCode::Char('[') => {
                 let n = self.lessons.len();
                 self.goto_lesson((self.lesson + n - 1) % n)
             }
+            KeyCode::Down | KeyCode::Char('j') => self.wheel(false),
+            KeyCode::Up | KeyCode::Char('k') => self.wheel(true),
             _ if self.screen == Screen::Run => self.run_key(key.code),
             _ => self.resolver_key(key.code),
         }
@@ -232,7 +232,7 @@ impl App {
     /// A mouse event: a click picks a contact, a body or a table row; the
     /// wheel scrolls.
     pub fn mouse(&mut self, m: MouseEvent) {
-        if self.mode != Mode::Normal {
+        if self.mode != Mode::Normal || self.too_small.get() {
             return;
         }
         let up = match m.kind {
