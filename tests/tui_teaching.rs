@@ -251,3 +251,23 @@ fn no_key_acts_while_the_terminal_is_too_small() {
     key(&mut a, KeyCode::Char('q'));
     assert!(a.quit, "q still quits");
 }
+
+#[test]
+fn student_lessons_come_first_then_robustness_then_scenes() {
+    let (lessons, _) = tui::lessons(None::<&str>).unwrap();
+    let groups: Vec<&str> = lessons.iter().map(tui::group).collect();
+    let first = |g: &str| groups.iter().position(|x| *x == g).unwrap();
+    let last = |g: &str| groups.iter().rposition(|x| *x == g).unwrap();
+    assert!(last("Lessons") < first("Robustness (extreme-*)"), "{groups:?}");
+    assert!(last("Robustness (extreme-*)") < first("Scenes (in time)"), "{groups:?}");
+    assert!(lessons[first("Robustness (extreme-*)")].id.starts_with("extreme-"));
+    // The list shows the headings where the groups start.
+    let mut a = app("lecture-2");
+    key(&mut a, KeyCode::Char('z'));
+    let rows = screen(&a, 100, 60);
+    let at = |text: &str| row_of(&rows, text).unwrap_or_else(|| panic!("{text}: {rows:#?}"));
+    let robust = at("│ Robustness (extreme-*)");
+    assert!(at("third-example-floor") < robust && robust < at("extreme-mass-ratio"));
+    let scenes = at("│ Scenes (in time)");
+    assert!(at("extreme-inertia") < scenes && scenes < at("ball-drop"));
+}

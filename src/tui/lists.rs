@@ -30,6 +30,11 @@ fn render_lessons(app: &App, area: Rect, buf: &mut Buffer) {
     let mut items = Vec::new();
     let mut selected = 0;
     for (i, e) in app.lessons.iter().enumerate() {
+        // A heading where a group starts (not above the first: the box's title says it).
+        let group = super::group(&e.lesson);
+        if i > 0 && super::group(&app.lessons[i - 1].lesson) != group {
+            items.push(ListItem::new(Line::styled(truncate(group, w), t.dim())));
+        }
         let edited = if e.edits.is_empty() { "" } else { " *" };
         let here = i == app.lesson;
         let mark = if here { "▾ " } else { "▸ " };

@@ -23,12 +23,17 @@ pub use app::App;
 pub use theme::Theme;
 
 /// The embedded lessons and scenes, plus `lesson` when it names a file;
-/// returns them and the index to open.
+/// returns them and the index to open. Student lessons come first, then the
+/// robustness lessons (`extreme-*`), then the scenes ([`group`] names them).
 pub fn lessons<N: AsRef<OsStr> + ?Sized>(
     lesson: Option<&N>,
 ) -> Result<(Vec<Lesson>, usize), AppError> {
-    let mut all: Vec<Lesson> = embedded::ids()
+    let (extreme, student): (Vec<&str>, Vec<&str>) = embedded::ids()
         .into_iter()
+        .partition(|id| id.starts_with("extreme-"));
+    let mut all: Vec<Lesson> = student
+        .into_iter()
+        .chain(extreme)
         .chain(embedded::scene_ids())
         .map(Lesson::load)
         .collect::<Result<_, _>>()
@@ -47,6 +52,17 @@ pub fn lessons<N: AsRef<OsStr> + ?Sized>(
         },
     };
     Ok((all, at))
+}
+
+/// The heading of the list group lesson `l` belongs to.
+pub fn group(l: &Lesson) -> &'static str {
+    if l.simulation.is_some() {
+        "Scenes (in time)"
+    } else if l.id.starts_with("extreme-") {
+        "Robustness (extreme-*)"
+    } else {
+        "Lessons"
+    }
 }
 
 /// The app on `lesson` (embedded id or path; lecture-2 when `None`): a
