@@ -271,3 +271,30 @@ fn student_lessons_come_first_then_robustness_then_scenes() {
     let scenes = at("│ Scenes (in time)");
     assert!(at("extreme-inertia") < scenes && scenes < at("ball-drop"));
 }
+
+#[test]
+fn the_checks_panel_says_how_many_verdicts_it_leaves_out() {
+    // box-stack: more verdicts than the panel has rows at 80×24.
+    let mut a = app("box-stack");
+    stage(&mut a, 9);
+    let rows = screen(&a, 80, 24);
+    let text = rows.join("\n");
+    let n = a.trace.verdicts.len();
+    let shown = rows.iter().filter(|r| r.contains("│✓") || r.contains("│✗")).count();
+    assert!(shown < n, "box-stack has more verdicts than rows: {text}");
+    assert!(text.contains(&format!("+{} more (stage 9)", n - shown)), "{text}");
+    // Every shown line ends at a word: no line of the panel ends inside one
+    // of the verdicts' words.
+    for v in &a.trace.verdicts {
+        for word in v.label.split_whitespace().filter(|w| w.len() > 3) {
+            let cut = &word[..word.len() - 1];
+            for r in &rows {
+                let inside = r.split('│').nth(3).unwrap_or("").trim_end();
+                assert!(
+                    !inside.ends_with(cut) || inside.ends_with(word),
+                    "'{word}' cut: {inside}"
+                );
+            }
+        }
+    }
+}

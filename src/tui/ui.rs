@@ -228,10 +228,14 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
         .border_style(t.border())
         .title(Span::styled(" Checks ", t.title()));
     let lines: Vec<Line> = if !app.shown("checks") {
-        vec![Line::styled(
+        super::wrap::wrap(
             "Hidden in predict mode until the Checks stage is revealed.",
-            t.hidden(),
-        )]
+            block.inner(area).width as usize,
+            0,
+        )
+        .into_iter()
+        .map(|l| Line::styled(l, t.hidden()))
+        .collect()
     } else {
         let step = app.trace.stage("checks");
         let rows: Vec<(&str, Style, String, String)> = app
@@ -246,34 +250,58 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
                 };
                 let mark = v.mark();
                 let detail = match step {
-                    Some(s) => app.fmt.fill(&v.detail, s, false),
+                    Some(s) => app.fmt.fill_units(&v.detail, s),
                     None => v.detail.clone(),
                 };
                 (mark, style, v.label.clone(), detail)
             })
             .collect();
-        // With no room for every detail, the verdicts alone.
+        // With no room for every detail, the verdicts alone; with no room
+        // for every verdict, those that fit and how many more the Checks
+        // stage lists. Wrapped here, at spaces, so nothing is cut mid-word.
         let inner = block.inner(area);
+        let w = inner.width as usize;
+        let h = inner.height as usize;
+        let wrapped = |text: &str| super::wrap::wrap(text, w, 2);
         let needed: usize = rows
             .iter()
-            .map(|(_, _, label, detail)| {
-                super::wrap::wrap(&format!("✓ {label}: {detail}"), inner.width as usize, 0).len()
-            })
+            .map(|(_, _, label, detail)| wrapped(&format!("✓ {label}: {detail}")).len())
             .sum();
-        let details = needed <= inner.height as usize;
-        rows.into_iter()
-            .map(|(mark, style, label, detail)| {
-                let mut spans = vec![Span::styled(mark, style), Span::raw(format!(" {label}"))];
-                if details {
-                    spans.push(Span::raw(": "));
-                    spans.push(Span::styled(detail, t.dim()));
+        let details = needed <= h;
+        let mut lines: Vec<Line> = vec![];
+        let n = rows.len();
+        for (i, (mark, style, label, detail)) in rows.into_iter().enumerate() {
+            let text = if details {
+                format!("{mark} {label}: {detail}")
+            } else {
+                format!("{mark} {label}")
+            };
+            let pieces = wrapped(&text);
+            let left = n - i - 1;
+            // Room for this verdict, and for the "more" line if others follow.
+            if lines.len() + pieces.len() + usize::from(left > 0) > h && lines.len() < h {
+                let long = format!("+{} more (stage 9)", n - i);
+                let more = if super::wrap::width(&long) <= w {
+                    long
+                } else {
+                    format!("+{}", n - i)
+                };
+                lines.push(Line::styled(more, t.dim()));
+                break;
+            }
+            for (j, piece) in pieces.into_iter().enumerate() {
+                if j == 0 {
+                    let rest = piece.strip_prefix(mark).unwrap_or(&piece).to_string();
+                    lines.push(Line::from(vec![
+                        Span::styled(mark, style),
+                        Span::raw(rest),
+                    ]));
+                } else {
+                    lines.push(Line::styled(piece, t.dim()));
                 }
-                Line::from(spans)
-            })
-            .collect()
+            }
+        }
+        lines
     };
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
-        .block(block)
-        .render(area, buf);
+    Paragraph::new(lines).block(block).render(area, buf);
 }
