@@ -8,14 +8,14 @@ use std::path::PathBuf;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use super::event::{self, Action};
-use super::form::{Form, Outcome};
+use super::form::Form;
 use super::screens::{ResolverView, RunView, Screen, Targets};
 use super::theme::Theme;
 use super::write;
 use crate::format::Fmt;
 use crate::lesson::{edit, Lesson};
-use crate::trace::grade::{self, Score};
-use crate::trace::{glossary, Trace, Value};
+use crate::trace::grade::Score;
+use crate::trace::Trace;
 
 /// A lesson as loaded, and as edited in this session.
 #[derive(Debug, Clone)]
@@ -294,31 +294,6 @@ impl App {
         }
     }
 
-    /// Did value `name` of stage `id` change with the last edit?
-    pub fn changed(&self, id: &str, name: &str) -> bool {
-        let Some(base) = &self.baseline else {
-            return false;
-        };
-        let now = self.trace.stage(id).and_then(|s| s.lookup(name));
-        let then = base.stage(id).and_then(|s| s.lookup(name));
-        match (now, then) {
-            (Some(a), Some(b)) => !same(a, b),
-            (Some(_), None) => true,
-            _ => false,
-        }
-    }
-
-    /// Did any value of stage `s` change with the last edit?
-    pub fn stage_changed(&self, s: usize) -> bool {
-        let step = &self.trace.stages[s];
-        self.baseline.is_some()
-            && step
-                .values
-                .iter()
-                .chain(&step.inputs)
-                .any(|(n, _)| self.changed(step.id.json_name(), n))
-    }
-
     /// Handles one key press in whatever mode is active.
     pub fn key(&mut self, key: KeyEvent) {
         if key.kind != KeyEventKind::Press {
@@ -327,7 +302,8 @@ impl App {
         self.status = None;
         if self.too_small.get() {
             // Nothing of the app is on show: only quitting acts.
-            let ctrl_c = key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL);
+            let ctrl_c =
+                key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL);
             if ctrl_c || key.code == KeyCode::Char('q') {
                 self.quit = true;
             }
@@ -342,40 +318,8 @@ impl App {
                     self.update(a);
                 }
             }
-            Mode::Help => match key.code {
-                KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                    self.quit = true
-                }
-                KeyCode::Char('?') | KeyCode::PageDown | KeyCode::Right => {
-                    self.mode = Mode::Glossary(0)
-                }
-                KeyCode::Char('j') | KeyCode::Down => {
-                    self.help_scroll = (self.help_scroll + 1).min(self.help_max.get());
-                    self.mode = Mode::Help;
-                }
-                KeyCode::Char('k') | KeyCode::Up => {
-                    self.help_scroll = self.help_scroll.saturating_sub(1);
-                    self.mode = Mode::Help;
-                }
-                _ => {}
-            },
-            Mode::Glossary(at) => {
-                let max = self.glossary_max.get();
-                let to = |n: u16| Mode::Glossary(n.min(max));
-                match key.code {
-                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                        self.quit = true
-                    }
-                    KeyCode::Char('j') | KeyCode::Down => self.mode = to(at.saturating_add(1)),
-                    KeyCode::Char('k') | KeyCode::Up => self.mode = to(at.saturating_sub(1)),
-                    KeyCode::PageDown | KeyCode::Char(' ') => {
-                        self.mode = to(at.saturating_add(10))
-                    }
-                    KeyCode::PageUp => self.mode = to(at.min(max).saturating_sub(10)),
-                    KeyCode::Left | KeyCode::Char('?') => self.mode = Mode::Help,
-                    _ => {}
-                }
-            }
+            Mode::Help => self.help_key(key),
+            Mode::Glossary(at) => self.glossary_key(at, key),
             Mode::Answer { input, error } => self.answer_key(input, error, key),
             Mode::Edit(form) => self.edit_key(form, key),
             Mode::Write { input, error } => self.write_key(input, error, key),
@@ -480,113 +424,6 @@ impl App {
         }
     }
 
-    /// The result predict mode hides next on this page: its stage, value
-    /// name and value, if it has one to grade.
-    pub fn hidden_result(&self) -> Option<(usize, &str, &Value)> {
-        if !self.hidden_here() {
-            return None;
-        }
-        let s = self.page - 1;
-        let step = &self.trace.stages[s];
-        let name = step.formulas.get(self.revealed[s])?.result.as_deref()?;
-        Some((s, name, step.lookup(name)?))
-    }
-
-    /// A key that starts an answer to the hidden result: a digit, a sign,
-    /// a point or a bracket. Returns whether it did.
-    fn answer_start(&mut self, key: KeyEvent) -> bool {
-        let KeyCode::Char(c) = key.code else {
-            return false;
-        };
-        if key.modifiers.contains(KeyModifiers::CONTROL)
-            || !(c.is_ascii_digit() || "-.([".contains(c))
-            || self.hidden_result().is_none()
-        {
-            return false;
-        }
-        self.mode = Mode::Answer {
-            input: c.to_string(),
-            error: None,
-        };
-        true
-    }
-
-    fn answer_key(&mut self, mut input: String, error: Option<String>, key: KeyEvent) {
-        match key.code {
-            KeyCode::Esc => {}
-            KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => self.quit = true,
-            KeyCode::Char('u') if key.modifiers.contains(KeyModifiers::CONTROL) => {
-                self.mode = Mode::Answer {
-                    input: String::new(),
-                    error: None,
-                }
-            }
-            KeyCode::Backspace => {
-                input.pop();
-                self.mode = Mode::Answer { input, error: None };
-            }
-            KeyCode::Char(c) => {
-                input.push(c);
-                self.mode = Mode::Answer { input, error: None };
-            }
-            KeyCode::Enter => self.grade_answer(input),
-            _ => self.mode = Mode::Answer { input, error },
-        }
-    }
-
-    /// Grades `input` against the hidden result: a refusal keeps the prompt
-    /// open; a graded answer is scored, the result revealed and the right
-    /// answer and the difference said.
-    fn grade_answer(&mut self, input: String) {
-        let Some((s, name, value)) = self
-            .hidden_result()
-            .map(|(s, n, v)| (s, n.to_string(), v.clone()))
-        else {
-            return;
-        };
-        let g = grade::grade(&input, &value);
-        if let Some(problem) = g.problem.clone() {
-            self.mode = Mode::Answer {
-                input,
-                error: Some(problem),
-            };
-            return;
-        }
-        let step = &self.trace.stages[s];
-        let unit = glossary::unit(step, &name);
-        let right = glossary::with_unit(&self.fmt.value(&value), unit);
-        let text = if g.expected.is_empty() {
-            let mark = if g.correct { "✓ right" } else { "✗ not quite" };
-            format!("{mark}: the answer is {right}")
-        } else {
-            let diff = g
-                .difference
-                .iter()
-                .map(|d| self.fmt.num(*d))
-                .collect::<Vec<_>>()
-                .join(", ");
-            let diff = if g.difference.len() > 1 {
-                format!("({diff})")
-            } else {
-                diff
-            };
-            let mark = if g.correct {
-                "✓ right"
-            } else {
-                "✗ outside the tolerance"
-            };
-            format!(
-                "{mark}: {right}; yours {}, difference {}",
-                input.trim(),
-                glossary::with_unit(&diff, unit)
-            )
-        };
-        self.score.record(&g);
-        self.revealed[s] += 1;
-        let score = self.score.summary();
-        self.say(format!("{text} · score {score}"), !g.correct);
-    }
-
     /// Scrolls the stage panel by `lines` (down when positive), within its text.
     fn scroll_by(&mut self, lines: i32) {
         let max = i32::from(self.scroll_max.get());
@@ -597,72 +434,4 @@ impl App {
     pub(super) fn say(&mut self, text: String, error: bool) {
         self.status = Some(Status { text, error });
     }
-
-    fn edit_key(&mut self, mut form: Form, key: KeyEvent) {
-        let lesson = &self.entry().lesson;
-        let k = self.contact;
-        let outcome = form.key(
-            key,
-            |f| edit::get(lesson, k, f),
-            |f| edit::next_choice(lesson, k, f),
-        );
-        match outcome {
-            Outcome::Stay => self.mode = Mode::Edit(form),
-            Outcome::Close => {}
-            Outcome::Set(i, text) => {
-                let field = form.fields[i].clone();
-                let before = self.trace.clone();
-                let entry = self.entry_mut();
-                let lesson_before = entry.lesson.clone();
-                match edit::set(&mut entry.lesson, k, &field, &text) {
-                    Ok(said) => {
-                        entry.edits.push(said.clone());
-                        self.recompute();
-                        let changed = count_changed(&before, &self.trace);
-                        self.baseline = Some(before);
-                        form.input = None;
-                        form.error = None;
-                        let run = self
-                            .scene_edited(&field, &lesson_before)
-                            .unwrap_or_default();
-                        self.say(format!("{said}: {changed} values changed{run}"), false);
-                    }
-                    Err(e) => form.error = Some(e),
-                }
-                self.mode = Mode::Edit(form);
-            }
-        }
-    }
-}
-
-/// Values compare by their numbers (NaN equal to NaN, so it is not "changed").
-fn same(a: &Value, b: &Value) -> bool {
-    match (a, b) {
-        (Value::Text(x), Value::Text(y)) => x == y,
-        _ => {
-            let (x, y) = (a.numbers(), b.numbers());
-            x.len() == y.len()
-                && x.iter()
-                    .zip(&y)
-                    .all(|(p, q)| p == q || (p.is_nan() && q.is_nan()))
-        }
-    }
-}
-
-/// Stage values (the JSON contract's) that differ between two traces.
-fn count_changed(before: &Trace, after: &Trace) -> usize {
-    after
-        .stages
-        .iter()
-        .map(|s| {
-            s.values
-                .iter()
-                .filter(|(n, v)| {
-                    before
-                        .value(s.id.json_name(), n)
-                        .is_none_or(|old| !same(old, v))
-                })
-                .count()
-        })
-        .sum()
 }

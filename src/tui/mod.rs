@@ -2,7 +2,9 @@
 //! [`app`] holds the state and its update, [`ui`] draws it, [`event`] reads
 //! the terminal. It reads only the trace: no physics here.
 
+pub mod answer;
 pub mod app;
+mod edited;
 pub mod event;
 pub mod form;
 mod lists;
