@@ -298,3 +298,21 @@ fn the_checks_panel_says_how_many_verdicts_it_leaves_out() {
         }
     }
 }
+
+#[test]
+fn without_colour_the_state_after_is_drawn_dashed() {
+    let at = |color: bool, n: usize| {
+        let (lessons, i) = tui::lessons(Some("lecture-2")).unwrap();
+        let mut a = App::new(lessons, i, 0, Theme { color });
+        stage(&mut a, n);
+        key(&mut a, KeyCode::Char('z')); // the picture alone, large
+        screen(&a, 100, 30)
+    };
+    // Stage 1 draws the state before only: the same with or without colour.
+    assert_eq!(at(true, 1), at(false, 1));
+    // Stage 6 draws before and after: after is dashed without colour.
+    let (coloured, plain) = (at(true, 6), at(false, 6));
+    assert_ne!(coloured, plain, "the after arrows differ by line style");
+    let plain = plain.join("\n");
+    assert!(plain.contains("v′ after (dashed)"), "{plain}");
+}

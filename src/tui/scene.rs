@@ -104,6 +104,23 @@ fn place_labels(
     out
 }
 
+/// The segment `a`–`c` as dashes `step` long with gaps as long between
+/// them (a segment shorter than two steps stays whole).
+fn dashes(a: P, c: P, step: f64) -> Vec<(P, P)> {
+    let len = (c[0] - a[0]).hypot(c[1] - a[1]);
+    if !(step > 0.0 && len >= 2.0 * step) {
+        return vec![(a, c)];
+    }
+    let at = |s: f64| [a[0] + (c[0] - a[0]) * s / len, a[1] + (c[1] - a[1]) * s / len];
+    let mut out = vec![];
+    let mut s = 0.0;
+    while s < len {
+        out.push((at(s), at((s + step).min(len))));
+        s += 2.0 * step;
+    }
+    out
+}
+
 /// The key to the picture's colours and labels; `compact` keeps to the symbols.
 fn legend(t: &Theme, show: &Show, moved: bool, compact: bool) -> TextLine<'static> {
     let mut items = vec![];
@@ -111,7 +128,8 @@ fn legend(t: &Theme, show: &Show, moved: bool, compact: bool) -> TextLine<'stati
         items.push((Ink::VelocityBefore, "v", "before"));
     }
     if show.after_velocity {
-        items.push((Ink::VelocityAfter, "v′", "after"));
+        let what = if t.color { "after" } else { "after (dashed)" };
+        items.push((Ink::VelocityAfter, "v′", what));
     }
     if show.impulse {
         items.push((Ink::Impulse, "g", "impulse"));
@@ -119,7 +137,12 @@ fn legend(t: &Theme, show: &Show, moved: bool, compact: bool) -> TextLine<'stati
     items.push((Ink::Normal, "d̂", "normal"));
     items.push((Ink::Arm, "r", "arm"));
     if show.after_pose && moved {
-        items.push((Ink::BodyAfter, "▒", "after projection"));
+        let what = if t.color {
+            "after projection"
+        } else {
+            "after projection (dashed)"
+        };
+        items.push((Ink::BodyAfter, "▒", what));
     }
     let mut spans = vec![];
     for (ink, sym, what) in items {
@@ -180,10 +203,20 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let (xb, yb) = fit(b, canvas_area.width, canvas_area.height);
     let color = |ink: Ink| t.ink(ink);
     let labels = place_labels(&pic.marks, xb, yb, canvas_area.width, canvas_area.height);
+    // Without colour the state after the impulse (and after the projection)
+    // is drawn dashed, so that it still differs from the state before.
+    let dash = (xb[1] - xb[0]) / f64::from(canvas_area.width.max(1));
     let paint = |ctx: &mut Context| {
         for m in &pic.marks {
             if let Mark::Seg(a, c, ink) = m {
-                ctx.draw(&Line::new(a[0], a[1], c[0], c[1], color(*ink)));
+                let after = matches!(ink, Ink::VelocityAfter | Ink::BodyAfter);
+                if after && !t.color {
+                    for (p, q) in dashes(*a, *c, dash) {
+                        ctx.draw(&Line::new(p[0], p[1], q[0], q[1], color(*ink)));
+                    }
+                } else {
+                    ctx.draw(&Line::new(a[0], a[1], c[0], c[1], color(*ink)));
+                }
             }
         }
         ctx.layer();
@@ -198,4 +231,20 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         .y_bounds(yb)
         .paint(paint)
         .render(canvas_area, buf);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::dashes;
+
+    #[test]
+    fn a_dashed_segment_has_gaps_and_keeps_its_ends() {
+        let d = dashes([0.0, 0.0], [10.0, 0.0], 1.0);
+        assert_eq!(d.len(), 5);
+        assert_eq!(d[0], ([0.0, 0.0], [1.0, 0.0]));
+        assert_eq!(d[1].0, [2.0, 0.0], "a gap of one step");
+        assert_eq!(d[4], ([8.0, 0.0], [9.0, 0.0]));
+        // Too short to dash: whole.
+        assert_eq!(dashes([0.0, 0.0], [1.5, 0.0], 1.0).len(), 1);
+    }
 }
