@@ -57,6 +57,26 @@ fn place_labels(
         .collect();
     labels.sort_by_key(|l| l.3);
     let mut taken = vec![false; (w * h) as usize];
+    // Cells the drawing passes through: a label goes elsewhere when it can.
+    let mut drawn = vec![false; (w * h) as usize];
+    let cell = |p: P| {
+        let c = ((p[0] - xb[0]) * f64::from(2 * w - 1) / xr).round() as i32 / 2;
+        let r = ((yb[1] - p[1]) * f64::from(4 * h - 1) / yr).round() as i32 / 4;
+        (c, r)
+    };
+    for m in marks {
+        if let Mark::Seg(a, b, _) = m {
+            let ((c0, r0), (c1, r1)) = (cell(*a), cell(*b));
+            let n = (c1 - c0).abs().max((r1 - r0).abs()).clamp(1, 4 * (w + h));
+            for i in 0..=n {
+                let s = f64::from(i) / f64::from(n);
+                let (c, r) = cell([a[0] + (b[0] - a[0]) * s, a[1] + (b[1] - a[1]) * s]);
+                if (0..w).contains(&c) && (0..h).contains(&r) {
+                    drawn[(r * w + c) as usize] = true;
+                }
+            }
+        }
+    }
     let mut out = vec![];
     for (p, text, ink, _) in labels {
         if !(xb[0]..=xb[1]).contains(&p[0]) || !(yb[0]..=yb[1]).contains(&p[1]) {
@@ -86,11 +106,11 @@ fn place_labels(
                 && c + n <= w
                 && (c..c + n).all(|x| !taken[(r * w + x) as usize])
         };
-        if let Some((c, r)) = tries
-            .iter()
-            .map(|(dc, dr)| (c + dc, r + dr))
-            .find(|&(c, r)| free(c, r))
-        {
+        let clear = |c: i32, r: i32| free(c, r) && (c..c + n).all(|x| !drawn[(r * w + x) as usize]);
+        let spot = |c0: i32, r0: i32, ok: &dyn Fn(i32, i32) -> bool| {
+            tries.iter().map(|(dc, dr)| (c0 + dc, r0 + dr)).find(|&(c, r)| ok(c, r))
+        };
+        if let Some((c, r)) = spot(c, r, &clear).or_else(|| spot(c, r, &free)) {
             for x in c..c + n {
                 taken[(r * w + x) as usize] = true;
             }
@@ -235,7 +255,22 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
 
 #[cfg(test)]
 mod tests {
-    use super::dashes;
+    use super::picture::Mark;
+    use super::{dashes, place_labels};
+    use crate::tui::theme::Ink;
+
+    #[test]
+    fn a_label_goes_beside_the_drawing_when_there_is_room() {
+        // A horizontal line across a 10 × 5 canvas through the label's point.
+        let marks = vec![
+            Mark::Seg([0.0, 2.0], [10.0, 2.0], Ink::Body),
+            Mark::Label([5.0, 2.0], "q".into(), Ink::Point, 0),
+        ];
+        let placed = place_labels(&marks, [0.0, 10.0], [0.0, 4.0], 10, 5);
+        assert_eq!(placed.len(), 1);
+        let y = placed[0].0[1];
+        assert!((y - 2.0).abs() > 0.5, "the label is off the line's row: y = {y}");
+    }
 
     #[test]
     fn a_dashed_segment_has_gaps_and_keeps_its_ends() {
