@@ -284,7 +284,7 @@ fn no_color_draws_without_colours() {
     key(&mut a, KeyCode::Esc);
     draw(&mut t, &a);
     let buf = t.backend().buffer();
-    let (x, y) = find(buf, "▶  9 Checks");
+    let (x, y) = find(buf, "▶  10 Checks");
     assert!(buf[(x + 3, y)].modifier.contains(Modifier::REVERSED));
 }
 

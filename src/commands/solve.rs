@@ -7,7 +7,7 @@ use crate::cli::{Format, SolveArgs};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Overrides;
-use crate::physics::FrictionModel;
+use crate::physics::{FrictionModel, Solution};
 use crate::render;
 use crate::render::compare::Compared;
 use crate::render::svg::{self, Plane};
@@ -31,7 +31,13 @@ fn usage(args: &SolveArgs) -> Result<(), AppError> {
 
 pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     usage(args)?;
-    let lesson = load(&args.lesson, &args.model, Some(args.contact))?;
+    let mut lesson = load(&args.lesson, &args.model, Some(args.contact))?;
+    if let Some(law) = args.exact {
+        lesson.apply(&Overrides {
+            exact: Some(law.law()),
+            ..Overrides::default()
+        });
+    }
     warn(&lesson, err);
     let fmt = Fmt::new(args.digits as usize);
     if args.compare_friction {
@@ -43,15 +49,15 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
                     friction_model: Some(model),
                     ..Overrides::default()
                 });
-                let solution = crate::physics::solve(&l.problem::<f64>(args.contact));
+                let solution = solved(&l, args.contact)?;
                 let trace = crate::trace::build(&l, args.contact, &solution);
-                Compared {
+                Ok(Compared {
                     model,
                     solution,
                     trace,
-                }
+                })
             })
-            .collect();
+            .collect::<Result<_, AppError>>()?;
         let text = match args.format {
             Format::Json => render::compare::json(&compared),
             _ => render::compare::text(&compared, &fmt),
@@ -63,10 +69,15 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     } else {
         vec![args.contact]
     };
-    let traces: Vec<_> = contacts
+    let traces = contacts
         .iter()
-        .map(|&k| crate::worked_solution(&lesson, k))
-        .collect();
+        .map(|&k| {
+            let solution = solved(&lesson, k)?;
+            let mut trace = crate::trace::build(&lesson, k, &solution);
+            crate::trace::note_planar_acceleration(&mut trace, &solution);
+            Ok(trace)
+        })
+        .collect::<Result<Vec<_>, AppError>>()?;
     let text = match args.format {
         Format::Text => traces
             .iter()
@@ -93,6 +104,16 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         text
     };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// Contact `k` solved; an exact impact integration that could not finish is
+/// a runtime failure (exit 1) with its reason, never a NaN in the output.
+fn solved(lesson: &crate::lesson::Lesson, k: usize) -> Result<Solution<f64>, AppError> {
+    let solution = crate::physics::solve(&lesson.problem::<f64>(k));
+    if let Some(Err(e)) = &solution.exact {
+        return Err(AppError::Runtime(format!("contact {k}: {e}")));
+    }
+    Ok(solution)
 }
 
 /// `--all-contacts` solves each contact alone, from the scene as given: say so

@@ -36,6 +36,8 @@ pub enum Value {
     /// Rows.
     Matrix([[f64; 3]; 3]),
     Text(String),
+    /// A list of strings (the phases of an integrated impact).
+    List(Vec<String>),
 }
 
 impl From<f64> for Value {
@@ -72,7 +74,7 @@ impl Value {
             Value::Vector(v) => v.to_vec(),
             Value::Quaternion(q) => q.to_vec(),
             Value::Matrix(m) => m.iter().flatten().copied().collect(),
-            Value::Text(_) => vec![],
+            Value::Text(_) | Value::List(_) => vec![],
         }
     }
 }

@@ -15,6 +15,7 @@ impl StageId {
             StageId::ApplyImpulse => "Applying the impulse",
             StageId::NonlinearProjection => "Resolving interpenetration",
             StageId::OrientationUpdate => "Orientation update",
+            StageId::ExactImpact => "Exact impact integration",
             StageId::Checks => "Checks",
         }
     }
@@ -30,6 +31,7 @@ impl StageId {
             StageId::ApplyImpulse => "Apply impulse",
             StageId::NonlinearProjection => "Projection",
             StageId::OrientationUpdate => "Orientation",
+            StageId::ExactImpact => "Integration",
             StageId::Checks => "Checks",
         }
     }

@@ -70,7 +70,7 @@ mod rotating;
 mod run;
 mod tangent;
 
-pub use contact::{exact_impact, exact_impact_with, ExactImpact};
+pub use contact::{exact_impact, exact_impact_beside, exact_impact_with, ExactImpact};
 pub use input::{ExactError, ImpactInput, RestitutionLaw, Tolerance};
 pub use integrate::integrate;
 pub use outcome::{Cost, ImpactOutcome, Phase, PhaseKind, Regime, Sample};
