@@ -112,12 +112,7 @@ pub fn exact_impact(c: &SolvedContact) -> Step {
     b.value("velocity_contact", o.velocity);
     b.f("law", "", Some("{law_name}"), None);
     b.f("u(P)", "u₀ + K P", Some("{u0} + {matrix} P"), None);
-    b.f(
-        "dP_t",
-        "−μ_d s dP_n while slipping (s = u_t/|u_t|), τ dP_n while stuck",
-        None,
-        None,
-    );
+    b.f("dP_t", "−μ_d s dP_n", None, None);
     b.f(end_lhs, end_rhs, None, None);
     b.f(
         "P_c",
@@ -155,6 +150,13 @@ pub fn exact_impact(c: &SolvedContact) -> Step {
         }
         b.note(phase_note(&p.kind, i));
     }
+    b.note("Friction while slipping is dP_t = −μ_d s dP_n with s = u_t/|u_t| the slip direction; while stuck it is τ dP_n with τ = −K_tt⁻¹ K_tn, as long as |τ| ≤ μ_s. P_clamp is the one-shot impulse of the stages above (the friction clamp's, or the impulse stage's without friction). Each stretch ends at an event: the slip halts, maximum compression, or the law's end.");
+    let k = &x.input.k;
+    let coupling = k[(0, 1)].hypot(k[(0, 2)]);
+    let frictional = x.input.static_friction > 0.0 || x.input.dynamic_friction > 0.0;
+    if frictional && coupling <= 1e-12 * k[(0, 0)] {
+        b.note("K has no normal–tangential coupling (K_nt = 0, as for a ball): friction does not change the normal velocity and the contact never needs to slip back, so the three laws agree and the one-shot impulse is the exact one.");
+    }
     gain_notes(&mut b, x);
     b.note("The integration applies nothing: the bodies after this contact are the one-shot's. Restitution here is the contact's e applied to the actual normal velocity (no velocity limit, no acceleration compensation).");
     b.done()
@@ -191,23 +193,23 @@ fn one_shot(b: &mut B, x: &ExactImpact<f64>) {
     );
     b.value("energy_after_one_shot", x.energy_after_one_shot);
     b.value("energy_difference", x.energy_difference());
-    b.f("P_one-shot", "", None, Some("impulse_one_shot_contact"));
+    b.f("P_clamp", "", None, Some("impulse_one_shot_contact"));
     b.f(
-        "P − P_one-shot",
+        "P − P_clamp",
         "",
         Some("{impulse_contact} − {impulse_one_shot_contact}"),
         Some("impulse_difference"),
     );
-    b.f("|P − P_one-shot|", "", None, Some("impulse_difference_abs"));
+    b.f("|P − P_clamp|", "", None, Some("impulse_difference_abs"));
     b.f(
-        "|P − P_one-shot| / |P|",
+        "|P − P_clamp| / |P|",
         "",
         None,
         Some("impulse_difference_relative"),
     );
-    b.f("E′_one-shot", "", None, Some("energy_after_one_shot"));
+    b.f("E′_clamp", "", None, Some("energy_after_one_shot"));
     b.f(
-        "E′_one-shot − E′",
+        "E′_clamp − E′",
         "",
         Some("{energy_after_one_shot} − {energy_after}"),
         Some("energy_difference"),
