@@ -316,3 +316,62 @@ fn exact_stage_snapshots() {
         }
     });
 }
+
+/// The impulse-space figure: below the contact's picture in the SVG output
+/// when the stage ran (never otherwise), alone as a snapshot.
+#[test]
+fn impulse_space_figure_in_the_svg_output() {
+    use contact_lab::render::svg::{self, Plane};
+    let rod = trace(&Lesson::load("rod-reverses").unwrap(), 0);
+    let page = svg::render(&rod, Plane::Xy);
+    assert!(page.contains(r#"height="1160" viewBox="0 0 1280 1160""#));
+    assert!(page.contains("Impulse space (stronge restitution)"));
+    assert!(page.contains(">halts, reverses</text>"));
+    assert!(page.contains(">max compression</text>"));
+    assert!(page.contains(">u_t1 (tangent t₁)</text>"));
+    assert!(!page.contains(">u_t0 (tangent t₀)</text>"), "t₀ stays zero");
+    let plain = svg::render(&trace(&Lesson::load("lecture-2").unwrap(), 0), Plane::Xy);
+    assert!(plain.contains(r#"height="720""#));
+    assert!(!plain.contains("Impulse space"));
+    let alone = render::impact::svg(&rod).unwrap();
+    assert!(render::impact::svg(&trace(&Lesson::load("lecture-2").unwrap(), 0)).is_none());
+    common::snapshot_settings().bind(|| {
+        insta::assert_snapshot!("exact_impulse_svg@rod-reverses", alone);
+    });
+}
+
+/// Markdown with `--figures` writes the impulse-space figure beside the
+/// contact's picture and links it in the stage.
+#[test]
+fn impulse_space_figure_in_markdown() {
+    let dir = common::scratch("exact-figures");
+    let out = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+        .args([
+            "solve",
+            "kane-energy-gain",
+            "--exact",
+            "poisson",
+            "--format",
+            "md",
+        ])
+        .arg("--figures")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let md = String::from_utf8(out.stdout).unwrap();
+    let impulse = dir.join("kane-energy-gain-contact-0-impulse.svg");
+    let svg = std::fs::read_to_string(&impulse).unwrap();
+    assert!(svg.contains("Impulse space (poisson restitution)"));
+    assert!(svg.contains(">halts, sticks</text>"));
+    let picture = std::fs::read_to_string(dir.join("kane-energy-gain-contact-0.svg")).unwrap();
+    assert!(
+        !picture.contains("Impulse space"),
+        "the picture stays alone"
+    );
+    let stage = md.split("### 9. Exact impact integration").nth(1).unwrap();
+    let stage = stage.split("### 10. Checks").next().unwrap();
+    assert!(stage.contains("![Impulse space: u_n and u_t against P_n, the phase changes marked]("));
+    assert!(stage.contains("kane-energy-gain-contact-0-impulse.svg)"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -10,6 +10,7 @@ use crate::lesson::Overrides;
 use crate::physics::{FrictionModel, Solution};
 use crate::render;
 use crate::render::compare::Compared;
+use crate::render::markdown::Figures;
 use crate::render::svg::{self, Plane};
 
 fn usage(args: &SolveArgs) -> Result<(), AppError> {
@@ -144,23 +145,40 @@ fn alone_note(text: &str, id: &str, format: Format) -> String {
     }
 }
 
-/// Writes one SVG per contact into `dir`; returns the links to them.
+/// Writes one SVG per contact into `dir`, and the impulse-space figure of
+/// each contact whose `exact_impact` stage ran; returns the links to them.
 fn figures(
     dir: &std::path::Path,
     id: &str,
     contacts: &[usize],
     traces: &[crate::trace::Trace],
-) -> Result<Vec<Option<String>>, AppError> {
+) -> Result<Vec<Figures>, AppError> {
     std::fs::create_dir_all(dir)
         .map_err(|e| AppError::Runtime(format!("cannot create {}: {e}", dir.display())))?;
+    let write = |name: String, text: String| -> Result<String, AppError> {
+        write_atomic(&dir.join(&name), text.as_bytes())?;
+        let link = dir.join(&name).to_string_lossy().replace('\\', "/");
+        Ok(link.replace(' ', "%20"))
+    };
     contacts
         .iter()
         .zip(traces)
         .map(|(k, t)| {
-            let name = format!("{}-contact-{k}.svg", file_stem(id));
-            write_atomic(&dir.join(&name), svg::render(t, Plane::Xy).as_bytes())?;
-            let link = dir.join(&name).to_string_lossy().replace('\\', "/");
-            Ok(Some(link.replace(' ', "%20")))
+            let stem = file_stem(id);
+            // The contact's picture alone: the impulse-space figure has its own file.
+            let mut picture = t.clone();
+            picture.impact = None;
+            let contact = write(
+                format!("{stem}-contact-{k}.svg"),
+                svg::render(&picture, Plane::Xy),
+            )?;
+            let impulse = render::impact::svg(t)
+                .map(|text| write(format!("{stem}-contact-{k}-impulse.svg"), text))
+                .transpose()?;
+            Ok(Figures {
+                contact: Some(contact),
+                impulse,
+            })
         })
         .collect()
 }

@@ -4,6 +4,7 @@ pub mod chart;
 pub mod compare;
 pub mod errata;
 pub mod figure;
+pub mod impact;
 pub mod json;
 pub mod latex;
 pub mod markdown;

@@ -23,6 +23,7 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 use crate::physics::StageId;
 
 pub use acceleration::note_planar_acceleration;
+pub use contact::impact_curves;
 pub use plane::Plane;
 pub use scene::{BodyView, ContactView, SceneView};
 pub use worked::build;
@@ -188,6 +189,23 @@ pub struct Trace {
     pub verdicts: Vec<Verdict>,
     pub warnings: Vec<String>,
     pub scene: SceneView,
+    /// The impact integrated by the `exact_impact` stage, for the
+    /// impulse-space figure; `None` when the stage did not run.
+    pub impact: Option<ImpactCurves>,
+}
+
+/// The contact velocity against the normal impulse during an integrated
+/// impact, and where its phases change.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImpactCurves {
+    /// The restitution law's name (`stronge`, …).
+    pub law: String,
+    /// `(P_n, u_n, u_t0, u_t1)`, contact space; u is linear in P_n between
+    /// consecutive points of a closed-form stretch.
+    pub samples: Vec<[f64; 4]>,
+    /// Where the phases change: `(P_n, what happens there)`, in order, one
+    /// entry per P_n (coinciding events joined).
+    pub events: Vec<(f64, String)>,
 }
 
 impl Trace {
