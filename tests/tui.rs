@@ -132,7 +132,10 @@ fn the_exact_impact_stage_shows_in_the_panel() {
     }
     draw(&mut t, &a);
     let text = buffer_text(t.backend().buffer());
-    assert!(text.contains("reverses") || text.contains("slips back"), "{text}");
+    assert!(
+        text.contains("reverses") || text.contains("slips back"),
+        "{text}"
+    );
 }
 
 #[test]
