@@ -19,6 +19,8 @@ Examples:
   contact-lab resolve box-four-corners --show position:2   the worked solution of that iteration's contact
   contact-lab figure lecture-2 -o lecture-2.svg     the contact as a slide-ready picture
   contact-lab check                                 the lectures' printed numbers vs the computed ones
+  contact-lab study stack-5 ramp-stick              speed against accuracy: tables with the Pareto front
+  contact-lab study --format svg > study.svg        error against µs per step, log–log
   contact-lab exercise --seed 1 --count 5 --answers --format md
 
 Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing
@@ -43,6 +45,8 @@ pub enum Command {
     Figure(FigureArgs),
     /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
     Simulate(SimulateArgs),
+    /// Speed against accuracy: run scenes under a grid of knobs, cost and error against a reference.
+    Study(StudyArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
     #[command(name = "check")]
     Errata(ErrataArgs),
@@ -317,6 +321,23 @@ pub struct ResolverArgs {
     /// Which contact velocity restitution is applied to (default: the lesson's, else current).
     #[arg(long, value_enum)]
     pub restitution_from: Option<RestitutionFromArg>,
+    /// The solver: the lecture's deepest-first order or sequential impulses
+    /// (default: the lesson's, else deepest-first). Iterations count contact visits for both.
+    #[arg(long, value_enum)]
+    pub solver: Option<SolverArg>,
+    /// Sequential impulses: start each step from the last step's accumulated impulses.
+    #[arg(long)]
+    pub warm_start: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverArg {
+    /// The lecture's: the deepest penetration, the largest desired Δv first.
+    #[value(name = "deepest_first", alias = "deepest-first")]
+    DeepestFirst,
+    /// Projected Gauss–Seidel with accumulated, clamped impulses.
+    #[value(name = "sequential_impulse", alias = "sequential-impulse")]
+    SequentialImpulse,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -417,4 +438,45 @@ pub struct SimulateArgs {
     pub velocity_limit: Option<f64>,
     #[command(flatten)]
     pub resolver: ResolverArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StudyFormat {
+    /// A table per scene, the Pareto front marked, the trade in one sentence.
+    Text,
+    Json,
+    Csv,
+    /// Error against µs per step, log–log, one panel per scene.
+    Svg,
+    /// A report to hand out.
+    #[value(alias = "markdown")]
+    Md,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct StudyArgs {
+    /// Scene ids or lesson files with [world] or [step] (default: the study's eight scenes).
+    pub scenes: Vec<std::ffi::OsString>,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = StudyFormat::Text)]
+    pub format: StudyFormat,
+    /// Leave timing out (the cost is then contact visits per step): deterministic output.
+    #[arg(long)]
+    pub no_timing: bool,
+    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30.
+    #[arg(long)]
+    pub quick: bool,
+    /// Run the cross product of these knobs' values around each scene's default
+    /// instead of the default grid, e.g. --grid budget=1,4,16 --grid solver=deepest_first,sequential_impulse.
+    #[arg(long, value_name = "KNOB=V1,V2")]
+    pub grid: Vec<String>,
+    /// Timed runs per configuration (their median is reported, with min and max).
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub repeat: u32,
+    /// Simulated seconds per scene (default: the study's choice per scene, 0.5 to 2 s).
+    #[arg(long)]
+    pub seconds: Option<f64>,
+    /// Significant digits of text and Markdown (JSON and CSV carry full f64).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
 }

@@ -19,6 +19,7 @@ pub mod lesson;
 pub mod output_file;
 pub mod physics;
 pub mod render;
+pub mod study;
 pub mod trace;
 pub mod tui;
 

@@ -115,6 +115,17 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("scene-dt-below-range", 9, 6, "[step] dt: duration 1e-70 is below contact-lab's smallest magnitude, 1e-60"),
     ("scene-escape-in-box-box", 6, 11, r#"[world] box_box must be "single" or "manifold", got "single\u{1b}[31m""#),
     ("scene-half-space-normal-past-range", 22, 10, "body 'floor' normal: every component must be a finite number within ±1e60, 1e200 is outside ±1e60 in y"),
+    ("scene-dt-zero", 9, 6, "[step] dt: duration must be a finite number > 0, got 0"),
+    ("scene-dt-negative", 9, 6, "[step] dt: duration must be a finite number > 0, got -0.01"),
+    ("scene-dt-nan", 9, 6, "[step] dt: duration must be a finite number > 0, got NaN"),
+    ("scene-steps-past-limit", 10, 9, "[step] steps must be between 0 and 10000000, got 10000001"),
+    ("scene-half-space-zero-normal", 23, 10, "body 'floor': a half-space's normal must be non-zero"),
+    ("scene-damping-zero", 7, 18, "[world] linear_damping: damping is the fraction of velocity kept per second and must be in (0, 1], got 0"),
+    ("scene-damping-above-one", 7, 19, "[world] angular_damping: damping is the fraction of velocity kept per second and must be in (0, 1], got 1.5"),
+    ("scene-sleep-epsilon-negative", 14, 11, "[sleep] epsilon: must be a finite number ≥ 0, got -0.3"),
+    ("scene-sleep-unknown-mode", 13, 8, "[sleep] mode must be \"body\" or \"island\", got \"stack\""),
+    ("scene-box-box-unknown", 7, 11, "[world] box_box must be \"single\" or \"manifold\", got \"double\""),
+    ("scene-movable-without-shape", 13, 8, "body 'ball' moves in a scene (the lesson has [world], [step] or [sleep]) and needs a `shape` to collide"),
 ];
 
 /// Extra help lines some cases must carry.

@@ -8,6 +8,7 @@ mod resolve;
 mod show;
 mod simulate;
 mod solve;
+mod study;
 
 use std::io::Write;
 
@@ -35,6 +36,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::Resolve(args)) => resolve::resolve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
         Some(Command::Simulate(args)) => simulate::simulate(&args, out, err),
+        Some(Command::Study(args)) => study::study(&args, out, err),
         Some(Command::Errata(args)) => errata::errata(&args, out),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
     }

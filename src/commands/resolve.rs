@@ -6,12 +6,14 @@ use std::io::Write;
 use std::time::Instant;
 
 use super::{io, load, warn};
-use crate::cli::{ImplementationArg, ResolveArgs, ResolveFormat, ResolverArgs, RestitutionFromArg};
+use crate::cli::{
+    ImplementationArg, ResolveArgs, ResolveFormat, ResolverArgs, RestitutionFromArg, SolverArg,
+};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::validate::rules;
 use crate::physics::resolver::{Implementation, Resolver, Silent};
-use crate::physics::{ResolverParams, RestitutionFrom, World};
+use crate::physics::{ResolverParams, RestitutionFrom, Solver, World};
 use crate::render::resolve::{self, Seconds};
 
 /// The lesson's resolver settings with the command line's over them.
@@ -60,6 +62,15 @@ pub(crate) fn params(
             RestitutionFromArg::Current => RestitutionFrom::Current,
             RestitutionFromArg::Initial => RestitutionFrom::Initial,
         };
+    }
+    if let Some(s) = a.solver {
+        p.solver = match s {
+            SolverArg::DeepestFirst => Solver::DeepestFirst,
+            SolverArg::SequentialImpulse => Solver::SequentialImpulse,
+        };
+    }
+    if a.warm_start {
+        p.warm_start = true;
     }
     Ok(p)
 }

@@ -44,6 +44,11 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/stack-5.toml",
     "scenes/cradle-over-time.toml",
     "scenes/sleep-and-wake.toml",
+    "scenes/sleep-modes.toml",
+    "scenes/kane-rod-bounce.toml",
+    "scenes/sphere-row-20.toml",
+    "scenes/mass-ratio-stack.toml",
+    "scenes/overlap-recovery.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

@@ -142,6 +142,8 @@ pub struct RawSettings {
     pub position_epsilon: Option<S<f64>>,
     pub velocity_epsilon: Option<S<f64>>,
     pub restitution_from: Option<S<String>>,
+    pub solver: Option<S<String>>,
+    pub warm_start: Option<S<bool>>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -26,7 +26,7 @@ pub use contact::{causes, checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
 pub use params::{
     ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, SleepParams,
-    StepParams, WorldParams,
+    Solver, StepParams, WorldParams,
 };
 pub use shape::Shape;
 pub use world::{Body, BodyId, Contact, World};

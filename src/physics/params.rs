@@ -158,14 +158,47 @@ impl RestitutionFrom {
     }
 }
 
+/// Which algorithm resolves a set of contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Solver {
+    /// The lecture's: the deepest penetration (largest desired Δv) first,
+    /// one contact at a time, a one-shot impulse per visit.
+    #[default]
+    DeepestFirst,
+    /// Sequential impulses (projected Gauss–Seidel): every contact in turn,
+    /// sweep after sweep, with accumulated and clamped impulses.
+    SequentialImpulse,
+}
+
+impl Solver {
+    pub const ALL: [Solver; 2] = [Solver::DeepestFirst, Solver::SequentialImpulse];
+
+    /// The name used in lesson files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Solver::DeepestFirst => "deepest_first",
+            Solver::SequentialImpulse => "sequential_impulse",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.name() == name || m.name().replace('_', "-") == name)
+    }
+}
+
 /// How a set of contacts is resolved together (the lecture's two phases).
+/// Iterations are counted in contact visits for both solvers: one
+/// deepest-first iteration visits one contact, one sequential-impulse sweep
+/// visits every contact, so equal limits mean equal work.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ResolverParams {
-    /// Most position-phase iterations: trades time for penetration left
-    /// (default: `None` = 8 × the number of contacts).
+    /// Most position-phase iterations (contact visits): trades time for
+    /// penetration left (default: `None` = `visits_per_contact` × contacts).
     pub position_iterations: Option<usize>,
-    /// Most velocity-phase iterations: trades time for closing velocity left
-    /// (default: `None` = 8 × the number of contacts).
+    /// Most velocity-phase iterations (contact visits): trades time for
+    /// closing velocity left (default: `None` = `visits_per_contact` × contacts).
     pub velocity_iterations: Option<usize>,
     /// Penetrations at or below this are left alone: trades resting jitter
     /// for penetration left (default: 0.01).
@@ -173,8 +206,20 @@ pub struct ResolverParams {
     /// Desired Δv at or below this is left alone: trades time for closing
     /// velocity left (default: 0.01).
     pub velocity_epsilon: f64,
-    /// Restitution from the current or the initial contact velocity (default: current).
+    /// Restitution from the current or the initial contact velocity (default:
+    /// current). Sequential impulses always take it from the initial velocity.
     pub restitution_from: RestitutionFrom,
+    /// Deepest-first (the lecture's) or sequential impulses: trades the
+    /// lecture's one-shot impulses, exact for one contact, for accumulated
+    /// impulses that settle coupled contacts (default: deepest_first).
+    pub solver: Solver,
+    /// Sequential impulses only: start from the previous step's accumulated
+    /// impulses (matched by body pair and contact point): trades a little
+    /// bookkeeping for fewer sweeps on resting contacts (default: false).
+    pub warm_start: bool,
+    /// The limit of each phase when no explicit count is given, per contact:
+    /// trades time for what is left (default: 8, the lecture's 8 × contacts).
+    pub visits_per_contact: usize,
 }
 
 impl Default for ResolverParams {
@@ -185,6 +230,9 @@ impl Default for ResolverParams {
             position_epsilon: 0.01,
             velocity_epsilon: 0.01,
             restitution_from: RestitutionFrom::Current,
+            solver: Solver::DeepestFirst,
+            warm_start: false,
+            visits_per_contact: 8,
         }
     }
 }
@@ -193,13 +241,13 @@ impl ResolverParams {
     /// The position iteration limit for `contacts` contacts.
     pub fn position_limit(&self, contacts: usize) -> usize {
         self.position_iterations
-            .unwrap_or(8usize.saturating_mul(contacts))
+            .unwrap_or(self.visits_per_contact.saturating_mul(contacts))
     }
 
     /// The velocity iteration limit for `contacts` contacts.
     pub fn velocity_limit(&self, contacts: usize) -> usize {
         self.velocity_iterations
-            .unwrap_or(8usize.saturating_mul(contacts))
+            .unwrap_or(self.visits_per_contact.saturating_mul(contacts))
     }
 }
 

@@ -10,5 +10,6 @@ pub mod latex;
 pub mod markdown;
 pub mod resolve;
 pub mod run;
+pub mod study;
 pub mod svg;
 pub mod text;

@@ -14,7 +14,7 @@ use crate::physics::resolver::{
     ResolverContact, VelocityImpulse,
 };
 use crate::physics::stages::FrictionRegime;
-use crate::physics::{ResolverParams, RestitutionFrom, World};
+use crate::physics::{ResolverParams, RestitutionFrom, Solver, World};
 
 /// One contact's bookkeeping at a moment (before or after the phases).
 #[derive(Debug, Clone, PartialEq)]
@@ -95,6 +95,8 @@ pub struct PhaseTrace {
     /// Iterations that made at least one other contact worse.
     pub worsening_iterations: usize,
     pub log: Vec<Iteration>,
+    /// The solver that ran the phase (iterations are contact visits for both).
+    pub solver: Solver,
 }
 
 /// The worked resolution of a whole scene.
@@ -248,7 +250,7 @@ fn rows(lesson: &Lesson, contacts: &[ResolverContact<f64>]) -> Vec<ContactRow> {
         .collect()
 }
 
-fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>) -> PhaseTrace {
+fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>, solver: Solver) -> PhaseTrace {
     let worsening_iterations = log
         .iter()
         .filter(|it| it.updated.iter().any(Update::worse))
@@ -264,6 +266,7 @@ fn phase_trace(outcome: &PhaseOutcome<f64>, log: Vec<Iteration>) -> PhaseTrace {
         limit_reached: outcome.limit_reached,
         worsening_iterations,
         log,
+        solver,
     }
 }
 
@@ -304,8 +307,8 @@ pub fn describe(
         implementation,
         restitution_from: params.restitution_from,
         before,
-        position: phase_trace(&position, position_log),
-        velocity: phase_trace(&velocity, velocity_log),
+        position: phase_trace(&position, position_log, params.solver),
+        velocity: phase_trace(&velocity, velocity_log, params.solver),
         contacts_after: rows(lesson, &resolver.contacts),
         after: after(lesson, &resolver.bodies),
         verdicts: verdicts(lesson, &checks, &position, &velocity),

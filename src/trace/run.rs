@@ -201,6 +201,14 @@ impl RunTrace {
                     f.num(left)
                 ),
             ),
+            Event::EnergyGain { gained, cause } => (
+                "energy",
+                format!(
+                    "the velocity phase added {} J of kinetic energy (from now on, each step, until it stops); cause: {}",
+                    f.num(gained),
+                    cause.describe()
+                ),
+            ),
         }
     }
 }

@@ -1,11 +1,11 @@
 //! Validation of the resolver's settings (`position_iterations`,
 //! `velocity_iterations`, `position_epsilon`, `velocity_epsilon`,
-//! `restitution_from`): the lesson's `[settings]` only, refused in a
+//! `restitution_from`, `solver`, `warm_start`): the lesson's `[settings]` only, refused in a
 //! contact's `settings`.
 
 use super::super::raw::{RawSettings, S};
 use super::{rules, Validator};
-use crate::physics::{ResolverParams, RestitutionFrom};
+use crate::physics::{ResolverParams, RestitutionFrom, Solver};
 
 impl Validator {
     /// The resolver's settings of the lesson's `[settings]` table.
@@ -54,6 +54,21 @@ impl Validator {
                 ),
             }
         }
+        if let Some(x) = &raw.solver {
+            match Solver::from_name(x.get_ref()) {
+                Some(m) => p.solver = m,
+                None => self.err(
+                    x.span(),
+                    format!(
+                        "in [settings]: solver must be \"deepest_first\" or \"sequential_impulse\", got \"{}\"",
+                        x.get_ref()
+                    ),
+                ),
+            }
+        }
+        if let Some(w) = &raw.warm_start {
+            p.warm_start = *w.get_ref();
+        }
         p
     }
 
@@ -80,6 +95,8 @@ impl Validator {
                 "restitution_from",
                 raw.restitution_from.as_ref().map(|x| x.span()),
             ),
+            ("solver", raw.solver.as_ref().map(|x| x.span())),
+            ("warm_start", raw.warm_start.as_ref().map(|x| x.span())),
         ];
         for (name, span) in spans {
             if let Some(span) = span {

@@ -18,7 +18,7 @@ use crate::physics::Real;
 
 /// Marks each contact of the taken contact's bodies once per iteration and
 /// calls `visit` on it (a contact may belong to both bodies).
-fn each_neighbour<T: Real>(
+pub(super) fn each_neighbour<T: Real>(
     r: &mut Resolver<T>,
     taken: [Option<usize>; 2],
     stamp: usize,

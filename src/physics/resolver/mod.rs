@@ -13,7 +13,8 @@
 //!
 //! Two implementations give bit-identical results: [`scan`] (the lecture's
 //! loop, O(contacts) per iteration) and [`indexed`] (a priority queue and a
-//! body → contacts adjacency). Each iteration is reported to an
+//! body → contacts adjacency). [`sequential`] is the alternative solver
+//! (sequential impulses, `solver = "sequential_impulse"`). Each iteration is reported to an
 //! [`Observer`]; [`Silent`] reports nowhere.
 
 pub mod checks;
@@ -24,6 +25,7 @@ pub mod prepare;
 pub mod queue;
 pub mod row;
 pub mod scan;
+pub mod sequential;
 pub mod velocity;
 
 pub use observer::{Observer, PositionMoves, Silent, VelocityImpulse};
@@ -31,7 +33,7 @@ pub use prepare::{
     desired_of, Adjacency, ContactSetup, FrictionData, Prepared, ResolverBody, ResolverContact,
 };
 
-use crate::physics::params::ResolverParams;
+use crate::physics::params::{ResolverParams, Solver};
 use crate::physics::{c, Real, World};
 use queue::TournamentTree;
 
@@ -105,6 +107,8 @@ pub struct Resolver<T: Real> {
     stamp: usize,
     /// The largest value of each phase before it ran.
     before: [T; 2],
+    /// Sequential impulses' accumulated impulses and moves.
+    pub sequential: sequential::State<T>,
 }
 
 impl<T: Real> Resolver<T> {
@@ -123,6 +127,7 @@ impl<T: Real> Resolver<T> {
             stamps: Vec::new(),
             stamp: 0,
             before: [T::zero(); 2],
+            sequential: sequential::State::default(),
         };
         r.prepare_again(world, params);
         r
@@ -161,15 +166,23 @@ impl<T: Real> Resolver<T> {
         self.stamps.resize(n, 0);
         self.stamp = 0;
         self.before = [T::zero(); 2];
+        if params.solver == Solver::SequentialImpulse {
+            self.sequential
+                .prepare(&self.contacts, &self.bodies, &self.friction);
+        }
     }
 
-    /// Runs the position phase.
+    /// Runs the position phase (the solver of the params; `implementation`
+    /// chooses how deepest-first runs).
     pub fn position_phase<O: Observer<T>>(
         &mut self,
         implementation: Implementation,
         obs: &mut O,
     ) -> PhaseOutcome<T> {
         self.before[0] = self.max(Phase::Position).0;
+        if self.params.solver == Solver::SequentialImpulse {
+            return sequential::position_phase(self, obs);
+        }
         match implementation {
             Implementation::Scan => scan::position_phase(self, obs),
             Implementation::Indexed => indexed::position_phase(self, obs),
@@ -183,6 +196,9 @@ impl<T: Real> Resolver<T> {
         obs: &mut O,
     ) -> PhaseOutcome<T> {
         self.before[1] = self.max(Phase::Velocity).0;
+        if self.params.solver == Solver::SequentialImpulse {
+            return sequential::velocity_phase(self, obs);
+        }
         match implementation {
             Implementation::Scan => scan::velocity_phase(self, obs),
             Implementation::Indexed => indexed::velocity_phase(self, obs),

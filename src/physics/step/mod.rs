@@ -3,6 +3,7 @@
 //! Friction" and "Sleep"). The pieces: [`integrate`] one body, [`sleep`]
 //! bookkeeping, [`energy`] of the world.
 
+pub mod audit;
 pub mod energy;
 pub mod integrate;
 pub mod report;

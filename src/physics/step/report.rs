@@ -1,7 +1,7 @@
 //! What a step reports: its numbers, the events worth a line of their own,
 //! and why a run stopped early.
 
-use crate::physics::BodyId;
+use crate::physics::{to_f64, BodyId, Real, World};
 
 /// Something worth a line of its own in a run's log.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,6 +46,12 @@ pub enum Event {
     VelocityLimit {
         left: f64,
     },
+    /// The velocity phase added `gained` J of kinetic energy (reported when
+    /// it starts, not again while it goes on), and what can explain it.
+    EnergyGain {
+        gained: f64,
+        cause: super::audit::EnergyCause,
+    },
 }
 
 /// What one step did.
@@ -83,4 +89,37 @@ pub enum BlowUp {
         energy: f64,
         scale: f64,
     },
+}
+
+/// The first movable body with a non-finite state, as a blow-up.
+pub fn check_finite<T: Real>(world: &World<T>, step: u64) -> Result<(), BlowUp> {
+    for (i, b) in world.bodies.iter().enumerate().filter(|(_, b)| b.movable) {
+        let s = &b.state;
+        let what = if !s.position.iter().all(|x| x.is_finite()) {
+            "position"
+        } else if !s.velocity.iter().all(|x| x.is_finite()) {
+            "velocity"
+        } else if !s.angular_velocity.iter().all(|x| x.is_finite()) {
+            "angular velocity"
+        } else if !s.orientation.coords.iter().all(|x| x.is_finite()) {
+            "orientation"
+        } else {
+            continue;
+        };
+        return Err(BlowUp::NonFinite {
+            step,
+            body: i,
+            what,
+        });
+    }
+    Ok(())
+}
+
+/// The fastest movable body.
+pub fn fastest<T: Real>(world: &World<T>) -> usize {
+    let speed = |b: &crate::physics::Body<T>| to_f64(b.state.velocity.norm());
+    (0..world.bodies.len())
+        .filter(|i| world.bodies[*i].movable)
+        .max_by(|a, b| speed(&world.bodies[*a]).total_cmp(&speed(&world.bodies[*b])))
+        .unwrap_or(0)
 }

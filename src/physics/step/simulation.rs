@@ -5,16 +5,17 @@
 
 use nalgebra::Vector3;
 
-use super::energy;
+use super::{audit, energy};
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
+use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{
     c, to_f64, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Real, ResolverParams,
-    SleepParams, World, WorldParams,
+    SleepParams, Solver, World, WorldParams,
 };
 
 /// Everything a simulation needs beyond its bodies.
@@ -75,6 +76,8 @@ pub struct Simulation<T: Real> {
     generated: Vec<BodyContact<T>>,
     /// The resolver, kept so its storage is reused from step to step.
     resolver: Option<Resolver<T>>,
+    /// Sequential impulses with warm start: last step's accumulated impulses.
+    warm: WarmCache<T>,
     /// Touching pairs of the last step and whether they slid.
     touching: Vec<(BodyId, Option<BodyId>, bool)>,
     /// The energy scale blow-ups are measured against.
@@ -82,6 +85,9 @@ pub struct Simulation<T: Real> {
     /// Whether the position and velocity phases hit their limits last step
     /// (a limit is an event when it starts being hit).
     limits_hit: [bool; 2],
+    /// Whether the last step's velocity phase added energy (reported once
+    /// when it starts).
+    gaining: bool,
 }
 
 impl<T: Real> Simulation<T> {
@@ -97,9 +103,11 @@ impl<T: Real> Simulation<T> {
             generator: ContactGenerator::new(),
             generated: Vec::new(),
             resolver: None,
+            warm: WarmCache::default(),
             touching: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
+            gaining: false,
         };
         sim.world.contacts.clear();
         let g = sim.params.world.gravity;
@@ -159,6 +167,7 @@ impl<T: Real> Simulation<T> {
             self.wake_touched(&mut events);
         }
         let closing_before = self.normal_velocities();
+        let kinetic_before = to_f64(energy::kinetic(&self.world));
         // 4. Resolve the contacts together.
         let resolver = match &mut self.resolver {
             Some(r) => {
@@ -167,9 +176,29 @@ impl<T: Real> Simulation<T> {
             }
             none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
         };
+        let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
+        if warm {
+            self.warm.stage(&self.world, resolver);
+        }
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
+        if warm {
+            self.warm.store(&self.world, resolver);
+        }
         resolver.write_back(&mut self.world);
+        let gained = audit::gain(
+            kinetic_before,
+            to_f64(energy::kinetic(&self.world)),
+            self.energy_scale,
+        );
+        let gain_event = match (gained, self.gaining) {
+            (Some(gained), false) => Some(Event::EnergyGain {
+                gained,
+                cause: audit::cause(&self.world, p.acceleration_compensation),
+            }),
+            _ => None,
+        };
+        self.gaining = gained.is_some();
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
@@ -183,6 +212,7 @@ impl<T: Real> Simulation<T> {
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
+        events.extend(gain_event);
         if position.limit_reached && !self.limits_hit[0] {
             events.push(Event::PositionLimit {
                 left: to_f64(position.max_after),
@@ -194,12 +224,12 @@ impl<T: Real> Simulation<T> {
             });
         }
         self.limits_hit = [position.limit_reached, velocity.limit_reached];
-        self.check_finite()?;
+        super::report::check_finite(&self.world, self.step)?;
         let kinetic = to_f64(energy::kinetic(&self.world));
         if kinetic > 1e6 * self.energy_scale {
             return Err(BlowUp::Energy {
                 step: self.step,
-                body: self.fastest(),
+                body: super::report::fastest(&self.world),
                 energy: kinetic,
                 scale: self.energy_scale,
             });
@@ -433,43 +463,6 @@ impl<T: Real> Simulation<T> {
         }
         events.append(&mut bounces);
         self.touching = pairs;
-    }
-
-    fn check_finite(&self) -> Result<(), BlowUp> {
-        for (i, b) in self
-            .world
-            .bodies
-            .iter()
-            .enumerate()
-            .filter(|(_, b)| b.movable)
-        {
-            let s = &b.state;
-            let what = if !s.position.iter().all(|x| x.is_finite()) {
-                "position"
-            } else if !s.velocity.iter().all(|x| x.is_finite()) {
-                "velocity"
-            } else if !s.angular_velocity.iter().all(|x| x.is_finite()) {
-                "angular velocity"
-            } else if !s.orientation.coords.iter().all(|x| x.is_finite()) {
-                "orientation"
-            } else {
-                continue;
-            };
-            return Err(BlowUp::NonFinite {
-                step: self.step,
-                body: i,
-                what,
-            });
-        }
-        Ok(())
-    }
-
-    fn fastest(&self) -> usize {
-        let speed = |b: &crate::physics::Body<T>| to_f64(b.state.velocity.norm());
-        (0..self.world.bodies.len())
-            .filter(|i| self.world.bodies[*i].movable)
-            .max_by(|a, b| speed(&self.world.bodies[*a]).total_cmp(&speed(&self.world.bodies[*b])))
-            .unwrap_or(0)
     }
 }
 

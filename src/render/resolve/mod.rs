@@ -8,7 +8,7 @@ pub mod text;
 
 use crate::format::Fmt;
 use crate::physics::resolver::Phase;
-use crate::physics::RestitutionFrom;
+use crate::physics::{RestitutionFrom, Solver};
 use crate::trace::resolver::{Iteration, PhaseTrace, ResolverTrace};
 
 /// Wall-clock seconds of each part of a resolve (the fastest of `--repeat` runs).
@@ -29,6 +29,12 @@ pub fn how(trace: &ResolverTrace) -> String {
             "restitution from each contact's velocity before the velocity phase (Box2D's way)"
         }
     };
+    if trace.position.solver == Solver::SequentialImpulse {
+        return format!(
+            "{} contacts resolved together by sequential impulses (every contact in turn, sweep after sweep, accumulated and clamped impulses); restitution from each contact's velocity before the velocity phase.",
+            trace.before.len()
+        );
+    }
     format!(
         "{} contacts resolved together by the {} resolver; {restitution}.",
         trace.before.len(),
@@ -38,6 +44,17 @@ pub fn how(trace: &ResolverTrace) -> String {
 
 /// The phase's heading: what it takes first, its epsilon and limit.
 pub fn phase_heading(p: &PhaseTrace, fmt: &Fmt) -> String {
+    if p.solver == Solver::SequentialImpulse {
+        let (name, eps, what) = match p.phase {
+            Phase::Position => ("Position", "position_epsilon", "moves"),
+            Phase::Velocity => ("Velocity", "velocity_epsilon", "impulses"),
+        };
+        return format!(
+            "{name} phase: every contact in file order, sweep after sweep ({what} accumulated, until a sweep changes nothing by more than {eps} {}), at most {} contact visits",
+            fmt.num(p.epsilon),
+            p.iteration_limit
+        );
+    }
     match p.phase {
         Phase::Position => format!(
             "Position phase: the deepest penetration above position_epsilon {} first, at most {} iterations",

@@ -1,0 +1,86 @@
+//! Warm starting: the accumulated impulses a step ends with, kept for the
+//! next step, and matched to the next step's contacts by body pair and
+//! contact point (the nearest within a distance). A resting contact then
+//! starts from last step's impulse instead of zero, so few sweeps meet it.
+
+use nalgebra::Vector3;
+
+use super::super::Resolver;
+use crate::physics::{c, BodyId, Real, World};
+
+#[derive(Debug, Clone, PartialEq)]
+struct Entry<T: Real> {
+    pair: (usize, usize),
+    point: Vector3<T>,
+    /// World-space accumulated impulse on body 1.
+    impulse: Vector3<T>,
+}
+
+/// Last step's accumulated impulses, sorted by body pair.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WarmCache<T: Real> {
+    entries: Vec<Entry<T>>,
+}
+
+impl<T: Real> Default for WarmCache<T> {
+    fn default() -> Self {
+        WarmCache {
+            entries: Vec::new(),
+        }
+    }
+}
+
+/// A contact's pair as a sortable key (no second body sorts last).
+fn key(body1: BodyId, body2: Option<BodyId>) -> (usize, usize) {
+    (body1.0, body2.map_or(usize::MAX, |b| b.0))
+}
+
+/// How near a contact point must be to last step's to inherit its impulse (m).
+pub const MATCH_DISTANCE: f64 = 0.05;
+
+impl<T: Real> WarmCache<T> {
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    pub fn clear(&mut self) {
+        self.entries.clear();
+    }
+
+    /// Hands `r` (prepared from `world`) the impulse of each contact that
+    /// matches one of last step's; the velocity phase starts from them.
+    pub fn stage(&self, world: &World<T>, r: &mut Resolver<T>) {
+        if self.entries.is_empty() {
+            return;
+        }
+        let limit = c::<T>(MATCH_DISTANCE);
+        for (k, contact) in world.contacts.iter().enumerate() {
+            let pair = key(contact.body1, contact.body2);
+            let start = self.entries.partition_point(|e| e.pair < pair);
+            let mut best: Option<(T, Vector3<T>)> = None;
+            for e in self.entries[start..].iter().take_while(|e| e.pair == pair) {
+                let d = (e.point - contact.input.point).norm();
+                if d <= limit && best.is_none_or(|(b, _)| d < b) {
+                    best = Some((d, e.impulse));
+                }
+            }
+            r.sequential.warm[k] = best.map(|(_, g)| g);
+        }
+    }
+
+    /// Keeps the accumulated impulses `r` ended with for `world`'s contacts.
+    pub fn store(&mut self, world: &World<T>, r: &Resolver<T>) {
+        self.entries.clear();
+        self.entries
+            .extend(world.contacts.iter().enumerate().map(|(k, contact)| Entry {
+                pair: key(contact.body1, contact.body2),
+                point: contact.input.point,
+                impulse: r.contacts[k].basis * r.sequential.accumulated[k],
+            }));
+        self.entries.sort_by_key(|e| e.pair);
+    }
+}

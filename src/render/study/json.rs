@@ -1,0 +1,99 @@
+//! The study as JSON (docs/study.md): `{ "scenes": [ { "scene", "reference",
+//! "rows": [ { "config": {…}, "microseconds_per_step", …, "pareto" } ] } ] }`.
+//! Not-a-number values are `null`; without timing the timing keys are absent.
+
+use serde_json::{json, Map, Value};
+
+use crate::study::{Budget, Config, Row, Study};
+
+fn number(x: f64) -> Value {
+    if x.is_finite() {
+        json!(x)
+    } else {
+        Value::Null
+    }
+}
+
+/// Every knob with its typed value.
+pub fn config(c: &Config) -> Value {
+    json!({
+        "solver": c.solver.name(),
+        "warm_start": c.warm_start,
+        "budget": match c.budget {
+            Budget::PerContact(n) => json!(n),
+            Budget::Converged => json!("converged"),
+        },
+        "epsilon": c.epsilon,
+        "precision": c.precision.name(),
+        "friction_model": c.friction_model.name(),
+        "projection": c.projection.name(),
+        "relaxation": c.relaxation,
+        "velocity_limit": c.velocity_limit,
+        "restitution_from": c.restitution_from.name(),
+        "box_box": c.box_box.name(),
+        "sleep": c.sleep,
+        "dt": c.dt,
+    })
+}
+
+fn row(r: &Row) -> Value {
+    let mut o = Map::new();
+    o.insert("knob".into(), json!(r.knob));
+    o.insert("value".into(), json!(r.value));
+    o.insert("config".into(), config(&r.config));
+    if let Some([median, lo, hi]) = r.microseconds {
+        o.insert("microseconds_per_step".into(), number(median));
+        o.insert(
+            "microseconds_spread".into(),
+            json!([number(lo), number(hi)]),
+        );
+    }
+    o.insert("contact_visits_per_step".into(), number(r.visits_per_step));
+    o.insert("limit_steps".into(), json!(r.limit_steps));
+    o.insert("steps".into(), json!(r.steps));
+    o.insert("max_penetration".into(), number(r.max_penetration));
+    o.insert(
+        "max_closing_velocity".into(),
+        number(r.max_closing_velocity),
+    );
+    o.insert("energy_gain".into(), number(r.energy_gain));
+    o.insert("drift".into(), number(r.drift));
+    o.insert("error_vs_reference".into(), number(r.error_vs_reference));
+    o.insert("pareto".into(), json!(r.pareto));
+    o.insert("failure".into(), json!(r.failure));
+    Value::Object(o)
+}
+
+pub fn render(study: &Study) -> String {
+    let scenes: Vec<Value> = study
+        .scenes
+        .iter()
+        .map(|s| {
+            json!({
+                "scene": s.scene,
+                "title": s.title,
+                "seconds": s.seconds,
+                "reference": s.reference,
+                "reference_config": config(&s.reference_config),
+                "verdict": s.verdict,
+                "rows": s.rows.iter().map(row).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    let mut top = Map::new();
+    top.insert(
+        "cost".into(),
+        json!(if study.timed {
+            "microseconds_per_step"
+        } else {
+            "contact_visits_per_step"
+        }),
+    );
+    if study.timed {
+        top.insert("repeats".into(), json!(study.repeats));
+    }
+    top.insert("scenes".into(), json!(scenes));
+    let mut s = serde_json::to_string_pretty(&Value::Object(top)).unwrap_or_default();
+    s.push('\n');
+    s
+}

@@ -1,0 +1,133 @@
+//! The study shown: a table per scene with the Pareto rows marked and one
+//! sentence saying the trade ([`text`]), JSON and CSV for scripts
+//! ([`json`], [`csv`]), a log–log plot of error against cost ([`svg`]) and a
+//! report an instructor can hand out ([`markdown`]).
+
+pub mod csv;
+pub mod json;
+pub mod markdown;
+pub mod svg;
+
+use crate::format::Fmt;
+use crate::study::{Row, Study};
+
+/// How each number is measured, in words (text and Markdown say it once).
+pub const MEASURES: [&str; 7] = [
+    "µs/step: the whole step (contacts, integration, resolution, sleep), median of the timed runs with min–max; without timing the cost is contact visits per step",
+    "visits/step: contact visits of both phases per step (one deepest-first iteration or one sequential-impulse contact update is one visit), mean over the run; limit: steps where a phase used its whole budget",
+    "pen. left: deepest overlap after any step (the shapes collided again, no margin), m",
+    "closing left: fastest closing normal velocity after any step at the contacts it resolved, m/s",
+    "energy gain: largest rise of kinetic + potential energy above the start, J",
+    "drift: how far the top body (the last on ties) moved across gravity by the end (with no gravity: how far it moved), m",
+    "error: RMS over the movable bodies of the distance between their final positions and the reference's, m",
+];
+
+/// A number for the tables ("—" when not a number).
+pub fn num(fmt: &Fmt, x: f64) -> String {
+    if x.is_finite() {
+        fmt.num(x)
+    } else {
+        "—".into()
+    }
+}
+
+/// The cost cell: median (min–max) µs, or visits without timing.
+pub fn cost_cell(fmt: &Fmt, r: &Row) -> String {
+    match r.microseconds {
+        Some([m, lo, hi]) => format!("{} ({}–{})", fmt.num(m), fmt.num(lo), fmt.num(hi)),
+        None => "—".into(),
+    }
+}
+
+/// The cells of one row, in the column order of [`HEADERS`].
+pub fn cells(fmt: &Fmt, r: &Row, timed: bool) -> Vec<String> {
+    let mut c = vec![r.knob.clone(), r.value.clone()];
+    if timed {
+        c.push(cost_cell(fmt, r));
+    }
+    c.extend([
+        fmt.num(r.visits_per_step),
+        format!("{}/{}", r.limit_steps, r.steps),
+        num(fmt, r.max_penetration),
+        num(fmt, r.max_closing_velocity),
+        num(fmt, r.energy_gain),
+        num(fmt, r.drift),
+        num(fmt, r.error_vs_reference),
+        match (&r.failure, r.pareto) {
+            (Some(_), _) => "blew up".into(),
+            (None, true) => "★".into(),
+            (None, false) => String::new(),
+        },
+    ]);
+    c
+}
+
+/// Column headings (µs/step only when timed).
+pub fn headers(timed: bool) -> Vec<&'static str> {
+    let mut h = vec!["knob", "value"];
+    if timed {
+        h.push("µs/step (min–max)");
+    }
+    h.extend([
+        "visits/step",
+        "limit",
+        "pen. left",
+        "closing left",
+        "energy gain",
+        "drift",
+        "error",
+        "front",
+    ]);
+    h
+}
+
+/// The text tables.
+pub fn text(study: &Study, fmt: &Fmt) -> String {
+    let mut out = String::new();
+    out.push_str("Speed against accuracy: each scene under one knob at a time around its default, and the iteration budget of each solver.\n");
+    out.push_str("★ marks the Pareto front of cost against error (no other row is both cheaper and more accurate).\n");
+    for m in MEASURES {
+        out.push_str(&format!("   · {m}\n"));
+    }
+    if study.timed {
+        out.push_str(&format!(
+            "   · {} timed runs per configuration\n",
+            study.repeats
+        ));
+    }
+    for s in &study.scenes {
+        out.push_str(&format!(
+            "\n{}  ({}, {} s)\nReference: {}.\n",
+            s.title,
+            s.scene,
+            fmt.num(s.seconds),
+            s.reference
+        ));
+        let head = headers(study.timed);
+        let rows: Vec<Vec<String>> = s.rows.iter().map(|r| cells(fmt, r, study.timed)).collect();
+        let widths: Vec<usize> = (0..head.len())
+            .map(|i| {
+                rows.iter()
+                    .map(|r| r[i].chars().count())
+                    .chain([head[i].chars().count()])
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
+        let line = |cells: &[String]| {
+            let mut l = String::from("  ");
+            for (i, c) in cells.iter().enumerate() {
+                l.push_str(&format!("{c:<w$}  ", w = widths[i]));
+            }
+            l.trim_end().to_string() + "\n"
+        };
+        out.push_str(&line(
+            &head.iter().map(|h| h.to_string()).collect::<Vec<_>>(),
+        ));
+        for r in &rows {
+            out.push_str(&line(r));
+        }
+        out.push_str(&format!("  {}\n", s.verdict));
+    }
+    out
+}

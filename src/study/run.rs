@@ -1,0 +1,259 @@
+//! Runs one configuration of a scene and measures it: a measuring run (the
+//! metrics, deterministic) and, unless timing is off, timed runs of the bare
+//! step loop (nothing measured inside them).
+//!
+//! What is measured, per step of the measuring run:
+//! - penetration left: the deepest overlap of the bodies after the step
+//!   (contacts generated again from the shapes, no margin);
+//! - closing velocity left: the fastest closing normal velocity, after the
+//!   step, at the contacts the step resolved;
+//! - energy gained: the largest rise of kinetic + potential energy above the
+//!   start (J);
+//! - drift: how far the top body (highest against gravity at the start, the
+//!   last in file order on ties) has moved across gravity by the end (with no
+//!   gravity: how far it moved);
+//! - the final positions, for the error against the reference (RMS over the
+//!   movable bodies of the distance to the reference's final positions, m).
+
+use std::time::Instant;
+
+use nalgebra::Vector3;
+
+use super::{Config, Precision};
+use crate::lesson::Lesson;
+use crate::physics::collide::{BodyContact, ContactGenerator, Options};
+use crate::physics::step::{energy, SimParams, Simulation};
+use crate::physics::{c, to_f64, ContactParams, Real, SleepParams, WorldParams};
+
+/// What the measuring run found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    pub steps: usize,
+    pub visits_per_step: f64,
+    pub limit_steps: usize,
+    pub max_penetration: f64,
+    pub max_closing_velocity: f64,
+    pub energy_gain: f64,
+    pub drift: f64,
+    /// Final position of each movable body.
+    pub positions: Vec<Vector3<f64>>,
+    pub failure: Option<String>,
+}
+
+/// The number of steps `seconds` takes at `dt`.
+pub fn steps(seconds: f64, dt: f64) -> usize {
+    ((seconds / dt).round() as usize).max(1)
+}
+
+/// The lesson's simulation parameters with `config` applied (f64).
+pub fn params(lesson: &Lesson, config: &Config) -> SimParams<f64> {
+    let mut p = lesson.sim_params().unwrap_or_default();
+    p.resolver.solver = config.solver;
+    p.resolver.warm_start = config.warm_start;
+    p.resolver.visits_per_contact = config.budget.per_contact();
+    p.resolver.position_iterations = None;
+    p.resolver.velocity_iterations = None;
+    p.resolver.position_epsilon = config.epsilon;
+    p.resolver.velocity_epsilon = config.epsilon;
+    p.resolver.restitution_from = config.restitution_from;
+    p.friction_model = config.friction_model;
+    p.contact.projection = config.projection;
+    p.contact.relaxation = config.relaxation;
+    p.contact.velocity_limit = config.velocity_limit;
+    p.box_box = config.box_box;
+    p.sleep.enabled = config.sleep;
+    p.dt = config.dt;
+    p
+}
+
+/// The same parameters in another float type.
+fn cast<T: Real>(p: &SimParams<f64>) -> SimParams<T> {
+    let v = |x: &Vector3<f64>| x.map(c::<T>);
+    SimParams {
+        dt: c(p.dt),
+        world: WorldParams {
+            gravity: v(&p.world.gravity),
+            linear_damping: c(p.world.linear_damping),
+            angular_damping: c(p.world.angular_damping),
+        },
+        sleep: SleepParams {
+            enabled: p.sleep.enabled,
+            epsilon: c(p.sleep.epsilon),
+            mode: p.sleep.mode,
+            island_time: c(p.sleep.island_time),
+        },
+        resolver: p.resolver,
+        contact: ContactParams {
+            velocity_limit: c(p.contact.velocity_limit),
+            angular_limit: c(p.contact.angular_limit),
+            relaxation: c(p.contact.relaxation),
+            projection: p.contact.projection,
+            exact: p.contact.exact,
+        },
+        acceleration_compensation: p.acceleration_compensation,
+        box_box: p.box_box,
+        friction_model: p.friction_model,
+        contact_margin: c(p.contact_margin),
+    }
+}
+
+fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
+    let p = cast::<T>(&params(lesson, config));
+    let mut world = lesson.world::<T>();
+    world.contacts.clear();
+    let materials = lesson
+        .simulation
+        .as_ref()
+        .map(|s| s.materials.clone())
+        .unwrap_or_default();
+    Simulation::new(world, p, materials)
+}
+
+/// Runs `config` for `seconds` and measures it.
+pub fn measure(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
+    match config.precision {
+        Precision::F64 => measure_in::<f64>(lesson, config, seconds),
+        Precision::F32 => measure_in::<f32>(lesson, config, seconds),
+    }
+}
+
+fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
+    let mut sim = simulation::<T>(lesson, config);
+    let n = steps(seconds, config.dt);
+    let g = sim.params.world.gravity.map(to_f64);
+    let up = if g.norm() > 0.0 {
+        -g / g.norm()
+    } else {
+        Vector3::zeros()
+    };
+    let position = |sim: &Simulation<T>, i: usize| sim.world.bodies[i].state.position.map(to_f64);
+    let movable: Vec<usize> = (0..sim.world.bodies.len())
+        .filter(|&i| sim.world.bodies[i].movable)
+        .collect();
+    let top = movable
+        .iter()
+        .copied()
+        .max_by(|a, b| {
+            position(&sim, *a)
+                .dot(&up)
+                .total_cmp(&position(&sim, *b).dot(&up))
+        })
+        .unwrap_or(0);
+    let start = position(&sim, top);
+    let energy0 = to_f64(energy::total(&sim.world, &sim.params.world.gravity));
+    let mut generator = ContactGenerator::<T>::new();
+    let mut generated: Vec<BodyContact<T>> = Vec::new();
+    let options = Options {
+        box_box: sim.params.box_box,
+        tolerance: T::zero(),
+    };
+    let mut m = Measured {
+        steps: n,
+        visits_per_step: 0.0,
+        limit_steps: 0,
+        max_penetration: 0.0,
+        max_closing_velocity: 0.0,
+        energy_gain: 0.0,
+        drift: 0.0,
+        positions: Vec::new(),
+        failure: None,
+    };
+    let mut visits = 0usize;
+    for _ in 0..n {
+        let report = match sim.advance() {
+            Ok(r) => r,
+            Err(e) => {
+                m.failure = Some(e.to_string());
+                break;
+            }
+        };
+        visits += report.position_iterations + report.velocity_iterations;
+        // A phase that used its whole budget (it may have just made it).
+        let limit = config.budget.per_contact() * report.contacts;
+        if report.contacts > 0
+            && (report.position_iterations >= limit || report.velocity_iterations >= limit)
+        {
+            m.limit_steps += 1;
+        }
+        generator.generate_world(&sim.world.bodies, &options, &mut generated);
+        for k in &generated {
+            m.max_penetration = m.max_penetration.max(to_f64(k.contact.penetration));
+        }
+        for k in &sim.world.contacts {
+            let v = |id: Option<crate::physics::BodyId>| {
+                id.map_or(Vector3::zeros(), |id| {
+                    let b = &sim.world.body(id).state;
+                    b.point_velocity(&(k.input.point - b.position))
+                })
+            };
+            let vn = to_f64((v(Some(k.body1)) - v(k.body2)).dot(&k.input.normal));
+            m.max_closing_velocity = m.max_closing_velocity.max(-vn);
+        }
+        let e = to_f64(energy::total(&sim.world, &sim.params.world.gravity));
+        m.energy_gain = m.energy_gain.max(e - energy0);
+    }
+    m.visits_per_step = visits as f64 / n as f64;
+    let moved = position(&sim, top) - start;
+    m.drift = (moved - up * moved.dot(&up)).norm();
+    m.positions = movable.iter().map(|&i| position(&sim, i)).collect();
+    if m.failure.is_some() || m.positions.iter().any(|p| !p.iter().all(|x| x.is_finite())) {
+        m.failure
+            .get_or_insert_with(|| "a position is not finite".into());
+        for x in [
+            &mut m.max_penetration,
+            &mut m.max_closing_velocity,
+            &mut m.energy_gain,
+            &mut m.drift,
+        ] {
+            *x = f64::NAN;
+        }
+    }
+    m
+}
+
+/// µs per step of `repeats` timed runs of the bare step loop.
+pub fn time(lesson: &Lesson, config: &Config, seconds: f64, repeats: usize) -> Vec<f64> {
+    (0..repeats)
+        .map(|_| match config.precision {
+            Precision::F64 => time_in::<f64>(lesson, config, seconds),
+            Precision::F32 => time_in::<f32>(lesson, config, seconds),
+        })
+        .collect()
+}
+
+fn time_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> f64 {
+    let mut sim = simulation::<T>(lesson, config);
+    let n = steps(seconds, config.dt);
+    let t0 = Instant::now();
+    for _ in 0..n {
+        if sim.advance().is_err() {
+            break;
+        }
+    }
+    t0.elapsed().as_secs_f64() * 1e6 / n as f64
+}
+
+/// RMS over bodies of the distance between two sets of final positions.
+pub fn rms_distance(a: &[Vector3<f64>], b: &[Vector3<f64>]) -> f64 {
+    if a.is_empty() || a.len() != b.len() {
+        return f64::NAN;
+    }
+    let sum: f64 = a.iter().zip(b).map(|(p, q)| (p - q).norm_squared()).sum();
+    (sum / a.len() as f64).sqrt()
+}
+
+/// Median, min and max.
+pub fn spread(samples: &[f64]) -> Option<[f64; 3]> {
+    let mut s: Vec<f64> = samples.iter().copied().filter(|x| x.is_finite()).collect();
+    if s.is_empty() {
+        return None;
+    }
+    s.sort_by(f64::total_cmp);
+    let n = s.len();
+    let median = if n % 2 == 1 {
+        s[n / 2]
+    } else {
+        0.5 * (s[n / 2 - 1] + s[n / 2])
+    };
+    Some([median, s[0], s[n - 1]])
+}
