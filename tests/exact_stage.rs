@@ -328,8 +328,8 @@ fn impulse_space_figure_in_the_svg_output() {
     assert!(page.contains("Impulse space (stronge restitution)"));
     assert!(page.contains(">halts, reverses</text>"));
     assert!(page.contains(">max compression</text>"));
-    assert!(page.contains(">u_t1 (tangent t₁)</text>"));
-    assert!(!page.contains(">u_t0 (tangent t₀)</text>"), "t₀ stays zero");
+    assert!(page.contains(">v_t1 (tangent t₁)</text>"));
+    assert!(!page.contains(">v_t0 (tangent t₀)</text>"), "t₀ stays zero");
     let plain = svg::render(&trace(&Lesson::load("lecture-2").unwrap(), 0), Plane::Xy);
     assert!(plain.contains(r#"height="720""#));
     assert!(!plain.contains("Impulse space"));
