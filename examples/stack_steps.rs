@@ -1,5 +1,5 @@
 //! Runs the 5-box stack for N steps with sleep off (a profiling target):
-//! `cargo run --release --example stack_steps -- 20000`.
+//! `cargo run --release --example stack_steps -- 20000 [si|si-warm]`.
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::step::Simulation;
 
@@ -8,6 +8,11 @@ fn main() {
     let lesson = Lesson::load("stack-5").expect("embedded");
     let mut params = lesson.sim_params().expect("a scene");
     params.sleep.enabled = false;
+    let solver = std::env::args().nth(2).unwrap_or_default();
+    if solver.starts_with("si") {
+        params.resolver.solver = contact_lab::physics::params::Solver::SequentialImpulse;
+        params.resolver.warm_start = solver == "si-warm";
+    }
     let mut world = lesson.world::<f64>();
     world.contacts.clear();
     let mut sim = Simulation::new(world, params, lesson.simulation.expect("scene").materials);

@@ -11,6 +11,7 @@ Examples:
   contact-lab solve lecture-2 --format json         the same as JSON (docs/json.md)
   contact-lab solve my-scene.toml --contact 1 --digits 4
   contact-lab solve spinning-ball -c 1 --compare-friction
+  contact-lab solve rod-reverses --exact stronge
   contact-lab solve lecture-3 --format latex > lecture-3.tex      a worked solution to compile
   contact-lab solve friction-cube --all-contacts --format md --figures figs > friction.md
   contact-lab resolve box-four-corners              every contact resolved together, iteration by iteration
@@ -144,8 +145,33 @@ pub struct SolveArgs {
     /// Markdown: write an SVG figure of each contact to DIR and link it.
     #[arg(long, value_name = "DIR")]
     pub figures: Option<std::path::PathBuf>,
+    /// Integrate the impact exactly under this restitution law, beside the
+    /// one-shot impulse (the exact_impact stage; default: the lesson's, else skipped).
+    #[arg(long, value_enum, value_name = "LAW")]
+    pub exact: Option<ExactLawArg>,
     #[command(flatten)]
     pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ExactLawArg {
+    /// Kinematic: u_n' = −e u_n0.
+    Newton,
+    /// Kinetic: P_n = (1 + e) P_n at maximum compression.
+    Poisson,
+    /// Energetic: restitution work = −e² × compression work.
+    Stronge,
+}
+
+impl ExactLawArg {
+    pub fn law(self) -> crate::physics::exact::RestitutionLaw {
+        use crate::physics::exact::RestitutionLaw;
+        match self {
+            ExactLawArg::Newton => RestitutionLaw::Newton,
+            ExactLawArg::Poisson => RestitutionLaw::Poisson,
+            ExactLawArg::Stronge => RestitutionLaw::Stronge,
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

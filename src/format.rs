@@ -84,6 +84,7 @@ impl Fmt {
                     .join(", ")
             ),
             Value::Text(s) => s.clone(),
+            Value::List(items) => items.join("; "),
         }
     }
 
@@ -111,6 +112,10 @@ impl Fmt {
                     .join(" \\\\ ")
             ),
             Value::Text(s) => format!("\\text{{{}}}", crate::trace::latex::escape_text(s)),
+            Value::List(items) => format!(
+                "\\text{{{}}}",
+                crate::trace::latex::escape_text(&items.join("; "))
+            ),
         }
     }
 

@@ -4,6 +4,8 @@
 //! lesson under every friction model, and over random scenes, no check
 //! fails without a named cause.
 
+mod common;
+
 use contact_lab::format::Fmt;
 use contact_lab::lesson::{validate, Lesson, Overrides};
 use contact_lab::physics::causes::Cause;
@@ -13,7 +15,7 @@ use contact_lab::physics::{
 };
 use contact_lab::render;
 use contact_lab::trace::Trace;
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use nalgebra::Vector3;
 use proptest::prelude::*;
 
 /// The lecture's cube hitting the floor on its corner, with `extra` fields.
@@ -284,34 +286,7 @@ fn over_every_lesson_and_model_no_check_fails_without_its_cause() {
 }
 
 fn body() -> impl Strategy<Value = RigidBody<f64>> {
-    (
-        -2.0..13.0f64,
-        -5.0..3.0f64,
-        prop::array::uniform4(-1.0..1.0f64),
-        prop::array::uniform3(-2.0..2.0f64),
-        prop::array::uniform3(-3.0..3.0f64),
-        prop::array::uniform3(-1.0..1.0f64),
-        prop::array::uniform3(-50.0..50.0f64),
-    )
-        .prop_map(|(log_m, log_i, q, p, v, w, a)| {
-            let m = 10f64.powf(log_m);
-            let i = 10f64.powf(log_i);
-            let r = UnitQuaternion::new_normalize(Quaternion::new(q[0] + 1.5, q[1], q[2], q[3]));
-            let d = Matrix3::from_diagonal(&Vector3::new(i, i * 1.7, i * 2.3));
-            let r = r.to_rotation_matrix().into_inner();
-            let inertia = r * d * r.transpose();
-            RigidBody {
-                mass: m,
-                inverse_mass: 1.0 / m,
-                inertia_body: inertia,
-                inverse_inertia_body: inertia.try_inverse().unwrap(),
-                position: Vector3::new(p[0], 1.0 + p[1].abs(), p[2]),
-                orientation: Quaternion::identity(),
-                velocity: Vector3::from(v),
-                angular_velocity: Vector3::from(w),
-                acceleration: Vector3::from(a),
-            }
-        })
+    common::random::body(-2.0..13.0, -5.0..3.0, 50.0)
 }
 
 proptest! {

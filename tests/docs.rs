@@ -7,6 +7,7 @@ mod common;
 use std::collections::{BTreeMap, BTreeSet};
 
 use contact_lab::lesson::Overrides;
+use contact_lab::physics::exact::RestitutionLaw;
 use contact_lab::physics::{FrictionModel, ProjectionMethod, StageId};
 
 /// Stage id → the backticked words of its section, and the words of the
@@ -63,6 +64,10 @@ fn produced() -> BTreeMap<String, BTreeSet<String>> {
         },
         Overrides {
             angular_limit: Some(f64::INFINITY),
+            ..Overrides::default()
+        },
+        Overrides {
+            exact: Some(RestitutionLaw::Stronge),
             ..Overrides::default()
         },
     ];

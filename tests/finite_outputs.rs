@@ -173,7 +173,7 @@ fn finite(v: &Value) -> bool {
         Value::Vector(a) => a.iter().all(|x| x.is_finite()),
         Value::Quaternion(q) => q.iter().all(|x| x.is_finite()),
         Value::Matrix(m) => m.iter().flatten().all(|x| x.is_finite()),
-        Value::Text(_) => true,
+        Value::Text(_) | Value::List(_) => true,
     }
 }
 

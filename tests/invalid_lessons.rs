@@ -31,6 +31,7 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("empty-body-name", 6, 8, "body name must not be empty"),
     ("empty-file", 1, 1, "the lesson file is empty"),
     ("empty-id", 2, 6, "id must not be empty"),
+    ("exact-unknown-law", 19, 9, "in [settings]: exact must be \"newton\", \"poisson\" or \"stronge\", got \"hooke\""),
     ("float-past-f64", 7, 8, "the number 1e400 is too large for a 64-bit float"),
     ("half-space-with-finite-mass", 8, 9, "a half-space must be immovable (mass = inf)"),
     ("immovable-with-velocity", 17, 12, "body 'floor' is immovable (mass = inf): its velocity must be zero"),

@@ -88,6 +88,7 @@ fn world(scene: &str) -> World<f64> {
                             angular_limit: f64::from(0.2f32),
                             relaxation: 1.0,
                             projection: ProjectionMethod::Nonlinear,
+                            exact: None,
                         },
                     },
                     duration: None,

@@ -119,6 +119,32 @@ fn step_through_every_stage_of_lecture_2() {
     }
 }
 
+/// The exact impact stage in the stage panel: a lesson that asks for it.
+#[test]
+fn the_exact_impact_stage_shows_in_the_panel() {
+    let mut a = app("rod-reverses", true);
+    let mut t = term(100, 30);
+    for _ in 0..9 {
+        key(&mut a, KeyCode::Right);
+    }
+    draw(&mut t, &a);
+    let text = buffer_text(t.backend().buffer());
+    assert!(text.contains("9/10 Exact impact integration"), "{text}");
+    assert!(text.contains("9 Integration"));
+    assert!(!text.contains("9 Integration · skipped"));
+    snapshot("tui_rod-reverses_exact_100x30", &t);
+    // Further down the panel: the phases.
+    for _ in 0..3 {
+        key(&mut a, KeyCode::PageDown);
+    }
+    draw(&mut t, &a);
+    let text = buffer_text(t.backend().buffer());
+    assert!(
+        text.contains("reverses") || text.contains("slips back"),
+        "{text}"
+    );
+}
+
 #[test]
 fn editing_restitution_to_half_changes_the_impulse() {
     for (w, h) in SIZES {
@@ -291,7 +317,7 @@ fn no_color_draws_without_colours() {
     key(&mut a, KeyCode::Esc);
     draw(&mut t, &a);
     let buf = t.backend().buffer();
-    let (x, y) = find(buf, "▶  9 Checks");
+    let (x, y) = find(buf, "▶  10 Checks");
     assert!(buf[(x + 3, y)].modifier.contains(Modifier::REVERSED));
 }
 

@@ -5,13 +5,15 @@
 //! The old label "slip speed does not rise" printed beside 1.99995 → 2.04599
 //! is what this test forbids.
 
+mod common;
+
 use contact_lab::lesson::{Lesson, Overrides};
 use contact_lab::physics::{
     solve, ContactInput, ContactParams, FrictionModel, Problem, ProjectionMethod, RigidBody,
 };
 use contact_lab::trace::contact::{verdicts, ContactNames, SolvedContact};
 use contact_lab::trace::{Step, Trace, Value, Verdict};
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use nalgebra::Vector3;
 use proptest::prelude::*;
 
 fn num(checks: &Step, name: &str) -> f64 {
@@ -157,34 +159,7 @@ fn the_checker_catches_a_contradiction() {
 }
 
 fn body() -> impl Strategy<Value = RigidBody<f64>> {
-    (
-        -2.0..6.0f64,
-        -3.0..3.0f64,
-        prop::array::uniform4(-1.0..1.0f64),
-        prop::array::uniform3(-2.0..2.0f64),
-        prop::array::uniform3(-3.0..3.0f64),
-        prop::array::uniform3(-1.0..1.0f64),
-        prop::array::uniform3(-20.0..20.0f64),
-    )
-        .prop_map(|(log_m, log_i, q, p, v, w, a)| {
-            let m = 10f64.powf(log_m);
-            let i = 10f64.powf(log_i);
-            let r = UnitQuaternion::new_normalize(Quaternion::new(q[0] + 1.5, q[1], q[2], q[3]));
-            let d = Matrix3::from_diagonal(&Vector3::new(i, i * 1.7, i * 2.3));
-            let r = r.to_rotation_matrix().into_inner();
-            let inertia = r * d * r.transpose();
-            RigidBody {
-                mass: m,
-                inverse_mass: 1.0 / m,
-                inertia_body: inertia,
-                inverse_inertia_body: inertia.try_inverse().unwrap(),
-                position: Vector3::new(p[0], 1.0 + p[1].abs(), p[2]),
-                orientation: Quaternion::identity(),
-                velocity: Vector3::from(v),
-                angular_velocity: Vector3::from(w),
-                acceleration: Vector3::from(a),
-            }
-        })
+    common::random::body(-2.0..6.0, -3.0..3.0, 20.0)
 }
 
 proptest! {

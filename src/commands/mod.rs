@@ -132,6 +132,7 @@ pub(crate) fn overrides(m: &ModelArgs) -> Result<Overrides, AppError> {
         relaxation: m.relaxation,
         angular_limit: m.angular_limit,
         velocity_limit: m.velocity_limit,
+        exact: None,
     })
 }
 

@@ -7,9 +7,10 @@ use crate::cli::{Format, SolveArgs};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Overrides;
-use crate::physics::FrictionModel;
+use crate::physics::{FrictionModel, Solution};
 use crate::render;
 use crate::render::compare::Compared;
+use crate::render::markdown::Figures;
 use crate::render::svg::{self, Plane};
 
 fn usage(args: &SolveArgs) -> Result<(), AppError> {
@@ -31,7 +32,13 @@ fn usage(args: &SolveArgs) -> Result<(), AppError> {
 
 pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     usage(args)?;
-    let lesson = load(&args.lesson, &args.model, Some(args.contact))?;
+    let mut lesson = load(&args.lesson, &args.model, Some(args.contact))?;
+    if let Some(law) = args.exact {
+        lesson.apply(&Overrides {
+            exact: Some(law.law()),
+            ..Overrides::default()
+        });
+    }
     warn(&lesson, err);
     let fmt = Fmt::new(args.digits as usize);
     if args.compare_friction {
@@ -43,15 +50,15 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
                     friction_model: Some(model),
                     ..Overrides::default()
                 });
-                let solution = crate::physics::solve(&l.problem::<f64>(args.contact));
+                let solution = solved(&l, args.contact)?;
                 let trace = crate::trace::build(&l, args.contact, &solution);
-                Compared {
+                Ok(Compared {
                     model,
                     solution,
                     trace,
-                }
+                })
             })
-            .collect();
+            .collect::<Result<_, AppError>>()?;
         let text = match args.format {
             Format::Json => render::compare::json(&compared),
             _ => render::compare::text(&compared, &fmt),
@@ -63,10 +70,15 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     } else {
         vec![args.contact]
     };
-    let traces: Vec<_> = contacts
+    let traces = contacts
         .iter()
-        .map(|&k| crate::worked_solution(&lesson, k))
-        .collect();
+        .map(|&k| {
+            let solution = solved(&lesson, k)?;
+            let mut trace = crate::trace::build(&lesson, k, &solution);
+            crate::trace::note_planar_acceleration(&mut trace, &solution);
+            Ok(trace)
+        })
+        .collect::<Result<Vec<_>, AppError>>()?;
     let text = match args.format {
         Format::Text => traces
             .iter()
@@ -93,6 +105,16 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         text
     };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// Contact `k` solved; an exact impact integration that could not finish is
+/// a runtime failure (exit 1) with its reason, never a NaN in the output.
+fn solved(lesson: &crate::lesson::Lesson, k: usize) -> Result<Solution<f64>, AppError> {
+    let solution = crate::physics::solve(&lesson.problem::<f64>(k));
+    if let Some(Err(e)) = &solution.exact {
+        return Err(AppError::Runtime(format!("contact {k}: {e}")));
+    }
+    Ok(solution)
 }
 
 /// `--all-contacts` solves each contact alone, from the scene as given: say so
@@ -123,23 +145,40 @@ fn alone_note(text: &str, id: &str, format: Format) -> String {
     }
 }
 
-/// Writes one SVG per contact into `dir`; returns the links to them.
+/// Writes one SVG per contact into `dir`, and the impulse-space figure of
+/// each contact whose `exact_impact` stage ran; returns the links to them.
 fn figures(
     dir: &std::path::Path,
     id: &str,
     contacts: &[usize],
     traces: &[crate::trace::Trace],
-) -> Result<Vec<Option<String>>, AppError> {
+) -> Result<Vec<Figures>, AppError> {
     std::fs::create_dir_all(dir)
         .map_err(|e| AppError::Runtime(format!("cannot create {}: {e}", dir.display())))?;
+    let write = |name: String, text: String| -> Result<String, AppError> {
+        write_atomic(&dir.join(&name), text.as_bytes())?;
+        let link = dir.join(&name).to_string_lossy().replace('\\', "/");
+        Ok(link.replace(' ', "%20"))
+    };
     contacts
         .iter()
         .zip(traces)
         .map(|(k, t)| {
-            let name = format!("{}-contact-{k}.svg", file_stem(id));
-            write_atomic(&dir.join(&name), svg::render(t, Plane::Xy).as_bytes())?;
-            let link = dir.join(&name).to_string_lossy().replace('\\', "/");
-            Ok(Some(link.replace(' ', "%20")))
+            let stem = file_stem(id);
+            // The contact's picture alone: the impulse-space figure has its own file.
+            let mut picture = t.clone();
+            picture.impact = None;
+            let contact = write(
+                format!("{stem}-contact-{k}.svg"),
+                svg::render(&picture, Plane::Xy),
+            )?;
+            let impulse = render::impact::svg(t)
+                .map(|text| write(format!("{stem}-contact-{k}-impulse.svg"), text))
+                .transpose()?;
+            Ok(Figures {
+                contact: Some(contact),
+                impulse,
+            })
         })
         .collect()
 }

@@ -177,6 +177,7 @@ pub fn four_decimals(v: &Value) -> String {
                 .join(", ")
         ),
         Value::Text(t) => t.clone(),
+        Value::List(items) => items.join("; "),
     }
 }
 

@@ -7,6 +7,7 @@ use nalgebra::Vector3;
 use super::validate::rules;
 use super::Lesson;
 use crate::format::exact;
+use crate::physics::exact::RestitutionLaw;
 use crate::physics::{FrictionModel, ProjectionMethod};
 
 /// What an editable field holds.
@@ -22,6 +23,7 @@ pub enum Key {
     Relaxation,
     Duration,
     Projection,
+    Exact,
     Mass,
     Velocity,
     AngularVelocity,
@@ -55,6 +57,7 @@ impl Field {
             Key::Velocity | Key::AngularVelocity | Key::Acceleration => Kind::Vector,
             Key::FrictionModel => Kind::Choice(&FRICTION_MODELS),
             Key::Projection => Kind::Choice(&PROJECTIONS),
+            Key::Exact => Kind::Choice(&EXACT_LAWS),
             _ => Kind::Number,
         }
     }
@@ -62,8 +65,10 @@ impl Field {
 
 const FRICTION_MODELS: [&str; 3] = ["millington", "kinetic-direction", "velocity-scaling"];
 const PROJECTIONS: [&str; 2] = ["nonlinear", "linear"];
+/// `none` skips the `exact_impact` stage; the others are its restitution laws.
+const EXACT_LAWS: [&str; 4] = ["none", "newton", "poisson", "stronge"];
 
-const CONTACT_FIELDS: [(Key, &str); 10] = [
+const CONTACT_FIELDS: [(Key, &str); 11] = [
     (Key::Restitution, "restitution"),
     (Key::StaticFriction, "static friction μ_s"),
     (Key::DynamicFriction, "dynamic friction μ_d"),
@@ -74,6 +79,7 @@ const CONTACT_FIELDS: [(Key, &str); 10] = [
     (Key::Relaxation, "relaxation"),
     (Key::Duration, "duration"),
     (Key::Projection, "projection"),
+    (Key::Exact, "exact impact law"),
 ];
 
 const BODY_FIELDS: [(Key, &str); 4] = [
@@ -129,6 +135,11 @@ pub fn get(lesson: &Lesson, k: usize, field: &Field) -> String {
         (Key::Relaxation, _) => exact(c.settings.relaxation),
         (Key::Duration, _) => exact(c.settings.duration),
         (Key::Projection, _) => c.settings.projection.name().to_string(),
+        (Key::Exact, _) => c
+            .settings
+            .exact
+            .map_or("none", RestitutionLaw::name)
+            .to_string(),
         (Key::Mass, Some(b)) => exact(b.mass),
         (Key::Velocity, Some(b)) => vector_text(&b.velocity),
         (Key::AngularVelocity, Some(b)) => vector_text(&b.angular_velocity),
@@ -267,6 +278,15 @@ fn apply(lesson: &mut Lesson, k: usize, field: &Field, text: &str) -> Result<(),
                 )
             })?
         }
+        Key::Exact => {
+            let name = text.trim();
+            c.settings.exact = match name {
+                "none" => None,
+                _ => Some(RestitutionLaw::from_name(name).ok_or_else(|| {
+                    format!("one of {}, got '{}'", EXACT_LAWS.join(", "), echo(name))
+                })?),
+            }
+        }
         _ => return Err("not a contact field".into()),
     }
     Ok(())
@@ -383,5 +403,18 @@ mod tests {
             l.contacts[0].friction_model,
             FrictionModel::KineticDirection
         );
+        let f = field(&l, "exact impact law");
+        assert_eq!(get(&l, 0, &f), "none");
+        for law in ["newton", "poisson", "stronge", "none"] {
+            let next = next_choice(&l, 0, &f).unwrap();
+            assert_eq!(next, law);
+            set(&mut l, 0, &f, &next).unwrap();
+            assert_eq!(
+                l.contacts[0].settings.exact.map_or("none", |x| x.name()),
+                law
+            );
+        }
+        let e = put(&mut l, "exact impact law", "hooke").unwrap_err();
+        assert!(e.contains("one of none, newton, poisson, stronge"), "{e}");
     }
 }

@@ -17,6 +17,7 @@ pub const LESSONS: &[(&str, &str)] = embed![
     "excessive-rotation.toml",
     "two-boxes.toml",
     "kane-energy-gain.toml",
+    "rod-reverses.toml",
     "box-four-corners.toml",
     "sphere-row.toml",
     "newtons-cradle.toml",

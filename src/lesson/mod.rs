@@ -17,6 +17,7 @@ pub mod validate;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
+use crate::physics::exact::RestitutionLaw;
 use crate::physics::params::BoxBoxMode;
 pub use crate::physics::params::Material;
 use crate::physics::step::SimParams;
@@ -165,6 +166,8 @@ pub struct Settings {
     pub relaxation: f64,
     pub duration: f64,
     pub projection: ProjectionMethod,
+    /// The restitution law of the `exact_impact` stage (`exact`; default: none).
+    pub exact: Option<RestitutionLaw>,
 }
 
 impl Default for Settings {
@@ -176,6 +179,7 @@ impl Default for Settings {
             relaxation: contact.relaxation,
             duration: StepParams::<f64>::default().duration,
             projection: contact.projection,
+            exact: contact.exact,
         }
     }
 }
@@ -188,6 +192,7 @@ impl Settings {
             angular_limit: c(self.angular_limit),
             relaxation: c(self.relaxation),
             projection: self.projection,
+            exact: self.exact,
         }
     }
 }
@@ -200,6 +205,8 @@ pub struct Overrides {
     pub relaxation: Option<f64>,
     pub angular_limit: Option<f64>,
     pub velocity_limit: Option<f64>,
+    /// Integrate the impact exactly under this law (`solve --exact`).
+    pub exact: Option<RestitutionLaw>,
 }
 
 impl Lesson {
@@ -260,6 +267,9 @@ impl Lesson {
             }
             if let Some(v) = o.velocity_limit {
                 contact.settings.velocity_limit = v;
+            }
+            if let Some(law) = o.exact {
+                contact.settings.exact = Some(law);
             }
         }
     }

@@ -134,6 +134,8 @@ pub struct RawSettings {
     pub relaxation: Option<S<f64>>,
     pub duration: Option<S<f64>>,
     pub projection: Option<S<String>>,
+    /// The restitution law of the `exact_impact` stage.
+    pub exact: Option<S<String>>,
     /// The resolver's settings (the lesson's `[settings]` only, not a contact's).
     pub position_iterations: Option<S<i64>>,
     pub velocity_iterations: Option<S<i64>>,

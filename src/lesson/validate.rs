@@ -17,6 +17,7 @@ use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
 use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
+use crate::physics::exact::RestitutionLaw;
 use crate::physics::{FrictionModel, ProjectionMethod};
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
@@ -267,6 +268,18 @@ impl Validator {
                     format!(
                         "{what}: projection must be \"linear\" or \"nonlinear\", got \"{}\"",
                         p.get_ref()
+                    ),
+                ),
+            }
+        }
+        if let Some(law) = &raw.exact {
+            match RestitutionLaw::from_name(law.get_ref()) {
+                Some(l) => s.exact = Some(l),
+                None => self.err(
+                    law.span(),
+                    format!(
+                        "{what}: exact must be \"newton\", \"poisson\" or \"stronge\", got \"{}\"",
+                        law.get_ref()
                     ),
                 ),
             }

@@ -8,6 +8,7 @@
 
 use nalgebra::Vector3;
 
+use super::exact::RestitutionLaw;
 use super::step::SleepMode;
 use super::{c, Real};
 
@@ -89,6 +90,11 @@ pub struct ContactParams<T: Real> {
     /// Linear or nonlinear projection: trades the lecture's believable
     /// rotation for a cheaper move without rotation (default: nonlinear).
     pub projection: ProjectionMethod,
+    /// Integrate the impact exactly under this restitution law beside the
+    /// one-shot impulse (the `exact_impact` stage): trades the cost of an
+    /// integration for the accuracy reference; applies nothing
+    /// (default: none, the stage is skipped).
+    pub exact: Option<RestitutionLaw>,
 }
 
 impl<T: Real> Default for ContactParams<T> {
@@ -98,6 +104,7 @@ impl<T: Real> Default for ContactParams<T> {
             angular_limit: c(0.2),
             relaxation: T::one(),
             projection: ProjectionMethod::Nonlinear,
+            exact: None,
         }
     }
 }

@@ -51,6 +51,8 @@ pub struct Chart {
     pub cursor: Option<f64>,
     /// Joined points drawn over the series (a Pareto front).
     pub front: Option<Vec<(f64, f64)>>,
+    /// Labelled vertical lines at these x (events: where a phase changes).
+    pub marks: Vec<(f64, String)>,
 }
 
 /// Colours told apart by colour-blind readers (Okabe–Ito).
@@ -274,6 +276,21 @@ impl Chart {
             let _ = writeln!(
                 out,
                 r##"<line x1="{x:.1}" y1="{top:.1}" x2="{x:.1}" y2="{bottom:.1}" stroke="#000000" stroke-dasharray="3 3"/>"##
+            );
+        }
+        for (at, label) in &self.marks {
+            let Some(v) = transform(*at, self.x_scale) else {
+                continue;
+            };
+            let x = px(v);
+            let _ = writeln!(
+                out,
+                r##"<line x1="{x:.1}" y1="{top:.1}" x2="{x:.1}" y2="{bottom:.1}" stroke="#444444" stroke-dasharray="2 3"/><text x="{:.1}" y="{:.1}" font-size="11" fill="#444444" text-anchor="end" transform="rotate(-90 {:.1} {:.1})">{}</text>"##,
+                x + 12.0,
+                top + 4.0,
+                x + 12.0,
+                top + 4.0,
+                escape(label)
             );
         }
         // Legend, top right inside the frame.

@@ -19,6 +19,7 @@ pub fn value(v: &Value) -> J {
                 .collect(),
         ),
         Value::Text(s) => J::String(s.clone()),
+        Value::List(items) => J::Array(items.iter().cloned().map(J::String).collect()),
     }
 }
 

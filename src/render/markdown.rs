@@ -100,8 +100,26 @@ fn stage(out: &mut String, n: usize, step: &Step, fmt: &Fmt, level: usize) {
 /// One contact: a heading at `level`, the figure when given, every stage one
 /// level deeper, the state after and the checks.
 pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> String {
+    let figures = Figures {
+        contact: figure.map(str::to_string),
+        impulse: None,
+    };
+    contact_with(trace, fmt, level, &figures)
+}
+
+/// Links to the SVG figures of one contact, written beside the document.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Figures {
+    /// The contact's picture, shown under its heading.
+    pub contact: Option<String>,
+    /// The impulse-space figure, shown in the `exact_impact` stage.
+    pub impulse: Option<String>,
+}
+
+/// [`contact`] with every figure link.
+pub fn contact_with(trace: &Trace, fmt: &Fmt, level: usize, figures: &Figures) -> String {
     let mut out = heading(level, &format!("Contact {}", escape(&trace.contact_label)));
-    if let Some(path) = figure {
+    if let Some(path) = &figures.contact {
         let _ = writeln!(
             out,
             "![Contact {}: bodies, normal, arms, velocities and impulse]({path})\n",
@@ -122,6 +140,13 @@ pub fn contact(trace: &Trace, fmt: &Fmt, level: usize, figure: Option<&str>) -> 
                 );
             }
             out.push('\n');
+        }
+        let impulse = figures.impulse.as_ref();
+        if let Some(path) = impulse.filter(|_| step.id == StageId::ExactImpact) {
+            let _ = writeln!(
+                out,
+                "![Impulse space: u_n and u_t against P_n, the phase changes marked]({path})\n"
+            );
         }
     }
     out.push_str(&heading(level + 1, "After"));
@@ -164,14 +189,14 @@ pub fn preamble(trace: &Trace, level: usize) -> String {
 
 /// A whole document: the lesson's preamble, then every trace given (one per
 /// contact), each with its figure link when `figures[k]` is set.
-pub fn document(traces: &[Trace], fmt: &Fmt, figures: &[Option<String>]) -> String {
+pub fn document(traces: &[Trace], fmt: &Fmt, figures: &[Figures]) -> String {
     let Some(first) = traces.first() else {
         return String::new();
     };
     let mut out = preamble(first, 1);
     for (k, t) in traces.iter().enumerate() {
-        let figure = figures.get(k).and_then(|f| f.as_deref());
-        out.push_str(&contact(t, fmt, 2, figure));
+        let none = Figures::default();
+        out.push_str(&contact_with(t, fmt, 2, figures.get(k).unwrap_or(&none)));
     }
     out.truncate(out.trim_end().len());
     out.push('\n');

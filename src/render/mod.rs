@@ -5,6 +5,7 @@ pub mod compare;
 pub mod errata;
 pub mod figure;
 pub mod glossary;
+pub mod impact;
 pub mod json;
 pub mod latex;
 pub mod latex_figure;

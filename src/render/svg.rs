@@ -3,6 +3,8 @@
 //! velocities before and after, the spin, the impulse, labels and a legend.
 //! 1280 × 720, for a slide. What is drawn comes from the
 //! [figure model](crate::render::figure); here it is fitted to the page.
+//! When the `exact_impact` stage ran, the impulse-space figure
+//! ([`crate::render::impact`]) goes below it, on a taller page.
 
 mod legend;
 mod page;
@@ -13,6 +15,7 @@ use page::{c, colour, xml, LabelAt, Page, PageArrow, View, AREA, FILL, FONT, HEA
 use page::{INK, MOVED, WIDTH};
 
 use crate::render::figure::{flat, ArrowKind, Figure, PointKind, Silhouette, P};
+use crate::render::impact;
 pub use crate::trace::Plane;
 use crate::trace::Trace;
 
@@ -79,10 +82,11 @@ fn fit(fig: &Figure, arrows: &[PageArrow]) -> View {
 }
 
 fn header(p: &mut Page, trace: &Trace, plane: Plane) {
+    let height = HEIGHT + trace.impact.as_ref().map_or(0.0, |_| impact::HEIGHT);
     let _ = writeln!(
         p.out,
         r##"<?xml version="1.0" encoding="UTF-8"?>
-<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="{FONT}">
+<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height}" viewBox="0 0 {WIDTH} {height}" font-family="{FONT}">
   <title>{}</title>
   <defs>
     <clipPath id="area"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>
@@ -275,6 +279,10 @@ pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::Stag
     p.place_labels();
     p.out.push_str("  </g>\n");
     legend::legend(&mut p, &fig);
+    if let Some(curves) = &trace.impact {
+        let area = (AREA.0, HEIGHT, WIDTH - 2.0 * AREA.0, impact::HEIGHT - 16.0);
+        impact::draw(&mut p.out, curves, area);
+    }
     p.out.push_str("</svg>\n");
     p.out
 }

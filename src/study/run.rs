@@ -88,6 +88,7 @@ fn cast<T: Real>(p: &SimParams<f64>) -> SimParams<T> {
             angular_limit: c(p.contact.angular_limit),
             relaxation: c(p.contact.relaxation),
             projection: p.contact.projection,
+            exact: p.contact.exact,
         },
         acceleration_compensation: p.acceleration_compensation,
         box_box: p.box_box,

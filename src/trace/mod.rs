@@ -30,6 +30,7 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 use crate::physics::StageId;
 
 pub use acceleration::note_planar_acceleration;
+pub use contact::impact_curves;
 pub use plane::Plane;
 pub use scene::{BodyView, ContactView, SceneView};
 pub use worked::build;
@@ -43,6 +44,8 @@ pub enum Value {
     /// Rows.
     Matrix([[f64; 3]; 3]),
     Text(String),
+    /// A list of strings (the phases of an integrated impact).
+    List(Vec<String>),
 }
 
 impl From<f64> for Value {
@@ -79,7 +82,7 @@ impl Value {
             Value::Vector(v) => v.to_vec(),
             Value::Quaternion(q) => q.to_vec(),
             Value::Matrix(m) => m.iter().flatten().copied().collect(),
-            Value::Text(_) => vec![],
+            Value::Text(_) | Value::List(_) => vec![],
         }
     }
 }
@@ -193,6 +196,23 @@ pub struct Trace {
     pub verdicts: Vec<Verdict>,
     pub warnings: Vec<String>,
     pub scene: SceneView,
+    /// The impact integrated by the `exact_impact` stage, for the
+    /// impulse-space figure; `None` when the stage did not run.
+    pub impact: Option<ImpactCurves>,
+}
+
+/// The contact velocity against the normal impulse during an integrated
+/// impact, and where its phases change.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImpactCurves {
+    /// The restitution law's name (`stronge`, …).
+    pub law: String,
+    /// `(P_n, u_n, u_t0, u_t1)`, contact space; u is linear in P_n between
+    /// consecutive points of a closed-form stretch.
+    pub samples: Vec<[f64; 4]>,
+    /// Where the phases change: `(P_n, what happens there)`, in order, one
+    /// entry per P_n (coinciding events joined).
+    pub events: Vec<(f64, String)>,
 }
 
 impl Trace {

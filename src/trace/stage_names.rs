@@ -16,6 +16,7 @@ impl StageId {
             StageId::ApplyImpulse => "Applying the impulse",
             StageId::NonlinearProjection => "Resolving interpenetration",
             StageId::OrientationUpdate => "Orientation update",
+            StageId::ExactImpact => "Exact impact integration",
             StageId::Checks => "Checks",
         }
     }
@@ -31,6 +32,7 @@ impl StageId {
             StageId::ApplyImpulse => "Apply impulse",
             StageId::NonlinearProjection => "Projection",
             StageId::OrientationUpdate => "Orientation",
+            StageId::ExactImpact => "Integration",
             StageId::Checks => "Checks",
         }
     }
@@ -47,6 +49,7 @@ impl StageId {
             StageId::ApplyImpulse => "The impulse of stages 4–5 now changes each body's motion: its velocity by g/m and its spin by I⁻¹(r × g), with body 2 receiving −g.",
             StageId::NonlinearProjection => "The velocities are now right, but the bodies still overlap by d_pen; this stage moves and turns them apart, sharing the depth by how easily each body moves along d̂ (the same inertia as stage 2).",
             StageId::OrientationUpdate => "The turn Δθ of stage 7 still has to be added to each body's orientation quaternion θ: the first-order update θ + ½[0, Δθ]θ, then normalised.",
+            StageId::ExactImpact => "Stages 4–5 find the impulse in one shot; integrating the impact as the normal impulse P_n grows, with friction always against the current slip, shows what really happens when slip halts, sticks or reverses, and how far the one-shot answer is from it (it applies nothing: the bodies stay as stage 6 left them).",
             StageId::Checks => "A worked solution should prove itself: the results of stages 1–8 are tested against the laws they must obey (momentum, the restitution target, energy, the friction cone, the penetration left).",
         }
     }

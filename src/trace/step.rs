@@ -208,6 +208,7 @@ impl StepTrace {
                             relaxation: i.settings.relaxation,
                             duration: c.duration.unwrap_or(duration),
                             projection: i.settings.projection,
+                            exact: i.settings.exact,
                         },
                     }
                 })

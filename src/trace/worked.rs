@@ -43,6 +43,7 @@ pub fn build(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Trace {
         verdicts: contact::verdicts(&solved),
         warnings: lesson.warnings.iter().map(|w| w.to_string()).collect(),
         scene: scene(lesson, k, solution),
+        impact: contact::impact_curves(solution),
     }
 }
 

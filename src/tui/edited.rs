@@ -75,6 +75,7 @@ impl App {
 fn same(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Text(x), Value::Text(y)) => x == y,
+        (Value::List(x), Value::List(y)) => x == y,
         _ => {
             let (x, y) = (a.numbers(), b.numbers());
             x.len() == y.len()

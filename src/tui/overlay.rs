@@ -63,11 +63,16 @@ pub fn glossary(app: &App, scroll: u16, area: Rect, buf: &mut Buffer) {
     let text_w = rect_w.saturating_sub(3) as usize;
     let kw = GLOSSARY.iter().map(|s| width(s.symbol)).max().unwrap_or(0);
     let mut lines: Vec<Line> = Vec::new();
-    for piece in wrap(
-        "Subscript ᵢ: body 1 or 2. Stages: 1 contact frame, 2 unit impulse, 3 desired Δv, 4 impulse, 5 friction, 6 apply, 7 projection, 8 orientation, 9 checks.",
-        text_w,
-        0,
-    ) {
+    let stages: Vec<String> = crate::physics::StageId::ALL
+        .iter()
+        .enumerate()
+        .map(|(i, s)| format!("{} {}", i + 1, s.label()))
+        .collect();
+    let head = format!(
+        "Subscript ᵢ: body 1 or 2. Stages: {}.",
+        stages.join(", ")
+    );
+    for piece in wrap(&head, text_w, 0) {
         lines.push(Line::styled(format!(" {piece}"), t.dim()));
     }
     for sym in GLOSSARY {

@@ -241,7 +241,11 @@ fn stage_rows(app: &App, s: usize) -> Vec<Row> {
             Row::new(format!("Skipped: {reason}"), t.dim()),
             Row::new("", Style::new()),
             Row::new(
-                "The contact does not need this stage, so the resolver does no work here.",
+                if step.id == crate::physics::StageId::ExactImpact {
+                    "The integration is a reference, not part of the lecture's resolver: ask for it with e (edit, exact impact law) or solve --exact."
+                } else {
+                    "The contact does not need this stage, so the resolver does no work here."
+                },
                 t.dim(),
             ),
             ])

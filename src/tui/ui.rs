@@ -280,7 +280,7 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
             let left = n - i - 1;
             // Room for this verdict, and for the "more" line if others follow.
             if lines.len() + pieces.len() + usize::from(left > 0) > h && lines.len() < h {
-                let long = format!("+{} more (stage 9)", n - i);
+                let long = format!("+{} more (Checks stage)", n - i);
                 let more = if super::wrap::width(&long) <= w {
                     long
                 } else {

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod dd;
+pub mod random;
 
 use contact_lab::lesson::{embedded, Lesson};
 

@@ -5,6 +5,7 @@ use nalgebra::{Quaternion, Vector3};
 use super::checks::{run_checks, CheckInputs, Checks};
 use super::stages::*;
 use super::{Problem, Real, StageId};
+use crate::physics::exact::{exact_impact_beside, ExactError, ExactImpact, Tolerance};
 
 /// Every stage record of one resolved contact. A stage the contact does not
 /// need is `None`; [`Solution::skip`] says why.
@@ -22,6 +23,10 @@ pub struct Solution<T: Real> {
     pub projection: Option<Projection<T>>,
     /// `None` when projection rotates nothing.
     pub orientation: Option<OrientationUpdate<T>>,
+    /// The impact integrated under the contact's `settings.exact` law beside
+    /// the one-shot impulse; `None` unless asked. An integration that cannot
+    /// finish is an error here, never NaN.
+    pub exact: Option<Result<ExactImpact<T>, ExactError>>,
     pub checks: Checks<T>,
 }
 
@@ -32,6 +37,10 @@ pub enum Skip {
     NoFriction,
     NoPenetration,
     NoRotation,
+    /// The exact impact integration was not asked for.
+    NotAsked,
+    /// The exact integration found no closing velocity (u_n ≥ 0).
+    NotClosing,
 }
 
 /// A body's state after the contact is resolved.
@@ -62,6 +71,10 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
         .as_ref()
         .map(|p| orientation_update(problem, p))
         .filter(|o| o.bodies.iter().any(Option::is_some));
+    let exact = contact.settings.exact.map(|law| {
+        let one_shot = final_impulse.unwrap_or_else(Vector3::zeros);
+        exact_impact_beside(problem, law, Tolerance::default(), one_shot)
+    });
     let checks = run_checks(&CheckInputs {
         problem,
         frame: &frame,
@@ -81,6 +94,7 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
         applied,
         projection,
         orientation,
+        exact,
         checks,
     }
 }
@@ -105,6 +119,11 @@ impl<T: Real> Solution<T> {
                     Skip::NoRotation
                 })
             }
+            StageId::ExactImpact => match &self.exact {
+                None => Some(Skip::NotAsked),
+                Some(Ok(x)) if !x.outcome.closing => Some(Skip::NotClosing),
+                Some(_) => None,
+            },
             _ => None,
         }
     }

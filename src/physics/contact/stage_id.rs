@@ -12,12 +12,13 @@ pub enum StageId {
     ApplyImpulse,
     NonlinearProjection,
     OrientationUpdate,
+    ExactImpact,
     Checks,
 }
 
 impl StageId {
     /// Every stage, in order.
-    pub const ALL: [StageId; 9] = [
+    pub const ALL: [StageId; 10] = [
         StageId::ContactFrame,
         StageId::UnitImpulse,
         StageId::DesiredDeltaVelocity,
@@ -26,6 +27,7 @@ impl StageId {
         StageId::ApplyImpulse,
         StageId::NonlinearProjection,
         StageId::OrientationUpdate,
+        StageId::ExactImpact,
         StageId::Checks,
     ];
 
@@ -40,6 +42,7 @@ impl StageId {
             StageId::ApplyImpulse => "apply_impulse",
             StageId::NonlinearProjection => "nonlinear_projection",
             StageId::OrientationUpdate => "orientation_update",
+            StageId::ExactImpact => "exact_impact",
             StageId::Checks => "checks",
         }
     }

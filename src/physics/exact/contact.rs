@@ -102,6 +102,23 @@ pub fn exact_impact_with<T: Real>(
     law: RestitutionLaw,
     tolerance: Tolerance<T>,
 ) -> Result<ExactImpact<T>, ExactError> {
+    let mut one_shot_problem = problem.clone();
+    one_shot_problem.contact.settings.exact = None;
+    let one_shot_world = solve(&one_shot_problem)
+        .final_impulse_world()
+        .unwrap_or_else(Vector3::zeros);
+    exact_impact_beside(problem, law, tolerance, one_shot_world)
+}
+
+/// [`exact_impact_with`] beside a one-shot impulse already computed (world
+/// space, zero when none is applied): what `physics::solve` runs for the
+/// `exact_impact` stage.
+pub fn exact_impact_beside<T: Real>(
+    problem: &Problem<T>,
+    law: RestitutionLaw,
+    tolerance: Tolerance<T>,
+    one_shot_world: Vector3<T>,
+) -> Result<ExactImpact<T>, ExactError> {
     let frame = contact_frame(problem);
     let unit = unit_impulse(problem, &frame, true);
     let desired = desired_delta_velocity(problem, &frame);
@@ -120,9 +137,6 @@ pub fn exact_impact_with<T: Real>(
     let outcome = integrate(&input)?;
     let impulse_world = frame.to_world(&outcome.impulse);
     let applied = apply_impulse(problem, &frame, &impulse_world);
-    let one_shot_world = solve(problem)
-        .final_impulse_world()
-        .unwrap_or_else(Vector3::zeros);
     let one_shot = apply_impulse(problem, &frame, &one_shot_world);
     let energy = |applied: Option<&AppliedImpulse<T>>| {
         let mut sum = T::zero();

@@ -13,6 +13,7 @@ use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
 use crate::physics::stages::apply_impulse::body_velocity_change;
 use crate::physics::stages::friction::{clamp, ClampInputs};
 use crate::physics::stages::impulse::impulse_contact;
+use crate::physics::stages::FrictionRegime;
 use crate::physics::{FrictionModel, Problem, Real};
 
 /// The impulse of contact `c` for its bookkeeping desired Δv and velocity,
@@ -50,6 +51,17 @@ pub fn take<T: Real>(
             (clamped.impulse_contact, Some(clamped.regime))
         }
     };
+    apply_impulse(c, bodies, impulse_contact, regime)
+}
+
+/// Applies the contact-space impulse `impulse_contact` of contact `c` to its
+/// bodies (body 2 receives the negated impulse) and records the changes.
+pub fn apply_impulse<T: Real>(
+    c: &ResolverContact<T>,
+    bodies: &mut [ResolverBody<T>],
+    impulse_contact: Vector3<T>,
+    regime: Option<FrictionRegime>,
+) -> VelocityImpulse<T> {
     let impulse_world = c.basis * impulse_contact;
     let mut changes = [None, None];
     for (i, slot) in c.bodies.iter().enumerate() {

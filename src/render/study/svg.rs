@@ -76,6 +76,7 @@ pub fn render(study: &Study) -> String {
             series,
             cursor: None,
             front: (!front.is_empty()).then_some(front),
+            marks: Vec::new(),
         };
         chart.draw(
             &mut out,

@@ -126,6 +126,10 @@ pub(super) fn skip_reason(skip: Skip) -> &'static str {
         Skip::NoFriction => "no friction (μ = 0): the impulse acts along the normal only",
         Skip::NoPenetration => "no penetration (d_pen ≤ 0): nothing to project",
         Skip::NoRotation => "the projection rotates no body (no angular share)",
+        Skip::NotAsked => {
+            "not asked (solve --exact newton|poisson|stronge, or exact in the lesson's settings)"
+        }
+        Skip::NotClosing => "the contact is not closing (u_n ≥ 0): there is no impact to integrate",
     }
 }
 

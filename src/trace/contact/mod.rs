@@ -12,6 +12,8 @@ mod causes;
 mod checks;
 mod contact_frame;
 mod desired_velocity;
+mod exact_curves;
+mod exact_impact;
 mod friction;
 mod impulse;
 mod orientation;
@@ -27,6 +29,8 @@ pub use builder::SolvedContact;
 pub use checks::{check_values, checks, verdicts};
 pub use contact_frame::contact_frame;
 pub use desired_velocity::desired_velocity;
+pub use exact_curves::impact_curves;
+pub use exact_impact::{exact_impact, phase_line};
 pub use friction::{friction, regime_name};
 pub use impulse::impulse;
 pub use orientation::orientation;
@@ -87,6 +91,7 @@ pub fn stage(id: StageId, c: &SolvedContact) -> Step {
         StageId::ApplyImpulse => apply_impulse(c),
         StageId::NonlinearProjection => projection(c),
         StageId::OrientationUpdate => orientation(c),
+        StageId::ExactImpact => exact_impact(c),
         StageId::Checks => checks(c),
     }
 }

@@ -60,6 +60,9 @@ fn scene_edit(
             return Err("a scene's penetrations come from its shapes at each step")
         }
         (Key::Duration, _) => return Err("a scene's contacts last its time step"),
+        (Key::Exact, _) => {
+            return Err("the exact impact integration only describes this contact; the run applies the one-shot impulse")
+        }
         (Key::Acceleration, _) => {
             return Err("in a run a body's acceleration is what gravity and damping give it")
         }

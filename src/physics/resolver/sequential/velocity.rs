@@ -16,12 +16,12 @@
 use nalgebra::Vector3;
 
 use super::super::observer::{Observer, VelocityImpulse};
+use super::super::velocity::apply_impulse;
 use super::super::Resolver;
 use super::body_velocity;
-use crate::physics::stages::apply_impulse::body_velocity_change;
 use crate::physics::stages::desired_velocity::{applied_restitution, desired_toward_bounce};
 use crate::physics::stages::FrictionRegime;
-use crate::physics::{Problem, Real};
+use crate::physics::Real;
 
 /// Clamps an accumulated contact-space impulse: normal ≥ 0, tangential inside
 /// the cone (`|g_t| ≤ μ_s g_n`, else scaled to `μ_d g_n`).
@@ -47,31 +47,7 @@ pub fn clamp_accumulated<T: Real>(
 
 /// Applies the contact-space impulse `delta` of contact `k` to its bodies.
 fn apply<T: Real>(r: &mut Resolver<T>, k: usize, delta: &Vector3<T>) -> VelocityImpulse<T> {
-    let contact = &r.contacts[k];
-    let impulse_world = contact.basis * delta;
-    let mut changes = [None, None];
-    for (i, slot) in contact.bodies.iter().enumerate() {
-        let Some(b) = *slot else { continue };
-        let body = &mut r.bodies[b];
-        let change = body_velocity_change(
-            body.inverse_mass,
-            &body.inverse_inertia_world,
-            &contact.r[i],
-            &impulse_world,
-            Problem::<T>::sign(i),
-            (&body.velocity, &body.angular_velocity),
-        );
-        body.velocity = change.v;
-        body.angular_velocity = change.w;
-        changes[i] = Some(change);
-    }
-    VelocityImpulse {
-        slots: contact.bodies,
-        impulse_contact: *delta,
-        impulse_world,
-        regime: None,
-        bodies: changes,
-    }
+    apply_impulse(&r.contacts[k], &mut r.bodies, *delta, None)
 }
 
 /// Visits contact `k` (visit number `visit`): returns how much it changed the
