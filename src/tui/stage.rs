@@ -213,10 +213,21 @@ fn formula_rows(app: &App, step: &Step, f: &Formula, hide_result: bool) -> Vec<R
     if let Some(name) = &f.result {
         if let Some(v) = step.lookup(name) {
             let text = fmt.value(v);
+            // The result carries its unit, as in the text output.
+            let unit = crate::trace::glossary::unit(step, name);
             if hide_result {
                 push("?   (Space reveals)".into(), t.hidden(), false);
             } else if last.as_ref() != Some(&text) {
-                push(text, t.result(), changed(&[name]));
+                push(
+                    crate::trace::glossary::with_unit(&text, unit),
+                    t.result(),
+                    changed(&[name]),
+                );
+            } else if !unit.is_empty() {
+                // The substituted line was the result itself: give it the unit.
+                if let Some(row) = rows.last_mut() {
+                    row.text = crate::trace::glossary::with_unit(&row.text, unit);
+                }
             }
         }
     }
