@@ -1,5 +1,6 @@
 //! Runs the 5-box stack for N steps with sleep off (a profiling target):
-//! `cargo run --release --example stack_steps -- 20000 [si|si-warm]`.
+//! `cargo run --release --example stack_steps -- 20000 [si|si-warm|dl] [sleep]`
+//! (`sleep`: the scene's own sleep settings, on).
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::step::Simulation;
 
@@ -7,7 +8,7 @@ fn main() {
     let n: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(10_000);
     let lesson = Lesson::load("stack-5").expect("embedded");
     let mut params = lesson.sim_params().expect("a scene");
-    params.sleep.enabled = false;
+    params.sleep.enabled = std::env::args().nth(3).as_deref() == Some("sleep");
     let solver = std::env::args().nth(2).unwrap_or_default();
     if solver.starts_with("si") {
         params.resolver.solver = contact_lab::physics::params::Solver::SequentialImpulse;
