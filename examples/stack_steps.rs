@@ -5,7 +5,10 @@ use contact_lab::lesson::Lesson;
 use contact_lab::physics::step::Simulation;
 
 fn main() {
-    let n: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(10_000);
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(10_000);
     let lesson = Lesson::load("stack-5").expect("embedded");
     let mut params = lesson.sim_params().expect("a scene");
     params.sleep.enabled = std::env::args().nth(3).as_deref() == Some("sleep");
@@ -25,6 +28,9 @@ fn main() {
         iterations[1] += r.velocity_iterations;
     }
     let us = t.elapsed().as_secs_f64() * 1e6 / n as f64;
-    println!("{n} steps: {us:.1} µs/step; iterations per step p {:.1} v {:.1}",
-        iterations[0] as f64 / n as f64, iterations[1] as f64 / n as f64);
+    println!(
+        "{n} steps: {us:.1} µs/step; iterations per step p {:.1} v {:.1}",
+        iterations[0] as f64 / n as f64,
+        iterations[1] as f64 / n as f64
+    );
 }

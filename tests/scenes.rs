@@ -260,12 +260,20 @@ fn sleep_modes(configure: impl Fn(&mut Simulation<f64>)) -> SleepRun {
     configure(&mut sim);
     let (mut all_asleep_at, mut wakes) = (None, 0);
     run(&mut sim, 900, |sim, r| {
-        wakes += r.events.iter().filter(|e| matches!(e, Event::Wakes { .. })).count();
+        wakes += r
+            .events
+            .iter()
+            .filter(|e| matches!(e, Event::Wakes { .. }))
+            .count();
         if all_asleep_at.is_none() && sim.awake() == 0 {
             all_asleep_at = Some(r.time);
         }
     });
-    SleepRun { all_asleep_at, wakes, top: body(&sim, 7).position.y }
+    SleepRun {
+        all_asleep_at,
+        wakes,
+        top: body(&sim, 7).position.y,
+    }
 }
 
 #[test]
@@ -280,11 +288,17 @@ fn island_sleep_freezes_the_stack_at_once_per_body_sleep_flaps_and_no_sleep_lets
     assert_eq!(island.wakes, 0);
     assert!(island.top > 7.4, "island: top at {} m", island.top);
     // Per body: many wakes, and all asleep only after several seconds.
-    let t = body_mode.all_asleep_at.expect("every box falls asleep in the end");
+    let t = body_mode
+        .all_asleep_at
+        .expect("every box falls asleep in the end");
     assert!(t > 5.0 && t < 14.0, "per body: all asleep at {t} s");
     assert!(body_mode.wakes >= 10, "per body: {} wakes", body_mode.wakes);
     assert!(body_mode.top > 7.4, "per body: top at {} m", body_mode.top);
     // No sleep: the lecture's resolver lets the stack sag and fall.
     assert!(awake.all_asleep_at.is_none());
-    assert!(awake.top < 2.0, "no sleep: top at {} m after 15 s", awake.top);
+    assert!(
+        awake.top < 2.0,
+        "no sleep: top at {} m after 15 s",
+        awake.top
+    );
 }

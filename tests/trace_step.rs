@@ -201,10 +201,21 @@ fn a_step_without_contacts_says_there_are_none() {
     let out = contact_lab(&["simulate", "ball-drop", "--trace-step", "5"]);
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
-    assert_eq!(text.matches("No contacts: nothing to resolve.").count(), 2, "{text}");
+    assert_eq!(
+        text.matches("No contacts: nothing to resolve.").count(),
+        2,
+        "{text}"
+    );
     assert!(text.contains("penetration left: no contacts"), "{text}");
     assert!(!text.contains("inf"), "{text}");
-    let out = contact_lab(&["simulate", "ball-drop", "--trace-step", "5", "--format", "json"]);
+    let out = contact_lab(&[
+        "simulate",
+        "ball-drop",
+        "--trace-step",
+        "5",
+        "--format",
+        "json",
+    ]);
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(json["position"]["max_penetration_before"], 0.0);
     assert_eq!(json["velocity"]["max_desired_after"], 0.0);

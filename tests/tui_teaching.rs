@@ -99,7 +99,10 @@ fn help_has_a_second_page_with_the_glossary() {
     };
     assert!(at > 0 && at == a.glossary_max.get(), "scrolled {at}");
     let rows = screen(&a, 100, 30).join("\n");
-    assert!(rows.contains("kinetic energy of the bodies"), "the last symbol: {rows}");
+    assert!(
+        rows.contains("kinetic energy of the bodies"),
+        "the last symbol: {rows}"
+    );
     assert_eq!(a.lesson, lesson);
     key(&mut a, KeyCode::Char('x'));
     assert_eq!(a.mode, Mode::Normal);
@@ -160,7 +163,11 @@ fn predict_answers_are_graded_and_scored() {
     let s = a.status.clone().unwrap();
     assert!(s.error, "a wrong answer is shown as one");
     assert!(s.text.contains("(18.7337, 0, 0) N·s"), "{}", s.text);
-    assert!(s.text.contains("difference (0.0337046, -1, 0) N·s"), "{}", s.text);
+    assert!(
+        s.text.contains("difference (0.0337046, -1, 0) N·s"),
+        "{}",
+        s.text
+    );
     // An answer that cannot be compared is refused, not scored, and stays open.
     type_text(&mut a, "1 2");
     key(&mut a, KeyCode::Enter);
@@ -184,7 +191,10 @@ fn help_scrolls_when_the_terminal_is_short() {
     key(&mut a, KeyCode::Char('?'));
     let rows = screen(&a, 80, 24).join("\n");
     assert!(rows.contains("j/k ↑↓ scroll"), "{rows}");
-    assert!(!rows.contains("page 2, the glossary"), "the last note is below");
+    assert!(
+        !rows.contains("page 2, the glossary"),
+        "the last note is below"
+    );
     for _ in 0..40 {
         key(&mut a, KeyCode::Char('j'));
     }
@@ -192,7 +202,11 @@ fn help_scrolls_when_the_terminal_is_short() {
     assert!(a.help_scroll > 0 && a.help_scroll == a.help_max.get());
     let rows = screen(&a, 80, 24).join("\n");
     assert!(rows.contains("page 2, the glossary"), "{rows}");
-    assert_eq!(a.lesson, app("lecture-2").lesson, "j scrolled, it did not switch lessons");
+    assert_eq!(
+        a.lesson,
+        app("lecture-2").lesson,
+        "j scrolled, it did not switch lessons"
+    );
 }
 
 #[test]
@@ -201,7 +215,10 @@ fn j_k_scroll_a_line_pgdn_a_page_and_brackets_switch_lessons() {
     stage(&mut a, 2);
     screen(&a, 80, 24);
     let page = a.page_rows.get();
-    assert!(a.scroll_max.get() > page, "stage 2 is longer than two pages at 80×24");
+    assert!(
+        a.scroll_max.get() > page,
+        "stage 2 is longer than two pages at 80×24"
+    );
     key(&mut a, KeyCode::Char('j'));
     key(&mut a, KeyCode::Down);
     assert_eq!(a.scroll, 2);
@@ -212,7 +229,10 @@ fn j_k_scroll_a_line_pgdn_a_page_and_brackets_switch_lessons() {
     key(&mut a, KeyCode::PageUp);
     key(&mut a, KeyCode::PageUp);
     assert_eq!(a.scroll, 0);
-    assert_eq!(a.trace.lesson, "lecture-2", "j/k and PgDn do not switch lessons");
+    assert_eq!(
+        a.trace.lesson, "lecture-2",
+        "j/k and PgDn do not switch lessons"
+    );
     key(&mut a, KeyCode::Char(']'));
     assert_eq!(a.trace.lesson, "lecture-3");
     key(&mut a, KeyCode::Char('['));
@@ -228,7 +248,11 @@ fn the_header_fits_80_columns_with_its_tags() {
     key(&mut a, KeyCode::Enter);
     let rows = screen(&a, 80, 24);
     assert!(rows[0].trim_end().ends_with("[predict 1/1]"), "{}", rows[0]);
-    assert!(rows[0].contains("lecture-2 · Cube hits the floor"), "{}", rows[0]);
+    assert!(
+        rows[0].contains("lecture-2 · Cube hits the floor"),
+        "{}",
+        rows[0]
+    );
     assert!(rows[0].contains('…'), "the title gives way: {}", rows[0]);
 }
 
@@ -241,7 +265,10 @@ fn no_key_acts_while_the_terminal_is_too_small() {
         key(&mut a, KeyCode::Char(c));
     }
     key(&mut a, KeyCode::Enter);
-    assert_eq!((a.page, a.predict, a.mode.clone()), (0, false, Mode::Normal));
+    assert_eq!(
+        (a.page, a.predict, a.mode.clone()),
+        (0, false, Mode::Normal)
+    );
     assert_eq!(a.trace.lesson, "lecture-2");
     // Large enough again: keys act.
     screen(&a, 80, 24);
@@ -258,9 +285,17 @@ fn student_lessons_come_first_then_robustness_then_scenes() {
     let groups: Vec<&str> = lessons.iter().map(tui::group).collect();
     let first = |g: &str| groups.iter().position(|x| *x == g).unwrap();
     let last = |g: &str| groups.iter().rposition(|x| *x == g).unwrap();
-    assert!(last("Lessons") < first("Robustness (extreme-*)"), "{groups:?}");
-    assert!(last("Robustness (extreme-*)") < first("Scenes (in time)"), "{groups:?}");
-    assert!(lessons[first("Robustness (extreme-*)")].id.starts_with("extreme-"));
+    assert!(
+        last("Lessons") < first("Robustness (extreme-*)"),
+        "{groups:?}"
+    );
+    assert!(
+        last("Robustness (extreme-*)") < first("Scenes (in time)"),
+        "{groups:?}"
+    );
+    assert!(lessons[first("Robustness (extreme-*)")]
+        .id
+        .starts_with("extreme-"));
     // The list shows the headings where the groups start.
     let mut a = app("lecture-2");
     key(&mut a, KeyCode::Char('z'));
@@ -280,9 +315,15 @@ fn the_checks_panel_says_how_many_verdicts_it_leaves_out() {
     let rows = screen(&a, 80, 24);
     let text = rows.join("\n");
     let n = a.trace.verdicts.len();
-    let shown = rows.iter().filter(|r| r.contains("│✓") || r.contains("│✗")).count();
+    let shown = rows
+        .iter()
+        .filter(|r| r.contains("│✓") || r.contains("│✗"))
+        .count();
     assert!(shown < n, "box-stack has more verdicts than rows: {text}");
-    assert!(text.contains(&format!("+{} more (Checks stage)", n - shown)), "{text}");
+    assert!(
+        text.contains(&format!("+{} more (Checks stage)", n - shown)),
+        "{text}"
+    );
     // Every shown line ends at a word: no line of the panel ends inside one
     // of the verdicts' words.
     for v in &a.trace.verdicts {

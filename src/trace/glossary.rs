@@ -6,8 +6,8 @@
 use crate::physics::StageId;
 use crate::physics::StageId::{
     ApplyImpulse as AI, Checks as CH, ContactFrame as CF, DesiredDeltaVelocity as DV,
-    ExactImpact as EI, FrictionClamp as FC, Impulse as IM, NonlinearProjection as NP, OrientationUpdate as OU,
-    UnitImpulse as UI,
+    ExactImpact as EI, FrictionClamp as FC, Impulse as IM, NonlinearProjection as NP,
+    OrientationUpdate as OU, UnitImpulse as UI,
 };
 
 /// One symbol. A trailing `ᵢ` stands for the body subscript (₁ or ₂).
@@ -217,7 +217,10 @@ pub fn unit(step: &crate::trace::Step, name: &str) -> &'static str {
         | (_, "sticking" | "sticking_normal" | "sticking_y" | "sticking_z" | "normal_impulse")
         | (_, "tangential_impulse" | "cone_limit" | "friction_y" | "friction_z")
         | (_, "linear_momentum_error") => "N·s",
-        (EI, "compression_normal_impulse" | "impulse_one_shot_contact" | "impulse_one_shot_world")
+        (
+            EI,
+            "compression_normal_impulse" | "impulse_one_shot_contact" | "impulse_one_shot_world",
+        )
         | (EI, "impulse_difference" | "impulse_difference_abs") => "N·s",
         (EI, "velocity_contact") => "m/s",
         (EI, "energy_after_one_shot" | "energy_difference")

@@ -390,11 +390,27 @@ pub fn describe_prepared(
         implementation,
         restitution_from: params.restitution_from,
         before,
-        position: phase_trace(&position, position_log, params.solver, resolver.contacts.len()),
-        velocity: phase_trace(&velocity, velocity_log, params.solver, resolver.contacts.len()),
+        position: phase_trace(
+            &position,
+            position_log,
+            params.solver,
+            resolver.contacts.len(),
+        ),
+        velocity: phase_trace(
+            &velocity,
+            velocity_log,
+            params.solver,
+            resolver.contacts.len(),
+        ),
         contacts_after: rows(names, &resolver.contacts),
         after: after(&names.bodies, &resolver.bodies),
-        verdicts: verdicts(&names.bodies, &checks, &position, &velocity, resolver.contacts.len()),
+        verdicts: verdicts(
+            &names.bodies,
+            &checks,
+            &position,
+            &velocity,
+            resolver.contacts.len(),
+        ),
         warnings: names.warnings.clone(),
     };
     (trace, std::mem::take(&mut recorder.bodies))

@@ -45,7 +45,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ("Home g / End G", "first / last stage"),
     ("Tab / Shift-Tab", "next / previous contact"),
     ("] / [", "next / previous lesson"),
-    ("↓ j / ↑ k", "scroll the stage panel a line (the mouse wheel too)"),
+    (
+        "↓ j / ↑ k",
+        "scroll the stage panel a line (the mouse wheel too)",
+    ),
     ("PgDn / PgUp", "scroll the stage panel a page"),
     (
         "e",
@@ -55,7 +58,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ("p", "predict mode: hide each result until Space reveals it"),
     ("v", "view plane of the picture: xy → yz → zx"),
     ("z", "picture full size / beside the stages"),
-    ("s", "list the symbols of the stage's formulas, with meaning and unit"),
+    (
+        "s",
+        "list the symbols of the stage's formulas, with meaning and unit",
+    ),
     (
         "0-9 - . ( [",
         "predict mode: type your answer to the hidden result (number or vector); Enter grades it",

@@ -68,10 +68,7 @@ pub fn glossary(app: &App, scroll: u16, area: Rect, buf: &mut Buffer) {
         .enumerate()
         .map(|(i, s)| format!("{} {}", i + 1, s.label()))
         .collect();
-    let head = format!(
-        "Subscript ᵢ: body 1 or 2. Stages: {}.",
-        stages.join(", ")
-    );
+    let head = format!("Subscript ᵢ: body 1 or 2. Stages: {}.", stages.join(", "));
     for piece in wrap(&head, text_w, 0) {
         lines.push(Line::styled(format!(" {piece}"), t.dim()));
     }
@@ -88,7 +85,11 @@ pub fn glossary(app: &App, scroll: u16, area: Rect, buf: &mut Buffer) {
                 .to_string()
             })
             .collect();
-        let unit = if sym.unit.is_empty() { "no unit" } else { sym.unit };
+        let unit = if sym.unit.is_empty() {
+            "no unit"
+        } else {
+            sym.unit
+        };
         let mut what = format!("{} [{unit}; stages {}]", sym.meaning, stages.join(", "));
         if !sym.elsewhere.is_empty() {
             what.push_str(&format!("; {}", sym.elsewhere));
@@ -145,8 +146,15 @@ pub fn help_list(
             lines.push(Line::styled(format!(" {piece}"), t.dim()));
         }
     }
-    app.help_max
-        .set(scrolled(app, title, lines, app.help_scroll, rect_w, area, buf));
+    app.help_max.set(scrolled(
+        app,
+        title,
+        lines,
+        app.help_scroll,
+        rect_w,
+        area,
+        buf,
+    ));
 }
 
 /// `lines` in a centred box `w` wide, as tall as they need or the screen

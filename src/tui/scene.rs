@@ -108,7 +108,10 @@ fn place_labels(
         };
         let clear = |c: i32, r: i32| free(c, r) && (c..c + n).all(|x| !drawn[(r * w + x) as usize]);
         let spot = |c0: i32, r0: i32, ok: &dyn Fn(i32, i32) -> bool| {
-            tries.iter().map(|(dc, dr)| (c0 + dc, r0 + dr)).find(|&(c, r)| ok(c, r))
+            tries
+                .iter()
+                .map(|(dc, dr)| (c0 + dc, r0 + dr))
+                .find(|&(c, r)| ok(c, r))
         };
         if let Some((c, r)) = spot(c, r, &clear).or_else(|| spot(c, r, &free)) {
             for x in c..c + n {
@@ -131,7 +134,12 @@ fn dashes(a: P, c: P, step: f64) -> Vec<(P, P)> {
     if !(step > 0.0 && len >= 2.0 * step) {
         return vec![(a, c)];
     }
-    let at = |s: f64| [a[0] + (c[0] - a[0]) * s / len, a[1] + (c[1] - a[1]) * s / len];
+    let at = |s: f64| {
+        [
+            a[0] + (c[0] - a[0]) * s / len,
+            a[1] + (c[1] - a[1]) * s / len,
+        ]
+    };
     let mut out = vec![];
     let mut s = 0.0;
     while s < len {
@@ -269,7 +277,10 @@ mod tests {
         let placed = place_labels(&marks, [0.0, 10.0], [0.0, 4.0], 10, 5);
         assert_eq!(placed.len(), 1);
         let y = placed[0].0[1];
-        assert!((y - 2.0).abs() > 0.5, "the label is off the line's row: y = {y}");
+        assert!(
+            (y - 2.0).abs() > 0.5,
+            "the label is off the line's row: y = {y}"
+        );
     }
 
     #[test]

@@ -322,7 +322,10 @@ fn symbol_rows(app: &App, step: &Step, shown: usize) -> Vec<Row> {
         };
         rows.push(Row {
             indent: 4,
-            ..Row::new(format!("{}: {}{unit}", sym.symbol, sym.meaning), t.formula())
+            ..Row::new(
+                format!("{}: {}{unit}", sym.symbol, sym.meaning),
+                t.formula(),
+            )
         });
     }
     rows

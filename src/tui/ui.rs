@@ -145,7 +145,10 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
     if let Mode::Answer { input, error } = &app.mode {
         let mut spans = vec![
             Span::styled(" your answer: ", t.key()),
-            Span::raw(super::wrap::tail(input, (area.width as usize).saturating_sub(40))),
+            Span::raw(super::wrap::tail(
+                input,
+                (area.width as usize).saturating_sub(40),
+            )),
             Span::styled("▏", t.key()),
         ];
         match error {
@@ -162,8 +165,16 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
         Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
-        Mode::Help => &[("?", "glossary"), ("j k", "scroll"), ("any other key", "closes")],
-        Mode::Glossary(_) => &[("j k ↑↓ PgDn PgUp", "scroll"), ("← ?", "keys"), ("any other key", "closes")],
+        Mode::Help => &[
+            ("?", "glossary"),
+            ("j k", "scroll"),
+            ("any other key", "closes"),
+        ],
+        Mode::Glossary(_) => &[
+            ("j k ↑↓ PgDn PgUp", "scroll"),
+            ("← ?", "keys"),
+            ("any other key", "closes"),
+        ],
         Mode::Answer { .. } => &[],
         Mode::Normal if app.resolver.is_some() => &[
             ("←→", "stage"),
@@ -292,10 +303,7 @@ fn render_checks(app: &App, area: Rect, buf: &mut Buffer) {
             for (j, piece) in pieces.into_iter().enumerate() {
                 if j == 0 {
                     let rest = piece.strip_prefix(mark).unwrap_or(&piece).to_string();
-                    lines.push(Line::from(vec![
-                        Span::styled(mark, style),
-                        Span::raw(rest),
-                    ]));
+                    lines.push(Line::from(vec![Span::styled(mark, style), Span::raw(rest)]));
                 } else {
                     lines.push(Line::styled(piece, t.dim()));
                 }

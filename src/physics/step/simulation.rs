@@ -5,10 +5,10 @@
 
 use nalgebra::Vector3;
 
-use super::{audit, energy};
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
+use super::{audit, energy};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
 use crate::physics::resolver::sequential::WarmCache;

@@ -130,7 +130,11 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     }
     let keys: &[(&str, &str)] = match (app.mode == Mode::Help, app.screen) {
-        (true, _) => &[("?", "glossary"), ("j k", "scroll"), ("any other key", "closes")],
+        (true, _) => &[
+            ("?", "glossary"),
+            ("j k", "scroll"),
+            ("any other key", "closes"),
+        ],
         _ if matches!(app.mode, Mode::Glossary(_)) => {
             &[("j k ↑↓ PgDn PgUp", "scroll"), ("any other key", "closes")]
         }

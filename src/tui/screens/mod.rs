@@ -123,7 +123,10 @@ pub const RUN_KEYS: &[(&str, &str)] = &[
     ),
     ("v", "view plane of the picture: xy → yz → zx"),
     ("PgUp / PgDn", "scroll the events list"),
-    ("↓ j / ↑ k", "scroll the events list a line (the mouse wheel too)"),
+    (
+        "↓ j / ↑ k",
+        "scroll the events list a line (the mouse wheel too)",
+    ),
     ("] / [", "next / previous lesson"),
     ("?", "this help"),
     ("q Ctrl-C", "quit"),
@@ -143,7 +146,10 @@ pub const RESOLVER_KEYS: &[(&str, &str)] = &[
     ),
     ("Esc Backspace", "up to the run (a scene)"),
     ("v", "view plane of the picture: xy → yz → zx"),
-    ("↓ j / ↑ k", "scroll the contacts table (the mouse wheel too)"),
+    (
+        "↓ j / ↑ k",
+        "scroll the contacts table (the mouse wheel too)",
+    ),
     ("] / [", "next / previous lesson"),
     ("?", "this help"),
     ("q Ctrl-C", "quit (Esc too, at the top)"),
