@@ -1,0 +1,237 @@
+//! The arguments of the commands on scenes: `resolve`, `simulate` and
+//! `study`, and the resolver settings they share.
+
+use clap::{Args, ValueEnum};
+
+use super::*;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ResolveFormat {
+    Text,
+    Json,
+    /// Markdown: headings and tables.
+    #[value(alias = "markdown")]
+    Md,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ImplementationArg {
+    /// The lecture's loop: scan every contact twice per iteration.
+    Scan,
+    /// A priority queue and the body → contacts adjacency (same result, faster).
+    Indexed,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RestitutionFromArg {
+    /// The contact velocity when the contact is taken (the reference engine).
+    Current,
+    /// The contact velocity before the velocity phase began (Box2D v3).
+    Initial,
+}
+
+/// `--show position:K` or `--show velocity:K`: iteration K of that phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Show {
+    pub velocity: bool,
+    pub iteration: usize,
+}
+
+fn parse_show(s: &str) -> Result<Show, String> {
+    let bad =
+        || format!("expected position:K or velocity:K (K an iteration number from 0), got '{s}'");
+    let (phase, k) = s.split_once(':').ok_or_else(bad)?;
+    let iteration = k.trim().parse().map_err(|_| bad())?;
+    match phase.trim() {
+        "position" => Ok(Show {
+            velocity: false,
+            iteration,
+        }),
+        "velocity" => Ok(Show {
+            velocity: true,
+            iteration,
+        }),
+        _ => Err(bad()),
+    }
+}
+
+/// The resolver's settings; each overrides the lesson's `[settings]`.
+#[derive(Debug, Clone, Args)]
+pub struct ResolverArgs {
+    /// Most position-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
+    #[arg(long)]
+    pub position_iterations: Option<u64>,
+    /// Most velocity-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
+    #[arg(long)]
+    pub velocity_iterations: Option<u64>,
+    /// Penetrations at or below this are left alone (default: the lesson's, else 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    pub position_epsilon: Option<f64>,
+    /// Desired Δv at or below this is left alone (default: the lesson's, else 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_epsilon: Option<f64>,
+    /// Which contact velocity restitution is applied to (default: the lesson's, else current).
+    #[arg(long, value_enum)]
+    pub restitution_from: Option<RestitutionFromArg>,
+    /// The solver: the lecture's deepest-first order or sequential impulses
+    /// (default: the lesson's, else deepest-first). Iterations count contact visits for both.
+    #[arg(long, value_enum)]
+    pub solver: Option<SolverArg>,
+    /// Sequential impulses: start each step from the last step's accumulated impulses.
+    #[arg(long)]
+    pub warm_start: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverArg {
+    /// The lecture's: the deepest penetration, the largest desired Δv first.
+    #[value(name = "deepest_first", alias = "deepest-first")]
+    DeepestFirst,
+    /// Projected Gauss–Seidel with accumulated, clamped impulses.
+    #[value(name = "sequential_impulse", alias = "sequential-impulse")]
+    SequentialImpulse,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ResolveArgs {
+    /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
+    pub lesson: std::ffi::OsString,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = ResolveFormat::Text)]
+    pub format: ResolveFormat,
+    /// JSON: include every iteration (`log`); text and Markdown always show them.
+    #[arg(long)]
+    pub log: bool,
+    /// Time the resolver N times and report the fastest run's phases (JSON `seconds`).
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=10000))]
+    pub repeat: u32,
+    /// The single-contact worked solution of the contact taken at iteration K
+    /// of a phase, with the bodies as they are at that moment.
+    #[arg(long, value_name = "PHASE:K", value_parser = parse_show)]
+    pub show: Option<Show>,
+    /// Which implementation runs the phases (both give the same result).
+    #[arg(long, value_enum, default_value_t = ImplementationArg::Indexed)]
+    pub implementation: ImplementationArg,
+    /// Significant digits of human formats (JSON always carries full f64).
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RunFormat {
+    Text,
+    Json,
+    /// A film strip of the scene and charts of energy, penetration and awake bodies.
+    Svg,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BoxBoxArg {
+    Single,
+    Manifold,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SleepModeArg {
+    Body,
+    Island,
+}
+
+/// Options of `simulate`: each overrides the lesson's value.
+#[derive(Debug, Clone, Args)]
+pub struct SimulateArgs {
+    /// Embedded scene id (see `contact-lab list`) or path to a lesson file with [world] or [step].
+    pub lesson: std::ffi::OsString,
+    /// How long to run, in seconds of simulated time.
+    #[arg(long, conflicts_with = "steps", allow_negative_numbers = true)]
+    pub seconds: Option<f64>,
+    /// How many steps to run (default: the lesson's [step] steps).
+    #[arg(long)]
+    pub steps: Option<u64>,
+    /// The time step in seconds (default: the lesson's [step] dt).
+    #[arg(long, allow_negative_numbers = true)]
+    pub dt: Option<f64>,
+    /// Record one step in every K (the last step is always recorded).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = RunFormat::Text)]
+    pub format: RunFormat,
+    /// Significant digits of the text table.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// The plane of the film strip (svg).
+    #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
+    pub plane: PlaneArg,
+    /// Gravity as x,y,z in m/s².
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub gravity: Option<Vec<f64>>,
+    /// Fraction of linear and angular velocity kept per second, (0, 1].
+    #[arg(long, allow_negative_numbers = true)]
+    pub damping: Option<f64>,
+    /// Bodies never sleep.
+    #[arg(long)]
+    pub no_sleep: bool,
+    /// Sleep per body (the lecture) or per island of touching bodies.
+    #[arg(long, value_enum)]
+    pub sleep_mode: Option<SleepModeArg>,
+    /// Contacts between boxes: single (the reference engine's one point) or manifold (up to 4).
+    #[arg(long, value_enum)]
+    pub box_box: Option<BoxBoxArg>,
+    /// Switch off acceleration compensation (micro-collisions): watch a resting box vibrate.
+    #[arg(long)]
+    pub no_compensation: bool,
+    /// Closing speed below which restitution is 0 (0 switches it off).
+    #[arg(long, allow_negative_numbers = true)]
+    pub velocity_limit: Option<f64>,
+    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    pub trace_step: Option<u64>,
+    #[command(flatten)]
+    pub resolver: ResolverArgs,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StudyFormat {
+    /// A table per scene, the Pareto front marked, the trade in one sentence.
+    Text,
+    Json,
+    Csv,
+    /// Error against µs per step, log–log, one panel per scene.
+    Svg,
+    /// A report to hand out.
+    #[value(alias = "markdown")]
+    Md,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct StudyArgs {
+    /// Scene ids or lesson files with [world] or [step] (default: the study's eight scenes).
+    pub scenes: Vec<std::ffi::OsString>,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = StudyFormat::Text)]
+    pub format: StudyFormat,
+    /// Leave timing out (the cost is then contact visits per step): deterministic output.
+    #[arg(long)]
+    pub no_timing: bool,
+    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30.
+    #[arg(long)]
+    pub quick: bool,
+    /// Run the cross product of these knobs' values around each scene's default
+    /// instead of the default grid, e.g. --grid budget=1,4,16 --grid solver=deepest_first,sequential_impulse.
+    #[arg(long, value_name = "KNOB=V1,V2")]
+    pub grid: Vec<String>,
+    /// Timed runs per configuration (their median is reported, with min and max).
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub repeat: u32,
+    /// Simulated seconds per scene (default: the study's choice per scene, 0.5 to 2 s).
+    #[arg(long)]
+    pub seconds: Option<f64>,
+    /// Significant digits of text and Markdown (JSON and CSV carry full f64).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+}
