@@ -1,6 +1,7 @@
 //! The description of a run in time: one frame per recorded step (the step's
 //! numbers and every body's state) and the events in words, with body names.
 
+use crate::physics::step::audit::EnergyCause;
 use crate::physics::step::{Event, Simulation, StepReport};
 use crate::physics::{BodyId, Shape};
 
@@ -206,9 +207,23 @@ impl RunTrace {
                 format!(
                     "the velocity phase added {} J of kinetic energy (from now on, each step, until it stops); cause: {}",
                     f.num(gained),
-                    cause.describe()
+                    cause_text(cause)
                 ),
             ),
         }
+    }
+}
+
+/// Why the velocity phase may have added energy, as the event says it.
+fn cause_text(cause: EnergyCause) -> &'static str {
+    match cause {
+        EnergyCause::RestitutionWithFriction => {
+            "restitution with friction (Newton's law with sticking friction can gain energy, as in the Kane example)"
+        }
+        EnergyCause::AccelerationCompensation => {
+            "acceleration compensation (a desired Δv from last frame's acceleration)"
+        }
+        EnergyCause::Both => "restitution with friction, or acceleration compensation",
+        EnergyCause::Unexplained => "no stated cause: a defect",
     }
 }

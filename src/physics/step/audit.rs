@@ -5,6 +5,7 @@
 //! sticking friction is not energetically consistent, the Kane example) and
 //! acceleration compensation (a desired Δv built from last frame's
 //! acceleration, which can ask for more bounce than the closing speed gives).
+//! The trace (`trace::run`) says the cause in words.
 //! Projection lifting bodies out of penetration raises the potential energy;
 //! that is expected and not reported here.
 
@@ -21,23 +22,6 @@ pub enum EnergyCause {
     Both,
     /// None of the causes applies: a defect of the model or of the code.
     Unexplained,
-}
-
-impl EnergyCause {
-    pub fn describe(self) -> &'static str {
-        match self {
-            EnergyCause::RestitutionWithFriction => {
-                "restitution with friction (Newton's law with sticking friction can gain energy, as in the Kane example)"
-            }
-            EnergyCause::AccelerationCompensation => {
-                "acceleration compensation (a desired Δv from last frame's acceleration)"
-            }
-            EnergyCause::Both => {
-                "restitution with friction, or acceleration compensation"
-            }
-            EnergyCause::Unexplained => "no stated cause: a defect",
-        }
-    }
 }
 
 /// The causes that apply to this step's contacts (compensation only when
