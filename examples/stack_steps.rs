@@ -28,8 +28,10 @@ fn main() {
         iterations[1] += r.velocity_iterations;
     }
     let us = t.elapsed().as_secs_f64() * 1e6 / n as f64;
+    // Standing, the top box's centre is at 4.5 m.
+    let top = sim.world.bodies[4].state.position.y;
     println!(
-        "{n} steps: {us:.1} µs/step; iterations per step p {:.1} v {:.1}",
+        "{n} steps: {us:.1} µs/step; iterations per step p {:.1} v {:.1}; top box at y = {top:.2} m",
         iterations[0] as f64 / n as f64,
         iterations[1] as f64 / n as f64
     );

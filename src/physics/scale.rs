@@ -16,8 +16,14 @@ use super::{c, to_f64, Real};
 /// The power of two at or just below `x > 0` (`x` itself where that power
 /// is not representable in `T`).
 pub fn pow2_below<T: Real>(x: T) -> T {
-    let e = to_f64(x).log2().floor().clamp(-1022.0, 1023.0);
-    let s: T = c(2f64.powi(e as i32));
+    let wide = to_f64(x);
+    let power = if wide >= f64::MIN_POSITIVE && wide.is_finite() {
+        // A normal number's exponent bits alone (mantissa cleared) are that power.
+        f64::from_bits(wide.to_bits() & 0x7ff0_0000_0000_0000)
+    } else {
+        2f64.powi(wide.log2().floor().clamp(-1022.0, 1023.0) as i32)
+    };
+    let s: T = c(power);
     if s > T::zero() && s.is_finite() {
         s
     } else {
@@ -115,6 +121,10 @@ mod tests {
         assert_eq!(stable_inverse(&m).unwrap(), m.try_inverse().unwrap());
         assert_eq!(pow2_below(3.0f64), 2.0);
         assert_eq!(pow2_below(0.3f64), 0.25);
+        assert_eq!(pow2_below(4.0f64), 4.0, "a power of two is its own");
+        assert_eq!(pow2_below(1.0f64 - f64::EPSILON / 2.0), 0.5, "just below 1");
+        assert_eq!(pow2_below(1e300f64), 2f64.powi(996));
+        assert_eq!(pow2_below(3.0f32), 2.0);
         assert_eq!(
             pow2_below(1e-320f64),
             2f64.powi(-1022),

@@ -13,6 +13,7 @@
 //! exact.
 
 use super::observer::Observer;
+use super::queue::{Queue, SCAN_BELOW};
 use super::{position, velocity, Phase, PhaseOutcome, Resolver};
 use crate::physics::Real;
 
@@ -35,12 +36,44 @@ pub(super) fn each_neighbour<T: Real>(
     }
 }
 
+/// Runs `phase` with the scan queue below [`SCAN_BELOW`] contacts, the
+/// tournament tree from there on (both give the same order).
+macro_rules! with_queue {
+    ($r:expr, $obs:expr, $phase:ident) => {
+        if $r.contacts.len() < SCAN_BELOW {
+            let mut queue = std::mem::take(&mut $r.scan_queue);
+            let outcome = $phase($r, $obs, &mut queue);
+            $r.scan_queue = queue;
+            outcome
+        } else {
+            let mut queue = std::mem::take(&mut $r.queue);
+            let outcome = $phase($r, $obs, &mut queue);
+            $r.queue = queue;
+            outcome
+        }
+    };
+}
+
 pub fn position_phase<T: Real, O: Observer<T>>(
     r: &mut Resolver<T>,
     obs: &mut O,
 ) -> PhaseOutcome<T> {
+    with_queue!(r, obs, position_phase_with)
+}
+
+pub fn velocity_phase<T: Real, O: Observer<T>>(
+    r: &mut Resolver<T>,
+    obs: &mut O,
+) -> PhaseOutcome<T> {
+    with_queue!(r, obs, velocity_phase_with)
+}
+
+fn position_phase_with<T: Real, O: Observer<T>, Q: Queue<T>>(
+    r: &mut Resolver<T>,
+    obs: &mut O,
+    queue: &mut Q,
+) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(Phase::Position);
-    let mut queue = std::mem::take(&mut r.queue);
     queue.fill(r.contacts.iter().map(|c| c.penetration));
     let mut used = 0;
     while used < limit {
@@ -65,22 +98,20 @@ pub fn position_phase<T: Real, O: Observer<T>>(
             }
             obs.penetration_updated(j, from, c.penetration);
         });
-        changed.sort_unstable();
         queue.replay(&mut changed);
         r.changed = changed;
         used += 1;
     }
-    r.queue = queue;
     r.finish(Phase::Position, used, obs)
 }
 
-pub fn velocity_phase<T: Real, O: Observer<T>>(
+fn velocity_phase_with<T: Real, O: Observer<T>, Q: Queue<T>>(
     r: &mut Resolver<T>,
     obs: &mut O,
+    queue: &mut Q,
 ) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(Phase::Velocity);
     let from = r.params.restitution_from;
-    let mut queue = std::mem::take(&mut r.queue);
     queue.fill(r.contacts.iter().map(|c| c.desired));
     let mut used = 0;
     while used < limit {
@@ -107,11 +138,9 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
             }
             obs.desired_updated(j, before, c.desired);
         });
-        changed.sort_unstable();
         queue.replay(&mut changed);
         r.changed = changed;
         used += 1;
     }
-    r.queue = queue;
     r.finish(Phase::Velocity, used, obs)
 }

@@ -35,7 +35,7 @@ pub use prepare::{
 
 use crate::physics::params::{ResolverParams, Solver};
 use crate::physics::{c, Real, World};
-use queue::TournamentTree;
+use queue::{ScanQueue, TournamentTree};
 
 /// Which of the two implementations runs the phases.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -101,6 +101,7 @@ pub struct Resolver<T: Real> {
     /// World body → resolver body (kept for the next prepare).
     index: Vec<Option<usize>>,
     queue: TournamentTree<T>,
+    scan_queue: ScanQueue<T>,
     /// The contacts one iteration changed (scratch, sized at prepare).
     changed: Vec<usize>,
     stamps: Vec<usize>,
@@ -123,6 +124,7 @@ impl<T: Real> Resolver<T> {
             params: *params,
             index: Vec::new(),
             queue: TournamentTree::default(),
+            scan_queue: ScanQueue::default(),
             changed: Vec::new(),
             stamps: Vec::new(),
             stamp: 0,
@@ -154,7 +156,11 @@ impl<T: Real> Resolver<T> {
         self.adjacency = prepared.adjacency;
         self.index = prepared.index;
         self.params = *params;
-        self.queue.reserve(n);
+        if n < queue::SCAN_BELOW {
+            self.scan_queue.reserve(n);
+        } else {
+            self.queue.reserve(n);
+        }
         // An iteration changes at most the contacts of the taken contact's two bodies.
         let widest = (0..self.bodies.len())
             .map(|b| self.adjacency.of(b).len())

@@ -7,17 +7,18 @@
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-use crate::physics::frame::contact_basis;
+use crate::physics::frame::{contact_basis, skew};
 use crate::physics::params::RestitutionFrom;
 use crate::physics::stages::desired_velocity::{
     acceleration_terms, applied_restitution, contact_velocity, desired_from, desired_toward_bounce,
     relative_acceleration,
 };
+use crate::physics::stages::impulse::FactoredMatrix;
 use crate::physics::stages::projection::{
     projection_inertia_from, total_projection_inertia, ProjectionInertia,
 };
 use crate::physics::stages::unit_impulse::{
-    angular_response, body_unit_response, combine_unit_responses, total_per_unit_impulse,
+    angular_matrix, angular_response, contact_matrix, total_per_unit_impulse,
 };
 use crate::physics::{BodyId, FrictionModel, Real, World};
 
@@ -49,8 +50,9 @@ pub struct FrictionData<T: Real> {
     pub model: FrictionModel,
     pub static_friction: T,
     pub dynamic_friction: T,
-    /// The contact-space 3×3 matrix `M` (velocity change per unit impulse).
-    pub matrix: Matrix3<T>,
+    /// The contact-space 3×3 matrix `M` (velocity change per unit impulse),
+    /// factored once here for every visit of the velocity phase.
+    pub matrix: FactoredMatrix<T>,
 }
 
 /// One contact with the resolver's bookkeeping: what every update reads or
@@ -221,52 +223,44 @@ pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut 
     contacts.extend(world.contacts.iter().map(|contact| {
         let input = &contact.input;
         let slots = contact.slots().map(|id| index[id?.0]);
-        let bodies = &*bodies;
-        let body = |i: usize| slots[i].map(|b| (&bodies[b], &world.bodies[bodies[b].id.0].state));
         // Contact frame (stage 1): basis and arms.
         let (basis, _) = contact_basis(&input.normal);
         let d = input.normal;
-        let r = [0, 1].map(|i| body(i).map(|(b, _)| input.point - b.position));
-        // Velocity change per unit impulse (stage 2), from the bodies'
-        // prepared I⁻¹; the projection's angular inertia is the same number.
-        let responses = [0, 1].map(|i| {
-            let (b, _) = body(i)?;
-            Some(angular_response(&b.inverse_inertia_world, &r[i]?, &d))
-        });
-        let projection = [0, 1].map(|i| {
-            let (b, _) = body(i)?;
-            Some(projection_inertia_from(
-                b.inverse_mass,
-                responses[i].as_ref()?,
-                &r[i]?,
+        let with_friction = input.has_friction();
+        let mut r = [None; 2];
+        let mut projection = [None, None];
+        let mut unit = [None; 2];
+        let mut point_velocity = [None; 2];
+        let mut acceleration = [None; 2];
+        // Σ −[r]× I⁻¹ [r]× over the bodies (only a contact with friction needs it).
+        let mut angular_world = Matrix3::zeros();
+        for (i, slot) in slots.iter().enumerate() {
+            let Some(b) = *slot else { continue };
+            let body = &bodies[b];
+            let state = &world.bodies[body.id.0].state;
+            let arm = input.point - body.position;
+            // Velocity change per unit impulse (stage 2), from the body's
+            // prepared I⁻¹; the projection's angular inertia is the same number.
+            let response = angular_response(&body.inverse_inertia_world, &arm, &d);
+            projection[i] = Some(projection_inertia_from(
+                body.inverse_mass,
+                &response,
+                &arm,
                 &d,
                 &input.settings,
-            ))
-        });
-        let (_, unit_total) = total_per_unit_impulse(
-            &[0, 1].map(|i| Some((body(i)?.0.inverse_mass, responses[i]?.angular))),
-        );
-        // Only a contact with friction builds the 3×3 matrix.
-        let matrix = input.has_friction().then(|| {
-            let bodies = [0, 1].map(|i| {
-                let (b, _) = body(i)?;
-                Some(body_unit_response(
-                    b.inverse_mass,
-                    b.inverse_inertia_world,
-                    r[i]?,
-                    &d,
-                    true,
-                ))
-            });
-            combine_unit_responses(bodies, &basis, true).matrix
-        });
-        // Contact velocity and the acceleration terms (stage 3).
-        let point_velocity = [0, 1].map(|i| {
-            let (_, state) = body(i)?;
-            Some(state.point_velocity(&r[i]?))
-        });
-        let acceleration =
-            relative_acceleration([0, 1].map(|i| body(i).map(|(_, s)| s.acceleration)));
+            ));
+            unit[i] = Some((body.inverse_mass, response.angular));
+            if with_friction {
+                angular_world += angular_matrix(&skew(&arm), &body.inverse_inertia_world);
+            }
+            // Contact velocity and the acceleration terms (stage 3).
+            point_velocity[i] = Some(state.point_velocity(&arm));
+            acceleration[i] = Some(state.acceleration);
+            r[i] = Some(arm);
+        }
+        let (linear, unit_total) = total_per_unit_impulse(&unit);
+        let matrix = with_friction.then(|| contact_matrix(&angular_world, &basis, linear));
+        let acceleration = relative_acceleration(acceleration);
         let duration = contact.duration.unwrap_or(world.step.duration);
         let (velocity_from_acceleration, mut planar) =
             acceleration_terms(&acceleration, &basis, duration);
@@ -274,12 +268,12 @@ pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut 
             planar = Vector3::zeros();
         }
         let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
-        let friction_index = matrix.flatten().map(|matrix| {
+        let friction_index = matrix.map(|matrix| {
             friction.push(FrictionData {
                 model: input.friction_model,
                 static_friction: input.static_friction,
                 dynamic_friction: input.dynamic_friction,
-                matrix,
+                matrix: FactoredMatrix::new(matrix),
             });
             friction.len() - 1
         });

@@ -54,7 +54,7 @@ impl<T: Real> TournamentTree<T> {
         self.nodes.reserve(need.saturating_sub(self.nodes.len()));
     }
 
-    fn key(x: T) -> T {
+    pub(super) fn key(x: T) -> T {
         // NaN is the one value not ordered against itself.
         if x.partial_cmp(&x).is_none() {
             -c::<T>(f64::INFINITY)
@@ -146,6 +146,78 @@ impl<T: Real> TournamentTree<T> {
     }
 }
 
+/// What the indexed resolver asks of its priority queue: refill, the first
+/// contact (largest value, lowest index on ties, NaN last), set a value,
+/// and bring the order up to date after a batch of sets.
+pub trait Queue<T: Real> {
+    fn fill(&mut self, values: impl ExactSizeIterator<Item = T>);
+    fn top(&self) -> Option<(usize, T)>;
+    fn set(&mut self, k: usize, value: T);
+    /// `changed`: the contacts set since the last replay, without repeats
+    /// (used as scratch).
+    fn replay(&mut self, changed: &mut [usize]);
+}
+
+impl<T: Real> Queue<T> for TournamentTree<T> {
+    fn fill(&mut self, values: impl ExactSizeIterator<Item = T>) {
+        TournamentTree::fill(self, values)
+    }
+    fn top(&self) -> Option<(usize, T)> {
+        TournamentTree::top(self)
+    }
+    fn set(&mut self, k: usize, value: T) {
+        TournamentTree::set(self, k, value)
+    }
+    fn replay(&mut self, changed: &mut [usize]) {
+        changed.sort_unstable();
+        TournamentTree::replay(self, changed)
+    }
+}
+
+/// Below [`SCAN_BELOW`] contacts a scan of the values, kept side by side,
+/// finds the first contact faster than replaying the tree's matches: the
+/// same order (largest first, lowest index on ties, NaN last), with nothing
+/// to replay.
+pub const SCAN_BELOW: usize = 64;
+
+#[derive(Debug, Clone)]
+pub struct ScanQueue<T: Real> {
+    keys: Vec<T>,
+}
+
+impl<T: Real> Default for ScanQueue<T> {
+    /// An empty queue that has allocated nothing.
+    fn default() -> Self {
+        ScanQueue { keys: Vec::new() }
+    }
+}
+
+impl<T: Real> ScanQueue<T> {
+    pub fn reserve(&mut self, n: usize) {
+        self.keys.reserve(n.saturating_sub(self.keys.len()));
+    }
+}
+
+impl<T: Real> Queue<T> for ScanQueue<T> {
+    fn fill(&mut self, values: impl ExactSizeIterator<Item = T>) {
+        self.keys.clear();
+        self.keys.extend(values.map(TournamentTree::key));
+    }
+    fn top(&self) -> Option<(usize, T)> {
+        let (mut best, mut key) = (0, *self.keys.first()?);
+        for (i, k) in self.keys.iter().enumerate().skip(1) {
+            if *k > key {
+                (best, key) = (i, *k);
+            }
+        }
+        Some((best, key))
+    }
+    fn set(&mut self, k: usize, value: T) {
+        self.keys[k] = TournamentTree::key(value);
+    }
+    fn replay(&mut self, _changed: &mut [usize]) {}
+}
+
 #[cfg(test)]
 mod tests {
     use super::TournamentTree;
@@ -207,6 +279,36 @@ mod tests {
             batch.replay(&mut changed);
             assert_eq!(one.top(), batch.top());
             assert_eq!(one.nodes, batch.nodes);
+        }
+    }
+
+    #[test]
+    fn the_scan_queue_and_the_tree_take_the_same_contact() {
+        use super::{Queue, ScanQueue};
+        for n in [1usize, 2, 5, 24, 63] {
+            let values: Vec<f64> = (0..n).map(|i| ((i * 37) % 11) as f64).collect();
+            let mut tree = TournamentTree::<f64>::with_capacity(n);
+            let mut queue = ScanQueue::<f64>::default();
+            Queue::fill(&mut tree, values.iter().copied());
+            Queue::fill(&mut queue, values.iter().copied());
+            let mut x = 777u64;
+            for step in 0..500 {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                let k = (x >> 33) as usize % n;
+                // Few distinct values (ties), and now and then a NaN.
+                let v = if step % 17 == 0 {
+                    f64::NAN
+                } else {
+                    ((x >> 13) % 7) as f64 - 2.0
+                };
+                Queue::set(&mut tree, k, v);
+                Queue::set(&mut queue, k, v);
+                Queue::replay(&mut tree, &mut [k]);
+                Queue::replay(&mut queue, &mut [k]);
+                assert_eq!(Queue::top(&tree), Queue::top(&queue), "n = {n}");
+            }
         }
     }
 

@@ -97,19 +97,35 @@ pub fn updated_velocity<T: Real>(
     impulse: &VelocityImpulse<T>,
 ) -> Vector3<T> {
     let mut velocity = c.velocity;
-    for (b, body) in c.bodies.iter().enumerate() {
-        let Some(body) = body else { continue };
-        for (d, changed) in taken.iter().enumerate() {
-            if *changed != Some(*body) {
+    // Body 1 of `c` gains the change, body 2 loses it (`a − b` is `a + (−b)` exactly).
+    let mut add = |b: usize, body: usize, sign_positive: bool| {
+        for (slot, change) in taken.iter().zip(&impulse.bodies) {
+            if *slot != Some(body) {
                 continue;
             }
-            let Some(m) = impulse.bodies[d].as_ref() else {
-                continue;
-            };
-            let delta = m.dv + m.dw.cross(&c.r[b]);
-            let sign = if b == 0 { T::one() } else { -T::one() };
-            velocity += c.basis.tr_mul(&delta) * sign;
+            if let Some(m) = change {
+                let along = to_contact(&c.basis, &(m.dv + m.dw.cross(&c.r[b])));
+                if sign_positive {
+                    velocity += along;
+                } else {
+                    velocity -= along;
+                }
+            }
         }
+    };
+    if let Some(body) = c.bodies[0] {
+        add(0, body, true);
+    }
+    if let Some(body) = c.bodies[1] {
+        add(1, body, false);
     }
     velocity
+}
+
+/// `Cᵀ v`: a world vector in the contact's basis, each component the dot
+/// product of a basis column with `v` (as `tr_mul` forms it, unrolled).
+#[inline]
+fn to_contact<T: Real>(basis: &nalgebra::Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
+    let dot = |k: usize| basis[(0, k)] * v.x + basis[(1, k)] * v.y + basis[(2, k)] * v.z;
+    Vector3::new(dot(0), dot(1), dot(2))
 }

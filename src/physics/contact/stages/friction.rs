@@ -7,7 +7,7 @@
 
 use nalgebra::Vector3;
 
-use super::impulse::solve_matrix;
+use super::impulse::FactoredMatrix;
 use super::{ContactFrame, DesiredVelocity, Impulse, MatrixSolve, UnitImpulse};
 use crate::physics::scale::stable_hypot;
 use crate::physics::{FrictionModel, Problem, Real};
@@ -65,8 +65,8 @@ pub struct ClampInputs<'a, T: Real> {
     pub desired: T,
     /// `Δq̇_t`, for the frictionless fallback.
     pub total: T,
-    /// The 3×3 contact-space matrix `M` (built with friction).
-    pub matrix: Option<&'a nalgebra::Matrix3<T>>,
+    /// The 3×3 contact-space matrix `M` (built with friction), factored.
+    pub matrix: Option<&'a FactoredMatrix<T>>,
     /// The normal impulse `j` the kinetic-direction model scales by.
     pub closed_form_j: T,
     pub contact_to_world: &'a nalgebra::Matrix3<T>,
@@ -88,7 +88,7 @@ pub fn friction_clamp<T: Real>(
         contact_velocity: desired.contact_velocity,
         desired: desired.desired,
         total: unit.total,
-        matrix: unit.matrix.as_ref(),
+        matrix: unit.matrix.map(FactoredMatrix::with_condition).as_ref(),
         closed_form_j: impulse.closed_form_j,
         contact_to_world: &frame.contact_to_world,
     })
@@ -121,8 +121,7 @@ pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
                 out.sized_by = Some(mu_d);
                 let m = input
                     .matrix
-                    .copied()
-                    .unwrap_or_else(nalgebra::Matrix3::identity);
+                    .map_or_else(nalgebra::Matrix3::identity, |m| m.matrix);
                 let (uy, uz) = (g.y / out.planar, g.z / out.planar);
                 let per_unit = m[(0, 0)] + mu_d * (m[(0, 1)] * uy + m[(0, 2)] * uz);
                 out.direction = Vector3::new(T::zero(), uy, uz);
@@ -145,7 +144,7 @@ pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
                 out.sized_by = Some(mu_d);
                 if let Some(m) = input.matrix {
                     let rhs = Vector3::new(input.desired, -mu_d * v.y, -mu_d * v.z);
-                    let (solved, solve) = solve_matrix(m, rhs);
+                    let (solved, solve) = m.solve(rhs);
                     if let Some(solved) = solved {
                         out.impulse_contact = solved;
                     }

@@ -5,7 +5,7 @@
 //! sticking impulse `g = M⁻¹ (Δv, −v_y, −v_z)` that removes all sliding. The
 //! companion lectures' closed form `j` is computed independently as a check.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Cholesky, Matrix3, Vector3, LU, U3};
 
 use super::{ContactFrame, DesiredVelocity, UnitImpulse};
 use crate::physics::{c, FrictionModel, Problem, Real};
@@ -42,38 +42,111 @@ pub fn solve_matrix<T: Real>(
     m: &Matrix3<T>,
     rhs: Vector3<T>,
 ) -> (Option<Vector3<T>>, MatrixSolve<T>) {
-    let eig = m.symmetric_eigenvalues();
-    let (lo, hi) = (eig.min(), eig.max());
-    let condition_number = if lo > T::zero() {
-        hi / lo
-    } else {
-        T::max_value().unwrap_or(hi)
-    };
-    let ill_conditioned = condition_number * T::default_epsilon() > c(1e-3);
-    // κ ε ≥ 1 (or M numerically indefinite): no digit of g would be right,
-    // and an LU solve of such an M can return anything up to inf.
-    let hopeless = condition_number * T::default_epsilon() >= T::one();
-    let mut used_lu = false;
-    let solution = match m.cholesky() {
-        _ if hopeless => None,
-        Some(ch) => Some(ch.solve(&rhs)),
-        None => {
-            used_lu = true;
-            m.lu().solve(&rhs)
+    FactoredMatrix::with_condition(*m).solve(rhs)
+}
+
+/// `M` factored once for any number of right-hand sides. The resolver
+/// solves the same contact's `M` at every visit, so it factors it when it
+/// prepares the contact ([`FactoredMatrix::new`]); a single contact's stage
+/// factors it with the exact condition number it shows
+/// ([`FactoredMatrix::with_condition`]). Both give the same `g` bit for bit.
+#[derive(Debug, Clone)]
+pub struct FactoredMatrix<T: Real> {
+    pub matrix: Matrix3<T>,
+    factor: Factor<T>,
+    /// κ(M) = λ_max / λ_min, or with [`FactoredMatrix::new`] an upper bound
+    /// of it (see there) when the bound already shows κ·ε < 1e-3.
+    condition_number: T,
+}
+
+#[derive(Debug, Clone)]
+enum Factor<T: Real> {
+    Cholesky(Cholesky<T, U3>),
+    /// M is not numerically positive-definite.
+    Lu(LU<T, U3, U3>),
+    /// κ·ε ≥ 1: no digit of g would be right.
+    Hopeless,
+}
+
+/// The factor is a function of the matrix: equal matrices, equal factors.
+impl<T: Real> PartialEq for FactoredMatrix<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.matrix == other.matrix
+    }
+}
+
+impl<T: Real> FactoredMatrix<T> {
+    /// Factors `m` with its exact condition number (symmetric eigenvalues).
+    pub fn with_condition(m: Matrix3<T>) -> Self {
+        let eig = m.symmetric_eigenvalues();
+        let (lo, hi) = (eig.min(), eig.max());
+        let condition_number = if lo > T::zero() {
+            hi / lo
+        } else {
+            T::max_value().unwrap_or(hi)
+        };
+        Self::factor(m, condition_number)
+    }
+
+    /// Factors `m` for solving only: when `‖M‖_F ‖M⁻¹‖_F` (at most 3κ for a
+    /// 3×3 matrix) already shows κ·ε < 1e-3, that bound stands in for κ and
+    /// no eigenvalue is computed; otherwise as [`FactoredMatrix::with_condition`].
+    /// Either way the same factorisation is chosen, so g is the same.
+    pub fn new(m: Matrix3<T>) -> Self {
+        // Only a positive-definite M (Cholesky succeeds) may skip the eigenvalues:
+        // an indefinite M is hopeless however small the bound.
+        let cholesky = m.cholesky();
+        let bound = m
+            .try_inverse()
+            .map(|inverse| m.norm() * inverse.norm())
+            .filter(|b| b.is_finite() && *b * T::default_epsilon() <= c(1e-3));
+        match (cholesky, bound) {
+            (Some(ch), Some(b)) => FactoredMatrix {
+                matrix: m,
+                factor: Factor::Cholesky(ch),
+                condition_number: b,
+            },
+            _ => Self::with_condition(m),
         }
     }
-    .filter(|g| g.iter().all(|x| x.is_finite()));
-    let singular = solution.is_none();
-    (
-        solution,
-        MatrixSolve {
-            rhs,
+
+    fn factor(m: Matrix3<T>, condition_number: T) -> Self {
+        // κ ε ≥ 1 (or M numerically indefinite): no digit of g would be right,
+        // and an LU solve of such an M can return anything up to inf.
+        let factor = if condition_number * T::default_epsilon() >= T::one() {
+            Factor::Hopeless
+        } else {
+            match m.cholesky() {
+                Some(ch) => Factor::Cholesky(ch),
+                None => Factor::Lu(m.lu()),
+            }
+        };
+        FactoredMatrix {
+            matrix: m,
+            factor,
             condition_number,
-            ill_conditioned,
-            used_lu,
-            singular,
-        },
-    )
+        }
+    }
+
+    /// `g = M⁻¹ rhs` (None when M cannot be solved or g is not finite).
+    pub fn solve(&self, rhs: Vector3<T>) -> (Option<Vector3<T>>, MatrixSolve<T>) {
+        let solution = match &self.factor {
+            Factor::Hopeless => None,
+            Factor::Cholesky(ch) => Some(ch.solve(&rhs)),
+            Factor::Lu(lu) => lu.solve(&rhs),
+        }
+        .filter(|g| g.iter().all(|x| x.is_finite()));
+        (
+            solution,
+            MatrixSolve {
+                rhs,
+                condition_number: self.condition_number,
+                ill_conditioned: self.condition_number * T::default_epsilon() > c(1e-3),
+                used_lu: matches!(self.factor, Factor::Lu(_)),
+                singular: solution.is_none(),
+            },
+        )
+    }
 }
 
 /// The closed form of the companion lectures (seeds 002/003), evaluated with
@@ -102,7 +175,7 @@ pub fn impulse_contact<T: Real>(
     desired: T,
     contact_velocity: &Vector3<T>,
     total: T,
-    matrix: Option<&Matrix3<T>>,
+    matrix: Option<&FactoredMatrix<T>>,
     sticking: bool,
 ) -> (Vector3<T>, Option<MatrixSolve<T>>) {
     let normal_only = Vector3::new(desired / total, T::zero(), T::zero());
@@ -110,7 +183,7 @@ pub fn impulse_contact<T: Real>(
         (true, Some(m)) => {
             let v = contact_velocity;
             let rhs = Vector3::new(desired, -v.y, -v.z);
-            let (g, solve) = solve_matrix(m, rhs);
+            let (g, solve) = m.solve(rhs);
             (g.unwrap_or(normal_only), Some(solve))
         }
         _ => (normal_only, None),
@@ -133,7 +206,7 @@ pub fn impulse<T: Real>(
         desired.desired,
         &desired.contact_velocity,
         unit.total,
-        unit.matrix.as_ref(),
+        unit.matrix.map(FactoredMatrix::with_condition).as_ref(),
         sticking_model(&problem.contact),
     );
     let closed_form_j = closed_form_j(problem, frame, desired);
@@ -149,5 +222,50 @@ pub fn impulse<T: Real>(
         solve,
         closed_form_j,
         closed_form_relative_difference,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation3;
+
+    /// `R diag(λ) Rᵀ`: a symmetric matrix with chosen eigenvalues.
+    fn with_eigenvalues<T: Real>(l: [f64; 3], angle: f64) -> Matrix3<T> {
+        let r = Rotation3::from_euler_angles(angle, 0.7 * angle, -0.3 * angle).into_inner();
+        let m = r * Matrix3::from_diagonal(&Vector3::from(l)) * r.transpose();
+        m.map(c::<T>)
+    }
+
+    fn same_g<T: Real>(m: Matrix3<T>, rhs: Vector3<T>) {
+        let (fast, fast_solve) = FactoredMatrix::new(m).solve(rhs);
+        let (exact, exact_solve) = FactoredMatrix::with_condition(m).solve(rhs);
+        assert_eq!(fast, exact, "g of {m}");
+        assert_eq!(fast_solve.singular, exact_solve.singular);
+        assert_eq!(fast_solve.used_lu, exact_solve.used_lu);
+        // The fast factor's κ is an upper bound, at most 3κ, when it stands in.
+        assert!(fast_solve.condition_number >= exact_solve.condition_number * c(0.999));
+    }
+
+    #[test]
+    fn factoring_for_solving_gives_the_same_g_as_with_the_condition_number() {
+        let rhs = Vector3::new(0.3, -1.2, 2.5);
+        let cases = [
+            [1.0, 2.0, 3.0],   // well-conditioned
+            [1e-3, 1.0, 5.0],  // κ 5e3
+            [1e-12, 1.0, 1.0], // ill-conditioned (κ ε ≈ 2e-4 .. 1e-3)
+            [1e-14, 1.0, 2.0], // ill-conditioned beyond the bound's reach
+            [1e-17, 1.0, 1.0], // hopeless: κ ε ≥ 1
+            [-1.0, 1.0, 2.0],  // indefinite: hopeless however small the bound
+            [0.0, 1.0, 1.0],   // singular
+        ];
+        for (i, l) in cases.iter().enumerate() {
+            let angle = 0.4 + i as f64;
+            same_g::<f64>(with_eigenvalues(*l, angle), rhs);
+            same_g::<f32>(with_eigenvalues(*l, angle), rhs.map(c::<f32>));
+        }
+        // The lecture's own matrices are far from any boundary: the bound stands in.
+        let m = with_eigenvalues::<f64>([1.0, 2.0, 3.0], 0.4);
+        assert!(FactoredMatrix::new(m).solve(rhs).1.condition_number <= 9.0);
     }
 }

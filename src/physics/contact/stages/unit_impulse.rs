@@ -98,7 +98,7 @@ pub fn body_unit_response<T: Real>(
         angular,
     } = angular_response(&inverse_inertia_world, &r, d);
     let skew_r = skew(&r);
-    let angular_matrix_world = with_matrix.then(|| -(skew_r * inverse_inertia_world * skew_r));
+    let angular_matrix_world = with_matrix.then(|| angular_matrix(&skew_r, &inverse_inertia_world));
     BodyUnitResponse {
         inverse_mass,
         inverse_inertia_world,
@@ -109,6 +109,25 @@ pub fn body_unit_response<T: Real>(
         skew_r,
         angular_matrix_world,
     }
+}
+
+/// One body's angular part of the world-space response matrix, `−[r]× I⁻¹ [r]×`.
+pub fn angular_matrix<T: Real>(
+    skew_r: &Matrix3<T>,
+    inverse_inertia_world: &Matrix3<T>,
+) -> Matrix3<T> {
+    -(skew_r * inverse_inertia_world * skew_r)
+}
+
+/// The contact-space matrix `M = Cᵀ W C + (Σ 1/m)·𝟙` from the bodies' summed
+/// angular parts `W` (velocity change per unit impulse, contact space).
+pub fn contact_matrix<T: Real>(
+    angular_world: &Matrix3<T>,
+    contact_to_world: &Matrix3<T>,
+    linear: T,
+) -> Matrix3<T> {
+    let c = contact_to_world;
+    c.transpose() * angular_world * c + Matrix3::identity() * linear
 }
 
 /// The two bodies' responses summed: `Δq̇_t` and, with friction, the
@@ -129,8 +148,7 @@ pub fn combine_unit_responses<T: Real>(
             .flatten()
             .filter_map(|b| b.angular_matrix_world)
             .fold(Matrix3::zeros(), |s, m| s + m);
-        let c = contact_to_world;
-        c.transpose() * world * c + Matrix3::identity() * linear
+        contact_matrix(&world, contact_to_world, linear)
     });
     UnitImpulse {
         bodies,

@@ -77,7 +77,7 @@ impl<T: Real> State<T> {
         self.inverse.extend(
             friction
                 .iter()
-                .map(|f| f.matrix.cholesky().map(|ch| ch.inverse())),
+                .map(|f| f.matrix.matrix.cholesky().map(|ch| ch.inverse())),
         );
     }
 }
