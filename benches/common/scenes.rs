@@ -1,6 +1,11 @@
 //! Scenes the simulation benches share: an embedded scene and a pile of
 //! spheres, with sleep off so every step does the full work, the resolver
-//! settings given by the caller, warmed up before timing.
+//! settings given by the caller, warmed up before timing; and a timer that
+//! restarts a scene every `span` steps, so a stack is timed while it stands
+//! (the lecture's resolver lets `stack-5` fall after about 19 s without sleep,
+//! and a fallen stack is far cheaper than a standing one).
+
+use std::time::{Duration, Instant};
 
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::params::Material;
@@ -77,4 +82,22 @@ pub fn pile(n: usize, resolver: impl Fn(&mut ResolverParams)) -> Simulation<f64>
         step: Default::default(),
     };
     warmed(Simulation::new(world, params, materials), 30)
+}
+
+/// Times `iters` steps of `start`, started again from a copy every `span`
+/// steps (the copies are not timed): for `Bencher::iter_custom`.
+pub fn time_steps(start: &Simulation<f64>, span: usize, iters: u64) -> Duration {
+    let mut total = Duration::ZERO;
+    let mut left = iters;
+    while left > 0 {
+        let mut sim = start.clone();
+        let n = left.min(span as u64);
+        let t = Instant::now();
+        for _ in 0..n {
+            sim.advance().unwrap();
+        }
+        total += t.elapsed();
+        left -= n;
+    }
+    total
 }
