@@ -109,7 +109,7 @@ const NORMALS: [[f64; 3]; 6] = [
     [0.48, 0.6, 0.64],
 ];
 
-fn spec() -> impl Strategy<Value = Spec> {
+fn spec_of(contacts: std::ops::Range<usize>) -> impl Strategy<Value = Spec> {
     let body = (
         prop::bool::weighted(0.8),
         0.2..5.0f64,
@@ -120,9 +120,6 @@ fn spec() -> impl Strategy<Value = Spec> {
         prop::array::uniform3(-1.0..1.0f64),
         prop::bool::weighted(0.3),
     );
-    // Below 64 contacts the indexed resolver scans its values, from 64 on it
-    // uses the tournament tree: both sizes are drawn.
-    let contacts = prop_oneof![3 => 1..24usize, 1 => 64..90usize];
     (prop::collection::vec(body, 1..7), contacts).prop_flat_map(|(bodies, n)| {
         let nb = bodies.len();
         let contact = (
@@ -251,24 +248,46 @@ fn world(spec: &Spec) -> World<f64> {
     }
 }
 
+/// Scenes of up to 23 contacts: the indexed resolver scans its values.
+fn spec() -> impl Strategy<Value = Spec> {
+    spec_of(1..24)
+}
+
+/// Resolves `spec` with both implementations: the same contacts taken, the same bits left.
+fn same_bits(spec: &Spec) -> Result<(), TestCaseError> {
+    let w = world(spec);
+    let params = ResolverParams {
+        restitution_from: spec.restitution_from,
+        ..ResolverParams::default()
+    };
+    let mut scan_log = Log::default();
+    let (scan, scan_out) = Resolver::resolve(&w, &params, Implementation::Scan, &mut scan_log);
+    let mut indexed_log = Log::default();
+    let (indexed, indexed_out) =
+        Resolver::resolve(&w, &params, Implementation::Indexed, &mut indexed_log);
+    prop_assert_eq!(&scan_log, &indexed_log);
+    prop_assert_eq!(state(&scan), state(&indexed));
+    // Debug text, so that a NaN left by a runaway scene compares equal to itself.
+    prop_assert_eq!(format!("{scan_out:?}"), format!("{indexed_out:?}"));
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(400))]
 
     #[test]
     fn scan_and_indexed_take_the_same_contacts_and_leave_the_same_bits(spec in spec()) {
-        let w = world(&spec);
-        let params = ResolverParams {
-            restitution_from: spec.restitution_from,
-            ..ResolverParams::default()
-        };
-        let mut scan_log = Log::default();
-        let (scan, scan_out) = Resolver::resolve(&w, &params, Implementation::Scan, &mut scan_log);
-        let mut indexed_log = Log::default();
-        let (indexed, indexed_out) =
-            Resolver::resolve(&w, &params, Implementation::Indexed, &mut indexed_log);
-        prop_assert_eq!(&scan_log, &indexed_log);
-        prop_assert_eq!(state(&scan), state(&indexed));
-        prop_assert_eq!(scan_out, indexed_out);
+        same_bits(&spec)?;
+    }
+}
+
+proptest! {
+    // From 64 contacts on the indexed resolver uses its tournament tree.
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn with_the_tournament_tree_too(spec in spec_of(64..90)) {
+        same_bits(&spec)?;
     }
 }
 

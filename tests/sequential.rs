@@ -232,6 +232,9 @@ fn the_stack_the_benches_time_stands_under_two_solvers_and_falls_under_one() {
     let warm = top_after(Solver::SequentialImpulse, true);
     let cold = top_after(Solver::SequentialImpulse, false);
     assert!(lecture > 4.4, "deepest-first: top box at {lecture} m");
-    assert!(warm > 4.4, "warm-started sequential impulses: top box at {warm} m");
+    assert!(
+        warm > 4.4,
+        "warm-started sequential impulses: top box at {warm} m"
+    );
     assert!(cold < 1.0, "cold sequential impulses: top box at {cold} m");
 }

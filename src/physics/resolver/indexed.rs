@@ -1,5 +1,6 @@
 //! The indexed resolver: the same contacts in the same order as the scan
-//! ([`super::scan`]), found with a priority queue (a tournament tree:
+//! ([`super::scan`]), found with a priority queue (below 64 contacts a scan
+//! of the values kept side by side, from there on a tournament tree:
 //! largest value first, lowest index on ties, [`super::queue`]) and updated
 //! through the body → contacts adjacency,
 //! so an iteration touches only the contacts of the bodies it moved. The
@@ -13,8 +14,9 @@
 //! exact.
 
 use super::observer::Observer;
+use super::phase::{PhaseWork, Positions, Velocities};
 use super::queue::{Queue, SCAN_BELOW};
-use super::{position, velocity, Phase, PhaseOutcome, Resolver};
+use super::{PhaseOutcome, Resolver};
 use crate::physics::Real;
 
 /// Marks each contact of the taken contact's bodies once per iteration and
@@ -36,111 +38,67 @@ pub(super) fn each_neighbour<T: Real>(
     }
 }
 
-/// Runs `phase` with the scan queue below [`SCAN_BELOW`] contacts, the
-/// tournament tree from there on (both give the same order).
-macro_rules! with_queue {
-    ($r:expr, $obs:expr, $phase:ident) => {
-        if $r.contacts.len() < SCAN_BELOW {
-            let mut queue = std::mem::take(&mut $r.scan_queue);
-            let outcome = $phase($r, $obs, &mut queue);
-            $r.scan_queue = queue;
-            outcome
-        } else {
-            let mut queue = std::mem::take(&mut $r.queue);
-            let outcome = $phase($r, $obs, &mut queue);
-            $r.queue = queue;
-            outcome
-        }
-    };
-}
-
 pub fn position_phase<T: Real, O: Observer<T>>(
     r: &mut Resolver<T>,
     obs: &mut O,
 ) -> PhaseOutcome<T> {
-    with_queue!(r, obs, position_phase_with)
+    with_queue::<T, O, Positions>(r, obs)
 }
 
 pub fn velocity_phase<T: Real, O: Observer<T>>(
     r: &mut Resolver<T>,
     obs: &mut O,
 ) -> PhaseOutcome<T> {
-    with_queue!(r, obs, velocity_phase_with)
+    with_queue::<T, O, Velocities>(r, obs)
 }
 
-fn position_phase_with<T: Real, O: Observer<T>, Q: Queue<T>>(
+/// Runs the phase with the scan queue below [`SCAN_BELOW`] contacts, the
+/// tournament tree from there on (both give the same order).
+fn with_queue<T: Real, O: Observer<T>, W: PhaseWork<T>>(
+    r: &mut Resolver<T>,
+    obs: &mut O,
+) -> PhaseOutcome<T> {
+    if r.contacts.len() < SCAN_BELOW {
+        let mut queue = std::mem::take(&mut r.scan_queue);
+        let outcome = phase::<T, O, W, _>(r, obs, &mut queue);
+        r.scan_queue = queue;
+        outcome
+    } else {
+        let mut queue = std::mem::take(&mut r.queue);
+        let outcome = phase::<T, O, W, _>(r, obs, &mut queue);
+        r.queue = queue;
+        outcome
+    }
+}
+
+fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>, Q: Queue<T>>(
     r: &mut Resolver<T>,
     obs: &mut O,
     queue: &mut Q,
 ) -> PhaseOutcome<T> {
-    let (limit, epsilon) = r.limits(Phase::Position);
-    queue.fill(r.contacts.iter().map(|c| c.penetration));
+    let (limit, epsilon) = r.limits(W::PHASE);
+    queue.fill(r.contacts.iter().map(W::value));
     let mut used = 0;
     while used < limit {
-        let Some((k, penetration)) = queue.top().filter(|(_, v)| *v > epsilon) else {
+        let Some((k, value)) = queue.top().filter(|(_, v)| *v > epsilon) else {
             break;
         };
-        obs.before_position(used, k, &r.bodies);
         let taken = r.contacts[k].bodies;
-        let moves = position::take(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
-        obs.position_taken(used, k, penetration, &moves);
+        let change = W::take(r, used, k, value, obs);
         r.stamp += 1;
         let stamp = r.stamp;
         let mut changed = std::mem::take(&mut r.changed);
         changed.clear();
         each_neighbour(r, taken, stamp, |r, j| {
-            let c = &mut r.contacts[j];
-            let from = c.penetration;
-            c.penetration = position::updated_penetration(c, &taken, &moves);
-            if !(from <= epsilon && c.penetration <= epsilon) {
-                queue.set(j, c.penetration);
+            let (before, after) = W::update(r, j, &taken, &change, obs);
+            if !(before <= epsilon && after <= epsilon) {
+                queue.set(j, after);
                 changed.push(j);
             }
-            obs.penetration_updated(j, from, c.penetration);
         });
         queue.replay(&mut changed);
         r.changed = changed;
         used += 1;
     }
-    r.finish(Phase::Position, used, obs)
-}
-
-fn velocity_phase_with<T: Real, O: Observer<T>, Q: Queue<T>>(
-    r: &mut Resolver<T>,
-    obs: &mut O,
-    queue: &mut Q,
-) -> PhaseOutcome<T> {
-    let (limit, epsilon) = r.limits(Phase::Velocity);
-    let from = r.params.restitution_from;
-    queue.fill(r.contacts.iter().map(|c| c.desired));
-    let mut used = 0;
-    while used < limit {
-        let Some((k, desired)) = queue.top().filter(|(_, v)| *v > epsilon) else {
-            break;
-        };
-        obs.before_velocity(used, k, &r.bodies);
-        let taken = r.contacts[k].bodies;
-        let friction = r.setups[k].friction.map(|f| &r.friction[f]);
-        let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
-        obs.velocity_taken(used, k, desired, &impulse);
-        r.stamp += 1;
-        let stamp = r.stamp;
-        let mut changed = std::mem::take(&mut r.changed);
-        changed.clear();
-        each_neighbour(r, taken, stamp, |r, j| {
-            let c = &mut r.contacts[j];
-            let before = c.desired;
-            c.velocity = velocity::updated_velocity(c, &taken, &impulse);
-            c.desired = super::desired_of(c, from);
-            if !(before <= epsilon && c.desired <= epsilon) {
-                queue.set(j, c.desired);
-                changed.push(j);
-            }
-            obs.desired_updated(j, before, c.desired);
-        });
-        queue.replay(&mut changed);
-        r.changed = changed;
-        used += 1;
-    }
-    r.finish(Phase::Velocity, used, obs)
+    r.finish(W::PHASE, used, obs)
 }

@@ -20,6 +20,7 @@
 pub mod checks;
 pub mod indexed;
 pub mod observer;
+mod phase;
 pub mod position;
 pub mod prepare;
 pub mod queue;
