@@ -203,16 +203,16 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
     for (s, dashed) in &shapes {
         c.polygon(s, *dashed);
     }
-    // The world's surface (and any half-space) through the contact point,
-    // across the normal, a scene length each way.
-    for s in &fig.surfaces {
-        let k = &fig.contacts[s.contact];
-        let (q, n) = (flat(k.point), flat(k.normal));
-        let along = [-n[1], n[0]];
-        if along[0].hypot(along[1]) > 1e-9 {
-            let a = [q[0] - along[0] * reach, q[1] - along[1] * reach];
-            let b = [q[0] + along[0] * reach, q[1] + along[1] * reach];
-            c.line(a, b);
+    // The world's surface (and any half-space) where it meets the view
+    // plane, a scene length each way, with ticks on the solid side; none
+    // when it faces the viewer.
+    for s in fig.surfaces.iter().filter_map(|s| s.section.as_ref()) {
+        let (q, t, d) = (s.at, s.along, s.solid_side);
+        let at = |u: f64, v: f64| [q[0] + u * t[0] + v * d[0], q[1] + u * t[1] + v * d[1]];
+        c.line(at(-reach, 0.0), at(reach, 0.0));
+        for i in -4..=4 {
+            let u = 0.25 * reach * f64::from(i);
+            c.line(at(u, 0.0), at(u - 0.12 * reach, 0.12 * reach));
         }
     }
     for (from, to, dashed, head, label) in &arrows {

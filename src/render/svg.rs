@@ -63,6 +63,11 @@ fn fit(fig: &Figure, arrows: &[PageArrow]) -> View {
         points.push(flat(q));
         points.push([q[0] + -0.4 * reach * n[0], q[1] + -0.4 * reach * n[1]]);
     }
+    for s in fig.surfaces.iter().filter_map(|s| s.section.as_ref()) {
+        let (at, d) = (s.at, s.solid_side);
+        points.push(at);
+        points.push([at[0] + 0.4 * reach * d[0], at[1] + 0.4 * reach * d[1]]);
+    }
     for b in &fig.bodies {
         points.push(flat(b.centre));
         let mut poses = vec![b.outline.as_ref()];
@@ -135,9 +140,10 @@ fn header(p: &mut Page, trace: &Trace, plane: Plane) {
 fn bodies(p: &mut Page, fig: &Figure) {
     let reach = fig.scene_length;
     for s in &fig.surfaces {
-        let c = &fig.contacts[s.contact];
         let name = s.body.map_or("the world", |b| &fig.bodies[b].name);
-        p.surface(flat(c.point), flat(c.normal), s.solid, name, reach);
+        if let Some(section) = &s.section {
+            p.surface(section, name, reach);
+        }
     }
     for b in &fig.bodies {
         let fill = if b.movable {

@@ -10,11 +10,13 @@ mod model;
 mod outline;
 mod stage;
 #[cfg(test)]
+mod surface_tests;
+#[cfg(test)]
 mod tests;
 
 pub use model::{
     flat, Arrow, ArrowKind, BodyMarks, Bounds, ContactMarks, Figure, Ink, LegendItem, Point,
-    PointKind, Span, Spin, Surface, P, ROUND_OFF_MOVE, V,
+    PointKind, Section, Span, Spin, Surface, FACE_ON, P, ROUND_OFF_MOVE, V,
 };
 pub use outline::{hull, outline, spin_arc_radius, surface_distance, Outline, Silhouette};
 

@@ -141,8 +141,9 @@ pub struct ContactMarks {
     pub label: String,
 }
 
-/// The plane through a contact point perpendicular to its normal, where a
-/// half-space body (or the immovable world) meets the other body.
+/// A half-space body's own plane (through its position, across its
+/// normal), or for the immovable world of a one-body contact the plane
+/// through the contact point across d̂: where it meets the other body.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Surface {
     pub contact: usize,
@@ -151,7 +152,28 @@ pub struct Surface {
     /// +1 when the solid side lies along +d̂ (a half-space as body 1),
     /// −1 along −d̂ (body 2 and the world).
     pub solid: f64,
+    /// Where the surface meets the view plane through the contact point;
+    /// `None` when the view plane is (nearly) parallel to the surface, which
+    /// is then seen face on and not drawn.
+    pub section: Option<Section>,
 }
+
+/// A surface seen edge on: the line where it meets the view plane through
+/// the contact point (depth `q_w`): `n_u u + n_v v = n·p₀ − n_w q_w` for a
+/// plane through p₀ with outward normal n.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Section {
+    /// The point of the line nearest the contact point.
+    pub at: P,
+    /// Unit direction of the line.
+    pub along: P,
+    /// Unit direction, across the line, toward the solid side (for hatching).
+    pub solid_side: P,
+}
+
+/// A surface whose normal has less than this share in the view plane is
+/// taken as facing the viewer (about 11.5° from the view plane or less).
+pub const FACE_ON: f64 = 0.2;
 
 /// What an arrow shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -4,7 +4,7 @@
 
 use std::fmt::Write;
 
-use crate::render::figure::{Ink, Silhouette, P, V};
+use crate::render::figure::{Ink, Section, Silhouette, P, V};
 
 pub const WIDTH: f64 = 1280.0;
 pub const HEIGHT: f64 = 720.0;
@@ -372,21 +372,23 @@ impl Page {
         );
     }
 
-    /// The plane through `q` perpendicular to `normal` (both in the view
-    /// plane), hatched on the `solid` side (+1: along the normal), named.
-    pub fn surface(&mut self, q: P, normal: P, solid: f64, name: &str, reach: f64) {
-        let len = (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
-        if len < 0.2 {
-            return;
-        }
-        let d = (normal[0] / len * solid, normal[1] / len * solid);
-        let t = (-d.1, d.0);
+    /// A surface seen edge on: its line in the view plane, hatched on the
+    /// solid side, named.
+    pub fn surface(&mut self, s: &Section, name: &str, reach: f64) {
+        let (q, d) = (s.at, s.solid_side);
+        let t = [-d[1], d[0]];
         let far = 10.0 * reach;
         let corners = [
-            [q[0] + far * t.0, q[1] + far * t.1],
-            [q[0] - far * t.0, q[1] - far * t.1],
-            [q[0] - far * t.0 + far * d.0, q[1] - far * t.1 + far * d.1],
-            [q[0] + far * t.0 + far * d.0, q[1] + far * t.1 + far * d.1],
+            [q[0] + far * t[0], q[1] + far * t[1]],
+            [q[0] - far * t[0], q[1] - far * t[1]],
+            [
+                q[0] - far * t[0] + far * d[0],
+                q[1] - far * t[1] + far * d[1],
+            ],
+            [
+                q[0] + far * t[0] + far * d[0],
+                q[1] + far * t[1] + far * d[1],
+            ],
         ];
         let pts = self.points(&corners);
         let (a, b) = (self.view.page(corners[0]), self.view.page(corners[1]));
@@ -402,8 +404,8 @@ impl Page {
             c(b[1])
         );
         let label = self.view.page([
-            q[0] + 0.9 * reach * t.0 + 0.25 * reach * d.0,
-            q[1] + 0.9 * reach * t.1 + 0.25 * reach * d.1,
+            q[0] + 0.9 * reach * t[0] + 0.25 * reach * d[0],
+            q[1] + 0.9 * reach * t[1] + 0.25 * reach * d[1],
         ]);
         let name = format!("{name} (m = ∞)");
         self.label(label, 20.0, "middle", "normal", INK, &name);
