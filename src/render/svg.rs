@@ -6,6 +6,7 @@
 //! When the `exact_impact` stage ran, the impulse-space figure
 //! ([`crate::render::impact`]) goes below it, on a taller page.
 
+mod labels;
 mod legend;
 mod page;
 
@@ -179,6 +180,8 @@ fn bodies(p: &mut Page, fig: &Figure) {
                 c(to[1]),
                 &MOVED[1..]
             );
+            p.stroke(from, to, 2.5);
+            p.stroke_head(from, to, 2.5);
         }
     }
 }
@@ -196,6 +199,7 @@ fn points(p: &mut Page, fig: &Figure) {
                     c(at[0]),
                     c(at[1])
                 );
+                p.stroke_circle(at, 2.5, 5.0);
                 let label = if b.movable {
                     format!("{} {}", point.label, b.name)
                 } else {
@@ -218,6 +222,7 @@ fn points(p: &mut Page, fig: &Figure) {
                     c(at[1]),
                     colour(crate::render::figure::Ink::Point)
                 );
+                p.stroke_circle(at, 4.0, 8.0);
                 // The label sits along the contact plane, away from the normal and the impulse.
                 let d = flat(fig.contacts[contact].normal);
                 let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
@@ -260,6 +265,8 @@ pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::Stag
         out: String::new(),
         placed: vec![],
         pending: vec![],
+        strokes: vec![],
+        moved: vec![],
     };
     header(&mut p, trace, plane);
     // Everything drawn stays in the drawing area, however far a value reaches.

@@ -155,4 +155,25 @@ pub fn legend(page: &mut Page, fig: &Figure) {
             }
         }
     }
+    // Labels with no free place in the drawing, by their markers.
+    let moved = std::mem::take(&mut out.page.moved);
+    if !moved.is_empty() {
+        out.y += 6.0;
+        out.line(None, "Labels with no room in the drawing:");
+    }
+    for (mark, text, fill) in &moved {
+        let line = match mark {
+            Some(mark) => format!("{mark} {text}"),
+            None => text.clone(),
+        };
+        let _ = writeln!(
+            out.page.out,
+            r#"  <text x="{}" y="{}" font-size="16" font-weight="bold" fill="{}">{}</text>"#,
+            c(out.x0),
+            c(out.y),
+            xml(fill),
+            xml(&line)
+        );
+        out.y += 25.0;
+    }
 }
