@@ -49,6 +49,27 @@ pub struct Lesson {
     pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
+    /// `[figure]`: how the pictures correct the lesson's geometry, if at all.
+    pub figure: Option<FigureDef>,
+}
+
+/// A figure-only correction of a lesson's geometry: the pictures (SVG, TUI,
+/// LaTeX) draw these shapes and orientations and quote the note; the stages
+/// compute with the lesson's own values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FigureDef {
+    pub note: String,
+    pub bodies: Vec<DrawnBody>,
+}
+
+/// One body as a [`FigureDef`] draws it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DrawnBody {
+    /// Index into [`Lesson::bodies`].
+    pub body: usize,
+    pub shape: Option<Shape>,
+    /// Unit quaternion `[w, x, y, z]`.
+    pub orientation: Option<[f64; 4]>,
 }
 
 #[derive(Debug, Clone, PartialEq)]

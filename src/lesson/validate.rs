@@ -2,6 +2,7 @@
 //! offending value; all errors of a file are reported together.
 
 mod body;
+mod figure;
 mod resolver;
 mod simulation;
 
@@ -226,6 +227,7 @@ impl Validator {
             .iter()
             .filter_map(|p| self.printed(p, raw.contacts.len()))
             .collect();
+        let figure = raw.figure.as_ref().map(|f| self.figure(f, &index));
         Lesson {
             id: raw.id.into_inner(),
             title: raw.title.into_inner(),
@@ -242,6 +244,7 @@ impl Validator {
             simulation,
             resolver,
             warnings: Vec::new(),
+            figure,
         }
     }
 

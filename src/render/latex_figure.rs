@@ -239,6 +239,11 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
         c.label(flat(p.at), &p.label);
     }
     c.out.push_str("\\end{picture}\n\n");
-    c.out.push_str("{\\footnotesize Dashed: arms $r$, velocities before $v$ and, when projection moves a body, its outline after; solid: velocities after $v'$, the normal $\\hat{d}$ and the impulse $g$ on body 1 (velocities and impulse to scales of their own; the xy plane).}\n\\end{center}\n");
+    c.out.push_str("{\\footnotesize Dashed: arms $r$, velocities before $v$ and, when projection moves a body, its outline after; solid: velocities after $v'$, the normal $\\hat{d}$ and the impulse $g$ on body 1 (velocities and impulse to scales of their own; the xy plane).");
+    if let Some(note) = &fig.corrected {
+        c.out.push(' ');
+        c.out.push_str(&crate::trace::latex::prose(note));
+    }
+    c.out.push_str("}\n\\end{center}\n");
     Some(c.out)
 }

@@ -51,6 +51,7 @@ pub(super) fn build(bodies: &[&BodyView], contacts: &[ContactView], plane: Plane
         spins: vec![],
         points: vec![],
         legend: vec![],
+        corrected: None,
         bounds: Bounds::default(),
         scene_length: 1.0,
         top_speed: marks

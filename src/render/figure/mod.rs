@@ -36,6 +36,7 @@ impl Figure {
             .bodies
             .map(|b| b.and_then(|b| shown.iter().position(|i| *i == b)));
         let mut f = build::build(&bodies, &[contact], plane);
+        f.corrected.clone_from(&scene.corrected);
         f.prune_legend();
         f
     }

@@ -63,6 +63,9 @@ pub struct Figure {
     pub scene_length: f64,
     /// The fastest speed of any body, before or after.
     pub top_speed: f64,
+    /// The lesson's note when the bodies are drawn with its `[figure]`
+    /// geometry, corrected from the lecture's (the numbers stay the lecture's).
+    pub corrected: Option<String>,
 }
 
 impl Figure {

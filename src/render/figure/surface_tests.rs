@@ -43,6 +43,7 @@ fn on_slope() -> SceneView {
         normal: [0.0, 0.6, 0.8],
         penetration: 0.0,
         impulse: None,
+        corrected: None,
     }
 }
 

@@ -195,6 +195,7 @@ fn cube_on_floor() -> SceneView {
         normal: [0.0, 1.0, 0.0],
         penetration: 0.5,
         impulse: Some([0.0, 18.0, 0.0]),
+        corrected: None,
     }
 }
 

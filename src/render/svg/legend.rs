@@ -155,6 +155,13 @@ pub fn legend(page: &mut Page, fig: &Figure) {
             }
         }
     }
+    // The lesson's figure-only correction of the lecture's geometry.
+    if let Some(note) = &fig.corrected {
+        out.y += 6.0;
+        for line in wrap(note, 40) {
+            out.line(None, &line);
+        }
+    }
     // Labels with no free place in the drawing, by their markers.
     let moved = std::mem::take(&mut out.page.moved);
     if !moved.is_empty() {
@@ -176,4 +183,20 @@ pub fn legend(page: &mut Page, fig: &Figure) {
         );
         out.y += 25.0;
     }
+}
+
+/// Words of `text` in lines of at most `width` characters (a longer word
+/// has a line of its own).
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = vec![];
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= width => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }
