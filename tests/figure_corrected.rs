@@ -110,3 +110,26 @@ fn every_figure_format_says_the_geometry_is_corrected() {
     let svg = contact_lab::render::svg::render(&trace("lecture-2"), Plane::Xy);
     assert!(!svg.contains("corrected geometry"));
 }
+
+#[test]
+fn the_latex_figure_draws_a_sphere_as_a_ring() {
+    // 24 rim pieces a sphere; a circle was once drawn as its bounding box's
+    // diagonal, there and back.
+    let t = trace("lecture-1");
+    let tex = contact_lab::render::latex_figure::picture(&t.scene, None).unwrap();
+    let pieces: Vec<(String, String)> = tex
+        .lines()
+        .filter_map(|l| {
+            let l = l.strip_prefix("\\qbezier(")?;
+            let parts: Vec<&str> = l.trim_end_matches(')').split(")(").collect();
+            Some((parts[0].to_string(), parts[2].to_string()))
+        })
+        .collect();
+    assert!(pieces.len() >= 48, "{}", pieces.len());
+    for (a, b) in &pieces {
+        assert!(
+            !pieces.contains(&(b.clone(), a.clone())),
+            "{a} – {b} drawn there and back"
+        );
+    }
+}

@@ -7,7 +7,7 @@
 use std::fmt::Write;
 
 use crate::physics::StageId;
-use crate::render::figure::{flat, ArrowKind, Figure, P};
+use crate::render::figure::{flat, ArrowKind, Figure, Silhouette, P};
 use crate::trace::latex::to_latex;
 use crate::trace::{Plane, SceneView};
 
@@ -111,6 +111,19 @@ impl Canvas {
     }
 }
 
+/// The outline to draw: a polygon's corners, a circle's 24 rim points.
+fn ring(s: &Silhouette) -> Vec<P> {
+    match s {
+        Silhouette::Polygon(p) => p.clone(),
+        Silhouette::Circle { centre, radius } => (0..24)
+            .map(|i| {
+                let a = std::f64::consts::TAU * f64::from(i) / 24.0;
+                [centre[0] + radius * a.cos(), centre[1] + radius * a.sin()]
+            })
+            .collect(),
+    }
+}
+
 /// The figure of a contact (xy plane) as `stage` sees it (every mark when
 /// `None`), in a `picture` environment with a one-line key under it; `None`
 /// when there is nothing to draw.
@@ -153,10 +166,10 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
     for b in &fig.bodies {
         points.push(flat(b.centre));
         if let Some(o) = &b.outline {
-            shapes.push((o.silhouette.points(), false));
+            shapes.push((ring(&o.silhouette), false));
         }
         if let Some(o) = b.outline_after.as_ref().filter(|_| !fig.beyond(b)) {
-            shapes.push((o.silhouette.points(), true));
+            shapes.push((ring(&o.silhouette), true));
         }
     }
     for (s, _) in &shapes {
