@@ -118,10 +118,11 @@ pub fn friction(c: &SolvedContact) -> Step {
             if f.regime == FrictionRegime::Static {
                 b.note("Seed 004's model: |v_planar| ≤ v_max = −μ_s v_s, so all planar velocity is removed (the sticking impulse). Here planar and limit are velocities, not impulses.");
             } else {
+                b.input("matrix", c.solution.unit.matrix.unwrap_or_default());
                 b.f(
                     "g_contact",
                     "M⁻¹ (Δv, −μ_d v_y, −μ_d v_z)",
-                    None,
+                    Some("{matrix}⁻¹ ({desired}, −{mu_d} · ({vy}), −{mu_d} · ({vz}))"),
                     Some("impulse_contact"),
                 );
                 b.note("Seed 004's model: |v_planar| > v_max = −μ_s v_s, so the planar velocity is reduced by μ_d·v_planar rather than removed. This is not Coulomb's law: the impulse may leave the friction cone.");
