@@ -158,11 +158,11 @@ pub struct SolveArgs {
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ExactLawArg {
-    /// Kinematic: u_n' = −e u_n0.
+    /// Kinematic: u_n' = -e u_n0.
     Newton,
     /// Kinetic: P_n = (1 + e) P_n at maximum compression.
     Poisson,
-    /// Energetic: restitution work = −e² × compression work.
+    /// Energetic: restitution work = -e² × compression work.
     Stronge,
 }
 

@@ -230,11 +230,14 @@ impl Validator {
         let figure = raw.figure.as_ref().map(|f| self.figure(f, &index));
         Lesson {
             id: raw.id.into_inner(),
-            title: raw.title.into_inner(),
-            source: raw.source.map(S::into_inner).unwrap_or_default(),
+            title: super::ascii_minus(raw.title.get_ref()),
+            source: raw
+                .source
+                .map(|s| super::ascii_minus(s.get_ref()))
+                .unwrap_or_default(),
             summary: raw
                 .summary
-                .map(|s| s.into_inner().trim().to_string())
+                .map(|s| super::ascii_minus(s.get_ref().trim()))
                 .unwrap_or_default(),
             origin: origin.to_string(),
             bodies,

@@ -34,7 +34,7 @@ fn arrows(fig: &Figure, v_scale: f64, normal_len: f64) -> Vec<PageArrow> {
                 let g_scale = if size > 0.0 { 0.8 * reach / size } else { 0.0 };
                 (a.tip(-g_scale), a.at, false, 5.0, LabelAt::Tail)
             }
-            // Body 2's −g is left to the legend.
+            // Body 2's -g is left to the legend.
             ArrowKind::Reaction => continue,
             ArrowKind::Velocity => (a.at, a.tip(v_scale), true, 3.5, LabelAt::Tip),
             ArrowKind::VelocityAfter => (a.at, a.tip(v_scale), false, 3.5, LabelAt::Tip),

@@ -118,7 +118,7 @@ fn place_labels(
                 taken[(r * w + x) as usize] = true;
             }
             // A point the canvas prints in cell (c, r): labels map with
-            // (cells − 1) steps, unlike the dots.
+            // (cells - 1) steps, unlike the dots.
             let x = (xb[0] + (f64::from(c) + 0.01) * xr / f64::from(w - 1)).min(xb[1]);
             let y = (yb[1] - (f64::from(r) + 0.01) * yr / f64::from(h - 1)).max(yb[0]);
             out.push(([x, y], text.clone(), ink));

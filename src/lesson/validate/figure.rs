@@ -57,7 +57,7 @@ impl Validator {
             });
         }
         FigureDef {
-            note: raw.note.get_ref().trim().to_string(),
+            note: crate::lesson::ascii_minus(raw.note.get_ref().trim()),
             bodies,
         }
     }

@@ -91,8 +91,8 @@ pub(super) fn build(bodies: &[&BodyView], contacts: &[ContactView], plane: Plane
 }
 
 /// Where the plane through `on` with outward normal `outward` (world) meets
-/// the view plane through `q`: the line `n_u u + n_v v = n·on − n_w q_w`,
-/// its point nearest q, and the solid side (−n); `None` when the normal's
+/// the view plane through `q`: the line `n_u u + n_v v = n·on - n_w q_w`,
+/// its point nearest q, and the solid side (-n); `None` when the normal's
 /// share in the view plane is below [`FACE_ON`] (the plane faces the viewer).
 pub(super) fn section(
     plane: Plane,
@@ -162,7 +162,7 @@ fn body_marks(b: &BodyView, i: usize, contacts: &[ContactView], plane: Plane) ->
 }
 
 /// Contact `k`: its marks, the surfaces through it, and its arrows: the
-/// arms of its movable bodies (in body order), d̂, g and −g.
+/// arms of its movable bodies (in body order), d̂, g and -g.
 fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyView], one: bool) {
     let tag = if one {
         String::new()
@@ -181,7 +181,7 @@ fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyVie
         impulse_size: c.impulse.map_or(0.0, norm),
         label: format!("q{tag}"),
     });
-    // Half-spaces (solid on body 1's side, +d̂, or body 2's, −d̂), each
+    // Half-spaces (solid on body 1's side, +d̂, or body 2's, -d̂), each
     // drawn as its own plane, then the world (through q, across d̂).
     for (i, b) in bodies.iter().enumerate() {
         if let Some(Shape::HalfSpace { normal }) = b.shape.filter(|_| c.bodies.contains(&Some(i))) {
@@ -236,7 +236,7 @@ fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyVie
                 ArrowKind::Reaction,
                 point,
                 minus_g,
-                format!("−g{tag}"),
+                format!("-g{tag}"),
                 Some(b2),
             );
         }

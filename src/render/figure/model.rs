@@ -105,7 +105,7 @@ pub struct BodyMarks {
     pub outline_after: Option<Outline>,
     /// The largest change of a position or orientation component (0: unmoved).
     pub pose_change: f64,
-    /// How far the projection carries the centre, |p′ − p|.
+    /// How far the projection carries the centre, |p′ - p|.
     pub travel: f64,
     /// Radius of the smallest ball about the centre that holds the shape (0
     /// without a finite shape): the body's share of the scene length.
@@ -153,7 +153,7 @@ pub struct Surface {
     /// The half-space body; `None` for the world of a one-body contact.
     pub body: Option<usize>,
     /// +1 when the solid side lies along +d̂ (a half-space as body 1),
-    /// −1 along −d̂ (body 2 and the world).
+    /// -1 along -d̂ (body 2 and the world).
     pub solid: f64,
     /// Where the surface meets the view plane through the contact point;
     /// `None` when the view plane is (nearly) parallel to the surface, which
@@ -162,7 +162,7 @@ pub struct Surface {
 }
 
 /// A surface seen edge on: the line where it meets the view plane through
-/// the contact point (depth `q_w`): `n_u u + n_v v = n·p₀ − n_w q_w` for a
+/// the contact point (depth `q_w`): `n_u u + n_v v = n·p₀ - n_w q_w` for a
 /// plane through p₀ with outward normal n.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Section {
@@ -181,13 +181,13 @@ pub const FACE_ON: f64 = 0.2;
 /// What an arrow shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ArrowKind {
-    /// r = q − p, from a body's centre to the contact point.
+    /// r = q - p, from a body's centre to the contact point.
     Arm,
     /// d̂ at the contact point.
     Normal,
     /// g, the impulse on body 1 at the contact point.
     Impulse,
-    /// −g, on a movable body 2.
+    /// -g, on a movable body 2.
     Reaction,
     Velocity,
     VelocityAfter,
@@ -280,7 +280,7 @@ pub enum LegendItem {
         contact: usize,
         impulse: [f64; 3],
     },
-    /// Both bodies move, so body 2 receives −g.
+    /// Both bodies move, so body 2 receives -g.
     Reaction {
         contact: usize,
     },

@@ -75,7 +75,7 @@ fn in_xy_the_slope_meets_the_view_plane_z_5_at_y_four_thirds() {
 #[test]
 fn in_yz_the_slope_is_the_line_0_6_y_plus_0_8_z_equals_4_8() {
     // Right y, up z: the line through (5.6, 1.8), nearest q's (8, 5); the
-    // solid side is −(0.6, 0.8).
+    // solid side is -(0.6, 0.8).
     let s = section(&on_slope(), Plane::Yz);
     assert_section(s, [5.6, 1.8], [-0.8, 0.6], [-0.6, -0.8]);
 }
@@ -83,7 +83,7 @@ fn in_yz_the_slope_is_the_line_0_6_y_plus_0_8_z_equals_4_8() {
 #[test]
 fn in_zx_the_slope_meets_the_view_plane_y_8_at_z_0() {
     // Right z, up x: 0.6 · 8 + 0.8 z = 4.8 gives z = 0, a vertical line,
-    // solid toward −z (left).
+    // solid toward -z (left).
     let s = section(&on_slope(), Plane::Zx);
     assert_section(s, [0.0, 3.0], [0.0, 1.0], [-1.0, 0.0]);
 }

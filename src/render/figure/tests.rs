@@ -211,7 +211,7 @@ fn one_contact_figure_marks() {
     assert_eq!(names, [("cube", 1, "₁"), ("floor", 2, "₂")]);
     assert_eq!(fig.contacts[0].bodies, [Some(0), Some(1)]);
     assert_eq!(fig.contacts[0].label, "q");
-    // The floor is a surface with its solid side below (−d̂), drawn
+    // The floor is a surface with its solid side below (-d̂), drawn
     // through q (the floor's plane y = 10); no world surface.
     assert_eq!(
         fig.surfaces,
@@ -380,7 +380,7 @@ fn a_figure_of_five_bodies_and_eight_contacts() {
         .iter()
         .find(|a| a.kind == ArrowKind::Reaction)
         .unwrap();
-    assert_eq!((reaction.body, reaction.label.as_str()), (Some(3), "−g₅"));
+    assert_eq!((reaction.body, reaction.label.as_str()), (Some(3), "-g₅"));
     assert_eq!(reaction.tip(2.0), [0.0, 5.0, 0.0]);
     // Velocity arrows for the four movable bodies, before and after.
     assert_eq!(
@@ -389,7 +389,7 @@ fn a_figure_of_five_bodies_and_eight_contacts() {
     );
     // Four centres (not the floor's) and eight contact points.
     assert_eq!(fig.points.len(), 12);
-    // Bounds: the boxes and the ball, x from −1 to 3, y from 0 to 6.
+    // Bounds: the boxes and the ball, x from -1 to 3, y from 0 to 6.
     assert_eq!((fig.bounds.lo, fig.bounds.hi), ([-1.0, 0.0], [3.0, 6.0]));
     assert!((fig.scene_length - 3f64.sqrt()).abs() < 1e-12);
     assert_eq!(fig.top_speed, 1.0);

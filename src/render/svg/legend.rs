@@ -94,12 +94,12 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                     &format!("g on body 1 {}", v(impulse)),
                 );
             }
-            LegendItem::Reaction { .. } => out.line(None, "(body 2 receives −g)"),
+            LegendItem::Reaction { .. } => out.line(None, "(body 2 receives -g)"),
             LegendItem::Arm { body, arm, .. } => {
                 let n = tag(body);
                 out.line(
                     Some((ARM, true, 2.0)),
-                    &format!("r{n} = q − p{n} {}", v(arm)),
+                    &format!("r{n} = q - p{n} {}", v(arm)),
                 );
             }
             LegendItem::Velocity {

@@ -230,7 +230,7 @@ pub(super) fn picture(fig: &Figure, show: &Show) -> (Picture, [f64; 4]) {
         let d = scale(along(a), 0.25 * extent);
         pic.arrow(flat(a.at), d, head, ink(a.kind.ink()), &a.label, 1);
     }
-    // The impulse: g on body 1 at q, −g on body 2 when it can move.
+    // The impulse: g on body 1 at q, -g on body 2 when it can move.
     if show.impulse {
         let impulses = fig
             .arrows
