@@ -3,6 +3,7 @@
 
 mod body;
 mod figure;
+mod printed;
 mod resolver;
 mod simulation;
 
@@ -12,7 +13,6 @@ use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-use super::printed::Printed;
 use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
@@ -429,40 +429,6 @@ impl Validator {
             dynamic_friction: mu_d,
             friction_model,
             settings,
-        }
-    }
-
-    fn printed(&mut self, raw: &super::raw::RawPrinted, contacts: usize) -> Option<Printed> {
-        if let Some(k) = raw
-            .contact
-            .as_ref()
-            .filter(|k| *k.get_ref() >= contacts.max(1))
-        {
-            self.err(
-                k.span(),
-                format!(
-                    "printed entry names contact {} but the lesson has {contacts} (numbered from 0)",
-                    k.get_ref()
-                ),
-            );
-            return None;
-        }
-        // `check` prints these strings: no control characters.
-        for (what, text) in [("value", &raw.value), ("where", &raw.location)] {
-            if let Err(e) = rules::line(text.get_ref()) {
-                self.err(text.span(), format!("{what} {e}"));
-            }
-        }
-        if let Some(Err(e)) = raw.erratum.as_ref().map(|t| rules::text(t.get_ref())) {
-            let span = raw.erratum.as_ref().map_or(0..0, |t| t.span());
-            self.err(span, format!("erratum {e}"));
-        }
-        match Printed::from_raw(raw) {
-            Ok(p) => Some(p),
-            Err(note) => {
-                self.errors.push(note);
-                None
-            }
         }
     }
 }
