@@ -125,6 +125,8 @@ const CASES: &[(&str, usize, usize, &str)] = &[
     ("scene-sleep-epsilon-negative", 14, 11, "[sleep] epsilon: must be a finite number ≥ 0, got -0.3"),
     ("scene-sleep-unknown-mode", 13, 8, "[sleep] mode must be \"body\" or \"island\", got \"stack\""),
     ("scene-box-box-unknown", 7, 11, "[world] box_box must be \"single\" or \"manifold\", got \"double\""),
+    ("figure-unknown-body", 22, 8, "[[figure.body]] names 'bal', which is not a body of the lesson"),
+    ("figure-half-space-drawn", 23, 9, "[[figure.body]] 'ball': the shape drawn must be finite"),
     ("scene-movable-without-shape", 13, 8, "body 'ball' moves in a scene (the lesson has [world], [step] or [sleep]) and needs a `shape` to collide"),
 ];
 

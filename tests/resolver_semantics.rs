@@ -164,7 +164,7 @@ duration = 0.02
     let trace = contact_lab::worked_solution(&lesson, 0);
     let notes = &trace.stage("desired_delta_velocity").unwrap().notes;
     assert!(
-        notes.iter().any(|n| n.contains("Cᵀ(a₁ − a₂)Δt")),
+        notes.iter().any(|n| n.contains("Cᵀ(a₁ - a₂)Δt")),
         "{notes:?}"
     );
     // Friction (μ = 0.8 > tan 30°) removes that sliding: the box sticks.
@@ -178,7 +178,7 @@ duration = 0.02
     // Without acceleration no note is added.
     let still = contact_lab::worked_solution(&Lesson::load("friction-cube").unwrap(), 0);
     let notes = &still.stage("desired_delta_velocity").unwrap().notes;
-    assert!(!notes.iter().any(|n| n.contains("Cᵀ(a₁ − a₂)Δt")));
+    assert!(!notes.iter().any(|n| n.contains("Cᵀ(a₁ - a₂)Δt")));
 }
 
 #[test]

@@ -158,11 +158,11 @@ pub struct SolveArgs {
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ExactLawArg {
-    /// Kinematic: u_n' = −e u_n0.
+    /// Kinematic: u_n' = -e u_n0.
     Newton,
     /// Kinetic: P_n = (1 + e) P_n at maximum compression.
     Poisson,
-    /// Energetic: restitution work = −e² × compression work.
+    /// Energetic: restitution work = -e² × compression work.
     Stronge,
 }
 
@@ -276,6 +276,11 @@ pub struct ExerciseArgs {
     /// TOML: write exercise-SEED-N.toml files into DIR.
     #[arg(long, value_name = "DIR")]
     pub dir: Option<std::path::PathBuf>,
+    /// Write the sheet to FILE (atomically) instead of stdout; Markdown
+    /// also writes each exercise's figure beside it (FILE-N.svg) and links
+    /// it (on stdout the figure is embedded as a data: URI image).
+    #[arg(long, short, value_name = "FILE", conflicts_with_all = ["dir", "grade", "answer_template"])]
+    pub output: Option<std::path::PathBuf>,
     /// Significant digits of the answers.
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,

@@ -74,7 +74,13 @@ pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError
     };
     let fmt = Fmt::new(args.digits as usize);
     let text = match args.format {
-        SheetFormat::Md => sheet::markdown(&exercises, &request, args.answers, &fmt),
+        SheetFormat::Md => {
+            let figures = match &args.output {
+                None => sheet::MdFigures::Inline,
+                Some(path) => sheet::MdFigures::Files(write_figures(path, &exercises)?),
+            };
+            sheet::markdown(&exercises, &request, args.answers, &fmt, &figures)
+        }
         SheetFormat::Latex => sheet::latex(&exercises, &request, args.answers, &fmt),
         SheetFormat::Toml => match &args.dir {
             None => exercises[0].toml.clone(),
@@ -92,5 +98,32 @@ pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError
             }
         },
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
+}
+
+/// Each exercise's figure written beside the sheet `path` (`STEM-N.svg`,
+/// N from 1); the links, relative to the sheet.
+fn write_figures(
+    path: &std::path::Path,
+    exercises: &[exercise::Exercise],
+) -> Result<Vec<String>, AppError> {
+    let stem = path
+        .file_stem()
+        .map_or_else(|| "sheet".into(), |s| s.to_string_lossy().into_owned());
+    let dir = path.parent().unwrap_or(std::path::Path::new(""));
+    let mut links = vec![];
+    for (i, e) in exercises.iter().enumerate() {
+        let name = format!("{stem}-{}.svg", i + 1);
+        write_atomic(&dir.join(&name), sheet::figure_svg(e).as_bytes())?;
+        // A Markdown link target: no raw spaces or parentheses.
+        let link = name
+            .replace(' ', "%20")
+            .replace('(', "%28")
+            .replace(')', "%29");
+        links.push(link);
+    }
+    Ok(links)
 }

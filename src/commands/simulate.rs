@@ -65,7 +65,7 @@ fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
     ))
 }
 
-/// `--trace-step N`: the run up to step N − 1 unrecorded, then step N's
+/// `--trace-step N`: the run up to step N - 1 unrecorded, then step N's
 /// resolution recorded and printed as `resolve` prints a lesson's.
 fn trace_step(
     lesson: &Lesson,

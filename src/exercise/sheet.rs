@@ -1,6 +1,11 @@
 //! The exercise sheet: per exercise the scene and the questions; with
 //! answers, the short answers and the worked solution (Markdown or LaTeX).
 
+mod figure;
+
+use figure::md_figure;
+pub use figure::{figure_svg, MdFigures};
+
 use std::fmt::Write;
 
 use super::{Exercise, Kind};
@@ -10,7 +15,7 @@ use crate::render::{latex, markdown};
 use crate::trace::latex::prose;
 use crate::trace::{Trace, Value};
 
-const INTRO: &str = "Resolve each contact as in the lecture (Millington's impulse-based method). The normal d̂ points from body 2 toward body 1; body 1 receives the impulse g and body 2 receives −g. Inertia tensors are in body coordinates; orientations are quaternions [w, x, y, z]. Work to four decimals.";
+const INTRO: &str = "Resolve each contact as in the lecture (Millington's impulse-based method). The normal d̂ points from body 2 toward body 1; body 1 receives the impulse g and body 2 receives -g. Inertia tensors are in body coordinates; orientations are quaternions [w, x, y, z]. Work to four decimals.";
 
 /// How to regenerate a sheet.
 pub struct Request {
@@ -310,8 +315,14 @@ fn command(r: &Request, answers: bool, format: &str) -> String {
     )
 }
 
-/// The sheet in Markdown.
-pub fn markdown(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> String {
+/// The sheet in Markdown, each exercise with its figure.
+pub fn markdown(
+    exercises: &[Exercise],
+    r: &Request,
+    answers: bool,
+    fmt: &Fmt,
+    figures: &MdFigures,
+) -> String {
     let inputs = Fmt::new(10);
     let mut out = String::from("# Contact resolution exercises\n\n");
     let _ = writeln!(
@@ -322,7 +333,7 @@ pub fn markdown(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -
         command(r, answers, "md"),
         markdown::escape(INTRO)
     );
-    for e in exercises {
+    for (i, e) in exercises.iter().enumerate() {
         let l = &e.lesson;
         let _ = writeln!(
             out,
@@ -342,6 +353,7 @@ pub fn markdown(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -
             let _ = writeln!(out, "| {what} | {} |", cells.join(" | "));
         }
         let _ = writeln!(out, "\n{}\n", markdown::escape(&contact_line(l, &inputs)));
+        md_figure(&mut out, e, i, figures);
         for (i, q) in questions(e).iter().enumerate() {
             let _ = writeln!(out, "{}. {}", i + 1, markdown::escape(q));
         }

@@ -49,6 +49,34 @@ pub struct Lesson {
     pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
     pub warnings: Vec<LessonDiagnostic>,
+    /// `[figure]`: how the pictures correct the lesson's geometry, if at all.
+    pub figure: Option<FigureDef>,
+}
+
+/// A lesson's text as contact-lab shows it: the Unicode minus sign (U+2212)
+/// written as ASCII `-`, the one kind of minus sign of every output (so a
+/// copied number or formula pastes into a calculator).
+pub fn ascii_minus(s: &str) -> String {
+    s.replace('\u{2212}', "-")
+}
+
+/// A figure-only correction of a lesson's geometry: the pictures (SVG, TUI,
+/// LaTeX) draw these shapes and orientations and quote the note; the stages
+/// compute with the lesson's own values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FigureDef {
+    pub note: String,
+    pub bodies: Vec<DrawnBody>,
+}
+
+/// One body as a [`FigureDef`] draws it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DrawnBody {
+    /// Index into [`Lesson::bodies`].
+    pub body: usize,
+    pub shape: Option<Shape>,
+    /// Unit quaternion `[w, x, y, z]`.
+    pub orientation: Option<[f64; 4]>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -282,7 +310,7 @@ impl Lesson {
     }
 
     /// The physics input of contact `k` with the scene moved (in f64) so the
-    /// contact point is the origin. Every stage depends only on `r = q − p`,
+    /// contact point is the origin. Every stage depends only on `r = q - p`,
     /// so this keeps f32 runs precise far from the origin; positions after
     /// the projection are then relative to q.
     pub fn problem_centred<T: Real>(&self, k: usize) -> Problem<T> {

@@ -136,8 +136,11 @@ impl Printed {
             value: raw.value.get_ref().clone(),
             component: raw.component.as_ref().map(|k| *k.get_ref()),
             printed,
-            location: raw.location.get_ref().clone(),
-            erratum: raw.erratum.as_ref().map(|e| e.get_ref().clone()),
+            location: super::ascii_minus(raw.location.get_ref()),
+            erratum: raw
+                .erratum
+                .as_ref()
+                .map(|e| super::ascii_minus(e.get_ref())),
         })
     }
 }

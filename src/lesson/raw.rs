@@ -25,6 +25,29 @@ pub struct RawLesson {
     pub world: Option<RawWorld>,
     pub step: Option<RawStep>,
     pub sleep: Option<RawSleep>,
+    /// What the pictures draw differently from the numbers.
+    pub figure: Option<RawFigure>,
+}
+
+/// `[figure]`: a figure-only correction of the lesson's geometry (where the
+/// lecture's own shapes or poses are wrong, the numbers staying the
+/// lecture's), and the note that says so.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFigure {
+    pub note: S<String>,
+    #[serde(default, rename = "body")]
+    pub bodies: Vec<RawFigureBody>,
+}
+
+/// `[[figure.body]]`: the shape or orientation a body is drawn with.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFigureBody {
+    pub name: S<String>,
+    pub shape: Option<S<RawShape>>,
+    #[serde(default, deserialize_with = "exact::some")]
+    pub orientation: Option<S<[f64; 4]>>,
 }
 
 /// `[world]`: forces and the defaults of generated contacts.

@@ -2,6 +2,8 @@
 //! offending value; all errors of a file are reported together.
 
 mod body;
+mod figure;
+mod printed;
 mod resolver;
 mod simulation;
 
@@ -11,7 +13,6 @@ use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-use super::printed::Printed;
 use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
@@ -226,13 +227,17 @@ impl Validator {
             .iter()
             .filter_map(|p| self.printed(p, raw.contacts.len()))
             .collect();
+        let figure = raw.figure.as_ref().map(|f| self.figure(f, &index));
         Lesson {
             id: raw.id.into_inner(),
-            title: raw.title.into_inner(),
-            source: raw.source.map(S::into_inner).unwrap_or_default(),
+            title: super::ascii_minus(raw.title.get_ref()),
+            source: raw
+                .source
+                .map(|s| super::ascii_minus(s.get_ref()))
+                .unwrap_or_default(),
             summary: raw
                 .summary
-                .map(|s| s.into_inner().trim().to_string())
+                .map(|s| super::ascii_minus(s.get_ref().trim()))
                 .unwrap_or_default(),
             origin: origin.to_string(),
             bodies,
@@ -242,6 +247,7 @@ impl Validator {
             simulation,
             resolver,
             warnings: Vec::new(),
+            figure,
         }
     }
 
@@ -423,40 +429,6 @@ impl Validator {
             dynamic_friction: mu_d,
             friction_model,
             settings,
-        }
-    }
-
-    fn printed(&mut self, raw: &super::raw::RawPrinted, contacts: usize) -> Option<Printed> {
-        if let Some(k) = raw
-            .contact
-            .as_ref()
-            .filter(|k| *k.get_ref() >= contacts.max(1))
-        {
-            self.err(
-                k.span(),
-                format!(
-                    "printed entry names contact {} but the lesson has {contacts} (numbered from 0)",
-                    k.get_ref()
-                ),
-            );
-            return None;
-        }
-        // `check` prints these strings: no control characters.
-        for (what, text) in [("value", &raw.value), ("where", &raw.location)] {
-            if let Err(e) = rules::line(text.get_ref()) {
-                self.err(text.span(), format!("{what} {e}"));
-            }
-        }
-        if let Some(Err(e)) = raw.erratum.as_ref().map(|t| rules::text(t.get_ref())) {
-            let span = raw.erratum.as_ref().map_or(0..0, |t| t.span());
-            self.err(span, format!("erratum {e}"));
-        }
-        match Printed::from_raw(raw) {
-            Ok(p) => Some(p),
-            Err(note) => {
-                self.errors.push(note);
-                None
-            }
         }
     }
 }

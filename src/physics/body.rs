@@ -53,7 +53,7 @@ impl<T: Real> RigidBody<T> {
             + half * angular_velocity.dot(&(self.inertia_world() * angular_velocity))
     }
 
-    /// Angular momentum about the world point `q`: `I ω + (p − q) × m v`.
+    /// Angular momentum about the world point `q`: `I ω + (p - q) × m v`.
     pub fn angular_momentum_about(
         &self,
         q: &Vector3<T>,

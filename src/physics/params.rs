@@ -254,7 +254,7 @@ impl ResolverParams {
 /// The forces of a simulated world.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WorldParams<T: Real> {
-    /// Uniform acceleration of every movable body (default: (0, −9.81, 0) m/s²).
+    /// Uniform acceleration of every movable body (default: (0, -9.81, 0) m/s²).
     pub gravity: Vector3<T>,
     /// Fraction of linear velocity kept per second, (0, 1]: trades energy
     /// lost for stability (default: 0.99; 1 = no damping).

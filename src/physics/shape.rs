@@ -127,7 +127,7 @@ impl Shape {
     /// inside). For a half-space the point is taken relative to the plane's
     /// point and measured along its normal.
     pub fn surface_distance(&self, local: &Vector3<f64>) -> f64 {
-        // Distance to a box of half sizes h given |local| − h per axis.
+        // Distance to a box of half sizes h given |local| - h per axis.
         let boxed = |d: &[f64]| {
             let outside = d.iter().map(|x| x.max(0.0).powi(2)).sum::<f64>().sqrt();
             let inside = d.iter().copied().fold(f64::NEG_INFINITY, f64::max).min(0.0);

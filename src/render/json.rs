@@ -7,7 +7,7 @@ use crate::format::Fmt;
 use crate::trace::{Trace, Value};
 
 pub fn value(v: &Value) -> J {
-    // `x + 0.0` turns −0 into 0; a non-finite number (never produced) would be null.
+    // `x + 0.0` turns -0 into 0; a non-finite number (never produced) would be null.
     let num = |x: f64| serde_json::Number::from_f64(x + 0.0).map_or(J::Null, J::Number);
     match v {
         Value::Scalar(x) => num(*x),

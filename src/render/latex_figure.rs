@@ -7,7 +7,7 @@
 use std::fmt::Write;
 
 use crate::physics::StageId;
-use crate::render::figure::{flat, ArrowKind, Figure, P};
+use crate::render::figure::{flat, ArrowKind, Figure, Silhouette, P};
 use crate::trace::latex::to_latex;
 use crate::trace::{Plane, SceneView};
 
@@ -111,6 +111,19 @@ impl Canvas {
     }
 }
 
+/// The outline to draw: a polygon's corners, a circle's 24 rim points.
+fn ring(s: &Silhouette) -> Vec<P> {
+    match s {
+        Silhouette::Polygon(p) => p.clone(),
+        Silhouette::Circle { centre, radius } => (0..24)
+            .map(|i| {
+                let a = std::f64::consts::TAU * f64::from(i) / 24.0;
+                [centre[0] + radius * a.cos(), centre[1] + radius * a.sin()]
+            })
+            .collect(),
+    }
+}
+
 /// The figure of a contact (xy plane) as `stage` sees it (every mark when
 /// `None`), in a `picture` environment with a one-line key under it; `None`
 /// when there is nothing to draw.
@@ -153,10 +166,10 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
     for b in &fig.bodies {
         points.push(flat(b.centre));
         if let Some(o) = &b.outline {
-            shapes.push((o.silhouette.points(), false));
+            shapes.push((ring(&o.silhouette), false));
         }
         if let Some(o) = b.outline_after.as_ref().filter(|_| !fig.beyond(b)) {
-            shapes.push((o.silhouette.points(), true));
+            shapes.push((ring(&o.silhouette), true));
         }
     }
     for (s, _) in &shapes {
@@ -203,16 +216,16 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
     for (s, dashed) in &shapes {
         c.polygon(s, *dashed);
     }
-    // The world's surface (and any half-space) through the contact point,
-    // across the normal, a scene length each way.
-    for s in &fig.surfaces {
-        let k = &fig.contacts[s.contact];
-        let (q, n) = (flat(k.point), flat(k.normal));
-        let along = [-n[1], n[0]];
-        if along[0].hypot(along[1]) > 1e-9 {
-            let a = [q[0] - along[0] * reach, q[1] - along[1] * reach];
-            let b = [q[0] + along[0] * reach, q[1] + along[1] * reach];
-            c.line(a, b);
+    // The world's surface (and any half-space) where it meets the view
+    // plane, a scene length each way, with ticks on the solid side; none
+    // when it faces the viewer.
+    for s in fig.surfaces.iter().filter_map(|s| s.section.as_ref()) {
+        let (q, t, d) = (s.at, s.along, s.solid_side);
+        let at = |u: f64, v: f64| [q[0] + u * t[0] + v * d[0], q[1] + u * t[1] + v * d[1]];
+        c.line(at(-reach, 0.0), at(reach, 0.0));
+        for i in -4..=4 {
+            let u = 0.25 * reach * f64::from(i);
+            c.line(at(u, 0.0), at(u - 0.12 * reach, 0.12 * reach));
         }
     }
     for (from, to, dashed, head, label) in &arrows {
@@ -239,6 +252,11 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
         c.label(flat(p.at), &p.label);
     }
     c.out.push_str("\\end{picture}\n\n");
-    c.out.push_str("{\\footnotesize Dashed: arms $r$, velocities before $v$ and, when projection moves a body, its outline after; solid: velocities after $v'$, the normal $\\hat{d}$ and the impulse $g$ on body 1 (velocities and impulse to scales of their own; the xy plane).}\n\\end{center}\n");
+    c.out.push_str("{\\footnotesize Dashed: arms $r$, velocities before $v$ and, when projection moves a body, its outline after; solid: velocities after $v'$, the normal $\\hat{d}$ and the impulse $g$ on body 1 (velocities and impulse to scales of their own; the xy plane).");
+    if let Some(note) = &fig.corrected {
+        c.out.push(' ');
+        c.out.push_str(&crate::trace::latex::prose(note));
+    }
+    c.out.push_str("}\n\\end{center}\n");
     Some(c.out)
 }

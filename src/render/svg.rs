@@ -6,6 +6,7 @@
 //! When the `exact_impact` stage ran, the impulse-space figure
 //! ([`crate::render::impact`]) goes below it, on a taller page.
 
+mod labels;
 mod legend;
 mod page;
 
@@ -33,7 +34,7 @@ fn arrows(fig: &Figure, v_scale: f64, normal_len: f64) -> Vec<PageArrow> {
                 let g_scale = if size > 0.0 { 0.8 * reach / size } else { 0.0 };
                 (a.tip(-g_scale), a.at, false, 5.0, LabelAt::Tail)
             }
-            // Body 2's −g is left to the legend.
+            // Body 2's -g is left to the legend.
             ArrowKind::Reaction => continue,
             ArrowKind::Velocity => (a.at, a.tip(v_scale), true, 3.5, LabelAt::Tip),
             ArrowKind::VelocityAfter => (a.at, a.tip(v_scale), false, 3.5, LabelAt::Tip),
@@ -62,6 +63,11 @@ fn fit(fig: &Figure, arrows: &[PageArrow]) -> View {
         let (q, n) = (c.point, c.normal);
         points.push(flat(q));
         points.push([q[0] + -0.4 * reach * n[0], q[1] + -0.4 * reach * n[1]]);
+    }
+    for s in fig.surfaces.iter().filter_map(|s| s.section.as_ref()) {
+        let (at, d) = (s.at, s.solid_side);
+        points.push(at);
+        points.push([at[0] + 0.4 * reach * d[0], at[1] + 0.4 * reach * d[1]]);
     }
     for b in &fig.bodies {
         points.push(flat(b.centre));
@@ -135,9 +141,10 @@ fn header(p: &mut Page, trace: &Trace, plane: Plane) {
 fn bodies(p: &mut Page, fig: &Figure) {
     let reach = fig.scene_length;
     for s in &fig.surfaces {
-        let c = &fig.contacts[s.contact];
         let name = s.body.map_or("the world", |b| &fig.bodies[b].name);
-        p.surface(flat(c.point), flat(c.normal), s.solid, name, reach);
+        if let Some(section) = &s.section {
+            p.surface(section, name, reach);
+        }
     }
     for b in &fig.bodies {
         let fill = if b.movable {
@@ -173,6 +180,8 @@ fn bodies(p: &mut Page, fig: &Figure) {
                 c(to[1]),
                 &MOVED[1..]
             );
+            p.stroke(from, to, 2.5);
+            p.stroke_head(from, to, 2.5);
         }
     }
 }
@@ -190,6 +199,7 @@ fn points(p: &mut Page, fig: &Figure) {
                     c(at[0]),
                     c(at[1])
                 );
+                p.stroke_circle(at, 2.5, 5.0);
                 let label = if b.movable {
                     format!("{} {}", point.label, b.name)
                 } else {
@@ -212,6 +222,7 @@ fn points(p: &mut Page, fig: &Figure) {
                     c(at[1]),
                     colour(crate::render::figure::Ink::Point)
                 );
+                p.stroke_circle(at, 4.0, 8.0);
                 // The label sits along the contact plane, away from the normal and the impulse.
                 let d = flat(fig.contacts[contact].normal);
                 let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
@@ -254,6 +265,8 @@ pub fn render_at(trace: &Trace, plane: Plane, stage: Option<crate::physics::Stag
         out: String::new(),
         placed: vec![],
         pending: vec![],
+        strokes: vec![],
+        moved: vec![],
     };
     header(&mut p, trace, plane);
     // Everything drawn stays in the drawing area, however far a value reaches.

@@ -24,7 +24,7 @@ pub fn note_planar_acceleration(trace: &mut Trace, solution: &Solution<f64>) {
         Value::from(planar.map(to_f64)),
     ));
     step.notes.push(
-        "v_c includes (0, y, z) of Cᵀ(a₁ − a₂)Δt = {planar_from_acceleration}: the sliding velocity last frame's acceleration built up, which static friction removes (as the reference engine does); its normal part is v_acc."
+        "v_c includes (0, y, z) of Cᵀ(a₁ - a₂)Δt = {planar_from_acceleration}: the sliding velocity last frame's acceleration built up, which static friction removes (as the reference engine does); its normal part is v_acc."
             .into(),
     );
 }

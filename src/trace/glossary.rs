@@ -49,7 +49,7 @@ pub const GLOSSARY: &[Symbol] = &[
     s("C", "contact basis [d̂ t₀ t₁]: turns contact coordinates into world coordinates", "", &[CF, UI, DV, IM, FC], "M_C→W in lecture 000"),
     s("x̂", "first axis of contact coordinates, (1, 0, 0): the normal direction", "", &[DV], ""),
     s("pᵢ", "position of body i's centre of mass", "m", &[CF, NP], ""),
-    s("rᵢ", "arm from body i's centre to the contact point, q − pᵢ", "m", &[CF, UI, DV, AI, NP, CH], "q_rel in lecture 000"),
+    s("rᵢ", "arm from body i's centre to the contact point, q - pᵢ", "m", &[CF, UI, DV, AI, NP, CH], "q_rel in lecture 000"),
     s("mᵢ", "mass of body i (∞ = immovable)", "kg", &[UI, AI, NP], ""),
     s("Iᵢ⁻¹", "inverse inertia tensor of body i in world coordinates", "kg⁻¹·m⁻²", &[UI, AI, NP], ""),
     s("Δṗ_d", "change of linear velocity per unit impulse along d̂: Σ 1/mᵢ", "(m/s)/(N·s)", &[UI], ""),
@@ -62,10 +62,10 @@ pub const GLOSSARY: &[Symbol] = &[
     s("M", "velocity change in contact coordinates per unit impulse in contact coordinates (3×3)", "(m/s)/(N·s)", &[UI, IM, FC, EI], "the unit-impulse matrix of lecture 000; K, the collision matrix, in Mirtich and Stronge"),
     s("M₀₀, M₀₁, M₀₂", "first row of M: normal velocity change per unit impulse along x, y, z of the contact", "(m/s)/(N·s)", &[FC], ""),
     s("𝟙", "3×3 identity matrix", "", &[UI], ""),
-    s("vᵢ", "linear velocity of body i before the impulse", "m/s", &[DV, AI], "v_A−, v_B− in lecture 002"),
+    s("vᵢ", "linear velocity of body i before the impulse", "m/s", &[DV, AI], "v_A-, v_B- in lecture 002"),
     s("ωᵢ", "angular velocity of body i before the impulse", "rad/s", &[DV, AI], ""),
     s("q̇ᵢ", "velocity of the contact point as a point of body i: ωᵢ × rᵢ + vᵢ", "m/s", &[DV], ""),
-    s("v_c", "contact velocity in contact coordinates: Cᵀ (q̇₁ − q̇₂)", "m/s", &[DV, FC, EI], "u₀ in Stronge and Mirtich (at the start of the impact)"),
+    s("v_c", "contact velocity in contact coordinates: Cᵀ (q̇₁ - q̇₂)", "m/s", &[DV, FC, EI], "u₀ in Stronge and Mirtich (at the start of the impact)"),
     s("v_s", "separating velocity, the normal part of v_c (negative: closing)", "m/s", &[DV, IM, FC, CH], "v_rel · n in lectures 002/003"),
     s("v_y, v_z", "sliding components of v_c along t₀ and t₁", "m/s", &[FC], ""),
     s("c", "coefficient of restitution (as applied)", "", &[DV, IM, EI], "C_R in lecture 002; e elsewhere"),
@@ -73,7 +73,7 @@ pub const GLOSSARY: &[Symbol] = &[
     s("Δt", "duration of the last frame", "s", &[DV], ""),
     s("v_acc", "normal velocity that last frame's acceleration built up", "m/s", &[DV], ""),
     s("Δv", "desired change of the normal velocity", "m/s", &[DV, IM, FC, CH], "Δv_s in lecture 000"),
-    s("g", "the impulse (a number along d̂ without friction; body 2 receives −g)", "N·s", &[IM, AI], "j n̂ in lectures 002/003"),
+    s("g", "the impulse (a number along d̂ without friction; body 2 receives -g)", "N·s", &[IM, AI], "j n̂ in lectures 002/003"),
     s("g_contact", "the impulse in contact coordinates (g_x normal, g_y, g_z tangential)", "N·s", &[IM, FC, EI], ""),
     s("g_world", "the impulse in world coordinates: C g_contact", "N·s", &[IM, FC], ""),
     s("g_closed", "normal impulse from the companion lectures' closed form", "N·s", &[IM, FC], "j in lectures 002/003"),
@@ -84,9 +84,9 @@ pub const GLOSSARY: &[Symbol] = &[
     s("μ_s", "static friction coefficient: decides whether the contact sticks", "", &[FC], ""),
     s("μ_d", "dynamic (sliding) friction coefficient: sizes the friction while sliding", "", &[FC], "μ_k in lectures 002/003"),
     s("μ", "friction coefficient of the cone test (μ_d while sliding, μ_s while sticking)", "", &[CH], ""),
-    s("f̂", "unit direction of the friction impulse in the contact plane", "", &[FC], "−t̂ in lectures 002/003"),
+    s("f̂", "unit direction of the friction impulse in the contact plane", "", &[FC], "-t̂ in lectures 002/003"),
     s("|v_planar|", "sliding speed in the contact plane (seed 004's model)", "m/s", &[FC], ""),
-    s("v_max", "sliding speed below which seed 004's model sticks: −μ_s v_s", "m/s", &[FC], ""),
+    s("v_max", "sliding speed below which seed 004's model sticks: -μ_s v_s", "m/s", &[FC], ""),
     s("Δṗᵢ", "change of body i's linear velocity: ±g / mᵢ", "m/s", &[AI], "Δṗ in lecture 000"),
     s("uᵢ", "impulsive torque on body i: rᵢ × (±g)", "N·m·s", &[AI], "u in lecture 000"),
     s("Δθ̇ᵢ", "change of body i's angular velocity: Iᵢ⁻¹ uᵢ", "rad/s", &[AI], "Δθ̇ in lecture 000"),
@@ -101,7 +101,7 @@ pub const GLOSSARY: &[Symbol] = &[
     s("Δ_lᵢ", "linear move of body i along d̂", "m", &[NP], ""),
     s("Δ_aᵢ", "angular move: how far body i's turn moves the contact point along d̂", "m", &[NP], ""),
     s("angular_limit", "largest angular move per metre of arm across d̂ (setting)", "", &[NP], ""),
-    s("Δ_maxᵢ", "largest angular move of body i: angular_limit · |rᵢ − (rᵢ · d̂) d̂|", "m", &[NP], ""),
+    s("Δ_maxᵢ", "largest angular move of body i: angular_limit · |rᵢ - (rᵢ · d̂) d̂|", "m", &[NP], ""),
     s("Δpᵢ", "change of body i's position: Δ_lᵢ d̂", "m", &[NP], ""),
     s("Δθᵢ", "rotation vector of body i's turn", "rad", &[NP, OU], ""),
     s("pᵢ′", "position of body i after the projection", "m", &[NP], ""),
@@ -300,7 +300,7 @@ mod tests {
     fn symbols_are_found_whole_not_inside_longer_names() {
         let names = |t: &str| -> Vec<&str> { symbols_in(t).iter().map(|s| s.symbol).collect() };
         assert_eq!(names("u_d₁ = r₁ × d̂"), vec!["d̂", "rᵢ", "u_dᵢ"]);
-        assert_eq!(names("Δv = −(1 + c) v_s"), vec!["v_s", "c", "Δv"]);
+        assert_eq!(names("Δv = -(1 + c) v_s"), vec!["v_s", "c", "Δv"]);
         assert!(!names("v_s′ = 1").contains(&"v_s"));
         assert!(!names("Δθ̇_d₁ = I₁⁻¹ u_d₁").contains(&"Δθ̇ᵢ"));
         assert!(names("g_max = μ_s g_x").contains(&"g_x, g_y, g_z"));

@@ -15,7 +15,7 @@ pub struct Grade {
     pub given: Vec<f64>,
     /// The right answer's numbers (empty for a word answer).
     pub expected: Vec<f64>,
-    /// expected − given, component by component (empty for a word answer).
+    /// expected - given, component by component (empty for a word answer).
     pub difference: Vec<f64>,
     /// The tolerance each component was judged with.
     pub tolerance: Vec<f64>,
@@ -25,7 +25,7 @@ pub struct Grade {
 }
 
 /// The numbers of an answer with the decimals each was written with:
-/// `18.73`, `-1.25 m/s`, `(0, 18.7337, 0)`, `[1, 0, 0, −0.0687]`,
+/// `18.73`, `-1.25 m/s`, `(0, 18.7337, 0)`, `[1, 0, 0, -0.0687]`,
 /// `0 18.73 0`. Unicode minus signs, brackets, commas and a trailing unit
 /// are accepted.
 pub fn parse(answer: &str) -> Result<Vec<PrintedNum>, String> {

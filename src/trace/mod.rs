@@ -92,7 +92,7 @@ impl Value {
 pub struct Formula {
     /// Left-hand side, e.g. `Δv`.
     pub lhs: String,
-    /// Symbolic right-hand side, e.g. `−(1 + c)·v_s`.
+    /// Symbolic right-hand side, e.g. `-(1 + c)·v_s`.
     pub rhs: String,
     /// The right-hand side with `{name}` placeholders for numbers.
     pub substituted: Option<String>,

@@ -2,7 +2,7 @@
 //! and after, the contact point, the normal, the arms and the impulse. A
 //! figure of several contacts takes bodies and a list of [`ContactView`]s.
 
-use crate::lesson::Lesson;
+use crate::lesson::{FigureDef, Lesson};
 use crate::physics::solve::Solution;
 use crate::physics::Shape;
 
@@ -34,6 +34,9 @@ pub struct SceneView {
     pub penetration: f64,
     /// The impulse body 1 receives (world), when one is applied.
     pub impulse: Option<[f64; 3]>,
+    /// Set when the bodies are drawn with the lesson's `[figure]` geometry
+    /// (shapes, orientations) rather than its own: the lesson's note.
+    pub corrected: Option<String>,
 }
 
 impl SceneView {
@@ -106,12 +109,44 @@ pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Scen
             }
         })
         .collect();
-    SceneView {
+    let mut scene = SceneView {
         bodies,
         contact: k,
         point: arr(contact.point),
         normal: arr(contact.normal),
         penetration: contact.penetration,
         impulse: solution.final_impulse_world().map(arr),
+        corrected: None,
+    };
+    if let Some(f) = &lesson.figure {
+        correct(&mut scene.bodies, f);
+        scene.corrected = Some(f.note.clone());
+    }
+    scene
+}
+
+/// Draws the bodies with the `[figure]` shapes and orientations; a body the
+/// projection turns is drawn turned by the same rotation from its drawn
+/// orientation (q′ = (q′_l q_l⁻¹) q_drawn).
+fn correct(bodies: &mut [BodyView], figure: &FigureDef) {
+    use nalgebra::{Quaternion, UnitQuaternion};
+    let unit =
+        |q: [f64; 4]| UnitQuaternion::from_quaternion(Quaternion::new(q[0], q[1], q[2], q[3]));
+    for d in &figure.bodies {
+        let Some(b) = bodies.get_mut(d.body) else {
+            continue;
+        };
+        if let Some(shape) = d.shape {
+            b.shape = Some(shape);
+        }
+        if let Some(q) = d.orientation {
+            if b.orientation_after != b.orientation {
+                let turn = unit(b.orientation_after) * unit(b.orientation).inverse();
+                b.orientation_after = quat((turn * unit(q)).into_inner());
+            } else {
+                b.orientation_after = q;
+            }
+            b.orientation = q;
+        }
     }
 }

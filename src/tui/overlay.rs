@@ -42,7 +42,7 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
     let mut notes = vec![
         "Edit form: ↑↓ field, Enter edits (or cycles a choice), Enter sets, Esc goes back.",
         "● changed by the last edit · ? results predict mode still hides",
-        "Picture: v before, v′ after, ω spin, g impulse (−g on body 2), d̂ normal, r arms, q contact point.",
+        "Picture: v before, v′ after, ω spin, g impulse (-g on body 2), d̂ normal, r arms, q contact point.",
         "? again (or PgDn): page 2, the glossary of every symbol. Any other key closes this help.",
     ];
     if app.resolver.is_some() {

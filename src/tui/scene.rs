@@ -118,7 +118,7 @@ fn place_labels(
                 taken[(r * w + x) as usize] = true;
             }
             // A point the canvas prints in cell (c, r): labels map with
-            // (cells − 1) steps, unlike the dots.
+            // (cells - 1) steps, unlike the dots.
             let x = (xb[0] + (f64::from(c) + 0.01) * xr / f64::from(w - 1)).min(xb[1]);
             let y = (yb[1] - (f64::from(r) + 0.01) * yr / f64::from(h - 1)).max(yb[0]);
             out.push(([x, y], text.clone(), ink));
@@ -150,7 +150,13 @@ fn dashes(a: P, c: P, step: f64) -> Vec<(P, P)> {
 }
 
 /// The key to the picture's colours and labels; `compact` keeps to the symbols.
-fn legend(t: &Theme, show: &Show, moved: bool, compact: bool) -> TextLine<'static> {
+fn legend(
+    t: &Theme,
+    show: &Show,
+    moved: bool,
+    compact: bool,
+    corrected: Option<&str>,
+) -> TextLine<'static> {
     let mut items = vec![];
     if show.before_velocity {
         items.push((Ink::VelocityBefore, "v", "before"));
@@ -181,6 +187,12 @@ fn legend(t: &Theme, show: &Show, moved: bool, compact: bool) -> TextLine<'stati
             spans.push(Span::raw(format!(" {what}  ")));
         }
     }
+    // The lesson draws the lecture's geometry corrected: say so.
+    match corrected {
+        Some(_) if compact => spans.push(Span::raw("(corrected geometry)")),
+        Some(note) => spans.push(Span::raw(format!("· {note}"))),
+        None => {}
+    }
     TextLine::from(spans)
 }
 
@@ -210,13 +222,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
             && fig.bodies.iter().any(|b| b.outline_after.is_some()),
     };
     let moved = fig.bodies.iter().any(|b| b.pose_change > 0.0);
-    let full = legend(t, &show, moved, false);
+    let corrected = fig.corrected.as_deref();
+    let full = legend(t, &show, moved, false, corrected);
     let rows_for = |l: &TextLine| (l.width() as u16).div_ceil(inner.width.max(1));
     let (legend, legend_rows) = if inner.height >= rows_for(&full) + 8 {
         let r = rows_for(&full);
         (full, r)
     } else {
-        let compact = legend(t, &show, moved, true);
+        let compact = legend(t, &show, moved, true, corrected);
         (compact, u16::from(inner.height >= 5))
     };
     let [canvas_area, legend_area] =

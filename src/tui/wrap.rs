@@ -188,10 +188,10 @@ mod tests {
 
     #[test]
     fn hanging_indent() {
-        let lines = wrap("Δv = −(1 + c) v_s and more words here", 16, 4);
+        let lines = wrap("Δv = -(1 + c) v_s and more words here", 16, 4);
         assert_eq!(
             lines,
-            ["Δv = −(1 + c)", "    v_s and more", "    words here"]
+            ["Δv = -(1 + c)", "    v_s and more", "    words here"]
         );
         for l in &lines {
             assert!(width(l) <= 16);

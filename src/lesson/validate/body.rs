@@ -217,7 +217,7 @@ impl Validator {
             self.err(
                 span,
                 format!(
-                    "body '{name}': inertia tensor must be symmetric (|I − Iᵀ| = {})",
+                    "body '{name}': inertia tensor must be symmetric (|I - Iᵀ| = {})",
                     crate::format::Fmt::new(3).num(asym)
                 ),
             );

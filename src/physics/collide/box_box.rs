@@ -22,7 +22,7 @@ pub(super) struct Overlap<T: Real> {
     pub axis: Axis,
     /// Unit axis oriented from B toward A.
     pub normal: Vector3<T>,
-    /// Overlap of the two projections on the axis: r_A + r_B − |d·L|.
+    /// Overlap of the two projections on the axis: r_A + r_B - |d·L|.
     pub depth: T,
 }
 
@@ -36,8 +36,8 @@ const EDGE_BIAS: f64 = 0.95;
 /// Separating axis test: `None` when an axis separates the boxes by more than
 /// `tol`, else the axis of least overlap (face axes preferred, A's first).
 ///
-/// On a unit axis L the boxes overlap by r_A + r_B − |d·L|, with
-/// r = Σ h_k |axis_k·L| and d = x_A − x_B. Everything is taken in A's frame,
+/// On a unit axis L the boxes overlap by r_A + r_B - |d·L|, with
+/// r = Σ h_k |axis_k·L| and d = x_A - x_B. Everything is taken in A's frame,
 /// where A's axes are e_i, B's axes the columns of C = AᵀB and d is t = Aᵀd
 /// (Gottschalk's OBB test; Ericson, Real-Time Collision Detection, 4.4.1).
 pub(super) fn separating_axis<T: Real>(
@@ -90,7 +90,7 @@ pub(super) fn separating_axis<T: Real>(
                 continue;
             }
             // Unnormalised: r_A = h_A,i1 |C_i2j| + h_A,i2 |C_i1j|,
-            // r_B = h_B,j1 |C_ij2| + h_B,j2 |C_ij1|, d·L = t_i2 C_i1j − t_i1 C_i2j.
+            // r_B = h_B,j1 |C_ij2| + h_B,j2 |C_ij1|, d·L = t_i2 C_i1j - t_i1 C_i2j.
             let ra = ha[i1] * abs[(i2, j)] + ha[i2] * abs[(i1, j)];
             let rb = hb[j1] * abs[(i, j2)] + hb[j2] * abs[(i, j1)];
             let dl = t[i2] * rot[(i1, j)] - t[i1] * rot[(i2, j)];
@@ -254,8 +254,8 @@ fn edge_edge<T: Real>(
     let (ma, mb) = (edge_middle(ha, pa, i, -n), edge_middle(hb, pb, j, n));
     let (da, db) = (pa.axis(i), pb.axis(j));
     // Closest points ma + s·da, mb + t·db of the two segments (lines first,
-    // then clamped to the edges): s = (e f − a·r)/(1 − e²), t = f + s e with
-    // r = ma − mb, e = da·db, f = db·r.
+    // then clamped to the edges): s = (e f - a·r)/(1 - e²), t = f + s e with
+    // r = ma - mb, e = da·db, f = db·r.
     let r = ma - mb;
     let (e, f, g) = (da.dot(&db), db.dot(&r), da.dot(&r));
     let clamp = |x: T, h: T| x.max(-h).min(h);

@@ -9,10 +9,10 @@ use super::{c, BoxPart, ContactPoint, Feature, Pose, Real, Side};
 /// Box of half sides `h` (body A) and sphere of radius `r` (body B).
 ///
 /// With the centre q (box frame) outside the box, the closest box point is
-/// q clamped to the box, b = clamp(q, −h, h); normal n = (b − q)/|b − q|
-/// (sphere toward box), penetration r − |b − q|. With q inside (or on the
-/// surface), the face with the least h_k − |q_k| is nearest: n is that face's
-/// inward normal and the penetration r + h_k − |q_k|.
+/// q clamped to the box, b = clamp(q, -h, h); normal n = (b - q)/|b - q|
+/// (sphere toward box), penetration r - |b - q|. With q inside (or on the
+/// surface), the face with the least h_k - |q_k| is nearest: n is that face's
+/// inward normal and the penetration r + h_k - |q_k|.
 pub(super) fn box_sphere<T: Real>(
     h: &Vector3<T>,
     cuboid: &Pose<T>,

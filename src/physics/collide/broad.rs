@@ -14,7 +14,7 @@ pub struct Aabb<T: Real> {
 }
 
 impl<T: Real> Aabb<T> {
-    /// The box from `centre − half` to `centre + half`.
+    /// The box from `centre - half` to `centre + half`.
     pub fn around(centre: &Vector3<T>, half: &Vector3<T>) -> Self {
         Aabb {
             min: centre - half,
@@ -34,7 +34,7 @@ impl<T: Real> Aabb<T> {
                     sum + r[(k, j)].abs() * c::<T>(sides[j] / 2.0)
                 })
             }),
-            // Axis a = body y: |a_k| h/2 + radius·√(1 − a_k²) (the cap discs).
+            // Axis a = body y: |a_k| h/2 + radius·√(1 - a_k²) (the cap discs).
             Shape::Cylinder { radius, height } => Vector3::from_fn(|k, _| {
                 let a = r[(k, 1)];
                 a.abs() * c::<T>(height / 2.0)
@@ -291,7 +291,7 @@ mod tests {
         )
         .unwrap();
         assert!((b.max - Vector3::new(2f64.sqrt(), 2f64.sqrt(), 2.0)).norm() < 1e-15);
-        // A cylinder lying along world −x after a quarter turn about z.
+        // A cylinder lying along world -x after a quarter turn about z.
         let side = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
         let lying = Pose::from_unit(Vector3::zeros(), &side);
         let can = Shape::Cylinder {

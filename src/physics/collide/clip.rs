@@ -50,7 +50,7 @@ pub(super) struct Reference<'a, T: Real> {
 }
 
 impl<T: Real> Reference<'_, T> {
-    /// Depth of a reference-frame point below the face: `h_i − s·x_i`.
+    /// Depth of a reference-frame point below the face: `h_i - s·x_i`.
     pub fn depth(&self, local: &Vector3<T>) -> T {
         self.h[self.axis] - self.sign * local[self.axis]
     }
@@ -90,7 +90,7 @@ pub(super) fn clip_incident<T: Real>(
     hi: &Vector3<T>,
 ) -> Polygon<T> {
     // The incident box in the reference frame: its axes are the columns of
-    // C = R_refᵀ R_inc, its centre o = R_refᵀ (x_inc − x_ref).
+    // C = R_refᵀ R_inc, its centre o = R_refᵀ (x_inc - x_ref).
     let rel = reference.pose.rotation.tr_mul(&incident.rotation);
     let origin = reference.pose.to_local(&incident.position);
     // The incident axis most along the reference face's outward normal
@@ -240,10 +240,10 @@ mod tests {
         assert_eq!(cut.len, 4);
         assert!(cut.iter().all(|p| p.x <= 0.5));
         assert_eq!(cut.iter().filter(|p| p.x == 0.5).count(), 2);
-        // Keep −x ≤ 2: untouched, in order.
+        // Keep -x ≤ 2: untouched, in order.
         clip_plane(&square, 0, -1.0, 2.0, &mut cut);
         assert_eq!(cut.points[..4], square.points[..4]);
-        // Keep x ≤ −3: nothing.
+        // Keep x ≤ -3: nothing.
         clip_plane(&square, 0, 1.0, -3.0, &mut cut);
         assert_eq!(cut.len, 0);
     }

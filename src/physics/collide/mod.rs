@@ -14,7 +14,7 @@
 //! - `point` lies on or between the two surfaces. A contact between the two
 //!   deepest features (sphere–sphere, sphere–plane, box–sphere, box–box
 //!   vertex–face and edge–edge) lies **midway between the surfaces** along
-//!   the normal: A's deepest point into B is `point − ½·penetration·normal`
+//!   the normal: A's deepest point into B is `point - ½·penetration·normal`
 //!   and B's deepest point into A is `point + ½·penetration·normal`. A point
 //!   of a contact set (box or cylinder on a plane, the box–box manifold) is
 //!   the penetrating point itself: a vertex or rim point below the plane, a
@@ -94,7 +94,7 @@ impl<T: Real> Pose<T> {
         self.rotation.column(i).into_owned()
     }
 
-    /// World point → body frame: `Rᵀ (p − x)`.
+    /// World point → body frame: `Rᵀ (p - x)`.
     pub fn to_local(&self, world: &Vector3<T>) -> Vector3<T> {
         self.rotation.tr_mul(&(world - self.position))
     }
@@ -156,7 +156,7 @@ pub enum Feature {
     /// A box vertex at or below a half-space.
     VertexPlane { cuboid: Side, vertex: u8 },
     /// A cylinder's rim point at or below a half-space: cap 0 is at body
-    /// −y, cap 1 at +y; `quarter` 0 is the rim point deepest below the plane,
+    /// -y, cap 1 at +y; `quarter` 0 is the rim point deepest below the plane,
     /// 1–3 the points a quarter turn apart from it.
     RimPlane {
         cylinder: Side,

@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use super::{c, vertex, ContactPoint, Feature, Pose, Real, Side};
 
 /// Sphere of radius `r` against the half-space through `plane.position` with
-/// unit world normal `n`: penetration `r − (x − x₀)·n` (the centre may even
+/// unit world normal `n`: penetration `r - (x - x₀)·n` (the centre may even
 /// be below the plane: it is a half-space, not a thin plane).
 pub(super) fn sphere_plane<T: Real>(
     r: T,
@@ -23,7 +23,7 @@ pub(super) fn sphere_plane<T: Real>(
     if penetration < -tol {
         return;
     }
-    // The sphere's deepest point is x − r n; the plane is `penetration` above it.
+    // The sphere's deepest point is x - r n; the plane is `penetration` above it.
     let deepest = sphere.position - n * r;
     out.push(ContactPoint {
         point: deepest + n * (penetration * c::<T>(0.5)),
@@ -128,7 +128,7 @@ fn push_below<T: Real>(
     feature: Feature,
     out: &mut Vec<ContactPoint<T>>,
 ) {
-    let penetration = T::zero() - height; // not −0 for a point on the plane
+    let penetration = T::zero() - height; // not -0 for a point on the plane
     if penetration >= -tol {
         out.push(ContactPoint {
             point: at,

@@ -4,8 +4,8 @@ use nalgebra::Vector3;
 
 use super::{c, ContactPoint, Feature, Pose, Real};
 
-/// Spheres of radii `ra` (body A) and `rb` (body B). Normal `n = (x_A − x_B)/|x_A − x_B|`,
-/// penetration `r_A + r_B − |x_A − x_B|`. Coincident centres have no line of
+/// Spheres of radii `ra` (body A) and `rb` (body B). Normal `n = (x_A - x_B)/|x_A - x_B|`,
+/// penetration `r_A + r_B - |x_A - x_B|`. Coincident centres have no line of
 /// centres: the normal is then world +y (by convention) and the penetration
 /// `r_A + r_B`.
 pub(super) fn sphere_sphere<T: Real>(
@@ -32,7 +32,7 @@ pub(super) fn sphere_sphere<T: Real>(
     } else {
         Vector3::y()
     };
-    // A's deepest point into B is x_A − r_A n; the contact point is half the
+    // A's deepest point into B is x_A - r_A n; the contact point is half the
     // penetration further along n.
     let deepest_a = pa.position - normal * ra;
     out.push(ContactPoint {

@@ -24,7 +24,7 @@ pub enum CheckKind {
     LinearMomentum,
     /// Each body's angular momentum about the contact point is unchanged.
     AngularMomentum(usize),
-    /// Normal separating velocity after = v_s + Δv (= −c v_s without acceleration).
+    /// Normal separating velocity after = v_s + Δv (= -c v_s without acceleration).
     Restitution,
     /// Kinetic energy must not rise.
     Energy,
@@ -42,13 +42,13 @@ pub enum CheckKind {
 /// stage's JSON values); physics only computes them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Measured<T: Real> {
-    /// |Σ m v after − Σ m v before|.
+    /// |Σ m v after - Σ m v before|.
     LinearMomentum { error: T },
-    /// |L after − L before| of body slot `body` about q.
+    /// |L after - L before| of body slot `body` about q.
     AngularMomentum { body: usize, error: T },
     /// Normal separating velocity before and after, and the target v_s + Δv.
     Restitution { before: T, after: T, expected: T },
-    /// Kinetic energy before and after, and `after − before`.
+    /// Kinetic energy before and after, and `after - before`.
     Energy { before: T, after: T, change: T },
     /// Normal and tangential impulse (contact space) and the cone's μ g_n.
     FrictionCone { normal: T, tangential: T, limit: T },
@@ -56,7 +56,7 @@ pub enum Measured<T: Real> {
     Slip { before: T, after: T },
     /// Depth to resolve, separation the finite move gained, what is left.
     ResidualPenetration { depth: T, gained: T, residual: T },
-    /// | |θ′| − 1 | of body slot `body`.
+    /// | |θ′| - 1 | of body slot `body`.
     UnitQuaternion { body: usize, error: T },
 }
 

@@ -34,7 +34,7 @@ pub fn skew<T: Real>(v: &Vector3<T>) -> Matrix3<T> {
     v.cross_matrix()
 }
 
-/// Significant digits `r = q − p` keeps when q and p are stored in `T`: each
+/// Significant digits `r = q - p` keeps when q and p are stored in `T`: each
 /// coordinate is held to about ε·|x|, so r is known to ±ε·max(|q|, |p|)
 /// (componentwise max). Capped at the type's own digits.
 pub fn difference_digits<T: Real>(r: &Vector3<T>, q: &Vector3<T>, p: &Vector3<T>) -> T {

@@ -38,8 +38,8 @@ pub struct Problem<T: Real> {
 }
 
 impl<T: Real> Problem<T> {
-    /// The sign body i takes in the contact: +1 for body 1, −1 for body 2
-    /// (the lecture's (−1)^(i+1)).
+    /// The sign body i takes in the contact: +1 for body 1, -1 for body 2
+    /// (the lecture's (-1)^(i+1)).
     pub fn sign(i: usize) -> T {
         if i == 0 {
             T::one()

@@ -35,17 +35,17 @@ pub struct ExactImpact<T: Real> {
 }
 
 impl<T: Real> ExactImpact<T> {
-    /// `P − P_one-shot`, contact space.
+    /// `P - P_one-shot`, contact space.
     pub fn impulse_difference(&self) -> Vector3<T> {
         self.outcome.impulse - self.one_shot_contact
     }
 
-    /// `|P − P_one-shot|`.
+    /// `|P - P_one-shot|`.
     pub fn impulse_difference_abs(&self) -> T {
         self.impulse_difference().norm()
     }
 
-    /// `|P − P_one-shot| / |P|` (the absolute difference when P = 0).
+    /// `|P - P_one-shot| / |P|` (the absolute difference when P = 0).
     pub fn impulse_difference_relative(&self) -> T {
         let size = self.outcome.impulse.norm();
         let diff = self.impulse_difference_abs();
@@ -56,12 +56,12 @@ impl<T: Real> ExactImpact<T> {
         }
     }
 
-    /// `E_one-shot − E_exact` after the impact.
+    /// `E_one-shot - E_exact` after the impact.
     pub fn energy_difference(&self) -> T {
         self.energy_after_one_shot - self.energy_after
     }
 
-    /// `E_after − E_before`.
+    /// `E_after - E_before`.
     pub fn energy_change(&self) -> T {
         self.energy_after - self.energy_before
     }

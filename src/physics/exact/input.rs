@@ -8,13 +8,13 @@ use crate::physics::{c, to_f64, Real};
 /// How the restitution phase ends.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum RestitutionLaw {
-    /// Kinematic: the normal velocity at separation is `u_n' = −e u_n0`.
+    /// Kinematic: the normal velocity at separation is `u_n' = -e u_n0`.
     Newton,
     /// Kinetic: the total normal impulse is `(1 + e)` times the normal
     /// impulse at maximum compression, `P_n' = (1 + e) P_c`.
     Poisson,
-    /// Energetic: the work of the normal impulse in restitution is `−e²`
-    /// times its work in compression, `W_r = −e² W_c`.
+    /// Energetic: the work of the normal impulse in restitution is `-e²`
+    /// times its work in compression, `W_r = -e² W_c`.
     Stronge,
 }
 

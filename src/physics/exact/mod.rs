@@ -10,16 +10,16 @@
 //!
 //! with K the collision matrix in contact space (x normal, y/z tangents t0/t1,
 //! the friction stage's 3×3 matrix). Friction opposes the current slip,
-//! `dP_t = −μ_d s dP_n` with `s = u_t/|u_t|`; a contact at rest tangentially
-//! sticks with `dP_t = τ dP_n`, `τ = −K_tt⁻¹ K_tn`, while `|τ| ≤ μ_s`, and
+//! `dP_t = -μ_d s dP_n` with `s = u_t/|u_t|`; a contact at rest tangentially
+//! sticks with `dP_t = τ dP_n`, `τ = -K_tt⁻¹ K_tn`, while `|τ| ≤ μ_s`, and
 //! otherwise slips again along the consistent direction
 //! ([`PhaseKind::SlipReverses`] in the planar case, [`PhaseKind::SlipResumes`] in 3D).
 //! Compression ends where u_n reaches 0 (P_c, work W_c); restitution ends by
-//! the chosen [`RestitutionLaw`]: Newton `u_n = −e u_n0`, Poisson
-//! `P_n = (1 + e) P_c`, Stronge `W_r = −e² W_c`.
+//! the chosen [`RestitutionLaw`]: Newton `u_n = -e u_n0`, Poisson
+//! `P_n = (1 + e) P_c`, Stronge `W_r = -e² W_c`.
 //!
 //! **How.** While dP/dP_n is constant (frictionless; sticking; slipping along
-//! an *invariant* direction, `K_tn − μ_d K_tt s ∥ s`, which covers the planar
+//! an *invariant* direction, `K_tn - μ_d K_tt s ∥ s`, which covers the planar
 //! case and any restart) u is linear in P_n and each stretch is solved in
 //! closed form (`run.rs`): these results are exact to round-off. Only an
 //! initial slip whose direction turns is integrated numerically
@@ -50,7 +50,7 @@
 //! against runs at rtol = 1e-13 the impulse differs by 2e-11·|P| (median),
 //! 2.3e-9·|P| at most; settling against integrating on, by 2.1e-10·|P| at
 //! most; planar impacts forced through the integrator reproduce the closed
-//! forms to 3.2e-10·|P|; the energy residual `|W_c + W_r + W_t − ΔE|`
+//! forms to 3.2e-10·|P|; the energy residual `|W_c + W_r + W_t - ΔE|`
 //! stays below 2.1e-9 of the collision energy `½ u0ᵀK⁻¹u0` there (one
 //! random case proptest found, μ_s = 0 < μ_d with a turning slip, reaches
 //! 2.0e-8: `tests/exact_impact.rs`). In short: the

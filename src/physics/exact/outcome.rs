@@ -12,7 +12,7 @@ use crate::physics::Real;
 pub enum PhaseKind<T: Real> {
     /// No friction at all (μ_s = μ_d = 0): the tangential motion is free.
     Frictionless,
-    /// The contact slips; friction `−μ_d s dP_n` opposes the slip direction s.
+    /// The contact slips; friction `-μ_d s dP_n` opposes the slip direction s.
     /// `rotating` is true when s turned (integrated numerically); otherwise s
     /// was constant and the stretch was solved in closed form.
     Slides {
@@ -21,7 +21,7 @@ pub enum PhaseKind<T: Real> {
         rotating: bool,
     },
     /// The contact sticks (u_t = 0): friction supplies `dP_t = τ dP_n`,
-    /// `τ = −K_tt⁻¹ K_tn`, inside the cone `|τ| ≤ μ_s`.
+    /// `τ = -K_tt⁻¹ K_tn`, inside the cone `|τ| ≤ μ_s`.
     Sticks { ratio: Vector2<T> },
     /// Instant: the slip speed reaches zero.
     SlipHalts,
@@ -143,7 +143,7 @@ pub struct ImpactOutcome<T: Real> {
     pub law: RestitutionLaw,
     /// False when `u0.x ≥ 0`: no impulse, no phases.
     pub closing: bool,
-    /// Total impulse P (contact space) on body 1; body 2 receives −P.
+    /// Total impulse P (contact space) on body 1; body 2 receives -P.
     pub impulse: Vector3<T>,
     /// Contact velocity after the impact, `u0 + K P`.
     pub velocity: Vector3<T>,
@@ -171,7 +171,7 @@ impl<T: Real> ImpactOutcome<T> {
         self.work_compression + self.work_restitution + self.work_friction
     }
 
-    /// `|W_c + W_r + W_t − ΔE|`: zero up to round-off for closed-form
+    /// `|W_c + W_r + W_t - ΔE|`: zero up to round-off for closed-form
     /// stretches, the integration error otherwise.
     pub fn energy_residual(&self) -> T {
         (self.work_total() - self.energy_change).abs()

@@ -102,7 +102,7 @@ pub(super) fn step<T: Real>(
     }
 }
 
-/// The next step size after a step with this error: `0.9 err^(−1/5)`,
+/// The next step size after a step with this error: `0.9 err^(-1/5)`,
 /// between 0.2× and 5× (Hairer–Nørsett–Wanner's standard controller).
 pub(super) fn next_size<T: Real>(h: T, error: T) -> T {
     let factor = if error > T::zero() {
@@ -119,7 +119,7 @@ mod tests {
 
     #[test]
     fn exponential_decay_to_fifth_order() {
-        // y' = −y: one step of h = 0.1 matches e^{−0.1} to O(h⁶).
+        // y' = -y: one step of h = 0.1 matches e^{-0.1} to O(h⁶).
         let f = |y: &State<f64>| -y;
         let y = State::from_element(1.0);
         let t = step(&f, &y, &f(&y), 0.1);

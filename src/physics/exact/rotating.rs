@@ -1,5 +1,5 @@
 //! Slip whose direction turns: the slip-direction ODE
-//! `du_t/dP_n = K_tn − μ_d K_tt s`, `s = u_t/|u_t|`, integrated with
+//! `du_t/dP_n = K_tn - μ_d K_tt s`, `s = u_t/|u_t|`, integrated with
 //! Dormand–Prince 5(4), with event location for maximum compression, the
 //! law's end and slip halting.
 //!
@@ -7,7 +7,7 @@
 //! It is integrated in the rescaled impulse σ with `dP_n = |u_t| dσ` (a
 //! Sundman transformation), which removes the singularity:
 //!
-//! `dP_n/dσ = |u_t|`, `dP_t/dσ = −μ_d u_t`, `dW_n/dσ = |u_t| u_n`, `dW_t/dσ = −μ_d |u_t|²`,
+//! `dP_n/dσ = |u_t|`, `dP_t/dσ = -μ_d u_t`, `dW_n/dσ = |u_t| u_n`, `dW_t/dσ = -μ_d |u_t|²`,
 //!
 //! with `u = u0 + K P`. In σ the direction follows an autonomous flow on the
 //! circle toward an invariant direction and |u_t| decays exponentially when
@@ -162,7 +162,7 @@ fn check_budget<T: Real>(run: &Run<T>, p_n: T, during: &'static str) -> Result<(
 }
 
 /// The last `|u_t|/|λ|` of normal impulse before the halt, in closed form
-/// along the last direction s (λ = s·(K_tn − μ_d K_tt s) < 0): at most
+/// along the last direction s (λ = s·(K_tn - μ_d K_tt s) < 0): at most
 /// `rtol·|u0|/|λ|`, so the direction's last turn changes P by less than that.
 fn tail<T: Real>(run: &mut Run<T>) {
     let s = run.direction;
@@ -178,7 +178,7 @@ fn tail<T: Real>(run: &mut Run<T>) {
     let half = c::<T>(0.5);
     run.p += dp * delta;
     run.w_n += u.x * delta + half * a_n * delta * delta;
-    // |u_t| falls linearly from h to 0: friction works −μ_d h δ / 2.
+    // |u_t| falls linearly from h to 0: friction works -μ_d h δ / 2.
     run.w_t -= run.mu_d * h * delta * half;
     run.sample();
 }
@@ -243,8 +243,8 @@ fn locate<T: Real>(
 }
 
 /// The invariant direction the slip has settled on, if it has. With
-/// `b(s) = K_tn − μ_d K_tt s`, the direction turns at `ω = s⊥·b` per unit σ,
-/// `dω/dθ = −s·b − μ_d s⊥ᵀ K_tt s⊥`; the invariant direction nearby (Newton on
+/// `b(s) = K_tn - μ_d K_tt s`, the direction turns at `ω = s⊥·b` per unit σ,
+/// `dω/dθ = -s·b - μ_d s⊥ᵀ K_tt s⊥`; the invariant direction nearby (Newton on
 /// ω(θ) = 0) is stable when dω/dθ < 0, and it is θ ≈ |ω/(dω/dθ)| away.
 /// Freezing the direction there changes P by about μ_d θ |u_t| / |dω/dθ + λ|
 /// per unit of remaining slip, so it is done when the slip decelerates

@@ -50,7 +50,7 @@ pub(super) struct Run<'a, T: Real> {
     /// Impulse so far (contact space).
     pub p: Vector3<T>,
     /// Work of the normal impulse in the current phase (compression, then
-    /// restitution: reset at maximum compression, so that W_r = −e² W_c is
+    /// restitution: reset at maximum compression, so that W_r = -e² W_c is
     /// tested without cancellation when e is small) and of friction so far.
     pub w_n: T,
     pub w_t: T,
@@ -172,7 +172,7 @@ impl<'a, T: Real> Run<'a, T> {
         }
     }
 
-    /// Normal velocity at which Newton's law ends the impact, `−e u_n0`.
+    /// Normal velocity at which Newton's law ends the impact, `-e u_n0`.
     pub fn newton_target(&self) -> T {
         -self.input.restitution * self.input.u0.x
     }
@@ -254,8 +254,8 @@ impl<'a, T: Real> Run<'a, T> {
             }
             RestitutionLaw::Poisson => Some((T::one() + e) * p_c - self.p.x),
             RestitutionLaw::Stronge => {
-                // W_r(δ) = W_r + u_n δ + ½ a_n δ² reaches −e² W_c: the smaller
-                // positive root of ½ a_n δ² + u_n δ − D = 0, in the stable form.
+                // W_r(δ) = W_r + u_n δ + ½ a_n δ² reaches -e² W_c: the smaller
+                // positive root of ½ a_n δ² + u_n δ - D = 0, in the stable form.
                 let gap = -e * e * w_c - self.w_n;
                 if gap <= T::zero() {
                     return Some(T::zero());

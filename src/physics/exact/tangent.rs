@@ -1,5 +1,5 @@
 //! Tangent-plane maths of the impact: the blocks of K, the sticking ratio
-//! τ = −K_tt⁻¹ K_tn, invariant slip directions and the direction slip
+//! τ = -K_tt⁻¹ K_tn, invariant slip directions and the direction slip
 //! restarts in when the cone cannot hold the contact.
 
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
@@ -36,14 +36,14 @@ fn solve2<T: Real>(a: &Matrix2<T>, b: &Vector2<T>) -> Vector2<T> {
     )
 }
 
-/// Sticking ratio `τ = −K_tt⁻¹ K_tn`: the tangential impulse per unit normal
+/// Sticking ratio `τ = -K_tt⁻¹ K_tn`: the tangential impulse per unit normal
 /// impulse that keeps u_t = 0. The contact can stick while `|τ| ≤ μ_s`.
 pub(super) fn stick_ratio<T: Real>(k: &Matrix3<T>) -> Vector2<T> {
     -solve2(&k_tt(k), &k_tn(k))
 }
 
 /// Rate of change of the tangential velocity while slipping along s,
-/// `du_t/dP_n = K_tn − μ_d K_tt s`.
+/// `du_t/dP_n = K_tn - μ_d K_tt s`.
 pub(super) fn slip_rate<T: Real>(k: &Matrix3<T>, mu: T, s: &Vector2<T>) -> Vector2<T> {
     k_tn(k) - k_tt(k) * s * mu
 }
@@ -57,7 +57,7 @@ pub(super) fn is_invariant<T: Real>(k: &Matrix3<T>, mu: T, s: &Vector2<T>) -> bo
 }
 
 /// The direction slip restarts in from rest when the cone cannot hold the
-/// contact (`|τ| > μ_d`): the unit s with `K_tn − μ_d K_tt s = λ s`, λ > 0,
+/// contact (`|τ| > μ_d`): the unit s with `K_tn - μ_d K_tt s = λ s`, λ > 0,
 /// so that the slip it starts grows along itself and stays consistent
 /// (Mirtich's thesis ch. 4; Stronge, Impact Mechanics ch. 5). It is
 /// `s(λ) = (λ𝟙 + μ_d K_tt)⁻¹ K_tn` for the unique λ > 0 with `|s(λ)| = 1`:
@@ -78,7 +78,7 @@ pub(super) fn restart_direction<T: Real>(k: &Matrix3<T>, mu: T) -> Option<(Vecto
     if s_of(T::zero()).norm() <= T::one() {
         return None;
     }
-    // Safeguarded Newton on φ(λ) = 1/|s(λ)| − 1, increasing and nearly linear
+    // Safeguarded Newton on φ(λ) = 1/|s(λ)| - 1, increasing and nearly linear
     // (as in trust-region solvers); bisection whenever Newton leaves the bracket.
     let (mut lo, mut hi) = (T::zero(), size);
     let mut lambda = size * c(0.5);
@@ -97,7 +97,7 @@ pub(super) fn restart_direction<T: Real>(k: &Matrix3<T>, mu: T) -> Option<(Vecto
         {
             break;
         }
-        // ds/dλ = −(λ𝟙 + μ K_tt)⁻¹ s,  φ' = −(s·s')/|s|³.
+        // ds/dλ = -(λ𝟙 + μ K_tt)⁻¹ s,  φ' = -(s·s')/|s|³.
         let ds = -solve2(&(Matrix2::identity() * lambda + ktt * mu), &s);
         let dphi = -s.dot(&ds) / (norm * norm * norm);
         let newton = lambda - phi / dphi;
@@ -150,7 +150,7 @@ mod tests {
         let k = Matrix3::new(2.5, -1.5, 0.0, -1.5, 2.5, 0.0, 0.0, 0.0, 4.0);
         let (s, lambda): (Vector2<f64>, f64) = restart_direction(&k, 0.5).unwrap();
         assert_eq!(s, Vector2::new(-1.0, 0.0));
-        // λ = s·(K_tn − μ K_tt s) = 1.5 − 0.5·2.5 = 0.25.
+        // λ = s·(K_tn - μ K_tt s) = 1.5 - 0.5·2.5 = 0.25.
         assert!((lambda - 0.25).abs() < 1e-15, "{lambda}");
     }
 }

@@ -6,9 +6,9 @@ use nalgebra::{Matrix3, Vector2, Vector3};
 use super::*;
 
 /// A slender rod (m = 1, length 2, I = 1/3) landing on its end at 45°:
-/// r = (−1/√2, −1/√2), so K_nn = K_tt = 1/m + r²/(2I) = 2.5 and
-/// K_nt = −r_x r_y / I = −1.5 (planar; the out-of-plane tangent is uncoupled).
-/// τ = −K_tn/K_tt = 0.6.
+/// r = (-1/√2, -1/√2), so K_nn = K_tt = 1/m + r²/(2I) = 2.5 and
+/// K_nt = -r_x r_y / I = -1.5 (planar; the out-of-plane tangent is uncoupled).
+/// τ = -K_tn/K_tt = 0.6.
 fn rod() -> Matrix3<f64> {
     Matrix3::new(2.5, -1.5, 0.0, -1.5, 2.5, 0.0, 0.0, 0.0, 4.0)
 }
@@ -33,12 +33,12 @@ fn kinds(o: &ImpactOutcome<f64>) -> Vec<(&'static str, f64)> {
     o.phases.iter().map(|p| (p.kind.name(), p.to_pn)).collect()
 }
 
-/// μ = 0.5 < τ: slip reverses. u0 = (−1, 0.55). Forward slip (s = +1):
-/// du/dP_n = K(1, −μ) = (3.25, −2.75), halts at P_n = 0.55/2.75 = 0.2 with
-/// u_n = −0.35. Reversed (s = −1): du/dP_n = K(1, μ) = (1.75, −0.25), so
-/// compression ends at P_c = 0.2 + 0.35/1.75 = 0.4. W_c = −0.135 − 0.035 = −0.17.
-/// Poisson e = 0.5: P_n = 0.6, P_t = −0.5·0.2 + 0.5·0.4 = 0.1, u = (0.35, −0.1).
-/// Newton: 1.75 (P_n − 0.4) = 0.5 → P_n = 0.4 + 2/7.
+/// μ = 0.5 < τ: slip reverses. u0 = (-1, 0.55). Forward slip (s = +1):
+/// du/dP_n = K(1, -μ) = (3.25, -2.75), halts at P_n = 0.55/2.75 = 0.2 with
+/// u_n = -0.35. Reversed (s = -1): du/dP_n = K(1, μ) = (1.75, -0.25), so
+/// compression ends at P_c = 0.2 + 0.35/1.75 = 0.4. W_c = -0.135 - 0.035 = -0.17.
+/// Poisson e = 0.5: P_n = 0.6, P_t = -0.5·0.2 + 0.5·0.4 = 0.1, u = (0.35, -0.1).
+/// Newton: 1.75 (P_n - 0.4) = 0.5 → P_n = 0.4 + 2/7.
 /// Stronge: ½·1.75 δ² = 0.25·0.17 → P_n = 0.4 + √(0.0425/0.875).
 #[test]
 fn rod_slip_reverses_closed_form() {
@@ -48,7 +48,7 @@ fn rod_slip_reverses_closed_form() {
     assert!((poisson.velocity - Vector3::new(0.35, -0.1, 0.0)).norm() < 1e-15);
     assert!(close(poisson.compression_pn, 0.4, 1e-15));
     assert!(close(poisson.work_compression, -0.17, 1e-15));
-    // W_r = ½·1.75·0.2², W_t = −0.5·(0.55·0.2/2) − 0.5·(0.25·0.4·0.4/2) = −0.0375.
+    // W_r = ½·1.75·0.2², W_t = -0.5·(0.55·0.2/2) - 0.5·(0.25·0.4·0.4/2) = -0.0375.
     assert!(close(poisson.work_restitution, 0.035, 1e-15));
     assert!(close(poisson.work_friction, -0.0375, 1e-15));
     assert!(close(poisson.energy_change, -0.1725, 1e-15));
@@ -90,12 +90,12 @@ fn rod_slip_reverses_closed_form() {
     ));
 }
 
-/// μ = 0.8 ≥ τ = 0.6: slip halts and sticks. u0 = (−1, 0.7): du/dP_n =
-/// K(1, −0.8) = (3.7, −3.5), halt at 0.2 with u_n = −0.26; sticking, u_n
-/// rises by the Schur complement S = 2.5 − 1.5²/2.5 = 1.6 per unit P_n:
+/// μ = 0.8 ≥ τ = 0.6: slip halts and sticks. u0 = (-1, 0.7): du/dP_n =
+/// K(1, -0.8) = (3.7, -3.5), halt at 0.2 with u_n = -0.26; sticking, u_n
+/// rises by the Schur complement S = 2.5 - 1.5²/2.5 = 1.6 per unit P_n:
 /// P_c = 0.2 + 0.26/1.6 = 0.3625. Poisson e = 0.5: P_n = 0.54375,
-/// P_t = −0.16 + 0.6·0.34375 = 0.04625, u = (0.29, 0). Newton ends at u_n = 0.5,
-/// stuck: exactly the one-shot sticking impulse K⁻¹(1.5, −0.7) = (0.675, 0.125).
+/// P_t = -0.16 + 0.6·0.34375 = 0.04625, u = (0.29, 0). Newton ends at u_n = 0.5,
+/// stuck: exactly the one-shot sticking impulse K⁻¹(1.5, -0.7) = (0.675, 0.125).
 #[test]
 fn rod_slip_halts_and_sticks_closed_form() {
     let u0 = Vector3::new(-1.0, 0.7, 0.0);
@@ -235,7 +235,7 @@ fn settled_slip_halts_instead_of_sliding_through_zero() {
     assert!(diff < 1e-9, "{diff:e}");
 }
 
-/// Stronge's end with a tiny e: W_r = −e² W_c is accumulated from maximum
+/// Stronge's end with a tiny e: W_r = -e² W_c is accumulated from maximum
 /// compression on, not as the difference of two nearly equal totals.
 #[test]
 fn stronge_with_tiny_restitution_stays_exact() {

@@ -17,7 +17,7 @@ pub struct SceneChecks<T: Real> {
     /// Σ m v of the free bodies, before and after.
     pub momentum_before: Vector3<T>,
     pub momentum_after: Vector3<T>,
-    /// |after − before| / (Σ m|v| before + Σ m|v| after), 0 without free bodies.
+    /// |after - before| / (Σ m|v| before + Σ m|v| after), 0 without free bodies.
     pub momentum_error: T,
     pub momentum_conserved: bool,
     /// Kinetic energy of every movable body.
@@ -27,7 +27,7 @@ pub struct SceneChecks<T: Real> {
     pub energy_not_gained: bool,
     /// The deepest bookkeeping penetration left, and its contact.
     pub penetration_left: (T, usize),
-    /// The largest closing speed left (−v_s, 0 when every contact separates), and its contact.
+    /// The largest closing speed left (-v_s, 0 when every contact separates), and its contact.
     pub closing_left: (T, usize),
 }
 

@@ -3,8 +3,8 @@
 //! - [`take`]: resolve one contact's penetration with the nonlinear (or
 //!   linear) projection and the angular limit, and move its bodies;
 //! - [`updated_penetration`]: a contact's penetration after the taken contact
-//!   moved bodies it shares, `pen_j −= s·(Δp + Δθ × r_j)·n_j` (s = +1 for
-//!   body 1 of contact j, −1 for body 2).
+//!   moved bodies it shares, `pen_j -= s·(Δp + Δθ × r_j)·n_j` (s = +1 for
+//!   body 1 of contact j, -1 for body 2).
 
 use nalgebra::Vector3;
 

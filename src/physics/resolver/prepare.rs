@@ -68,7 +68,7 @@ pub struct ResolverContact<T: Real> {
     /// Resolver body index of body 1 and body 2; `None` for the world or an immovable body.
     pub bodies: [Option<usize>; 2],
     pub normal: Vector3<T>,
-    /// `r = q − p` of each slot at prepare (zero for an empty slot).
+    /// `r = q - p` of each slot at prepare (zero for an empty slot).
     pub r: [Vector3<T>; 2],
     /// The bookkeeping contact velocity (contact space), updated linearly.
     pub velocity: Vector3<T>,
@@ -76,7 +76,7 @@ pub struct ResolverContact<T: Real> {
     pub basis: Matrix3<T>,
     /// `v_s` at prepare (restitution from the initial velocity uses it).
     pub initial_velocity: T,
-    /// `(a₁ − a₂)·d Δt`.
+    /// `(a₁ - a₂)·d Δt`.
     pub velocity_from_acceleration: T,
     pub restitution: T,
     pub velocity_limit: T,

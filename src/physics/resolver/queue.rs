@@ -247,7 +247,7 @@ mod tests {
         assert_eq!(t.top(), Some((4, 1.0)));
         t.update(4, -5.0);
         t.update(1, -5.0);
-        // NaN ranks below every number: contact 0 (−1) comes first.
+        // NaN ranks below every number: contact 0 (-1) comes first.
         assert_eq!(t.top(), Some((0, -1.0)));
     }
 

@@ -23,8 +23,8 @@ fn spread(i: usize, salt: u64) -> f64 {
 /// `n` spheres (radius 0.5, mass 1) in a row along x, each sunk 0.005–0.05
 /// into the floor and overlapping its neighbours by about 0.005–0.04 (the
 /// normal between neighbours is along their line of centres), falling at
-/// 1–1.5 and drifting along the row: `n` floor contacts and `n − 1` contacts
-/// between neighbours (2n − 1 in all), in the order floor 0, pair 0–1,
+/// 1–1.5 and drifting along the row: `n` floor contacts and `n - 1` contacts
+/// between neighbours (2n - 1 in all), in the order floor 0, pair 0–1,
 /// floor 1, pair 1–2, …. Frictionless; restitution 0.3 on the floor, 0.5
 /// between spheres; the reference engine's velocity limit 0.25.
 pub fn sphere_row<T: Real>(n: usize) -> World<T> {

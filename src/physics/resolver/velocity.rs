@@ -4,7 +4,7 @@
 //!   3×3 sticking impulse and the friction clamp of its model), applied to its bodies;
 //! - [`updated_velocity`]: a contact's velocity after the taken contact changed
 //!   bodies it shares, `v_j += s·Cⱼᵀ(Δv + Δω × r_j)` (s = +1 for body 1 of
-//!   contact j, −1 for body 2); its desired Δv is then recomputed.
+//!   contact j, -1 for body 2); its desired Δv is then recomputed.
 
 use nalgebra::Vector3;
 

@@ -1,4 +1,4 @@
-//! Energy of a world: kinetic `½ m v·v + ½ ωᵀ I ω` and potential `−m g·x`
+//! Energy of a world: kinetic `½ m v·v + ½ ωᵀ I ω` and potential `-m g·x`
 //! (zero at the origin), summed over movable bodies.
 
 use nalgebra::Vector3;

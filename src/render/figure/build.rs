@@ -3,7 +3,10 @@
 //! legend and the bounds.
 
 use super::model::*;
-use super::outline::{outline, spin_arc_radius, surface_distance};
+use nalgebra::Vector3;
+
+use super::outline::{outline, rotation, spin_arc_radius, surface_distance};
+use crate::physics::Shape;
 use crate::trace::{BodyView, ContactView, Plane};
 
 const SUB: [&str; 3] = ["", "₁", "₂"];
@@ -48,6 +51,7 @@ pub(super) fn build(bodies: &[&BodyView], contacts: &[ContactView], plane: Plane
         spins: vec![],
         points: vec![],
         legend: vec![],
+        corrected: None,
         bounds: Bounds::default(),
         scene_length: 1.0,
         top_speed: marks
@@ -84,6 +88,35 @@ pub(super) fn build(bodies: &[&BodyView], contacts: &[ContactView], plane: Plane
     fig.scene_length = scene_length(&fig, bodies, contacts);
     fig.legend = legend(&fig, bodies, contacts);
     fig
+}
+
+/// Where the plane through `on` with outward normal `outward` (world) meets
+/// the view plane through `q`: the line `n_u u + n_v v = n·on - n_w q_w`,
+/// its point nearest q, and the solid side (-n); `None` when the normal's
+/// share in the view plane is below [`FACE_ON`] (the plane faces the viewer).
+pub(super) fn section(
+    plane: Plane,
+    on: [f64; 3],
+    outward: [f64; 3],
+    q: [f64; 3],
+) -> Option<Section> {
+    let size = norm(outward);
+    if !(size > 0.0 && size.is_finite()) {
+        return None;
+    }
+    let n = view(plane, outward.map(|x| x / size));
+    let (o, q) = (view(plane, on), view(plane, q));
+    let len = n[0].hypot(n[1]);
+    if len < FACE_ON {
+        return None;
+    }
+    let c = n[0] * o[0] + n[1] * o[1] + n[2] * o[2] - n[2] * q[2];
+    let off = (n[0] * q[0] + n[1] * q[1] - c) / (len * len);
+    Some(Section {
+        at: [q[0] - off * n[0], q[1] - off * n[1]],
+        along: [-n[1] / len, n[0] / len],
+        solid_side: [-n[0] / len, -n[1] / len],
+    })
 }
 
 /// Projection of a world vector into view coordinates.
@@ -129,7 +162,7 @@ fn body_marks(b: &BodyView, i: usize, contacts: &[ContactView], plane: Plane) ->
 }
 
 /// Contact `k`: its marks, the surfaces through it, and its arrows: the
-/// arms of its movable bodies (in body order), d̂, g and −g.
+/// arms of its movable bodies (in body order), d̂, g and -g.
 fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyView], one: bool) {
     let tag = if one {
         String::new()
@@ -148,24 +181,27 @@ fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyVie
         impulse_size: c.impulse.map_or(0.0, norm),
         label: format!("q{tag}"),
     });
-    // Half-spaces (solid on body 1's side, +d̂, or body 2's, −d̂), then the world.
+    // Half-spaces (solid on body 1's side, +d̂, or body 2's, -d̂), each
+    // drawn as its own plane, then the world (through q, across d̂).
     for (i, b) in bodies.iter().enumerate() {
-        if b.shape.is_some_and(|s| !s.is_finite()) && c.bodies.contains(&Some(i)) {
+        if let Some(Shape::HalfSpace { normal }) = b.shape.filter(|_| c.bodies.contains(&Some(i))) {
             let solid = if c.bodies[0] == Some(i) { 1.0 } else { -1.0 };
-            let body = Some(i);
+            let outward = rotation(b.orientation) * Vector3::from(normal);
+            let outward = [outward.x, outward.y, outward.z];
             fig.surfaces.push(Surface {
                 contact: k,
-                body,
+                body: Some(i),
                 solid,
+                section: section(fig.plane, b.position, outward, c.point),
             });
         }
     }
     if c.bodies[1].is_none() {
-        let (body, solid) = (None, -1.0);
         fig.surfaces.push(Surface {
             contact: k,
-            body,
-            solid,
+            body: None,
+            solid: -1.0,
+            section: section(fig.plane, c.point, c.normal, c.point),
         });
     }
     let mut arrows = vec![];
@@ -200,7 +236,7 @@ fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyVie
                 ArrowKind::Reaction,
                 point,
                 minus_g,
-                format!("−g{tag}"),
+                format!("-g{tag}"),
                 Some(b2),
             );
         }

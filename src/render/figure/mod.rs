@@ -10,11 +10,13 @@ mod model;
 mod outline;
 mod stage;
 #[cfg(test)]
+mod surface_tests;
+#[cfg(test)]
 mod tests;
 
 pub use model::{
     flat, Arrow, ArrowKind, BodyMarks, Bounds, ContactMarks, Figure, Ink, LegendItem, Point,
-    PointKind, Span, Spin, Surface, P, ROUND_OFF_MOVE, V,
+    PointKind, Section, Span, Spin, Surface, FACE_ON, P, ROUND_OFF_MOVE, V,
 };
 pub use outline::{hull, outline, spin_arc_radius, surface_distance, Outline, Silhouette};
 
@@ -34,6 +36,7 @@ impl Figure {
             .bodies
             .map(|b| b.and_then(|b| shown.iter().position(|i| *i == b)));
         let mut f = build::build(&bodies, &[contact], plane);
+        f.corrected.clone_from(&scene.corrected);
         f.prune_legend();
         f
     }

@@ -63,6 +63,9 @@ pub struct Figure {
     pub scene_length: f64,
     /// The fastest speed of any body, before or after.
     pub top_speed: f64,
+    /// The lesson's note when the bodies are drawn with its `[figure]`
+    /// geometry, corrected from the lecture's (the numbers stay the lecture's).
+    pub corrected: Option<String>,
 }
 
 impl Figure {
@@ -102,7 +105,7 @@ pub struct BodyMarks {
     pub outline_after: Option<Outline>,
     /// The largest change of a position or orientation component (0: unmoved).
     pub pose_change: f64,
-    /// How far the projection carries the centre, |p′ − p|.
+    /// How far the projection carries the centre, |p′ - p|.
     pub travel: f64,
     /// Radius of the smallest ball about the centre that holds the shape (0
     /// without a finite shape): the body's share of the scene length.
@@ -141,28 +144,50 @@ pub struct ContactMarks {
     pub label: String,
 }
 
-/// The plane through a contact point perpendicular to its normal, where a
-/// half-space body (or the immovable world) meets the other body.
+/// A half-space body's own plane (through its position, across its
+/// normal), or for the immovable world of a one-body contact the plane
+/// through the contact point across d̂: where it meets the other body.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Surface {
     pub contact: usize,
     /// The half-space body; `None` for the world of a one-body contact.
     pub body: Option<usize>,
     /// +1 when the solid side lies along +d̂ (a half-space as body 1),
-    /// −1 along −d̂ (body 2 and the world).
+    /// -1 along -d̂ (body 2 and the world).
     pub solid: f64,
+    /// Where the surface meets the view plane through the contact point;
+    /// `None` when the view plane is (nearly) parallel to the surface, which
+    /// is then seen face on and not drawn.
+    pub section: Option<Section>,
 }
+
+/// A surface seen edge on: the line where it meets the view plane through
+/// the contact point (depth `q_w`): `n_u u + n_v v = n·p₀ - n_w q_w` for a
+/// plane through p₀ with outward normal n.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Section {
+    /// The point of the line nearest the contact point.
+    pub at: P,
+    /// Unit direction of the line.
+    pub along: P,
+    /// Unit direction, across the line, toward the solid side (for hatching).
+    pub solid_side: P,
+}
+
+/// A surface whose normal has less than this share in the view plane is
+/// taken as facing the viewer (about 11.5° from the view plane or less).
+pub const FACE_ON: f64 = 0.2;
 
 /// What an arrow shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ArrowKind {
-    /// r = q − p, from a body's centre to the contact point.
+    /// r = q - p, from a body's centre to the contact point.
     Arm,
     /// d̂ at the contact point.
     Normal,
     /// g, the impulse on body 1 at the contact point.
     Impulse,
-    /// −g, on a movable body 2.
+    /// -g, on a movable body 2.
     Reaction,
     Velocity,
     VelocityAfter,
@@ -255,7 +280,7 @@ pub enum LegendItem {
         contact: usize,
         impulse: [f64; 3],
     },
-    /// Both bodies move, so body 2 receives −g.
+    /// Both bodies move, so body 2 receives -g.
     Reaction {
         contact: usize,
     },

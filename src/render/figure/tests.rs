@@ -187,6 +187,7 @@ fn cube_on_floor() -> SceneView {
     cube.position_after = [20.0, 16.5, 0.0];
     let mut floor = floor();
     floor.slot = 2;
+    floor.position = [0.0, 10.0, 0.0];
     SceneView {
         bodies: vec![body("lamp", None, [0.0, 50.0, 0.0]), cube, floor],
         contact: 0,
@@ -194,6 +195,7 @@ fn cube_on_floor() -> SceneView {
         normal: [0.0, 1.0, 0.0],
         penetration: 0.5,
         impulse: Some([0.0, 18.0, 0.0]),
+        corrected: None,
     }
 }
 
@@ -209,13 +211,19 @@ fn one_contact_figure_marks() {
     assert_eq!(names, [("cube", 1, "₁"), ("floor", 2, "₂")]);
     assert_eq!(fig.contacts[0].bodies, [Some(0), Some(1)]);
     assert_eq!(fig.contacts[0].label, "q");
-    // The floor is a surface with its solid side below (−d̂); no world surface.
+    // The floor is a surface with its solid side below (-d̂), drawn
+    // through q (the floor's plane y = 10); no world surface.
     assert_eq!(
         fig.surfaces,
         [Surface {
             contact: 0,
             body: Some(1),
-            solid: -1.0
+            solid: -1.0,
+            section: Some(Section {
+                at: [22.0, 10.0],
+                along: [-1.0, 0.0],
+                solid_side: [0.0, -1.0]
+            })
         }]
     );
     let arrows: Vec<(ArrowKind, &str)> = fig
@@ -249,8 +257,8 @@ fn one_contact_figure_marks() {
     assert!((fig.scene_length - 6.0 * 3f64.sqrt()).abs() < 1e-12);
     assert_eq!(fig.top_speed, 5f64.sqrt());
     // Bounds: the cube's square (14..26, 10..22), q, and every centre, the
-    // floor's position (the origin) too.
-    assert_eq!((fig.bounds.lo, fig.bounds.hi), ([0.0, 0.0], [26.0, 22.0]));
+    // floor's position (0, 10) too.
+    assert_eq!((fig.bounds.lo, fig.bounds.hi), ([0.0, 10.0], [26.0, 22.0]));
     let cube = &fig.bodies[0];
     assert!(cube.moved() && cube.outline_after.is_some() && cube.travel == 0.5);
     assert!(!fig.beyond(cube));
@@ -299,7 +307,12 @@ fn a_one_body_contact_meets_the_world() {
         [Surface {
             contact: 0,
             body: None,
-            solid: -1.0
+            solid: -1.0,
+            section: Some(Section {
+                at: [22.0, 10.0],
+                along: [-1.0, 0.0],
+                solid_side: [0.0, -1.0]
+            })
         }]
     );
 }
@@ -367,7 +380,7 @@ fn a_figure_of_five_bodies_and_eight_contacts() {
         .iter()
         .find(|a| a.kind == ArrowKind::Reaction)
         .unwrap();
-    assert_eq!((reaction.body, reaction.label.as_str()), (Some(3), "−g₅"));
+    assert_eq!((reaction.body, reaction.label.as_str()), (Some(3), "-g₅"));
     assert_eq!(reaction.tip(2.0), [0.0, 5.0, 0.0]);
     // Velocity arrows for the four movable bodies, before and after.
     assert_eq!(
@@ -376,7 +389,7 @@ fn a_figure_of_five_bodies_and_eight_contacts() {
     );
     // Four centres (not the floor's) and eight contact points.
     assert_eq!(fig.points.len(), 12);
-    // Bounds: the boxes and the ball, x from −1 to 3, y from 0 to 6.
+    // Bounds: the boxes and the ball, x from -1 to 3, y from 0 to 6.
     assert_eq!((fig.bounds.lo, fig.bounds.hi), ([-1.0, 0.0], [3.0, 6.0]));
     assert!((fig.scene_length - 3f64.sqrt()).abs() < 1e-12);
     assert_eq!(fig.top_speed, 1.0);

@@ -94,12 +94,12 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                     &format!("g on body 1 {}", v(impulse)),
                 );
             }
-            LegendItem::Reaction { .. } => out.line(None, "(body 2 receives −g)"),
+            LegendItem::Reaction { .. } => out.line(None, "(body 2 receives -g)"),
             LegendItem::Arm { body, arm, .. } => {
                 let n = tag(body);
                 out.line(
                     Some((ARM, true, 2.0)),
-                    &format!("r{n} = q − p{n} {}", v(arm)),
+                    &format!("r{n} = q - p{n} {}", v(arm)),
                 );
             }
             LegendItem::Velocity {
@@ -155,4 +155,48 @@ pub fn legend(page: &mut Page, fig: &Figure) {
             }
         }
     }
+    // The lesson's figure-only correction of the lecture's geometry.
+    if let Some(note) = &fig.corrected {
+        out.y += 6.0;
+        for line in wrap(note, 40) {
+            out.line(None, &line);
+        }
+    }
+    // Labels with no free place in the drawing, by their markers.
+    let moved = std::mem::take(&mut out.page.moved);
+    if !moved.is_empty() {
+        out.y += 6.0;
+        out.line(None, "Labels with no room in the drawing:");
+    }
+    for (mark, text, fill) in &moved {
+        let line = match mark {
+            Some(mark) => format!("{mark} {text}"),
+            None => text.clone(),
+        };
+        let _ = writeln!(
+            out.page.out,
+            r#"  <text x="{}" y="{}" font-size="16" font-weight="bold" fill="{}">{}</text>"#,
+            c(out.x0),
+            c(out.y),
+            xml(fill),
+            xml(&line)
+        );
+        out.y += 25.0;
+    }
+}
+
+/// Words of `text` in lines of at most `width` characters (a longer word
+/// has a line of its own).
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = vec![];
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= width => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }

@@ -4,7 +4,8 @@
 
 use std::fmt::Write;
 
-use crate::render::figure::{Ink, Silhouette, P, V};
+use super::labels::{Pending, Stroke};
+use crate::render::figure::{Ink, Section, Silhouette, P, V};
 
 pub const WIDTH: f64 = 1280.0;
 pub const HEIGHT: f64 = 720.0;
@@ -130,97 +131,14 @@ pub struct Page {
     pub placed: Vec<[f64; 4]>,
     /// Labels waiting for [`Page::place_labels`].
     pub pending: Vec<Pending>,
-}
-
-/// A label not yet placed.
-pub struct Pending {
-    at: P,
-    size: f64,
-    anchor: String,
-    weight: String,
-    fill: String,
-    text: String,
-}
-
-/// The box a label of `size` px takes when written at `at` with `anchor`
-/// (an estimate: 0.55 em a character, combining accents take no room).
-pub fn label_box(at: P, size: f64, anchor: &str, s: &str) -> [f64; 4] {
-    let chars = s
-        .chars()
-        .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
-        .count() as f64;
-    let w = 0.55 * size * chars;
-    let x0 = match anchor {
-        "middle" => at[0] - w / 2.0,
-        "end" => at[0] - w,
-        _ => at[0],
-    };
-    [x0, at[1] - 0.75 * size, x0 + w, at[1] + 0.2 * size]
-}
-
-/// Whether two boxes overlap by more than 2 px each way.
-pub fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
-    a[2].min(b[2]) - a[0].max(b[0]) > 2.0 && a[3].min(b[3]) - a[1].max(b[1]) > 2.0
+    /// Every stroke drawn so far, for labels to keep clear of.
+    pub strokes: Vec<Stroke>,
+    /// Labels that found no free place: (marker drawn at the mark, or
+    /// `None`; the label; its colour), listed in the legend.
+    pub moved: Vec<(Option<String>, String, String)>,
 }
 
 impl Page {
-    /// A label in the drawing, placed by [`Page::place_labels`].
-    pub fn label(&mut self, at: P, size: f64, anchor: &str, weight: &str, fill: &str, s: &str) {
-        self.pending.push(Pending {
-            at,
-            size,
-            anchor: anchor.to_string(),
-            weight: weight.to_string(),
-            fill: fill.to_string(),
-            text: s.to_string(),
-        });
-    }
-
-    /// Writes the pending labels, the contact point's and the centres' first,
-    /// then the normal, the impulse, velocities, arms, names: each where it
-    /// overlaps no label placed before it (at its place, else nudged 22 or
-    /// 44 px in one of eight directions); where none is free it is left out
-    /// (the legend names every mark).
-    pub fn place_labels(&mut self) {
-        let rank = |t: &str| match t.chars().next() {
-            Some('q') => 0,
-            Some('p') => 1,
-            Some('d') => 2,
-            Some('g') | Some('−') => 3,
-            Some('v') | Some('ω') => 4,
-            Some('r') => 5,
-            _ => 6,
-        };
-        let mut pending = std::mem::take(&mut self.pending);
-        pending.sort_by_key(|l| rank(&l.text));
-        for l in pending {
-            let mut candidates = vec![l.at];
-            for r in [22.0, 44.0] {
-                for (dx, dy) in [
-                    (0.0, -1.0),
-                    (0.0, 1.0),
-                    (1.0, 0.0),
-                    (-1.0, 0.0),
-                    (1.0, -1.0),
-                    (-1.0, -1.0),
-                    (1.0, 1.0),
-                    (-1.0, 1.0),
-                ] {
-                    candidates.push([l.at[0] + r * dx, l.at[1] + r * dy]);
-                }
-            }
-            let free = candidates.into_iter().find_map(|p| {
-                let b = label_box(p, l.size, &l.anchor, &l.text);
-                let inside = b[0] >= AREA.0 && b[2] <= AREA.2 && b[1] >= AREA.1 && b[3] <= AREA.3;
-                (inside && !self.placed.iter().any(|o| overlap(o, &b))).then_some((p, b))
-            });
-            if let Some((p, b)) = free {
-                self.placed.push(b);
-                self.text(p, l.size, &l.anchor, &l.weight, &l.fill, &l.text);
-            }
-        }
-    }
-
     pub fn text(&mut self, at: P, size: f64, anchor: &str, weight: &str, fill: &str, s: &str) {
         let _ = writeln!(
             self.out,
@@ -243,6 +161,7 @@ impl Page {
                     c(p[1]),
                     c(radius * self.view.scale)
                 );
+                self.stroke_circle(p, radius * self.view.scale, 2.5);
             }
             Silhouette::Polygon(points) => {
                 let pts = self.points(points);
@@ -250,6 +169,8 @@ impl Page {
                     self.out,
                     r#"  <polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="2.5" stroke-linejoin="round"{dash}/>"#,
                 );
+                let ring: Vec<P> = points.iter().map(|p| self.view.page(*p)).collect();
+                self.stroke_ring(&ring, 2.5);
             }
         }
     }
@@ -294,6 +215,10 @@ impl Page {
             a.width,
             dash(a.dashed, "9 6"),
         );
+        self.stroke(p, q, a.width);
+        if a.head {
+            self.stroke_head(p, q, a.width);
+        }
         let dir = ((q[0] - p[0]) / page_len, (q[1] - p[1]) / page_len);
         let at = match a.at {
             LabelAt::Tip => [q[0] + 22.0 * dir.0, q[1] + 22.0 * dir.1 + 7.0],
@@ -308,6 +233,7 @@ impl Page {
 
     /// An arrow along the view axis, seen end on at `q`: ⊙ toward the viewer, ⊗ away.
     fn end_on(&mut self, q: P, toward: bool, a: &PageArrow) {
+        self.stroke_circle(q, 11.0, a.width);
         let _ = writeln!(
             self.out,
             r#"  <circle cx="{}" cy="{}" r="11" fill="white" stroke="{}" stroke-width="{}"/>"#,
@@ -370,23 +296,36 @@ impl Page {
             dash(dashed, "8 5"),
             &colour[1..]
         );
+        // The arc as 24 pieces, and its head along the last one.
+        let arc: Vec<P> = (0..=24)
+            .map(|i| {
+                let (x, y) = at(a0 + (a1 - a0) * f64::from(i) / 24.0);
+                [x, y]
+            })
+            .collect();
+        for w in arc.windows(2) {
+            self.stroke(w[0], w[1], 2.5);
+        }
+        self.stroke_head(arc[23], arc[24], 2.5);
     }
 
-    /// The plane through `q` perpendicular to `normal` (both in the view
-    /// plane), hatched on the `solid` side (+1: along the normal), named.
-    pub fn surface(&mut self, q: P, normal: P, solid: f64, name: &str, reach: f64) {
-        let len = (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
-        if len < 0.2 {
-            return;
-        }
-        let d = (normal[0] / len * solid, normal[1] / len * solid);
-        let t = (-d.1, d.0);
+    /// A surface seen edge on: its line in the view plane, hatched on the
+    /// solid side, named.
+    pub fn surface(&mut self, s: &Section, name: &str, reach: f64) {
+        let (q, d) = (s.at, s.solid_side);
+        let t = [-d[1], d[0]];
         let far = 10.0 * reach;
         let corners = [
-            [q[0] + far * t.0, q[1] + far * t.1],
-            [q[0] - far * t.0, q[1] - far * t.1],
-            [q[0] - far * t.0 + far * d.0, q[1] - far * t.1 + far * d.1],
-            [q[0] + far * t.0 + far * d.0, q[1] + far * t.1 + far * d.1],
+            [q[0] + far * t[0], q[1] + far * t[1]],
+            [q[0] - far * t[0], q[1] - far * t[1]],
+            [
+                q[0] - far * t[0] + far * d[0],
+                q[1] - far * t[1] + far * d[1],
+            ],
+            [
+                q[0] + far * t[0] + far * d[0],
+                q[1] + far * t[1] + far * d[1],
+            ],
         ];
         let pts = self.points(&corners);
         let (a, b) = (self.view.page(corners[0]), self.view.page(corners[1]));
@@ -401,11 +340,22 @@ impl Page {
             c(b[0]),
             c(b[1])
         );
-        let label = self.view.page([
-            q[0] + 0.9 * reach * t.0 + 0.25 * reach * d.0,
-            q[1] + 0.9 * reach * t.1 + 0.25 * reach * d.1,
-        ]);
+        self.stroke(a, b, 3.0);
+        // Its name inside the solid, a little along the line from q, else
+        // further along on either side, or deeper.
+        let at = |along: f64, deep: f64| {
+            self.view.page([
+                q[0] + along * reach * t[0] + deep * reach * d[0],
+                q[1] + along * reach * t[1] + deep * reach * d[1],
+            ])
+        };
+        let elsewhere = [0.25, 0.7, 1.2]
+            .iter()
+            .flat_map(|deep| [0.9, -0.9, 0.45, -0.45, 1.8, -1.8].map(|a| (a, *deep)))
+            .skip(1)
+            .map(|(a, deep)| at(a, deep))
+            .collect();
         let name = format!("{name} (m = ∞)");
-        self.label(label, 20.0, "middle", "normal", INK, &name);
+        self.label_or(at(0.9, 0.25), elsewhere, 20.0, INK, &name);
     }
 }

@@ -1,5 +1,5 @@
 //! The `apply_impulse` stage described: each movable body's velocity and
-//! spin after the impulse (body 2 receives −g).
+//! spin after the impulse (body 2 receives -g).
 
 use nalgebra::Vector3;
 
@@ -37,7 +37,7 @@ pub fn apply_impulse(c: &SolvedContact) -> Step {
             format!("dw{n}_degrees_per_second"),
             crate::physics::scale::stable_norm(&change.dw).to_degrees(),
         );
-        let g = if i == 0 { "g" } else { "−g" };
+        let g = if i == 0 { "g" } else { "-g" };
         b.f(
             &format!("Δṗ{s}"),
             &format!("{g} / m{s}"),
@@ -46,7 +46,7 @@ pub fn apply_impulse(c: &SolvedContact) -> Step {
         );
         b.f(
             &format!("u{s}"),
-            &format!("r{s} × {}", if i == 0 { "g" } else { "(−g)" }),
+            &format!("r{s} × {}", if i == 0 { "g" } else { "(-g)" }),
             Some(&format!("{{r{n}}} × {{impulse{n}}}")),
             Some(&format!("impulsive_torque{n}")),
         );
@@ -87,7 +87,7 @@ pub fn apply_impulse(c: &SolvedContact) -> Step {
         }
     }
     if c.movable().len() == 2 {
-        b.note("Both bodies receive the same impulse in opposite directions: body 2 gets −g.");
+        b.note("Both bodies receive the same impulse in opposite directions: body 2 gets -g.");
     }
     b.done()
 }

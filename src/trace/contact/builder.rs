@@ -60,7 +60,7 @@ impl<'a> SolvedContact<'a> {
             .collect()
     }
 
-    /// Body slot `i`'s arm r = q − p (zero for an empty slot).
+    /// Body slot `i`'s arm r = q - p (zero for an empty slot).
     pub(super) fn r(&self, i: usize) -> Vector3<f64> {
         self.solution.frame.r[i].unwrap_or_default()
     }

@@ -59,7 +59,7 @@ pub fn describe(kind: CheckKind, cause: &Cause<f64>, has_friction: bool) -> Opti
             allowance,
         )),
         (CheckKind::Energy, Cause::AccelerationCompensation { energy_without }) => Some(Described {
-            note: format!("{rose} because of the acceleration compensation: last frame's acceleration gives v_acc = {{velocity_from_acceleration}} along d̂, and the target v_s′ = −c(v_s − v_acc) then asks the bodies to separate faster than restitution alone would. The compensation assumes the acceleration pushed the bodies together (a resting contact); here it points away from the contact. Without the acceleration the energy after would be {{energy_without}}."),
+            note: format!("{rose} because of the acceleration compensation: last frame's acceleration gives v_acc = {{velocity_from_acceleration}} along d̂, and the target v_s′ = -c(v_s - v_acc) then asks the bodies to separate faster than restitution alone would. The compensation assumes the acceleration pushed the bodies together (a resting contact); here it points away from the contact. Without the acceleration the energy after would be {{energy_without}}."),
             inputs: vec![("energy_without", energy_without)],
         }),
         (CheckKind::Energy, Cause::Friction { .. }) => plain(&format!("{rose}. Newton's restitution (a velocity target) combined with friction can create energy — Kane's example (T. R. Kane, 1984) is the classic case; energetic restitution (Stronge) avoids it.")),
@@ -92,7 +92,7 @@ pub fn describe(kind: CheckKind, cause: &Cause<f64>, has_friction: bool) -> Opti
             allowance,
         )),
 
-        (CheckKind::FrictionCone, Cause::KineticDirectionNormal) => plain("OUTSIDE THE CONE: the kinetic-direction model takes its normal impulse from the closed form g_closed = −(1 + c) v_s / (…) (the companion lectures' j), which knows nothing of the acceleration compensation; here the contact points do not close (v_s ≥ 0) while the compensation still asks for an impulse, so g_closed < 0 pulls the bodies together. A defect of the model."),
+        (CheckKind::FrictionCone, Cause::KineticDirectionNormal) => plain("OUTSIDE THE CONE: the kinetic-direction model takes its normal impulse from the closed form g_closed = -(1 + c) v_s / (…) (the companion lectures' j), which knows nothing of the acceleration compensation; here the contact points do not close (v_s ≥ 0) while the compensation still asks for an impulse, so g_closed < 0 pulls the bodies together. A defect of the model."),
         (CheckKind::FrictionCone, Cause::VelocityScalingModel) => plain("OUTSIDE THE CONE: seed 004's velocity-scaling model sets the planar velocity (μ_d v_planar) rather than bounding the impulse, so the impulse it needs can exceed μ g_n. This is the model's rule, not Coulomb's law: a defect of the model."),
         (CheckKind::FrictionCone, Cause::RoundOff { condition, allowance }) => Some(round_off(
             "cone",

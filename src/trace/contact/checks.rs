@@ -92,14 +92,14 @@ pub fn checks(c: &SolvedContact) -> Step {
             }
         }
         let substituted = match (diff.len(), c.movable().first()) {
-            (2, _) => Some(format!("({} − {}) · {{d}}", diff[0], diff[1])),
-            (1, Some(1)) => Some(format!("(−{}) · {{d}}", diff[0])),
+            (2, _) => Some(format!("({} - {}) · {{d}}", diff[0], diff[1])),
+            (1, Some(1)) => Some(format!("(-{}) · {{d}}", diff[0])),
             (1, _) => Some(format!("{} · {{d}}", diff[0])),
             _ => None,
         };
         b.f(
             "v_s′",
-            "(q̇₁′ − q̇₂′) · d̂",
+            "(q̇₁′ - q̇₂′) · d̂",
             substituted.as_deref(),
             Some("separating_velocity"),
         );
@@ -140,11 +140,11 @@ pub fn checks(c: &SolvedContact) -> Step {
         };
         b.f(
             "d_left",
-            &format!("{depth_symbol} − Σ (−1)^(i+1) (qᵢ′ − q) · d̂"),
-            Some("{depth_to_resolve} − {separation_gained}"),
+            &format!("{depth_symbol} - Σ (-1)^(i+1) (qᵢ′ - q) · d̂"),
+            Some("{depth_to_resolve} - {separation_gained}"),
             Some("residual_penetration"),
         );
-        b.note("Residual penetration = depth to resolve − separation actually gained when each body's contact point is carried by its finite move (new position and normalised rotation). It measures how far the linearised estimate is off.");
+        b.note("Residual penetration = depth to resolve - separation actually gained when each body's contact point is carried by its finite move (new position and normalised rotation). It measures how far the linearised estimate is off.");
     }
     b.done()
 }
@@ -226,7 +226,7 @@ pub fn verdicts(c: &SolvedContact) -> Vec<Verdict> {
                         c.name(i),
                         if failed { "is not" } else { "is" }
                     ),
-                    format!("| |θ′| − 1 | = {{orientation_norm_error{}}}", i + 1),
+                    format!("| |θ′| - 1 | = {{orientation_norm_error{}}}", i + 1),
                 ),
                 (kind, measured) => unreachable!("{kind:?} measured as {measured:?}"),
             };

@@ -7,7 +7,7 @@ use crate::physics::frame::GuessAxis;
 use crate::physics::StageId;
 use crate::trace::Step;
 
-/// The contact basis (Millington's `makeOrthonormalBasis`) and r_i = q − p_i.
+/// The contact basis (Millington's `makeOrthonormalBasis`) and r_i = q - p_i.
 pub fn contact_frame(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::ContactFrame);
     let f = &c.solution.frame;
@@ -37,8 +37,8 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
         b.value(format!("r{n}"), c.r(i));
         b.f(
             &format!("r{}", SUB[i]),
-            &format!("q − p{}", SUB[i]),
-            Some(&format!("{{q}} − {{p{n}}}")),
+            &format!("q - p{}", SUB[i]),
+            Some(&format!("{{q}} - {{p{n}}}")),
             Some(&format!("r{n}")),
         );
     }
@@ -57,7 +57,7 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
         if let Some(digits) = f.r_digits[i].filter(|d| *d < 12.0) {
             b.input(format!("r{n}_digits"), digits.floor());
             b.note(format!(
-                "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q − p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",
+                "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q - p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",
                 s = SUB[i]
             ));
         }

@@ -5,7 +5,7 @@ use super::builder::{SolvedContact, B, SUB};
 use crate::physics::StageId;
 use crate::trace::Step;
 
-/// v_c = Cᵀ (q̇₁ − q̇₂) and Δv = −v_acc − (1 + c)(v_s − v_acc).
+/// v_c = Cᵀ (q̇₁ - q̇₂) and Δv = -v_acc - (1 + c)(v_s - v_acc).
 pub fn desired_velocity(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::DesiredDeltaVelocity);
     let dv = &c.solution.desired;
@@ -40,15 +40,15 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
     b.value("separating_velocity", dv.separating());
     b.value("closing_velocity", -dv.separating());
     let world = if diff.len() == 2 {
-        format!("Cᵀ ({} − {})", diff[0], diff[1])
+        format!("Cᵀ ({} - {})", diff[0], diff[1])
     } else if c.movable() == vec![1] {
-        format!("Cᵀ (−{})", diff[0])
+        format!("Cᵀ (-{})", diff[0])
     } else {
         format!("Cᵀ {}", diff[0])
     };
     b.f(
         "v_c",
-        "Cᵀ (q̇₁ − q̇₂)",
+        "Cᵀ (q̇₁ - q̇₂)",
         Some(&world),
         Some("contact_velocity"),
     );
@@ -66,22 +66,22 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
         for i in c.movable() {
             let n = i + 1;
             b.input(format!("a{n}"), c.body(i).acceleration);
-            acc.push(format!("{}{{a{n}}}", if i == 1 { "− " } else { "" }));
+            acc.push(format!("{}{{a{n}}}", if i == 1 { "- " } else { "" }));
         }
         b.input("duration", c.problem.duration);
         b.f(
             "v_acc",
-            "(a₁ − a₂)·d̂ Δt",
+            "(a₁ - a₂)·d̂ Δt",
             Some(&format!("({})·{{d}} × {{duration}}", acc.join(" "))),
             Some("velocity_from_acceleration"),
         );
-        b.f("Δv", "−v_acc − (1 + c)(v_s − v_acc)", Some("−{velocity_from_acceleration} − (1 + {restitution})({separating_velocity} − {velocity_from_acceleration})"), Some("desired"));
-        b.note("Remove accelerated velocity: the velocity last frame's acceleration built up ({velocity_from_acceleration}) is not bounced back, so resting contacts do not vibrate. (This is the lecture's form; −v_s − c(v_s − v_acc), the reference code's, is the same number.)");
+        b.f("Δv", "-v_acc - (1 + c)(v_s - v_acc)", Some("-{velocity_from_acceleration} - (1 + {restitution})({separating_velocity} - {velocity_from_acceleration})"), Some("desired"));
+        b.note("Remove accelerated velocity: the velocity last frame's acceleration built up ({velocity_from_acceleration}) is not bounced back, so resting contacts do not vibrate. (This is the lecture's form; -v_s - c(v_s - v_acc), the reference code's, is the same number.)");
     } else {
         b.f(
             "Δv",
-            "−(1 + c) v_s",
-            Some("−(1 + {restitution})({separating_velocity})"),
+            "-(1 + c) v_s",
+            Some("-(1 + {restitution})({separating_velocity})"),
             Some("desired"),
         );
     }

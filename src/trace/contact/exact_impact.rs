@@ -13,9 +13,9 @@ use crate::trace::{Step, Value};
 /// The law's name as the stage shows it, and its end condition.
 fn law_text(law: RestitutionLaw) -> (&'static str, &'static str, &'static str) {
     match law {
-        RestitutionLaw::Newton => ("Newton (kinematic)", "v_n′", "−c v_n0"),
+        RestitutionLaw::Newton => ("Newton (kinematic)", "v_n′", "-c v_n0"),
         RestitutionLaw::Poisson => ("Poisson (kinetic)", "P_n′", "(1 + c) P_c"),
-        RestitutionLaw::Stronge => ("Stronge (energetic)", "W_r", "−c² W_c"),
+        RestitutionLaw::Stronge => ("Stronge (energetic)", "W_r", "-c² W_c"),
     }
 }
 
@@ -112,7 +112,7 @@ pub fn exact_impact(c: &SolvedContact) -> Step {
     b.value("velocity_contact", o.velocity);
     b.f("law", "", Some("{law_name}"), None);
     b.f("v_c(P)", "v_c + M P", Some("{u0} + {matrix} P"), None);
-    b.f("dP_t", "−μ_d s dP_n", None, None);
+    b.f("dP_t", "-μ_d s dP_n", None, None);
     b.f(end_lhs, end_rhs, None, None);
     b.f(
         "P_c",
@@ -150,7 +150,7 @@ pub fn exact_impact(c: &SolvedContact) -> Step {
         }
         b.note(phase_note(&p.kind, i));
     }
-    b.note("Friction while slipping is dP_t = −μ_d s dP_n with s = v_t/|v_t| the slip direction; while stuck it is τ dP_n with τ = −M_tt⁻¹ M_tn, as long as |τ| ≤ μ_s. g_contact is the one-shot impulse of the stages above (the friction clamp's, or the impulse stage's without friction). Each stretch ends at an event: the slip halts, maximum compression, or the law's end.");
+    b.note("Friction while slipping is dP_t = -μ_d s dP_n with s = v_t/|v_t| the slip direction; while stuck it is τ dP_n with τ = -M_tt⁻¹ M_tn, as long as |τ| ≤ μ_s. g_contact is the one-shot impulse of the stages above (the friction clamp's, or the impulse stage's without friction). Each stretch ends at an event: the slip halts, maximum compression, or the law's end.");
     let k = &x.input.k;
     let coupling = k[(0, 1)].hypot(k[(0, 2)]);
     let frictional = x.input.static_friction > 0.0 || x.input.dynamic_friction > 0.0;
@@ -174,7 +174,7 @@ fn energies(b: &mut B, x: &ExactImpact<f64>) {
     b.f("E", "", None, Some("energy_before"));
     b.f("E′", "", None, Some("energy_after"));
     b.f(
-        "E′ − E",
+        "E′ - E",
         "W_c + W_r + W_t",
         Some("{work_compression} + {work_restitution} + {work_friction}"),
         Some("energy_change"),
@@ -195,23 +195,23 @@ fn one_shot(b: &mut B, x: &ExactImpact<f64>) {
     b.value("energy_difference", x.energy_difference());
     b.f("g_contact", "", None, Some("impulse_one_shot_contact"));
     b.f(
-        "P − g_contact",
+        "P - g_contact",
         "",
-        Some("{impulse_contact} − {impulse_one_shot_contact}"),
+        Some("{impulse_contact} - {impulse_one_shot_contact}"),
         Some("impulse_difference"),
     );
-    b.f("|P − g_contact|", "", None, Some("impulse_difference_abs"));
+    b.f("|P - g_contact|", "", None, Some("impulse_difference_abs"));
     b.f(
-        "|P − g_contact| / |P|",
+        "|P - g_contact| / |P|",
         "",
         None,
         Some("impulse_difference_relative"),
     );
     b.f("E′_clamp", "", None, Some("energy_after_one_shot"));
     b.f(
-        "E′_clamp − E′",
+        "E′_clamp - E′",
         "",
-        Some("{energy_after_one_shot} − {energy_after}"),
+        Some("{energy_after_one_shot} - {energy_after}"),
         Some("energy_difference"),
     );
 }
@@ -229,7 +229,7 @@ fn gain_notes(b: &mut B, x: &ExactImpact<f64>) {
     b.input("gain_percent_one_shot", relative(x.energy_after_one_shot));
     if x.gains_energy() {
         let why = match x.outcome.law {
-            RestitutionLaw::Newton => "Newton's law fixes the final normal velocity whatever work the normal impulse does; with friction coupling the normal and tangential motion (M_nt ≠ 0), reaching −c v_n0 can take a normal impulse that does more work in restitution than compression absorbed. Newton's law with friction is not energetically consistent.",
+            RestitutionLaw::Newton => "Newton's law fixes the final normal velocity whatever work the normal impulse does; with friction coupling the normal and tangential motion (M_nt ≠ 0), reaching -c v_n0 can take a normal impulse that does more work in restitution than compression absorbed. Newton's law with friction is not energetically consistent.",
             RestitutionLaw::Poisson => "Poisson's law fixes the restitution impulse c P_c; when friction (slip halting or reversing) makes v_n rise faster in restitution than it fell in compression, that impulse does more work than compression absorbed. Poisson's law with friction is not energetically consistent either.",
             RestitutionLaw::Stronge => "Stronge's law bounds the restitution work by c² of the compression work, so this is the integration's error, not the law.",
         };
@@ -238,7 +238,7 @@ fn gain_notes(b: &mut B, x: &ExactImpact<f64>) {
         ));
     } else if x.outcome.law == RestitutionLaw::Stronge {
         b.note(
-            "Stronge's law never gains energy: W_r = −c² W_c ≤ −W_c and friction's work W_t ≤ 0.",
+            "Stronge's law never gains energy: W_r = -c² W_c ≤ -W_c and friction's work W_t ≤ 0.",
         );
     }
     if x.one_shot_gains_energy() {

@@ -114,17 +114,18 @@ pub fn friction(c: &SolvedContact) -> Step {
                 Some("√(({vy})² + ({vz})²)"),
                 Some("planar"),
             );
-            b.f("v_max", "−μ_s v_s", Some("−{mu_s} · ({vx})"), Some("limit"));
+            b.f("v_max", "-μ_s v_s", Some("-{mu_s} · ({vx})"), Some("limit"));
             if f.regime == FrictionRegime::Static {
-                b.note("Seed 004's model: |v_planar| ≤ v_max = −μ_s v_s, so all planar velocity is removed (the sticking impulse). Here planar and limit are velocities, not impulses.");
+                b.note("Seed 004's model: |v_planar| ≤ v_max = -μ_s v_s, so all planar velocity is removed (the sticking impulse). Here planar and limit are velocities, not impulses.");
             } else {
+                b.input("matrix", c.solution.unit.matrix.unwrap_or_default());
                 b.f(
                     "g_contact",
-                    "M⁻¹ (Δv, −μ_d v_y, −μ_d v_z)",
-                    None,
+                    "M⁻¹ (Δv, -μ_d v_y, -μ_d v_z)",
+                    Some("{matrix}⁻¹ ({desired}, -{mu_d} · ({vy}), -{mu_d} · ({vz}))"),
                     Some("impulse_contact"),
                 );
-                b.note("Seed 004's model: |v_planar| > v_max = −μ_s v_s, so the planar velocity is reduced by μ_d·v_planar rather than removed. This is not Coulomb's law: the impulse may leave the friction cone.");
+                b.note("Seed 004's model: |v_planar| > v_max = -μ_s v_s, so the planar velocity is reduced by μ_d·v_planar rather than removed. This is not Coulomb's law: the impulse may leave the friction cone.");
             }
         }
         FrictionModel::KineticDirection => {
@@ -135,8 +136,8 @@ pub fn friction(c: &SolvedContact) -> Step {
             b.input("closed_form_j", g.closed_form_j);
             b.f(
                 "f̂",
-                "(0, −v_y, −v_z) / √(v_y² + v_z²)",
-                Some("(0, −({vy}), −({vz})) / √(({vy})² + ({vz})²)"),
+                "(0, -v_y, -v_z) / √(v_y² + v_z²)",
+                Some("(0, -({vy}), -({vz})) / √(({vy})² + ({vz})²)"),
                 Some("direction"),
             );
             b.f(
@@ -148,7 +149,7 @@ pub fn friction(c: &SolvedContact) -> Step {
             if f.issue == Some(FrictionIssue::UndefinedDirection) {
                 b.note("Seeds 002/003's model (they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): the slip direction is undefined because nothing slides (the relative velocity is along d̂); the model applies no friction impulse.");
             } else {
-                b.note("Seeds 002/003's model (they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): friction μ_d g_closed acts along f̂, against the sliding direction, whatever the sliding speed, so it may reverse the slip. The seeds write t along the sliding velocity; friction must oppose it, so f̂ = −t.");
+                b.note("Seeds 002/003's model (they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): friction μ_d g_closed acts along f̂, against the sliding direction, whatever the sliding speed, so it may reverse the slip. The seeds write t along the sliding velocity; friction must oppose it, so f̂ = -t.");
             }
         }
     }

@@ -1,5 +1,5 @@
 //! The `impulse` stage described: g = Δv / Δq̇_t without friction, the
-//! sticking impulse M⁻¹ (Δv, −v_y, −v_z) with it, and the closed form j.
+//! sticking impulse M⁻¹ (Δv, -v_y, -v_z) with it, and the closed form j.
 
 use super::builder::{skip_reason, SolvedContact, B};
 use crate::physics::solve::Skip;
@@ -42,7 +42,7 @@ pub fn impulse(c: &SolvedContact) -> Step {
             b.value("condition_number", solve.condition_number);
             b.f(
                 "g_contact",
-                "M⁻¹ (Δv, −v_y, −v_z)",
+                "M⁻¹ (Δv, -v_y, -v_z)",
                 Some("{matrix}⁻¹ {rhs}"),
                 Some("impulse_contact"),
             );
@@ -83,14 +83,14 @@ pub fn impulse(c: &SolvedContact) -> Step {
     }
     b.f(
         "g_closed",
-        "−(1 + c) v_s / (Σ 1/mᵢ + Σ (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂))",
+        "-(1 + c) v_s / (Σ 1/mᵢ + Σ (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂))",
         Some(&format!(
-            "−(1 + {{restitution}})({{separating_velocity}}) / ({})",
+            "-(1 + {{restitution}})({{separating_velocity}}) / ({})",
             denominator.join(" + ")
         )),
         Some("closed_form_j"),
     );
-    b.note("The companion lectures (002/003) write this closed form as j = −(1 + C_R)(v_rel · n) / (…): their j is g here, n is d̂, v_rel · n is v_s and C_R is c. Each (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂) equals Δq̇_dᵢ of stage 2.");
+    b.note("The companion lectures (002/003) write this closed form as j = -(1 + C_R)(v_rel · n) / (…): their j is g here, n is d̂, v_rel · n is v_s and C_R is c. Each (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂) equals Δq̇_dᵢ of stage 2.");
     if g.solve.is_some() {
         b.note("For comparison, without friction the closed form gives g_closed = {closed_form_j} along the normal.");
     } else if c.solution.desired.velocity_from_acceleration == 0.0 {

@@ -6,7 +6,7 @@ use crate::physics::solve::Skip;
 use crate::physics::{ProjectionMethod, StageId};
 use crate::trace::Step;
 
-/// Δ_l = (−1)^(i+1) d_pen I_l / I_t, Δ_a likewise, with the angular limit.
+/// Δ_l = (-1)^(i+1) d_pen I_l / I_t, Δ_a likewise, with the angular limit.
 pub fn projection(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::NonlinearProjection);
     let Some(p) = &c.solution.projection else {
@@ -87,7 +87,7 @@ pub fn projection(c: &SolvedContact) -> Step {
     for i in c.movable() {
         let n = i + 1;
         let s = SUB[i];
-        let sign = if i == 0 { "" } else { "−" };
+        let sign = if i == 0 { "" } else { "-" };
         let m = p.bodies[i].as_ref().expect("movable");
         b.input(format!("p{n}"), c.body(i).position);
         b.value(format!("linear_move{n}"), m.linear_move);
@@ -102,7 +102,7 @@ pub fn projection(c: &SolvedContact) -> Step {
         b.value(format!("rotation_per_unit{n}"), m.rotation_per_unit);
         b.value(format!("angular_change{n}"), m.angular_change);
         b.value(format!("position{n}"), m.position);
-        let e = format!("(−1)^({n}+1)");
+        let e = format!("(-1)^({n}+1)");
         // Before the limit; when it acts, the clamped moves follow below.
         b.input(
             format!("angular_move_unlimited{n}"),
@@ -154,7 +154,7 @@ pub fn projection(c: &SolvedContact) -> Step {
         } else {
             b.f(
                 &format!("Δ_max{s}"),
-                &format!("angular_limit · |r{s} − (r{s} · d̂) d̂|"),
+                &format!("angular_limit · |r{s} - (r{s} · d̂) d̂|"),
                 Some(&format!("{{angular_limit_setting}} · {{r_perp_length{n}}}")),
                 Some(&format!("angular_limit{n}")),
             );
@@ -168,8 +168,8 @@ pub fn projection(c: &SolvedContact) -> Step {
             );
             b.f(
                 &format!("Δ_l{s} (limited)"),
-                &format!("Δ_l{s} + (Δ_a{s} − Δ_a{s} (limited))"),
-                Some(&format!("{{linear_move_unlimited{n}}} + ({{angular_move_unlimited{n}}} − {{angular_move{n}}})")),
+                &format!("Δ_l{s} + (Δ_a{s} - Δ_a{s} (limited))"),
+                Some(&format!("{{linear_move_unlimited{n}}} + ({{angular_move_unlimited{n}}} - {{angular_move{n}}})")),
                 Some(&format!("linear_move{n}")),
             );
             b.note(format!(

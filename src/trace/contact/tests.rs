@@ -219,7 +219,7 @@ fn the_checks_stage_names_what_physics_measured() {
     };
     assert_eq!(scalar(checks, "energy_before"), before);
     assert_eq!(scalar(checks, "energy_after"), after);
-    // The restitution target: −c v_s = 0.8 × 1.25 after the impulse.
+    // The restitution target: -c v_s = 0.8 × 1.25 after the impulse.
     assert!((scalar(checks, "separating_velocity") - 1.0).abs() < 1e-9);
 }
 
@@ -274,7 +274,7 @@ fn two_bodies_slide_separate_and_turn() {
     assert!(orientation.skipped.is_none());
     assert!(orientation.value("orientation1").is_some());
     assert!(orientation.value("orientation2").is_some());
-    // The arm (1, −1, 0) and d̂ = y turn body 1 about z.
+    // The arm (1, -1, 0) and d̂ = y turn body 1 about z.
     assert_eq!(
         orientation.value("rotation_world_axis1"),
         Some(&Value::from("z"))

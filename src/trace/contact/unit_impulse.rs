@@ -89,7 +89,7 @@ pub fn unit_impulse(c: &SolvedContact) -> Step {
     b.done()
 }
 
-/// The friction matrix M = Cᵀ (Σ −[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙.
+/// The friction matrix M = Cᵀ (Σ -[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙.
 fn matrix(c: &SolvedContact, b: &mut B, m: nalgebra::Matrix3<f64>) {
     for i in c.movable() {
         let n = i + 1;
@@ -100,10 +100,10 @@ fn matrix(c: &SolvedContact, b: &mut B, m: nalgebra::Matrix3<f64>) {
         if let Some(a) = r.angular_matrix_world {
             b.value(format!("angular_matrix_world{n}"), a);
             b.f(
-                &format!("−[r{s}]× I{s}⁻¹ [r{s}]×"),
+                &format!("-[r{s}]× I{s}⁻¹ [r{s}]×"),
                 "",
                 Some(&format!(
-                    "−{{skew_r{n}}} {{inverse_inertia_world{n}}} {{skew_r{n}}}"
+                    "-{{skew_r{n}}} {{inverse_inertia_world{n}}} {{skew_r{n}}}"
                 )),
                 Some(&format!("angular_matrix_world{n}")),
             );
@@ -124,7 +124,7 @@ fn matrix(c: &SolvedContact, b: &mut B, m: nalgebra::Matrix3<f64>) {
     let sum = if sum.is_empty() { "0".to_string() } else { sum };
     b.f(
         "M",
-        "Cᵀ (Σ −[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙",
+        "Cᵀ (Σ -[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙",
         Some(&format!(
             "{{contact_to_world}}ᵀ ({sum}) {{contact_to_world}} + {{linear}} 𝟙"
         )),

@@ -43,7 +43,11 @@ pub fn to_latex(s: &str) -> String {
         }
         if ch == '_' {
             let mut j = i + 1;
-            while j < chars.len() && (chars[j].is_ascii_alphanumeric() || chars[j] == ',') {
+            // A comma joins two indices (M_0,1), not a subscript to the next item.
+            let joins = |j: usize| {
+                chars[j] == ',' && chars.get(j + 1).is_some_and(char::is_ascii_alphanumeric)
+            };
+            while j < chars.len() && (chars[j].is_ascii_alphanumeric() || joins(j)) {
                 j += 1;
             }
             let word: String = chars[i + 1..j].iter().collect();
@@ -309,6 +313,9 @@ mod tests {
             "\\Delta \\dot{\\theta}_1 = I_1^{-1} u_1"
         );
         assert_eq!(to_latex("v_acc"), "v_{\\mathrm{acc}}");
+        // A comma after a subscript ends it; between indices it joins them.
+        assert_eq!(to_latex("(Δv, −v_y, −v_z)"), "(\\Delta v, -v_y, -v_z)");
+        assert_eq!(to_latex("M_0,1"), "M_{\\mathrm{0,1}}");
         assert_eq!(to_latex("{r1} × {d}"), "{r1} \\times {d}");
     }
 

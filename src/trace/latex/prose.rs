@@ -169,6 +169,18 @@ fn trim_punctuation(w: &str) -> &str {
     w.trim_matches(|c: char| ".,;:!?\"'‘’“”".contains(c))
 }
 
+/// A minus sign in prose (ASCII, as every output writes it): alone between
+/// spaces (`q - p`), or before a symbol or bracket (`-g`, `-(1 + c)`); not
+/// a number's sign (`-1.25` stays text) nor a hyphen (`non-zero`).
+fn minus(core: &str) -> bool {
+    let mut c = core.trim_start_matches('(').chars();
+    match (c.next(), c.next()) {
+        (Some('-'), None) => true,
+        (Some('-'), Some(n)) => n.is_ascii_alphabetic() || n == '(' || is_math_char(n),
+        _ => false,
+    }
+}
+
 fn classify(w: &str) -> Class {
     let core = trim_punctuation(w);
     if core.is_empty() || core.chars().any(|c| "\\{}$&#~^%`".contains(c)) {
@@ -178,7 +190,7 @@ fn classify(w: &str) -> Class {
     if identifier(bare) {
         return Class::Text;
     }
-    if core.chars().any(is_math_char) || core.contains('_') {
+    if core.chars().any(is_math_char) || core.contains('_') || minus(core) {
         return Class::Math;
     }
     let mut letters = 0;
@@ -271,6 +283,11 @@ mod tests {
                 "the closing speed is 1.25 m/s",
             ),
             ("v_s < 0: the points", r"$v_s < 0$: the points"),
+            // An ASCII minus before a symbol or between spaces is maths; a
+            // number's sign and a hyphen stay text.
+            ("body 2 gets -g.", r"body 2 gets $-g$."),
+            ("only r = q - p, so", r"only $r = q - p$, so"),
+            ("printed -1.25, non-zero", "printed -1.25, non-zero"),
             (
                 "run `contact-lab check` \"now\"",
                 r"run \texttt{contact-lab check} ``now''",

@@ -133,17 +133,16 @@ pub(super) fn picture(fig: &Figure, show: &Show) -> (Picture, [f64; 4]) {
     let head = 0.06 * extent;
     let arrow_len = 0.35 * extent;
 
-    // Half-spaces, and the immovable world of a one-body contact: the
-    // surface through q across the whole view, hatched on the solid side.
+    // Half-spaces, and the immovable world of a one-body contact: where the
+    // surface meets the view plane, across the whole view, hatched on the
+    // solid side (none when the surface faces the viewer).
     for s in &fig.surfaces {
-        let q = flat(fig.contacts[s.contact].point);
-        let n = scale(flat(fig.contacts[s.contact].normal), -s.solid);
-        let len = n[0].hypot(n[1]);
-        if len < 1e-9 {
+        let Some(section) = &s.section else {
             continue; // the surface faces the viewer
-        }
-        let n = scale(n, 1.0 / len);
-        let along = [-n[1], n[0]];
+        };
+        let (q, along) = (section.at, section.along);
+        // n: away from the solid side, so the ticks below point into it.
+        let n = scale(section.solid_side, -1.0);
         let far = 3.0 * extent;
         pic.seg(
             add(q, scale(along, -far)),
@@ -231,7 +230,7 @@ pub(super) fn picture(fig: &Figure, show: &Show) -> (Picture, [f64; 4]) {
         let d = scale(along(a), 0.25 * extent);
         pic.arrow(flat(a.at), d, head, ink(a.kind.ink()), &a.label, 1);
     }
-    // The impulse: g on body 1 at q, −g on body 2 when it can move.
+    // The impulse: g on body 1 at q, -g on body 2 when it can move.
     if show.impulse {
         let impulses = fig
             .arrows

@@ -1,4 +1,4 @@
-//! Stage 6: apply the impulse — `Δṗ = g/m`, `Δθ̇ = I⁻¹(r × g)`; body 2 gets `−g`.
+//! Stage 6: apply the impulse — `Δṗ = g/m`, `Δθ̇ = I⁻¹(r × g)`; body 2 gets `-g`.
 
 use nalgebra::{Matrix3, Vector3};
 

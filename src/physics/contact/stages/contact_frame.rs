@@ -1,4 +1,4 @@
-//! Stage 1: contact basis and relative contact positions `r_i = q − p_i`.
+//! Stage 1: contact basis and relative contact positions `r_i = q - p_i`.
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -10,7 +10,7 @@ pub struct ContactFrame<T: Real> {
     /// Columns d, t0, t1: converts contact coordinates to world coordinates.
     pub contact_to_world: Matrix3<T>,
     pub guess: GuessAxis,
-    /// `r_i = q − p_i` for each movable body.
+    /// `r_i = q - p_i` for each movable body.
     pub r: [Option<Vector3<T>>; 2],
     /// Significant digits each `r_i` keeps, given how far q and p_i are from the origin.
     pub r_digits: [Option<T>; 2],

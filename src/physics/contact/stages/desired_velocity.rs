@@ -1,9 +1,9 @@
 //! Stage 3: closing velocity at the contact and the desired change in velocity
-//! `Δv = −v_acc − (1+c)(v_s − v_acc)` (lecture: "Remove Accelerated Velocity";
-//! with no acceleration this is `Δv = −(1+c) v_s`).
+//! `Δv = -v_acc - (1+c)(v_s - v_acc)` (lecture: "Remove Accelerated Velocity";
+//! with no acceleration this is `Δv = -(1+c) v_s`).
 //!
 //! As the reference engine does, the contact velocity also carries the planar
-//! part of last frame's acceleration × duration (`Cᵀ(a₁ − a₂)Δt` with its
+//! part of last frame's acceleration × duration (`Cᵀ(a₁ - a₂)Δt` with its
 //! normal component zeroed): static friction then removes the sliding that one
 //! frame of acceleration built up. The small pieces are functions of their own
 //! so the resolver (`physics::resolver`) uses the same formulas.
@@ -17,12 +17,12 @@ use crate::physics::{Problem, Real};
 pub struct DesiredVelocity<T: Real> {
     /// Velocity of each body's contact point, `ω × r + v`.
     pub point_velocity: [Option<Vector3<T>>; 2],
-    /// `q̇₁ − q̇₂` in world coordinates.
+    /// `q̇₁ - q̇₂` in world coordinates.
     pub contact_velocity_world: Vector3<T>,
-    /// `Cᵀ(q̇₁ − q̇₂)` plus [`DesiredVelocity::planar_from_acceleration`];
+    /// `Cᵀ(q̇₁ - q̇₂)` plus [`DesiredVelocity::planar_from_acceleration`];
     /// `.x` is `v_s` (negative when closing).
     pub contact_velocity: Vector3<T>,
-    /// `(0, y, z)` of `Cᵀ(a₁ − a₂)Δt`: the sliding velocity last frame's
+    /// `(0, y, z)` of `Cᵀ(a₁ - a₂)Δt`: the sliding velocity last frame's
     /// acceleration built up (zero without acceleration).
     pub planar_from_acceleration: Vector3<T>,
     /// Restitution as given.
@@ -31,7 +31,7 @@ pub struct DesiredVelocity<T: Real> {
     pub restitution: T,
     /// True when the velocity limit forced restitution to 0.
     pub restitution_limited: bool,
-    /// `(a₁ − a₂)·d · duration`, velocity built up by last frame's acceleration.
+    /// `(a₁ - a₂)·d · duration`, velocity built up by last frame's acceleration.
     pub velocity_from_acceleration: T,
     /// Δv along the normal.
     pub desired: T,
@@ -44,7 +44,7 @@ impl<T: Real> DesiredVelocity<T> {
     }
 }
 
-/// `a₁ − a₂` of the movable bodies (an absent body contributes nothing).
+/// `a₁ - a₂` of the movable bodies (an absent body contributes nothing).
 pub fn relative_acceleration<T: Real>(accelerations: [Option<Vector3<T>>; 2]) -> Vector3<T> {
     let mut acceleration = Vector3::zeros();
     for (i, a) in accelerations.iter().enumerate() {
@@ -55,7 +55,7 @@ pub fn relative_acceleration<T: Real>(accelerations: [Option<Vector3<T>>; 2]) ->
     acceleration
 }
 
-/// `v_acc = (a₁ − a₂)·d Δt`, the normal velocity one frame of acceleration built up.
+/// `v_acc = (a₁ - a₂)·d Δt`, the normal velocity one frame of acceleration built up.
 pub fn velocity_from_acceleration<T: Real>(
     acceleration: &Vector3<T>,
     d: &Vector3<T>,
@@ -64,7 +64,7 @@ pub fn velocity_from_acceleration<T: Real>(
     acceleration.dot(d) * duration
 }
 
-/// `(0, y, z)` of `Cᵀ (a₁ − a₂)Δt` (the reference engine's `accVelocity` with x zeroed).
+/// `(0, y, z)` of `Cᵀ (a₁ - a₂)Δt` (the reference engine's `accVelocity` with x zeroed).
 pub fn planar_from_acceleration<T: Real>(
     acceleration: &Vector3<T>,
     contact_to_world: &Matrix3<T>,
@@ -75,7 +75,7 @@ pub fn planar_from_acceleration<T: Real>(
     planar
 }
 
-/// `(q̇₁ − q̇₂, Cᵀ(q̇₁ − q̇₂) + planar)`: the contact velocity in world and in
+/// `(q̇₁ - q̇₂, Cᵀ(q̇₁ - q̇₂) + planar)`: the contact velocity in world and in
 /// contact coordinates from each slot's point velocity `ω × r + v`, with the
 /// planar acceleration term added where it is non-zero.
 pub fn contact_velocity<T: Real>(
@@ -92,7 +92,7 @@ pub fn contact_velocity<T: Real>(
     (world, contact)
 }
 
-/// `(v_acc, planar)` of a contact from `a₁ − a₂`: both zero without acceleration.
+/// `(v_acc, planar)` of a contact from `a₁ - a₂`: both zero without acceleration.
 pub fn acceleration_terms<T: Real>(
     acceleration: &Vector3<T>,
     contact_to_world: &Matrix3<T>,
@@ -119,12 +119,12 @@ pub fn applied_restitution<T: Real>(v_s: T, restitution: T, velocity_limit: T) -
     }
 }
 
-/// `Δv = −v_acc − (1 + c)(v_s − v_acc)`, restitution applied to the velocity `v_s` itself.
+/// `Δv = -v_acc - (1 + c)(v_s - v_acc)`, restitution applied to the velocity `v_s` itself.
 pub fn desired_from<T: Real>(v_s: T, restitution: T, v_acc: T) -> T {
     -v_acc - (T::one() + restitution) * (v_s - v_acc)
 }
 
-/// `Δv = −v − c(v₀ − v_acc)`: the velocity now is `v`, the bounce is taken from
+/// `Δv = -v - c(v₀ - v_acc)`: the velocity now is `v`, the bounce is taken from
 /// an earlier velocity `v₀` (the resolver's `restitution_from = "initial"`).
 pub fn desired_toward_bounce<T: Real>(v: T, v_initial: T, restitution: T, v_acc: T) -> T {
     -v - restitution * (v_initial - v_acc)

@@ -2,7 +2,7 @@
 //!
 //! Frictionless: `g = Δv / Δq̇_t` along the normal (lecture: "Calculating the
 //! Impulse"). With friction (Millington and velocity-scaling models) the
-//! sticking impulse `g = M⁻¹ (Δv, −v_y, −v_z)` that removes all sliding. The
+//! sticking impulse `g = M⁻¹ (Δv, -v_y, -v_z)` that removes all sliding. The
 //! companion lectures' closed form `j` is computed independently as a check.
 
 use nalgebra::{Cholesky, Matrix3, Vector3, LU, U3};
@@ -31,9 +31,9 @@ pub struct Impulse<T: Real> {
     pub impulse_world: Vector3<T>,
     /// Present when the impulse came from the 3×3 friction matrix.
     pub solve: Option<MatrixSolve<T>>,
-    /// Companion lectures' `j = −(1+e)(v_rel·n) / (Σ 1/m + Σ (r×n)ᵀ I⁻¹ (r×n))`.
+    /// Companion lectures' `j = -(1+e)(v_rel·n) / (Σ 1/m + Σ (r×n)ᵀ I⁻¹ (r×n))`.
     pub closed_form_j: T,
-    /// `|g_x − j| / max(|j|, tiny)` (frictionless) — how well the two routes agree.
+    /// `|g_x - j| / max(|j|, tiny)` (frictionless) — how well the two routes agree.
     pub closed_form_relative_difference: T,
 }
 
@@ -169,7 +169,7 @@ pub fn closed_form_j<T: Real>(
 
 /// The impulse in contact coordinates for a desired Δv and contact velocity:
 /// `(Δv / Δq̇_t, 0, 0)`, or with a sticking friction model the impulse
-/// `M⁻¹ (Δv, −v_y, −v_z)` that removes all sliding (frictionless impulse if
+/// `M⁻¹ (Δv, -v_y, -v_z)` that removes all sliding (frictionless impulse if
 /// `M` cannot be solved). The resolver calls this with its own bookkeeping.
 pub fn impulse_contact<T: Real>(
     desired: T,

@@ -1,9 +1,9 @@
 //! Stage 7: nonlinear projection (lecture: "Resolving Interpenetration").
 //!
 //! Per body: linear inertia `1/m`, angular inertia `((I⁻¹(r×d))×r)·d`; the
-//! penetration is shared in proportion, `Δ_l = (−1)^(i+1) d_pen I_l/I_t`,
-//! `Δ_a = (−1)^(i+1) d_pen I_a/I_t`; the angular move is limited to
-//! `angular_limit·|r − (r·d)d|` with the excess moved to the linear share.
+//! penetration is shared in proportion, `Δ_l = (-1)^(i+1) d_pen I_l/I_t`,
+//! `Δ_a = (-1)^(i+1) d_pen I_a/I_t`; the angular move is limited to
+//! `angular_limit·|r - (r·d)d|` with the excess moved to the linear share.
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -19,7 +19,7 @@ pub struct BodyProjection<T: Real> {
     /// Moves before the angular limit.
     pub linear_move_unlimited: T,
     pub angular_move_unlimited: T,
-    /// `|r − (r·d)d|`, the lever arm across the normal.
+    /// `|r - (r·d)d|`, the lever arm across the normal.
     pub r_perp_length: T,
     /// `angular_limit·|r⊥|`.
     pub angular_limit: T,
@@ -55,7 +55,7 @@ pub struct ProjectionInertia<T: Real> {
     pub angular: T,
     /// `I⁻¹(r×d)`.
     pub rotation_per_unit: Vector3<T>,
-    /// `|r − (r·d)d|`.
+    /// `|r - (r·d)d|`.
     pub r_perp_length: T,
     /// `angular_limit·|r⊥|` (`inf` when there is no limit).
     pub angular_limit: T,
@@ -114,8 +114,8 @@ pub fn total_projection_inertia<T: Real>(inertias: &[Option<ProjectionInertia<T>
         .fold(T::zero(), |s, i| s + i.linear + i.angular)
 }
 
-/// One body's moves for `depth` (lecture: `Δ_l = (−1)^(i+1) d_pen I_l/I_t`,
-/// `Δ_a = (−1)^(i+1) d_pen I_a/I_t`, then the angular limit). `position` is
+/// One body's moves for `depth` (lecture: `Δ_l = (-1)^(i+1) d_pen I_l/I_t`,
+/// `Δ_a = (-1)^(i+1) d_pen I_a/I_t`, then the angular limit). `position` is
 /// the body's position before the move.
 pub fn body_projection<T: Real>(
     inertia: &ProjectionInertia<T>,

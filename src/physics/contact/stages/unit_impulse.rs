@@ -1,6 +1,6 @@
 //! Stage 2: velocity change at the contact per unit impulse along the normal
 //! (lecture: "Velocity Change By Unit Impulse"), and with friction the full
-//! 3×3 contact-space matrix `M = Cᵀ(Σ −[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
+//! 3×3 contact-space matrix `M = Cᵀ(Σ -[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -24,7 +24,7 @@ pub struct BodyUnitResponse<T: Real> {
     pub angular: T,
     /// `[r]×`, shown with the friction matrix.
     pub skew_r: Matrix3<T>,
-    /// `−[r]× I⁻¹ [r]×` in world space (friction only).
+    /// `-[r]× I⁻¹ [r]×` in world space (friction only).
     pub angular_matrix_world: Option<Matrix3<T>>,
 }
 
@@ -131,7 +131,7 @@ pub fn contact_matrix<T: Real>(
 }
 
 /// The two bodies' responses summed: `Δq̇_t` and, with friction, the
-/// contact-space matrix `M = Cᵀ(Σ −[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
+/// contact-space matrix `M = Cᵀ(Σ -[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
 pub fn combine_unit_responses<T: Real>(
     bodies: [Option<BodyUnitResponse<T>>; 2],
     contact_to_world: &Matrix3<T>,

@@ -83,7 +83,7 @@ impl<T: Real> State<T> {
 }
 
 /// The contact velocity the bodies give now, contact space:
-/// `Cᵀ Σ s_i (v_i + ω_i × r_i)` (s = +1 for body 1, −1 for body 2).
+/// `Cᵀ Σ s_i (v_i + ω_i × r_i)` (s = +1 for body 1, -1 for body 2).
 pub fn body_velocity<T: Real>(k: &ResolverContact<T>, bodies: &[ResolverBody<T>]) -> Vector3<T> {
     let mut v = Vector3::zeros();
     for (i, slot) in k.bodies.iter().enumerate() {

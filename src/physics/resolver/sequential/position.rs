@@ -2,7 +2,7 @@
 //! penetrations): the contact's penetration as the sweep has left it so far is
 //! resolved with the lecture's projection (linear or nonlinear, angular limit,
 //! relaxation), and the penetration of every contact sharing a moved body is
-//! updated as the lecture's resolver does, `pen_j −= s·(Δp + Δθ × r_j)·n_j`.
+//! updated as the lecture's resolver does, `pen_j -= s·(Δp + Δθ × r_j)·n_j`.
 //!
 //! Accumulated: the depth a contact has pushed its bodies apart in this phase
 //! is kept, and a contact left separated by more than epsilon (others pushed

@@ -3,11 +3,11 @@
 //! its accumulated impulse, the total is clamped, and only the change is
 //! applied to the bodies.
 //!
-//! - target normal velocity `−e (v₀ − v_acc)` from the pre-solve velocity `v₀`
+//! - target normal velocity `-e (v₀ - v_acc)` from the pre-solve velocity `v₀`
 //!   (restitution from the initial velocity, as Box2D does), so the Δv wanted
-//!   now is `−v − e (v₀ − v_acc)`;
+//!   now is `-v - e (v₀ - v_acc)`;
 //! - frictionless: `Δλ = Δv / Δq̇_t`, then `λ ← max(λ + Δλ, 0)`;
-//! - with friction: `Δg = M⁻¹ (Δv, −v_t0, −v_t1)` (the lecture's sticking
+//! - with friction: `Δg = M⁻¹ (Δv, -v_t0, -v_t1)` (the lecture's sticking
 //!   impulse), `g ← g + Δg`, `g_n ← max(g_n, 0)`, and where
 //!   `|g_t| > μ_s g_n` the tangential part is scaled to `μ_d g_n` (circular cone).
 //!

@@ -1,0 +1,46 @@
+//! Validation of one `[[printed]]` entry: the contact it names, its texts
+//! (no control characters: `check` prints them) and the shape of its value.
+
+use super::rules;
+use super::Validator;
+use crate::lesson::printed::Printed;
+
+impl Validator {
+    pub(super) fn printed(
+        &mut self,
+        raw: &crate::lesson::raw::RawPrinted,
+        contacts: usize,
+    ) -> Option<Printed> {
+        if let Some(k) = raw
+            .contact
+            .as_ref()
+            .filter(|k| *k.get_ref() >= contacts.max(1))
+        {
+            self.err(
+                k.span(),
+                format!(
+                    "printed entry names contact {} but the lesson has {contacts} (numbered from 0)",
+                    k.get_ref()
+                ),
+            );
+            return None;
+        }
+        // `check` prints these strings: no control characters.
+        for (what, text) in [("value", &raw.value), ("where", &raw.location)] {
+            if let Err(e) = rules::line(text.get_ref()) {
+                self.err(text.span(), format!("{what} {e}"));
+            }
+        }
+        if let Some(Err(e)) = raw.erratum.as_ref().map(|t| rules::text(t.get_ref())) {
+            let span = raw.erratum.as_ref().map_or(0..0, |t| t.span());
+            self.err(span, format!("erratum {e}"));
+        }
+        match Printed::from_raw(raw) {
+            Ok(p) => Some(p),
+            Err(note) => {
+                self.errors.push(note);
+                None
+            }
+        }
+    }
+}
