@@ -186,10 +186,22 @@ pub fn legend(page: &mut Page, fig: &Figure) {
 }
 
 /// Words of `text` in lines of at most `width` characters (a longer word
-/// has a line of its own).
+/// has a line of its own). A formula's operator binds its two operands, so
+/// `r = q - p` is never split.
 fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines: Vec<String> = vec![];
+    let operator = |w: &str| matches!(w, "=" | "-" | "+" | "·" | "×" | "/");
+    let mut units: Vec<String> = vec![];
     for word in text.split_whitespace() {
+        match units.last_mut() {
+            Some(u) if operator(word) || u.rsplit(' ').next().is_some_and(operator) => {
+                u.push(' ');
+                u.push_str(word);
+            }
+            _ => units.push(word.to_string()),
+        }
+    }
+    let mut lines: Vec<String> = vec![];
+    for word in &units {
         match lines.last_mut() {
             Some(l) if l.chars().count() + 1 + word.chars().count() <= width => {
                 l.push(' ');
@@ -199,4 +211,16 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
         }
     }
     lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wrap;
+
+    #[test]
+    fn a_formula_is_not_split_at_its_operators() {
+        let lines = wrap("The numbers use only r = q - p, as printed.", 24);
+        assert_eq!(lines, ["The numbers use only", "r = q - p, as printed."]);
+        assert!(wrap("a b c d", 3).iter().all(|l| l.chars().count() <= 3));
+    }
 }
