@@ -6,37 +6,11 @@
 use contact_lab::lesson::Lesson;
 use contact_lab::render::svg::{render, Plane};
 
+mod common;
+
 /// `(box, text)` of each label between the drawing's start and the legend.
 fn labels(svg: &str) -> Vec<([f64; 4], String)> {
-    let start = svg.find("<g clip-path=\"url(#area)\">").expect("drawing");
-    let end = svg.find(">Legend<").unwrap_or(svg.len());
-    let attr = |tag: &str, name: &str| -> Option<String> {
-        let at = tag.find(&format!(" {name}=\""))? + name.len() + 3;
-        Some(tag[at..].split('"').next()?.to_string())
-    };
-    svg[start..end]
-        .split("<text ")
-        .skip(1)
-        .filter_map(|t| {
-            let t = &format!(" {t}");
-            let x: f64 = attr(t, "x")?.parse().ok()?;
-            let y: f64 = attr(t, "y")?.parse().ok()?;
-            let size: f64 = attr(t, "font-size")?.parse().ok()?;
-            let anchor = attr(t, "text-anchor").unwrap_or_else(|| "start".into());
-            let text = t.split('>').nth(1)?.split('<').next()?.to_string();
-            let chars = text
-                .chars()
-                .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
-                .count() as f64;
-            let w = 0.55 * size * chars;
-            let x0 = match anchor.as_str() {
-                "middle" => x - w / 2.0,
-                "end" => x - w,
-                _ => x,
-            };
-            Some(([x0, y - 0.75 * size, x0 + w, y + 0.2 * size], text))
-        })
-        .collect()
+    common::svg::label_boxes(common::svg::drawing(svg))
 }
 
 #[test]

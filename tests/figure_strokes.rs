@@ -14,10 +14,9 @@ type P = [f64; 2];
 /// A straight piece of a stroke and half its width.
 struct Piece(P, P, f64);
 
-fn attr(tag: &str, name: &str) -> Option<String> {
-    let at = tag.find(&format!(" {name}=\""))? + name.len() + 3;
-    Some(tag[at..].split('"').next()?.to_string())
-}
+mod common;
+
+use common::svg::{attr, drawing, label_boxes as labels};
 
 fn num(tag: &str, name: &str) -> f64 {
     attr(tag, name).and_then(|s| s.parse().ok()).unwrap_or(0.0)
@@ -166,31 +165,6 @@ fn crosses(bx: [f64; 4], a: P, b: P) -> bool {
     t0 <= t1
 }
 
-/// `(box, text)` of each label of the drawing (estimated as the renderer
-/// does: 0.55 em a character, 0.75 em above the baseline, 0.2 below).
-fn labels(drawing: &str) -> Vec<([f64; 4], String)> {
-    drawing
-        .split("<text ")
-        .skip(1)
-        .filter_map(|t| {
-            let tag = format!(" {t}");
-            let (x, y, size) = (num(&tag, "x"), num(&tag, "y"), num(&tag, "font-size"));
-            let text = t.split('>').nth(1)?.split('<').next()?.to_string();
-            let chars = text
-                .chars()
-                .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
-                .count() as f64;
-            let w = 0.55 * size * chars;
-            let x0 = match attr(&tag, "text-anchor").as_deref() {
-                Some("middle") => x - w / 2.0,
-                Some("end") => x - w,
-                _ => x,
-            };
-            Some(([x0, y - 0.75 * size, x0 + w, y + 0.2 * size], text))
-        })
-        .collect()
-}
-
 #[test]
 fn no_label_box_meets_a_stroke_in_any_lesson_stage_or_plane() {
     let (mut figures, mut labelled) = (0, 0);
@@ -203,9 +177,7 @@ fn no_label_box_meets_a_stroke_in_any_lesson_stage_or_plane() {
             for plane in [Plane::Xy, Plane::Yz, Plane::Zx] {
                 for stage in &stages {
                     let svg = render_at(&t, plane, *stage);
-                    let start = svg.find("<g clip-path=\"url(#area)\">").unwrap();
-                    let end = svg.find(">Legend<").unwrap();
-                    let drawing = &svg[start..end];
+                    let drawing = drawing(&svg);
                     let pieces = strokes(drawing);
                     assert!(!pieces.is_empty());
                     for (b, text) in labels(drawing) {

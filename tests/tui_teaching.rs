@@ -357,3 +357,23 @@ fn without_colour_the_state_after_is_drawn_dashed() {
     let plain = plain.join("\n");
     assert!(plain.contains("v′ after (dashed)"), "{plain}");
 }
+
+/// The lecture's first and third examples are drawn with corrected geometry:
+/// the picture's legend says so briefly (the overview explains it), and
+/// the picture keeps most of its pane; a lesson drawn as given says nothing.
+#[test]
+fn the_picture_says_when_it_draws_corrected_geometry() {
+    for (lesson, corrected) in [
+        ("lecture-1", true),
+        ("lecture-3", true),
+        ("lecture-2", false),
+    ] {
+        let rows = screen(&app(lesson), 120, 36);
+        let said = row_of(&rows, "corrected geometry (see Overview)");
+        assert_eq!(said.is_some(), corrected, "{lesson}");
+        if let Some(row) = said {
+            // The legend is the pane's last rows: the picture has the rest.
+            assert!(row > 20, "{lesson}: legend at row {row} of 36");
+        }
+    }
+}

@@ -187,10 +187,11 @@ fn legend(
             spans.push(Span::raw(format!(" {what}  ")));
         }
     }
-    // The lesson draws the lecture's geometry corrected: say so.
+    // The lesson draws the lecture's geometry corrected: say so, briefly (the
+    // whole note would take the picture's rows; the overview explains it).
     match corrected {
         Some(_) if compact => spans.push(Span::raw("(corrected geometry)")),
-        Some(note) => spans.push(Span::raw(format!("· {note}"))),
+        Some(_) => spans.push(Span::raw("· drawn with corrected geometry (see Overview)")),
         None => {}
     }
     TextLine::from(spans)

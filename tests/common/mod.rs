@@ -3,6 +3,7 @@
 
 pub mod dd;
 pub mod random;
+pub mod svg;
 
 use contact_lab::lesson::{embedded, Lesson};
 
