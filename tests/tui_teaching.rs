@@ -369,8 +369,8 @@ fn the_picture_says_when_it_draws_corrected_geometry() {
         ("lecture-2", false),
     ] {
         let rows = screen(&app(lesson), 120, 36);
-        let said = row_of(&rows, "corrected geometry (see Overview)");
-        assert_eq!(said.is_some(), corrected, "{lesson}");
+        let said = row_of(&rows, "corrected geometry");
+        assert_eq!(said.is_some(), corrected, "{lesson}:\n{}", rows.join("\n"));
         if let Some(row) = said {
             // The legend is the pane's last rows: the picture has the rest.
             assert!(row > 20, "{lesson}: legend at row {row} of 36");
