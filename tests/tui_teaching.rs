@@ -369,11 +369,25 @@ fn the_picture_says_when_it_draws_corrected_geometry() {
         ("lecture-2", false),
     ] {
         let rows = screen(&app(lesson), 120, 36);
-        let said = row_of(&rows, "corrected geometry");
-        assert_eq!(said.is_some(), corrected, "{lesson}:\n{}", rows.join("\n"));
-        if let Some(row) = said {
-            // The legend is the pane's last rows: the picture has the rest.
-            assert!(row > 20, "{lesson}: legend at row {row} of 36");
+        // The picture pane's text, its wrapped lines joined.
+        let top = row_of(&rows, "Scene ·").unwrap();
+        let col = rows[top][..rows[top].find("┌ Scene").unwrap()]
+            .chars()
+            .count();
+        let pane: Vec<String> = rows[top + 1..]
+            .iter()
+            .map(|r| r.chars().skip(col + 1).collect::<String>())
+            .take_while(|r| !r.starts_with('─'))
+            .map(|r| r.trim_end_matches([' ', '│']).to_string())
+            .collect();
+        let said = pane
+            .join(" ")
+            .contains("drawn with corrected geometry (see Overview)");
+        assert_eq!(said, corrected, "{lesson}:\n{}", pane.join("\n"));
+        if said {
+            // The legend is the pane's last rows: the picture keeps the rest.
+            let legend = row_of(&rows, "v before").unwrap();
+            assert!(legend - top > 12, "{lesson}: picture rows {top}..{legend}");
         }
     }
 }
