@@ -93,6 +93,10 @@ pub struct ContactSetup<T: Real> {
     pub unit_total: T,
     /// Index into the friction data, for a contact with friction.
     pub friction: Option<usize>,
+    /// Slip speed before this step's accelerations, `|v_t - a_t Δt|` (the
+    /// tangential contact velocity the bodies give, less what the relative
+    /// acceleration built up over the step); zero without friction.
+    pub slip: T,
 }
 
 /// Body → contacts, movable bodies only, in compressed rows: the contacts of
@@ -264,6 +268,13 @@ pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut 
         let duration = contact.duration.unwrap_or(world.step.duration);
         let (velocity_from_acceleration, mut planar) =
             acceleration_terms(&acceleration, &basis, duration);
+        let slip = if with_friction {
+            let (_, bodies) = contact_velocity(&point_velocity, &basis, &Vector3::zeros());
+            let (y, z) = (bodies.y - planar.y, bodies.z - planar.z);
+            (y * y + z * z).sqrt()
+        } else {
+            T::zero()
+        };
         if !world.step.anticipate_planar_acceleration {
             planar = Vector3::zeros();
         }
@@ -297,6 +308,7 @@ pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut 
             projection,
             unit_total,
             friction: friction_index,
+            slip,
         });
         c
     }));
