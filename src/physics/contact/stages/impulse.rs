@@ -128,6 +128,15 @@ impl<T: Real> FactoredMatrix<T> {
         }
     }
 
+    /// `M⁻¹` from the Cholesky factor (None when M is not numerically
+    /// positive-definite), the factor already held where there is one.
+    pub fn cholesky_inverse(&self) -> Option<Matrix3<T>> {
+        match &self.factor {
+            Factor::Cholesky(ch) => Some(ch.inverse()),
+            _ => self.matrix.cholesky().map(|ch| ch.inverse()),
+        }
+    }
+
     /// `g = M⁻¹ rhs` (None when M cannot be solved or g is not finite).
     pub fn solve(&self, rhs: Vector3<T>) -> (Option<Vector3<T>>, MatrixSolve<T>) {
         let solution = match &self.factor {
@@ -243,6 +252,13 @@ mod tests {
         assert_eq!(fast, exact, "g of {m}");
         assert_eq!(fast_solve.singular, exact_solve.singular);
         assert_eq!(fast_solve.used_lu, exact_solve.used_lu);
+        // Sequential impulses invert M from the factor held, or factor it afresh.
+        let inverse = m.cholesky().map(|ch| ch.inverse());
+        assert_eq!(FactoredMatrix::new(m).cholesky_inverse(), inverse);
+        assert_eq!(
+            FactoredMatrix::with_condition(m).cholesky_inverse(),
+            inverse
+        );
         // The fast factor's κ is an upper bound, at most 3κ, when it stands in.
         assert!(fast_solve.condition_number >= exact_solve.condition_number * c(0.999));
     }

@@ -74,11 +74,8 @@ impl<T: Real> State<T> {
                 .map(|k| k.velocity - body_velocity(k, bodies)),
         );
         self.inverse.clear();
-        self.inverse.extend(
-            friction
-                .iter()
-                .map(|f| f.matrix.matrix.cholesky().map(|ch| ch.inverse())),
-        );
+        self.inverse
+            .extend(friction.iter().map(|f| f.matrix.cholesky_inverse()));
     }
 }
 

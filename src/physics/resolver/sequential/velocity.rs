@@ -179,7 +179,10 @@ mod tests {
         // |g_t| = 1.5 > 0.5 · 2: scaled to 1.0, not to some other radius.
         let (rim, regime) = clamp_accumulated(g, Some(0.5));
         assert_eq!(regime, Some(FrictionRegime::Dynamic));
-        assert!((rim - Vector3::new(2.0, 1.0, 0.0)).norm() < 1e-15, "{rim:?}");
+        assert!(
+            (rim - Vector3::new(2.0, 1.0, 0.0)).norm() < 1e-15,
+            "{rim:?}"
+        );
     }
 
     #[test]
