@@ -10,12 +10,9 @@ use contact_lab::format::Fmt;
 use contact_lab::lesson::{validate, Lesson, Overrides};
 use contact_lab::physics::causes::Cause;
 use contact_lab::physics::checks::{CheckKind, Measured};
-use contact_lab::physics::{
-    solve, ContactInput, ContactParams, FrictionModel, Problem, ProjectionMethod, RigidBody,
-};
+use contact_lab::physics::{solve, FrictionModel, RigidBody};
 use contact_lab::render;
 use contact_lab::trace::Trace;
-use nalgebra::Vector3;
 use proptest::prelude::*;
 
 /// The lecture's cube hitting the floor on its corner, with `extra` fields.
@@ -303,23 +300,8 @@ proptest! {
         model in prop::sample::select(FrictionModel::ALL.to_vec()),
         duration in prop::sample::select(vec![0.0, 0.01, 0.1]),
     ) {
-        let p = Problem {
-            bodies: [Some(b1), b2],
-            contact: ContactInput {
-                point: Vector3::zeros(),
-                normal: Vector3::y(),
-                penetration: 0.0,
-                restitution: c,
-                static_friction: mu.0,
-                dynamic_friction: mu.0 * mu.1,
-                friction_model: model,
-                settings: ContactParams {
-                    projection: ProjectionMethod::Nonlinear,
-                    ..ContactParams::default()
-                },
-            },
-            duration: if duration == 0.0 { 0.01 } else { duration },
-        };
+        let duration = if duration == 0.0 { 0.01 } else { duration };
+        let p = common::random::floor_problem(b1, b2, c, mu, model, 0.0, duration);
         let s = solve(&p);
         if let Err(e) = every_failure_is_explained(&s) {
             prop_assert!(false, "{}", e);

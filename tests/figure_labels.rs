@@ -3,8 +3,7 @@
 //! contact point's and the centres' placed first) have boxes that do not
 //! intersect, and the contact point is always labelled.
 
-use contact_lab::lesson::Lesson;
-use contact_lab::render::svg::{render, Plane};
+use contact_lab::render::svg::render;
 
 mod common;
 
@@ -16,30 +15,24 @@ fn labels(svg: &str) -> Vec<([f64; 4], String)> {
 #[test]
 fn no_two_labels_overlap_in_any_figure() {
     let mut figures = 0;
-    for id in contact_lab::lesson::embedded::ids() {
-        let l = Lesson::load(id).unwrap();
-        for k in 0..l.contacts.len() {
-            let t = contact_lab::worked_solution(&l, k);
-            for plane in [Plane::Xy, Plane::Yz, Plane::Zx] {
-                let svg = render(&t, plane);
-                let ls = labels(&svg);
+    common::each_contact_in_each_plane(|id, k, t, plane| {
+        let svg = render(&t, plane);
+        let ls = labels(&svg);
+        assert!(
+            ls.iter().any(|(_, s)| s == "q"),
+            "{id} #{k} {plane:?}: q is not labelled"
+        );
+        for (i, (a, sa)) in ls.iter().enumerate() {
+            for (b, sb) in &ls[i + 1..] {
+                let ox = a[2].min(b[2]) - a[0].max(b[0]);
+                let oy = a[3].min(b[3]) - a[1].max(b[1]);
                 assert!(
-                    ls.iter().any(|(_, s)| s == "q"),
-                    "{id} #{k} {plane:?}: q is not labelled"
+                    ox <= 2.0 || oy <= 2.0,
+                    "{id} #{k} {plane:?}: «{sa}» and «{sb}» overlap"
                 );
-                for (i, (a, sa)) in ls.iter().enumerate() {
-                    for (b, sb) in &ls[i + 1..] {
-                        let ox = a[2].min(b[2]) - a[0].max(b[0]);
-                        let oy = a[3].min(b[3]) - a[1].max(b[1]);
-                        assert!(
-                            ox <= 2.0 || oy <= 2.0,
-                            "{id} #{k} {plane:?}: «{sa}» and «{sb}» overlap"
-                        );
-                    }
-                }
-                figures += 1;
             }
         }
-    }
+        figures += 1;
+    });
     assert!(figures > 100, "{figures}");
 }

@@ -4,6 +4,8 @@
 //! projection's move only from the projection stage. And every legend entry
 //! names a mark that is drawn.
 
+mod common;
+
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::StageId;
 use contact_lab::render::figure::{ArrowKind, Figure, LegendItem, Plane};
@@ -45,49 +47,43 @@ fn legend_is_drawn(f: &Figure) -> Result<(), String> {
 #[test]
 fn every_stage_shows_the_state_it_works_on_and_its_legend_is_drawn() {
     let mut figures = 0;
-    for id in contact_lab::lesson::embedded::ids() {
-        let l = Lesson::load(id).unwrap();
-        for k in 0..l.contacts.len() {
-            let t = contact_lab::worked_solution(&l, k);
-            for plane in [Plane::Xy, Plane::Yz, Plane::Zx] {
-                let whole = Figure::of_contact(&t.scene, plane);
-                for stage in StageId::ALL {
-                    let f = whole.clone().at_stage(stage);
-                    let at = order(stage);
-                    let kinds: Vec<ArrowKind> = f.arrows.iter().map(|a| a.kind).collect();
-                    let ctx = format!("{id} #{k} {plane:?} {}", stage.json_name());
-                    if at < order(StageId::Impulse) {
-                        assert!(
-                            !kinds.contains(&ArrowKind::Impulse),
-                            "{ctx}: impulse too early"
-                        );
-                    }
-                    if at < order(StageId::ApplyImpulse) {
-                        assert!(
-                            !kinds.contains(&ArrowKind::VelocityAfter),
-                            "{ctx}: after too early"
-                        );
-                        assert!(f.spins.iter().all(|s| !s.after), "{ctx}");
-                    }
-                    if at > order(StageId::ApplyImpulse) {
-                        assert!(
-                            !kinds.contains(&ArrowKind::Velocity),
-                            "{ctx}: before too late"
-                        );
-                        assert!(f.spins.iter().all(|s| s.after), "{ctx}");
-                    }
-                    if at < order(StageId::NonlinearProjection) {
-                        assert!(f.bodies.iter().all(|b| b.outline_after.is_none()), "{ctx}");
-                    }
-                    if let Err(e) = legend_is_drawn(&f) {
-                        panic!("{ctx}: {e}");
-                    }
-                    figures += 1;
-                }
-                legend_is_drawn(&whole).unwrap();
+    common::each_contact_in_each_plane(|id, k, t, plane| {
+        let whole = Figure::of_contact(&t.scene, plane);
+        for stage in StageId::ALL {
+            let f = whole.clone().at_stage(stage);
+            let at = order(stage);
+            let kinds: Vec<ArrowKind> = f.arrows.iter().map(|a| a.kind).collect();
+            let ctx = format!("{id} #{k} {plane:?} {}", stage.json_name());
+            if at < order(StageId::Impulse) {
+                assert!(
+                    !kinds.contains(&ArrowKind::Impulse),
+                    "{ctx}: impulse too early"
+                );
             }
+            if at < order(StageId::ApplyImpulse) {
+                assert!(
+                    !kinds.contains(&ArrowKind::VelocityAfter),
+                    "{ctx}: after too early"
+                );
+                assert!(f.spins.iter().all(|s| !s.after), "{ctx}");
+            }
+            if at > order(StageId::ApplyImpulse) {
+                assert!(
+                    !kinds.contains(&ArrowKind::Velocity),
+                    "{ctx}: before too late"
+                );
+                assert!(f.spins.iter().all(|s| s.after), "{ctx}");
+            }
+            if at < order(StageId::NonlinearProjection) {
+                assert!(f.bodies.iter().all(|b| b.outline_after.is_none()), "{ctx}");
+            }
+            if let Err(e) = legend_is_drawn(&f) {
+                panic!("{ctx}: {e}");
+            }
+            figures += 1;
         }
-    }
+        legend_is_drawn(&whole).unwrap();
+    });
     assert!(figures > 500, "{figures}");
 }
 

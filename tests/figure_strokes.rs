@@ -5,9 +5,8 @@
 //! from the SVG itself (lines, polygons, circles, paths), not from the code
 //! that placed the labels.
 
-use contact_lab::lesson::Lesson;
 use contact_lab::physics::StageId;
-use contact_lab::render::svg::{render_at, Plane};
+use contact_lab::render::svg::render_at;
 
 type P = [f64; 2];
 
@@ -170,37 +169,31 @@ fn no_label_box_meets_a_stroke_in_any_lesson_stage_or_plane() {
     let (mut figures, mut labelled) = (0, 0);
     let mut stages: Vec<Option<StageId>> = StageId::ALL.iter().copied().map(Some).collect();
     stages.push(None);
-    for id in contact_lab::lesson::embedded::ids() {
-        let l = Lesson::load(id).unwrap();
-        for k in 0..l.contacts.len() {
-            let t = contact_lab::worked_solution(&l, k);
-            for plane in [Plane::Xy, Plane::Yz, Plane::Zx] {
-                for stage in &stages {
-                    let svg = render_at(&t, plane, *stage);
-                    let drawing = drawing(&svg);
-                    let pieces = strokes(drawing);
-                    assert!(!pieces.is_empty());
-                    for (b, text) in labels(drawing) {
-                        // Page coordinates are written to 0.1 px.
-                        for Piece(a, c, h) in &pieces {
-                            let grown = [
-                                b[0] - h + 0.2,
-                                b[1] - h + 0.2,
-                                b[2] + h - 0.2,
-                                b[3] + h - 0.2,
-                            ];
-                            assert!(
-                                !crosses(grown, *a, *c),
-                                "{id} #{k} {plane:?} {stage:?}: «{text}» meets the stroke {a:?}–{c:?}"
-                            );
-                        }
-                        labelled += 1;
-                    }
-                    figures += 1;
+    common::each_contact_in_each_plane(|id, k, t, plane| {
+        for stage in &stages {
+            let svg = render_at(&t, plane, *stage);
+            let drawing = drawing(&svg);
+            let pieces = strokes(drawing);
+            assert!(!pieces.is_empty());
+            for (b, text) in labels(drawing) {
+                // Page coordinates are written to 0.1 px.
+                for Piece(a, c, h) in &pieces {
+                    let grown = [
+                        b[0] - h + 0.2,
+                        b[1] - h + 0.2,
+                        b[2] + h - 0.2,
+                        b[3] + h - 0.2,
+                    ];
+                    assert!(
+                        !crosses(grown, *a, *c),
+                        "{id} #{k} {plane:?} {stage:?}: «{text}» meets the stroke {a:?}–{c:?}"
+                    );
                 }
+                labelled += 1;
             }
+            figures += 1;
         }
-    }
+    });
     assert!(
         figures > 1000 && labelled > 5 * figures,
         "{figures} {labelled}"

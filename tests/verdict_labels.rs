@@ -8,12 +8,9 @@
 mod common;
 
 use contact_lab::lesson::{Lesson, Overrides};
-use contact_lab::physics::{
-    solve, ContactInput, ContactParams, FrictionModel, Problem, ProjectionMethod, RigidBody,
-};
+use contact_lab::physics::{solve, FrictionModel, RigidBody};
 use contact_lab::trace::contact::{verdicts, ContactNames, SolvedContact};
 use contact_lab::trace::{Step, Trace, Value, Verdict};
-use nalgebra::Vector3;
 use proptest::prelude::*;
 
 fn num(checks: &Step, name: &str) -> f64 {
@@ -174,23 +171,7 @@ proptest! {
         model in prop::sample::select(FrictionModel::ALL.to_vec()),
         penetration in prop::sample::select(vec![0.0, 0.01, 0.5]),
     ) {
-        let p = Problem {
-            bodies: [Some(b1), b2.clone()],
-            contact: ContactInput {
-                point: Vector3::zeros(),
-                normal: Vector3::y(),
-                penetration,
-                restitution: c,
-                static_friction: mu.0,
-                dynamic_friction: mu.0 * mu.1,
-                friction_model: model,
-                settings: ContactParams {
-                    projection: ProjectionMethod::Nonlinear,
-                    ..ContactParams::default()
-                },
-            },
-            duration: 0.01,
-        };
+        let p = common::random::floor_problem(b1, b2.clone(), c, mu, model, penetration, 0.01);
         let s = solve(&p);
         let names = ContactNames {
             bodies: [Some("a".into()), b2.map(|_| "b".into())],

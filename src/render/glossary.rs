@@ -7,21 +7,6 @@ use std::fmt::Write;
 use crate::trace::glossary::{Symbol, GLOSSARY};
 use crate::trace::latex::{prose, to_latex};
 
-fn stages(s: &Symbol) -> String {
-    s.stages
-        .iter()
-        .map(|id| {
-            (crate::physics::StageId::ALL
-                .iter()
-                .position(|x| x == id)
-                .unwrap_or(0)
-                + 1)
-            .to_string()
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
 fn unit_text(s: &Symbol) -> &'static str {
     if s.unit.is_empty() {
         "—"
@@ -50,7 +35,7 @@ pub fn text() -> String {
             s.symbol,
             s.meaning,
             unit_text(s),
-            stages(s)
+            s.stage_numbers()
         );
         if !s.elsewhere.is_empty() {
             let _ = write!(out, " — {}", s.elsewhere);
@@ -70,7 +55,7 @@ pub fn markdown() -> String {
             to_latex(s.symbol).replace('|', "\\vert "),
             super::markdown::cell(s.meaning),
             unit_text(s),
-            stages(s),
+            s.stage_numbers(),
             super::markdown::cell(s.elsewhere)
         );
     }
@@ -100,7 +85,7 @@ pub fn latex() -> String {
                 body,
                 "${}$ & {meaning} & {unit} & {} \\\\",
                 to_latex(s.symbol),
-                stages(s)
+                s.stage_numbers()
             );
         }
         body.push_str("\\hline\n\\end{tabular}\n\n\\bigskip\n");

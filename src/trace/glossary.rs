@@ -22,6 +22,21 @@ pub struct Symbol {
     pub elsewhere: &'static str,
 }
 
+impl Symbol {
+    /// The numbers of the stages that use the symbol, as the stepper counts
+    /// them (1 = the first stage): "2, 4, 5".
+    pub fn stage_numbers(&self) -> String {
+        self.stages
+            .iter()
+            .map(|id| {
+                let n = StageId::ALL.iter().position(|x| x == id).unwrap_or(0) + 1;
+                n.to_string()
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
 const fn s(
     symbol: &'static str,
     meaning: &'static str,

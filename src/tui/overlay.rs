@@ -73,24 +73,12 @@ pub fn glossary(app: &App, scroll: u16, area: Rect, buf: &mut Buffer) {
         lines.push(Line::styled(format!(" {piece}"), t.dim()));
     }
     for sym in GLOSSARY {
-        let stages: Vec<String> = sym
-            .stages
-            .iter()
-            .map(|id| {
-                (crate::physics::StageId::ALL
-                    .iter()
-                    .position(|x| x == id)
-                    .unwrap_or(0)
-                    + 1)
-                .to_string()
-            })
-            .collect();
         let unit = if sym.unit.is_empty() {
             "no unit"
         } else {
             sym.unit
         };
-        let mut what = format!("{} [{unit}; stages {}]", sym.meaning, stages.join(", "));
+        let mut what = format!("{} [{unit}; stages {}]", sym.meaning, sym.stage_numbers());
         if !sym.elsewhere.is_empty() {
             what.push_str(&format!("; {}", sym.elsewhere));
         }

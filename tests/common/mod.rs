@@ -68,3 +68,20 @@ pub fn lesson_file(path: &std::path::Path) -> Lesson {
         .to_string();
     contact_lab::lesson::validate::parse(&origin, &text).expect("lesson is valid")
 }
+
+/// Calls `visit` for every contact of every embedded lesson, worked, in each
+/// of the three view planes (the figure tests' loop).
+pub fn each_contact_in_each_plane(
+    mut visit: impl FnMut(&str, usize, &contact_lab::trace::Trace, contact_lab::trace::Plane),
+) {
+    use contact_lab::trace::Plane;
+    for id in embedded::ids() {
+        let l = Lesson::load(id).unwrap();
+        for k in 0..l.contacts.len() {
+            let t = contact_lab::worked_solution(&l, k);
+            for plane in [Plane::Xy, Plane::Yz, Plane::Zx] {
+                visit(id, k, &t, plane);
+            }
+        }
+    }
+}

@@ -43,3 +43,35 @@ pub fn body(
             }
         })
 }
+
+/// One contact at the origin with normal +y between `b1` and `b2` (or the
+/// world), nonlinear projection, restitution `c`, friction `mu.0` static and
+/// `mu.0 · mu.1` dynamic under `model`, resolved with frame time `duration`.
+pub fn floor_problem(
+    b1: RigidBody<f64>,
+    b2: Option<RigidBody<f64>>,
+    c: f64,
+    mu: (f64, f64),
+    model: contact_lab::physics::FrictionModel,
+    penetration: f64,
+    duration: f64,
+) -> contact_lab::physics::Problem<f64> {
+    use contact_lab::physics::{ContactInput, ContactParams, ProjectionMethod};
+    contact_lab::physics::Problem {
+        bodies: [Some(b1), b2],
+        contact: ContactInput {
+            point: Vector3::zeros(),
+            normal: Vector3::y(),
+            penetration,
+            restitution: c,
+            static_friction: mu.0,
+            dynamic_friction: mu.0 * mu.1,
+            friction_model: model,
+            settings: ContactParams {
+                projection: ProjectionMethod::Nonlinear,
+                ..ContactParams::default()
+            },
+        },
+        duration,
+    }
+}
