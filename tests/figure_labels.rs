@@ -16,7 +16,7 @@ fn labels(svg: &str) -> Vec<([f64; 4], String)> {
 fn no_two_labels_overlap_in_any_figure() {
     let mut figures = 0;
     common::each_contact_in_each_plane(|id, k, t, plane| {
-        let svg = render(&t, plane);
+        let svg = render(t, plane);
         let ls = labels(&svg);
         assert!(
             ls.iter().any(|(_, s)| s == "q"),

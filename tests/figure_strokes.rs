@@ -171,7 +171,7 @@ fn no_label_box_meets_a_stroke_in_any_lesson_stage_or_plane() {
     stages.push(None);
     common::each_contact_in_each_plane(|id, k, t, plane| {
         for stage in &stages {
-            let svg = render_at(&t, plane, *stage);
+            let svg = render_at(t, plane, *stage);
             let drawing = drawing(&svg);
             let pieces = strokes(drawing);
             assert!(!pieces.is_empty());
