@@ -112,7 +112,7 @@ fn scenes(c: &mut Criterion) {
     }
     // Enter on a frame: record its step again from the nearest checkpoint
     // and draw it. The best case replays no step; the worst CHECKPOINT − 1.
-    let k = contact_lab::trace::player::CHECKPOINT as usize;
+    let k = contact_lab::session::CHECKPOINT as usize;
     for (step, replayed) in [(12 * k + 1, 0), (16 * k, k - 1)] {
         key_to_frame(
             c,

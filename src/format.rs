@@ -1,8 +1,6 @@
 //! The one number formatter: significant digits, trailing zeros trimmed,
 //! `-0` shown as `0`, scientific notation outside [1e-4, 10^digits).
 
-use crate::trace::{Step, Value};
-
 /// Human number formatting (JSON carries full f64 and does not use this).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Fmt {
@@ -70,131 +68,6 @@ impl Fmt {
             .join(", ")
     }
 
-    /// Plain-text form of a value.
-    pub fn value(&self, v: &Value) -> String {
-        match v {
-            Value::Scalar(x) => self.num(*x),
-            Value::Vector(a) => format!("({})", self.list(a)),
-            Value::Quaternion(q) => format!("[{}]", self.list(q)),
-            Value::Matrix(m) => format!(
-                "[{}]",
-                m.iter()
-                    .map(|r| format!("[{}]", self.list(r)))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-            Value::Text(s) => s.clone(),
-            Value::List(items) => items.join("; "),
-        }
-    }
-
-    /// LaTeX form of a value.
-    pub fn value_latex(&self, v: &Value) -> String {
-        let list = |xs: &[f64]| {
-            xs.iter()
-                .map(|x| self.num_latex(*x))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        match v {
-            Value::Scalar(x) => self.num_latex(*x),
-            Value::Vector(a) => format!("({})", list(a)),
-            Value::Quaternion(q) => format!("[{}]", list(q)),
-            Value::Matrix(m) => format!(
-                "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
-                m.iter()
-                    .map(|r| r
-                        .iter()
-                        .map(|x| self.num_latex(*x))
-                        .collect::<Vec<_>>()
-                        .join(" & "))
-                    .collect::<Vec<_>>()
-                    .join(" \\\\ ")
-            ),
-            Value::Text(s) => format!("\\text{{{}}}", crate::trace::latex::escape_text(s)),
-            Value::List(items) => format!(
-                "\\text{{{}}}",
-                crate::trace::latex::escape_text(&items.join("; "))
-            ),
-        }
-    }
-
-    /// Replaces each `{name}` of `template` with the step's value `name`.
-    /// An unknown name is left as written.
-    pub fn fill(&self, template: &str, step: &Step, latex: bool) -> String {
-        self.fill_with(template, step, &|s| s.to_string(), &|v| {
-            if latex {
-                self.value_latex(v)
-            } else {
-                self.value(v)
-            }
-        })
-    }
-
-    /// Like [`Fmt::fill`], with each literal piece of the template passed
-    /// through `literal` and each value shown by `value` (renderers that
-    /// escape text and typeset numbers differently).
-    pub fn fill_with(
-        &self,
-        template: &str,
-        step: &Step,
-        literal: &dyn Fn(&str) -> String,
-        value: &dyn Fn(&Value) -> String,
-    ) -> String {
-        self.fill_named(template, step, literal, &|_, v| value(v))
-    }
-
-    /// [`Fmt::fill`] for prose (notes, verdicts): each number followed by its
-    /// unit from the glossary (`closing at 1.25 m/s`).
-    /// A unit the template already writes after the placeholder
-    /// (`{rotation_degrees1}°`) is not added again.
-    pub fn fill_units(&self, template: &str, step: &Step) -> String {
-        use crate::trace::glossary::{unit, unit_to_add, with_unit};
-        self.fill_named(template, step, &|s| s.to_string(), &|name, v| {
-            with_unit(
-                &self.value(v),
-                unit_to_add(template, name, unit(step, name)),
-            )
-        })
-    }
-
-    /// Like [`Fmt::fill_with`], with the value's name passed to `value`.
-    pub fn fill_named(
-        &self,
-        template: &str,
-        step: &Step,
-        literal: &dyn Fn(&str) -> String,
-        value: &dyn Fn(&str, &Value) -> String,
-    ) -> String {
-        let mut out = String::new();
-        let mut text = String::new();
-        let mut rest = template;
-        while let Some(open) = rest.find('{') {
-            text.push_str(&rest[..open]);
-            let after = &rest[open + 1..];
-            match after.find('}') {
-                Some(close) if is_name(&after[..close]) => {
-                    let name = &after[..close];
-                    match step.lookup(name) {
-                        Some(v) => {
-                            out.push_str(&literal(&std::mem::take(&mut text)));
-                            out.push_str(&value(name, v));
-                        }
-                        None => text.push_str(&rest[open..open + close + 2]),
-                    }
-                    rest = &after[close + 1..];
-                }
-                _ => {
-                    text.push('{');
-                    rest = after;
-                }
-            }
-        }
-        text.push_str(rest);
-        out.push_str(&literal(&text));
-        out
-    }
-
     /// `x` with exactly `decimals` decimals, as a lecture prints it
     /// (`-0` shown as `0`).
     pub fn fixed(&self, x: f64, decimals: u32) -> String {
@@ -221,7 +94,7 @@ pub fn exact(x: f64) -> String {
     }
 }
 
-fn is_name(s: &str) -> bool {
+pub fn is_name(s: &str) -> bool {
     !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 

@@ -76,7 +76,7 @@ impl Error {
 /// A path for a message: lossy UTF-8, control characters escaped, so a file
 /// name cannot move the cursor or recolour the terminal.
 pub fn shown(path: &Path) -> String {
-    crate::lesson::snippet::printable(path.to_string_lossy().into_owned()).replace('\n', "\\n")
+    crate::printable::printable(path.to_string_lossy().into_owned()).replace('\n', "\\n")
 }
 
 /// What a non-regular file is, for a refusal (of an output target here, of a
@@ -170,6 +170,19 @@ pub fn write(path: &Path, bytes: &[u8], existing: Existing) -> Result<(), Error>
             }
         }),
     }
+}
+
+/// A lesson id made safe for a file name.
+pub fn file_stem(id: &str) -> String {
+    id.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]

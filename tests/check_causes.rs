@@ -114,10 +114,7 @@ fn kinetic_direction_without_sliding_fails_the_slip_check_for_its_real_cause() {
 #[test]
 fn kinetic_direction_misses_the_restitution_target_and_says_why() {
     let mut l = Lesson::load("friction-cube").unwrap();
-    l.apply(&Overrides {
-        friction_model: Some(FrictionModel::KineticDirection),
-        ..Overrides::default()
-    });
+    l.apply(&Overrides::from_pairs(&[("friction_model", "kinetic-direction")]).unwrap());
     for k in 0..2 {
         let t = contact_lab::worked_solution(&l, k);
         assert_eq!(verdict(&t, "separating velocity"), Some(false));
@@ -249,10 +246,7 @@ fn over_every_lesson_and_model_no_check_fails_without_its_cause() {
     for id in contact_lab::lesson::embedded::ids() {
         for model in FrictionModel::ALL {
             let mut l = Lesson::load(id).unwrap();
-            l.apply(&Overrides {
-                friction_model: Some(model),
-                ..Overrides::default()
-            });
+            l.apply(&Overrides::from_pairs(&[("friction_model", model.name())]).unwrap());
             for k in 0..l.contacts.len() {
                 let s = solve(&l.problem::<f64>(k));
                 if let Err(e) = every_failure_is_explained(&s) {

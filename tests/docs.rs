@@ -7,8 +7,7 @@ mod common;
 use std::collections::{BTreeMap, BTreeSet};
 
 use contact_lab::lesson::Overrides;
-use contact_lab::physics::exact::RestitutionLaw;
-use contact_lab::physics::{FrictionModel, ProjectionMethod, StageId};
+use contact_lab::physics::StageId;
 
 /// Stage id → the backticked words of its section, and the words of the
 /// first column of its tables.
@@ -50,26 +49,11 @@ fn documented() -> Vec<(String, BTreeSet<String>, BTreeSet<String>)> {
 fn produced() -> BTreeMap<String, BTreeSet<String>> {
     let variants = [
         Overrides::default(),
-        Overrides {
-            friction_model: Some(FrictionModel::KineticDirection),
-            ..Overrides::default()
-        },
-        Overrides {
-            friction_model: Some(FrictionModel::VelocityScaling),
-            ..Overrides::default()
-        },
-        Overrides {
-            projection: Some(ProjectionMethod::Linear),
-            ..Overrides::default()
-        },
-        Overrides {
-            angular_limit: Some(f64::INFINITY),
-            ..Overrides::default()
-        },
-        Overrides {
-            exact: Some(RestitutionLaw::Stronge),
-            ..Overrides::default()
-        },
+        Overrides::from_pairs(&[("friction_model", "kinetic-direction")]).unwrap(),
+        Overrides::from_pairs(&[("friction_model", "velocity-scaling")]).unwrap(),
+        Overrides::from_pairs(&[("projection", "linear")]).unwrap(),
+        Overrides::from_pairs(&[("angular_limit", "inf")]).unwrap(),
+        Overrides::from_pairs(&[("exact", "stronge")]).unwrap(),
     ];
     let mut names: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
     for lesson in common::all_lessons() {

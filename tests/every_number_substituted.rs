@@ -15,10 +15,7 @@ fn every_formula_has_its_numbers_substituted() {
         let lesson = Lesson::load(id).unwrap();
         for model in FrictionModel::ALL {
             let mut l = lesson.clone();
-            l.apply(&Overrides {
-                friction_model: Some(model),
-                ..Overrides::default()
-            });
+            l.apply(&Overrides::from_pairs(&[("friction_model", model.name())]).unwrap());
             for k in 0..l.contacts.len() {
                 let t = contact_lab::worked_solution(&l, k);
                 let impulse = [StageId::Impulse, StageId::FrictionClamp];

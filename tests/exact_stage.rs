@@ -11,13 +11,11 @@ use contact_lab::format::Fmt;
 use contact_lab::lesson::{Lesson, Overrides};
 use contact_lab::physics::exact::RestitutionLaw;
 use contact_lab::render;
+use contact_lab::render::fill::Fill;
 use contact_lab::trace::{Trace, Value};
 
 fn with_law(mut lesson: Lesson, law: RestitutionLaw) -> Lesson {
-    lesson.apply(&Overrides {
-        exact: Some(law),
-        ..Overrides::default()
-    });
+    lesson.apply(&Overrides::from_pairs(&[("exact", law.name())]).unwrap());
     lesson
 }
 

@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use contact_lab::lesson::{Lesson, Overrides};
-use contact_lab::physics::{FrictionModel, ProjectionMethod};
+use contact_lab::physics::FrictionModel;
 use contact_lab::trace::glossary::{symbols_in, unit, GLOSSARY};
 use contact_lab::trace::Trace;
 
@@ -16,15 +16,10 @@ fn traces() -> Vec<Trace> {
     for id in contact_lab::lesson::embedded::ids() {
         let variants = FrictionModel::ALL
             .iter()
-            .map(|m| Overrides {
-                friction_model: Some(*m),
-                ..Overrides::default()
-            })
-            .chain([Overrides {
-                projection: Some(ProjectionMethod::Linear),
-                relaxation: Some(0.5),
-                ..Overrides::default()
-            }]);
+            .map(|m| Overrides::from_pairs(&[("friction_model", m.name())]).unwrap())
+            .chain([
+                Overrides::from_pairs(&[("projection", "linear"), ("relaxation", "0.5")]).unwrap(),
+            ]);
         for o in variants {
             let mut l = Lesson::load(id).unwrap();
             l.apply(&o);

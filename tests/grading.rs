@@ -4,6 +4,7 @@
 //! four decimals, as the sheet asks.
 
 use assert_cmd::Command;
+use contact_lab::render::fill::Fill;
 
 fn run(args: &[&str]) -> (i32, String, String) {
     let out = Command::cargo_bin("contact-lab")
@@ -81,9 +82,9 @@ fn a_broken_answer_file_is_a_usage_error() {
 /// answer 10 % off is wrong.
 #[test]
 fn every_revealed_result_typed_as_shown_is_right_and_ten_percent_off_is_wrong() {
+    use contact_lab::exercise::answer::{grade, Score};
     use contact_lab::format::Fmt;
     use contact_lab::lesson::Lesson;
-    use contact_lab::trace::grade::{grade, Score};
     use contact_lab::trace::Value;
     let fmt = Fmt::default();
     let mut score = Score::default();

@@ -5,7 +5,7 @@ mod common;
 use common::text;
 
 use contact_lab::lesson::{Lesson, Overrides};
-use contact_lab::physics::{FrictionModel, ProjectionMethod};
+use contact_lab::physics::FrictionModel;
 use contact_lab::trace::Trace;
 
 fn solved(id: &str, k: usize, o: Overrides) -> Trace {
@@ -15,10 +15,7 @@ fn solved(id: &str, k: usize, o: Overrides) -> Trace {
 }
 
 fn model(m: FrictionModel) -> Overrides {
-    Overrides {
-        friction_model: Some(m),
-        ..Overrides::default()
-    }
+    Overrides::from_pairs(&[("friction_model", m.name())]).unwrap()
 }
 
 fn num(t: &Trace, stage: &str, name: &str) -> f64 {
@@ -136,10 +133,7 @@ fn linear_projection_never_rotates_and_relaxation_scales_the_moves() {
     let linear = solved(
         "lecture-3",
         0,
-        Overrides {
-            projection: Some(ProjectionMethod::Linear),
-            ..Overrides::default()
-        },
+        Overrides::from_pairs(&[("projection", "linear")]).unwrap(),
     );
     assert_eq!(num(&linear, "nonlinear_projection", "angular_move1"), 0.0);
     assert!(linear
@@ -155,10 +149,7 @@ fn linear_projection_never_rotates_and_relaxation_scales_the_moves() {
     let half = solved(
         "lecture-3",
         0,
-        Overrides {
-            relaxation: Some(0.5),
-            ..Overrides::default()
-        },
+        Overrides::from_pairs(&[("relaxation", "0.5")]).unwrap(),
     );
     for name in ["linear_move1", "angular_move1", "linear_move2"] {
         let (a, b) = (

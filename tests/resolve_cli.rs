@@ -277,15 +277,15 @@ fn bad_flags_are_usage_errors_naming_the_flag() {
     let cases: &[(&[&str], &str)] = &[
         (
             &["--position-iterations", "1000000001"],
-            "--position-iterations must be a whole number from 0 to 10⁹",
+            "--position-iterations: position_iterations must be a whole number from 0 to 10⁹",
         ),
         (
             &["--velocity-epsilon", "-0.1"],
-            "--velocity-epsilon must be a finite number ≥ 0, got -0.1",
+            "--velocity-epsilon: velocity_epsilon must be a finite number ≥ 0, got -0.1",
         ),
         (
             &["--position-epsilon", "nan"],
-            "--position-epsilon must be a finite number ≥ 0, got NaN",
+            "--position-epsilon: position_epsilon must be a finite number ≥ 0, got NaN",
         ),
         (
             &["--velocity-limit", "-1"],
@@ -316,15 +316,15 @@ fn bad_flags_are_usage_errors_naming_the_flag() {
 /// `tests/invalid_resolve/`: bad resolver settings, each with its place and message.
 #[rustfmt::skip]
 const SETTINGS: &[(&str, usize, usize, &str)] = &[
-    ("fractional-iterations", 20, 23, "invalid type: floating point `10.5`, expected i64"),
+    ("fractional-iterations", 20, 23, "in [settings]: position_iterations must be a whole number from 0 to 10⁹ (1000000000), got 10.5"),
     ("inf-position-epsilon", 20, 20, "in [settings]: position_epsilon must be a finite number ≥ 0, got inf"),
     ("nan-velocity-epsilon", 20, 20, "in [settings]: velocity_epsilon must be a finite number ≥ 0, got NaN"),
     ("negative-position-epsilon", 20, 20, "in [settings]: position_epsilon must be a finite number ≥ 0, got -0.01"),
     ("negative-position-iterations", 20, 23, "in [settings]: position_iterations must be a whole number from 0 to 10⁹ (1000000000), got -5"),
-    ("resolver-setting-in-contact", 18, 33, "velocity_epsilon is a setting of the whole scene: put it in the lesson's [settings]"),
+    ("resolver-setting-in-contact", 18, 14, "velocity_epsilon is a setting of the whole scene: put it in the lesson's [settings]"),
     ("tiny-position-epsilon", 20, 20, "in [settings]: position_epsilon 1e-70 is below contact-lab's smallest non-zero magnitude, 1e-60"),
-    ("unknown-restitution-from", 20, 20, "in [settings]: restitution_from must be \"current\" or \"initial\", got \"later\""),
-    ("unknown-solver", 20, 10, "in [settings]: solver must be \"deepest_first\" or \"sequential_impulse\", got \"fastest\""),
+    ("unknown-restitution-from", 20, 20, "in [settings]: restitution_from must be one of \"current\", \"initial\", got \"later\""),
+    ("unknown-solver", 20, 10, "in [settings]: solver must be one of \"deepest-first\", \"sequential-impulse\", got \"fastest\""),
     ("velocity-iterations-past-limit", 20, 23, "in [settings]: velocity_iterations must be a whole number from 0 to 10⁹ (1000000000), got 2000000000"),
 ];
 

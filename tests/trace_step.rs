@@ -6,7 +6,7 @@
 use assert_cmd::Command;
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::resolver::Phase;
-use contact_lab::trace::player::{Player, CHECKPOINT};
+use contact_lab::session::{Player, CHECKPOINT};
 use contact_lab::trace::step::StepTrace;
 use serde_json::Value as J;
 

@@ -92,10 +92,7 @@ fn no_label_contradicts_its_numbers_in_any_lesson_or_model() {
     for id in contact_lab::lesson::embedded::ids() {
         for model in FrictionModel::ALL {
             let mut l = Lesson::load(id).unwrap();
-            l.apply(&Overrides {
-                friction_model: Some(model),
-                ..Overrides::default()
-            });
+            l.apply(&Overrides::from_pairs(&[("friction_model", model.name())]).unwrap());
             for k in 0..l.contacts.len() {
                 let t = contact_lab::worked_solution(&l, k);
                 seen += t.verdicts.len();
@@ -115,10 +112,7 @@ fn a_rising_slip_is_labelled_as_rising() {
     for id in contact_lab::lesson::embedded::ids() {
         for model in FrictionModel::ALL {
             let mut l = Lesson::load(id).unwrap();
-            l.apply(&Overrides {
-                friction_model: Some(model),
-                ..Overrides::default()
-            });
+            l.apply(&Overrides::from_pairs(&[("friction_model", model.name())]).unwrap());
             for k in 0..l.contacts.len() {
                 let t = contact_lab::worked_solution(&l, k);
                 if t.verdicts.iter().any(|v| v.label == "slip speed rose") {

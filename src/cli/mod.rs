@@ -2,7 +2,9 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod knobs;
 mod scene;
+pub use knobs::*;
 pub use scene::*;
 
 const EXAMPLES: &str = "\
@@ -25,6 +27,7 @@ Examples:
   contact-lab study stack-5 ramp-stick              speed against accuracy: tables with the Pareto front
   contact-lab study --format svg > study.svg        error against µs per step, log–log
   contact-lab exercise --seed 1 --count 5 --answers --format md
+  contact-lab knobs                                 every tunable: what it trades, default, values
 
 Exit codes: 0 success, 1 runtime failure, 2 usage, 65 invalid lesson data, 66 lesson file missing
 (when each is returned: docs/exit-codes.md).";
@@ -57,6 +60,8 @@ pub enum Command {
     Exercise(ExerciseArgs),
     /// Every symbol of the worked solutions: meaning, unit, stages, the lectures' names.
     Glossary(GlossaryArgs),
+    /// Every knob: where it lives, what it trades, its default and values (docs/knobs.md).
+    Knobs,
     /// Step through a lesson interactively (also what a bare `contact-lab` does in a terminal).
     Tui(TuiArgs),
 }
@@ -90,38 +95,8 @@ pub enum Format {
     Latex,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FrictionModelArg {
-    Millington,
-    KineticDirection,
-    VelocityScaling,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ProjectionArg {
-    Linear,
-    Nonlinear,
-}
-
-/// Options that change how a lesson is solved.
-#[derive(Debug, Clone, Args)]
-pub struct ModelArgs {
-    /// Friction model for every contact (default: the lesson's, else millington).
-    #[arg(long, value_enum)]
-    pub friction_model: Option<FrictionModelArg>,
-    /// Penetration resolution: linear (inverse mass only) or nonlinear (the lecture's).
-    #[arg(long, value_enum)]
-    pub projection: Option<ProjectionArg>,
-    /// Share of the penetration resolved, in (0, 1].
-    #[arg(long, allow_negative_numbers = true)]
-    pub relaxation: Option<f64>,
-    /// Max angular move as a multiple of |r⊥| (inf = no limit).
-    #[arg(long, allow_negative_numbers = true)]
-    pub angular_limit: Option<f64>,
-    /// Restitution is 0 below this closing speed (the reference engine: 0.25).
-    #[arg(long, allow_negative_numbers = true)]
-    pub velocity_limit: Option<f64>,
-}
+/// A contact's knobs (`--friction-model`, `--relaxation`, …), from the knob table.
+pub type ModelArgs = KnobArgs<ContactLevel>;
 
 #[derive(Debug, Clone, Args)]
 pub struct SolveArgs {
@@ -148,33 +123,8 @@ pub struct SolveArgs {
     /// Markdown: write an SVG figure of each contact to DIR and link it.
     #[arg(long, value_name = "DIR")]
     pub figures: Option<std::path::PathBuf>,
-    /// Integrate the impact exactly under this restitution law, beside the
-    /// one-shot impulse (the exact_impact stage; default: the lesson's, else skipped).
-    #[arg(long, value_enum, value_name = "LAW")]
-    pub exact: Option<ExactLawArg>,
     #[command(flatten)]
     pub model: ModelArgs,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ExactLawArg {
-    /// Kinematic: u_n' = -e u_n0.
-    Newton,
-    /// Kinetic: P_n = (1 + e) P_n at maximum compression.
-    Poisson,
-    /// Energetic: restitution work = -e² × compression work.
-    Stronge,
-}
-
-impl ExactLawArg {
-    pub fn law(self) -> crate::physics::exact::RestitutionLaw {
-        use crate::physics::exact::RestitutionLaw;
-        match self {
-            ExactLawArg::Newton => RestitutionLaw::Newton,
-            ExactLawArg::Poisson => RestitutionLaw::Poisson,
-            ExactLawArg::Stronge => RestitutionLaw::Stronge,
-        }
-    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

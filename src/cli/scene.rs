@@ -22,14 +22,6 @@ pub enum ImplementationArg {
     Indexed,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum RestitutionFromArg {
-    /// The contact velocity when the contact is taken (the reference engine).
-    Current,
-    /// The contact velocity before the velocity phase began (Box2D v3).
-    Initial,
-}
-
 /// `--show position:K` or `--show velocity:K`: iteration K of that phase.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Show {
@@ -55,43 +47,6 @@ fn parse_show(s: &str) -> Result<Show, String> {
     }
 }
 
-/// The resolver's settings; each overrides the lesson's `[settings]`.
-#[derive(Debug, Clone, Args)]
-pub struct ResolverArgs {
-    /// Most position-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
-    #[arg(long)]
-    pub position_iterations: Option<u64>,
-    /// Most velocity-phase iterations, 0 to 10⁹ (default: the lesson's, else 8 × contacts).
-    #[arg(long)]
-    pub velocity_iterations: Option<u64>,
-    /// Penetrations at or below this are left alone (default: the lesson's, else 0.01).
-    #[arg(long, allow_negative_numbers = true)]
-    pub position_epsilon: Option<f64>,
-    /// Desired Δv at or below this is left alone (default: the lesson's, else 0.01).
-    #[arg(long, allow_negative_numbers = true)]
-    pub velocity_epsilon: Option<f64>,
-    /// Which contact velocity restitution is applied to (default: the lesson's, else current).
-    #[arg(long, value_enum)]
-    pub restitution_from: Option<RestitutionFromArg>,
-    /// The solver: the lecture's deepest-first order or sequential impulses
-    /// (default: the lesson's, else deepest-first). Iterations count contact visits for both.
-    #[arg(long, value_enum)]
-    pub solver: Option<SolverArg>,
-    /// Sequential impulses: start each step from the last step's accumulated impulses.
-    #[arg(long)]
-    pub warm_start: bool,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SolverArg {
-    /// The lecture's: the deepest penetration, the largest desired Δv first.
-    #[value(name = "deepest_first", alias = "deepest-first")]
-    DeepestFirst,
-    /// Projected Gauss–Seidel with accumulated, clamped impulses.
-    #[value(name = "sequential_impulse", alias = "sequential-impulse")]
-    SequentialImpulse,
-}
-
 #[derive(Debug, Clone, Args)]
 pub struct ResolveArgs {
     /// Embedded lesson id (see `contact-lab list`) or path to a lesson file.
@@ -115,10 +70,9 @@ pub struct ResolveArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// A contact's and the resolver's knobs, each over the lesson's.
     #[command(flatten)]
-    pub resolver: ResolverArgs,
-    #[command(flatten)]
-    pub model: ModelArgs,
+    pub knobs: KnobArgs<ResolveLevel>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -129,18 +83,6 @@ pub enum RunFormat {
     Svg,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum BoxBoxArg {
-    Single,
-    Manifold,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SleepModeArg {
-    Body,
-    Island,
-}
-
 /// Options of `simulate`: each overrides the lesson's value.
 #[derive(Debug, Clone, Args)]
 pub struct SimulateArgs {
@@ -149,12 +91,6 @@ pub struct SimulateArgs {
     /// How long to run, in seconds of simulated time.
     #[arg(long, conflicts_with = "steps", allow_negative_numbers = true)]
     pub seconds: Option<f64>,
-    /// How many steps to run (default: the lesson's [step] steps).
-    #[arg(long)]
-    pub steps: Option<u64>,
-    /// The time step in seconds (default: the lesson's [step] dt).
-    #[arg(long, allow_negative_numbers = true)]
-    pub dt: Option<f64>,
     /// Record one step in every K (the last step is always recorded).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
     pub every: u64,
@@ -167,32 +103,17 @@ pub struct SimulateArgs {
     /// The plane of the film strip (svg).
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,
-    /// Gravity as x,y,z in m/s².
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
-    pub gravity: Option<Vec<f64>>,
-    /// Fraction of linear and angular velocity kept per second, (0, 1].
+    /// Fraction of linear and angular velocity kept per second, (0, 1]: sets
+    /// both damping knobs.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<f64>,
-    /// Bodies never sleep.
-    #[arg(long)]
-    pub no_sleep: bool,
-    /// Sleep per body (the lecture) or per island of touching bodies.
-    #[arg(long, value_enum)]
-    pub sleep_mode: Option<SleepModeArg>,
-    /// Contacts between boxes: single (the reference engine's one point) or manifold (up to 4).
-    #[arg(long, value_enum)]
-    pub box_box: Option<BoxBoxArg>,
-    /// Switch off acceleration compensation (micro-collisions): watch a resting box vibrate.
-    #[arg(long)]
-    pub no_compensation: bool,
-    /// Closing speed below which restitution is 0 (0 switches it off).
-    #[arg(long, allow_negative_numbers = true)]
-    pub velocity_limit: Option<f64>,
     /// Print the resolver trace of step N instead (as `resolve` prints one; text or json).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub trace_step: Option<u64>,
+    /// Every knob (a contact's, the resolver's, the step's, the world's,
+    /// sleep's), each over the lesson's.
     #[command(flatten)]
-    pub resolver: ResolverArgs,
+    pub knobs: KnobArgs<RunLevel>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -16,7 +16,11 @@ pub fn plane(p: PlaneArg) -> Plane {
 }
 
 pub fn figure(args: &FigureArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
-    let lesson = load(&args.lesson, &args.model, Some(args.contact))?;
+    let lesson = load(
+        &args.lesson,
+        &super::overrides(&args.model)?,
+        Some(args.contact),
+    )?;
     warn(&lesson, err);
     let trace = crate::worked_solution(&lesson, args.contact);
     let text = svg::render_at(&trace, plane(args.plane), args.stage);

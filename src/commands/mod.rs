@@ -12,10 +12,9 @@ mod study;
 
 use std::io::Write;
 
-use crate::cli::{Cli, Command, FrictionModelArg, ModelArgs, ProjectionArg};
+use crate::cli::{flag, Cli, Command, KnobArgs, Levels};
 use crate::error::AppError;
-use crate::lesson::{validate::rules, Lesson, Overrides};
-use crate::physics::{FrictionModel, ProjectionMethod};
+use crate::lesson::{knob_value, Lesson, Overrides};
 
 /// Runs the parsed command line, writing results to `out` and warnings to `err`.
 pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
@@ -32,6 +31,9 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
             crate::tui::run(app)
         }
         Some(Command::List) => list::list(out),
+        Some(Command::Knobs) => out
+            .write_all(crate::render::knobs::markdown().as_bytes())
+            .map_err(io),
         Some(Command::Solve(args)) => solve::solve(&args, out, err),
         Some(Command::Resolve(args)) => resolve::resolve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
@@ -67,18 +69,7 @@ pub(crate) fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<(), A
         .map_err(|e| AppError::Runtime(format!("cannot write {e}")))
 }
 
-/// A lesson id made safe for a file name.
-pub(crate) fn file_stem(id: &str) -> String {
-    id.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '-'
-            }
-        })
-        .collect()
-}
+pub(crate) use crate::output_file::file_stem;
 
 pub(crate) fn io(e: std::io::Error) -> AppError {
     AppError::Output(e)
@@ -87,13 +78,12 @@ pub(crate) fn io(e: std::io::Error) -> AppError {
 /// Loads a lesson, applies the command-line overrides and checks the contact index.
 pub(crate) fn load(
     name: &std::ffi::OsStr,
-    model: &ModelArgs,
+    overrides: &Overrides,
     contact: Option<usize>,
 ) -> Result<Lesson, AppError> {
-    let overrides = overrides(model)?;
     let mut lesson = Lesson::load(name)?;
-    lesson.apply(&overrides);
-    if overrides != Overrides::default() {
+    lesson.apply(overrides);
+    if !overrides.is_empty() {
         crate::lesson::overflow::check_all(&lesson)
             .map_err(|e| AppError::Usage(format!("with these options, {e}")))?;
     }
@@ -109,36 +99,31 @@ pub(crate) fn load(
     Ok(lesson)
 }
 
-pub(crate) fn overrides(m: &ModelArgs) -> Result<Overrides, AppError> {
-    if let Some(r) = m.relaxation {
-        rules::relaxation(r).map_err(|e| AppError::Usage(format!("--relaxation: {e}")))?;
+/// The knobs given on the command line, each checked by the lesson's rules.
+pub(crate) fn overrides<L: Levels>(args: &KnobArgs<L>) -> Result<Overrides, AppError> {
+    let mut o = Overrides::default();
+    for (knob, text) in &args.given {
+        let value = knob_value::from_text(knob, text)
+            .map_err(|e| AppError::Usage(format!("--{}: {e}", flag(knob))))?;
+        o.set(knob, value);
     }
-    if let Some(a) = m.angular_limit {
-        rules::angular_limit(a).map_err(|e| AppError::Usage(format!("--angular-limit: {e}")))?;
-    }
-    if let Some(v) = m.velocity_limit {
-        rules::velocity_limit(v).map_err(|e| AppError::Usage(format!("--velocity-limit: {e}")))?;
-    }
-    Ok(Overrides {
-        friction_model: m.friction_model.map(|f| match f {
-            FrictionModelArg::Millington => FrictionModel::Millington,
-            FrictionModelArg::KineticDirection => FrictionModel::KineticDirection,
-            FrictionModelArg::VelocityScaling => FrictionModel::VelocityScaling,
-        }),
-        projection: m.projection.map(|p| match p {
-            ProjectionArg::Linear => ProjectionMethod::Linear,
-            ProjectionArg::Nonlinear => ProjectionMethod::Nonlinear,
-        }),
-        relaxation: m.relaxation,
-        angular_limit: m.angular_limit,
-        velocity_limit: m.velocity_limit,
-        exact: None,
-    })
+    Ok(o)
 }
 
 /// Lesson warnings go to stderr, once each.
 pub(crate) fn warn(lesson: &Lesson, err: &mut dyn Write) {
     for w in &lesson.warnings {
         let _ = writeln!(err, "warning: {w}");
+    }
+}
+
+/// A warning for knobs that do nothing as set: warm starting belongs to
+/// sequential impulses (the deepest-first order keeps no impulses to start from).
+pub(crate) fn warn_knobs(resolver: &crate::physics::ResolverParams, err: &mut dyn Write) {
+    if resolver.warm_start && resolver.solver == crate::physics::Solver::DeepestFirst {
+        let _ = writeln!(
+            err,
+            "warning: warm starting applies to sequential impulses only; the deepest-first solver ignores it (add --solver sequential-impulse)"
+        );
     }
 }

@@ -6,74 +6,12 @@ use std::io::Write;
 use std::time::Instant;
 
 use super::{io, load, warn};
-use crate::cli::{
-    ImplementationArg, ResolveArgs, ResolveFormat, ResolverArgs, RestitutionFromArg, SolverArg,
-};
+use crate::cli::{ImplementationArg, ResolveArgs, ResolveFormat};
 use crate::error::AppError;
 use crate::format::Fmt;
-use crate::lesson::validate::rules;
 use crate::physics::resolver::{Implementation, Resolver, Silent};
-use crate::physics::{ResolverParams, RestitutionFrom, Solver, World};
+use crate::physics::{ResolverParams, World};
 use crate::render::resolve::{self, Seconds};
-
-/// The lesson's resolver settings with the command line's over them.
-pub(crate) fn params(
-    lesson: &ResolverParams,
-    a: &ResolverArgs,
-) -> Result<ResolverParams, AppError> {
-    let mut p = *lesson;
-    for (flag, value, out) in [
-        (
-            "position-iterations",
-            a.position_iterations,
-            &mut p.position_iterations,
-        ),
-        (
-            "velocity-iterations",
-            a.velocity_iterations,
-            &mut p.velocity_iterations,
-        ),
-    ] {
-        if let Some(n) = value {
-            let n = i64::try_from(n).unwrap_or(i64::MAX);
-            rules::iterations(&format!("--{flag}"), n).map_err(AppError::Usage)?;
-            *out = Some(n as usize);
-        }
-    }
-    for (flag, value, out) in [
-        (
-            "position-epsilon",
-            a.position_epsilon,
-            &mut p.position_epsilon,
-        ),
-        (
-            "velocity-epsilon",
-            a.velocity_epsilon,
-            &mut p.velocity_epsilon,
-        ),
-    ] {
-        if let Some(x) = value {
-            rules::epsilon(&format!("--{flag}"), x).map_err(AppError::Usage)?;
-            *out = x;
-        }
-    }
-    if let Some(r) = a.restitution_from {
-        p.restitution_from = match r {
-            RestitutionFromArg::Current => RestitutionFrom::Current,
-            RestitutionFromArg::Initial => RestitutionFrom::Initial,
-        };
-    }
-    if let Some(s) = a.solver {
-        p.solver = match s {
-            SolverArg::DeepestFirst => Solver::DeepestFirst,
-            SolverArg::SequentialImpulse => Solver::SequentialImpulse,
-        };
-    }
-    if a.warm_start {
-        p.warm_start = true;
-    }
-    Ok(p)
-}
 
 pub(crate) fn implementation(args: &ResolveArgs) -> Implementation {
     match args.implementation {
@@ -124,7 +62,7 @@ pub fn resolve(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<(), AppError> {
-    let lesson = load(&args.lesson, &args.model, None)?;
+    let lesson = load(&args.lesson, &super::overrides(&args.knobs)?, None)?;
     warn(&lesson, err);
     if lesson.contacts.is_empty() {
         // Only a scene may write no contact: its contacts come from its shapes.
@@ -134,7 +72,8 @@ pub fn resolve(
             lesson.id, args.lesson.to_string_lossy()
         )));
     }
-    let params = params(&lesson.resolver, &args.resolver)?;
+    let params = lesson.resolver;
+    super::warn_knobs(&params, err);
     let implementation = implementation(args);
     crate::lesson::overflow::check_resolve(&lesson, &params, implementation)
         .map_err(|e| AppError::Runtime(format!("{}: {e}", lesson.id)))?;

@@ -3,20 +3,17 @@
 
 use std::io::Write;
 
+use super::warn_knobs;
 use super::{figure::plane, io, warn};
-use crate::cli::{BoxBoxArg, RunFormat, SimulateArgs, SleepModeArg};
+use crate::cli::{RunFormat, SimulateArgs};
 use crate::error::AppError;
 use crate::format::exact;
 use crate::format::Fmt;
-use crate::lesson::validate::{damping_rule, rules};
-use crate::lesson::Lesson;
-use crate::physics::params::BoxBoxMode;
-use crate::physics::step::{Simulation, SleepMode};
+use crate::lesson::{knob_value, Lesson};
+use crate::physics::knobs::{Kind, Level, Range, Value, KNOBS, MAX_STEPS};
+use crate::physics::step::Simulation;
 use crate::render::run;
 use crate::trace::run::RunTrace;
-
-/// The most steps one command runs.
-const MAX_STEPS: u64 = 10_000_000;
 
 pub fn simulate(
     args: &SimulateArgs,
@@ -26,6 +23,7 @@ pub fn simulate(
     let lesson = Lesson::load(&args.lesson)?;
     warn(&lesson, err);
     let (mut sim, steps) = simulation(&lesson, args)?;
+    warn_knobs(&sim.params.resolver, err);
     if let Some(n) = args.trace_step {
         return trace_step(&lesson, args, sim, steps, n, out);
     }
@@ -61,7 +59,7 @@ fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
     AppError::Runtime(format!(
         "{}: {}; try a smaller --dt or more iterations",
         lesson.id,
-        crate::trace::player::blew_up(&names, e)
+        crate::session::blew_up(&names, e)
     ))
 }
 
@@ -115,63 +113,39 @@ pub fn simulation(
     lesson: &Lesson,
     args: &SimulateArgs,
 ) -> Result<(Simulation<f64>, u64), AppError> {
-    let Some(scene) = &lesson.simulation else {
+    if lesson.simulation.is_none() {
         return Err(AppError::Usage(format!(
             "{} is not a scene: it has no [world], [step] or [sleep] table, so nothing says how to step it (its contacts are solved by `solve` and `resolve`)",
             lesson.id
         )));
-    };
+    }
     let usage = |what: &str| Err(AppError::Usage(what.to_string()));
-    let mut p = lesson.sim_params().unwrap_or_default();
-    if let Some(dt) = args.dt {
-        if !(dt.is_finite() && dt > 0.0 && dt <= 1e6) {
-            return usage(&format!(
-                "--dt must be a finite number of seconds > 0, got {}",
-                exact(dt)
-            ));
-        }
-        rules::duration(dt).map_err(|e| AppError::Usage(format!("--dt: {e}")))?;
-        p.dt = dt;
-    }
-    if let Some(g) = &args.gravity {
-        if g.len() != 3 || g.iter().any(|x| rules::finite(*x).is_err()) {
-            return usage(
-                "--gravity takes three finite numbers x,y,z, each 0 or of magnitude 1e-60 to 1e60",
-            );
-        }
-        p.world.gravity = nalgebra::Vector3::new(g[0], g[1], g[2]);
-    }
+    let mut overrides = super::overrides(&args.knobs)?;
     if let Some(d) = args.damping {
-        damping_rule(d).map_err(|e| AppError::Usage(format!("--damping: {e}")))?;
-        p.world.linear_damping = d;
-        p.world.angular_damping = d;
+        // `--damping` sets both dampings, checked by their rule.
+        for knob in KNOBS
+            .iter()
+            .filter(|k| k.kind == Kind::Number(Range::Damping))
+        {
+            knob_value::check(knob, Value::Number(d))
+                .map_err(|e| AppError::Usage(format!("--damping: {e}")))?;
+            overrides.set(knob, Value::Number(d));
+        }
     }
-    if args.no_sleep {
-        p.sleep.enabled = false;
-    }
-    if let Some(m) = args.sleep_mode {
-        p.sleep.mode = match m {
-            SleepModeArg::Body => SleepMode::Body,
-            SleepModeArg::Island => SleepMode::Island,
-        };
-    }
-    if let Some(m) = args.box_box {
-        p.box_box = match m {
-            BoxBoxArg::Single => BoxBoxMode::Single,
-            BoxBoxArg::Manifold => BoxBoxMode::Manifold,
-        };
-    }
-    if args.no_compensation {
-        p.acceleration_compensation = false;
-    }
-    if let Some(v) = args.velocity_limit {
-        rules::velocity_limit(v).map_err(|e| AppError::Usage(format!("--velocity-limit: {e}")))?;
-        p.contact.velocity_limit = v;
-    }
-    p.resolver = super::resolve::params(&p.resolver, &args.resolver)?;
-    let steps = match (args.steps, args.seconds) {
-        (Some(n), _) => n,
-        (None, Some(t)) => {
+    let mut lesson = lesson.clone();
+    lesson.apply(&overrides);
+    let scene = lesson.simulation.clone().unwrap_or_default();
+    let p = lesson.sim_params().unwrap_or_default();
+    let steps_given = overrides.0.iter().any(|(k, _)| {
+        k.kind
+            == Kind::Count {
+                max: MAX_STEPS,
+                optional: false,
+            }
+            && k.level == Level::Step
+    });
+    let steps = match args.seconds {
+        Some(t) if !steps_given => {
             if !(t.is_finite() && t >= 0.0) {
                 return usage(&format!(
                     "--seconds must be a finite time ≥ 0, got {}",
@@ -181,17 +155,15 @@ pub fn simulation(
             let n = (t / p.dt).round();
             if n > MAX_STEPS as f64 {
                 return usage(&format!(
-                    "--seconds {t} at dt = {} is over {MAX_STEPS} steps",
-                    p.dt
+                    "--seconds {} at dt = {} is over {MAX_STEPS} steps",
+                    exact(t),
+                    exact(p.dt)
                 ));
             }
             n as u64
         }
-        (None, None) => scene.steps,
+        _ => scene.steps,
     };
-    if steps > MAX_STEPS {
-        return usage(&format!("at most {MAX_STEPS} steps, got {steps}"));
-    }
     let mut world = lesson.world::<f64>();
     world.contacts.clear();
     Ok((Simulation::new(world, p, scene.materials.clone()), steps))

@@ -6,7 +6,6 @@ use super::{file_stem, io, load, warn, write_atomic};
 use crate::cli::{Format, SolveArgs};
 use crate::error::AppError;
 use crate::format::Fmt;
-use crate::lesson::Overrides;
 use crate::physics::{FrictionModel, Solution};
 use crate::render;
 use crate::render::compare::Compared;
@@ -32,13 +31,11 @@ fn usage(args: &SolveArgs) -> Result<(), AppError> {
 
 pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     usage(args)?;
-    let mut lesson = load(&args.lesson, &args.model, Some(args.contact))?;
-    if let Some(law) = args.exact {
-        lesson.apply(&Overrides {
-            exact: Some(law.law()),
-            ..Overrides::default()
-        });
-    }
+    let lesson = load(
+        &args.lesson,
+        &super::overrides(&args.model)?,
+        Some(args.contact),
+    )?;
     warn(&lesson, err);
     let fmt = Fmt::new(args.digits as usize);
     if args.compare_friction {
@@ -46,10 +43,9 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
             .into_iter()
             .map(|model| {
                 let mut l = lesson.clone();
-                l.apply(&Overrides {
-                    friction_model: Some(model),
-                    ..Overrides::default()
-                });
+                for c in &mut l.contacts {
+                    c.settings.friction_model = model;
+                }
                 let solution = solved(&l, args.contact)?;
                 let trace = crate::trace::build(&l, args.contact, &solution);
                 Ok(Compared {
@@ -132,7 +128,7 @@ fn alone_note(text: &str, id: &str, format: Format) -> String {
         Format::Latex => {
             let para = format!(
                 "\\noindent\\emph{{{}}}\n\n",
-                crate::trace::latex::escape_text(&note.replace('`', ""))
+                crate::render::tex::escape_text(&note.replace('`', ""))
             );
             match text.find("\\begin{document}\n") {
                 Some(at) => {

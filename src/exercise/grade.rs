@@ -7,9 +7,9 @@ use std::fmt::Write;
 
 use super::sheet::{four_decimals, short_answers};
 use super::{Exercise, Kind};
+use crate::exercise::answer::{grade, Score};
 use crate::format::Fmt;
 use crate::trace::glossary::{unit, with_unit};
-use crate::trace::grade::{grade, Score};
 
 /// What an answer file must say to regenerate its sheet.
 #[derive(Debug, Clone, PartialEq, Eq)]

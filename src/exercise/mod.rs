@@ -3,6 +3,7 @@
 //! it practises what its kind says (a sticking contact really sticks, …)
 //! and every check of the solution passes.
 
+pub mod answer;
 pub mod grade;
 pub mod rng;
 pub mod setup;

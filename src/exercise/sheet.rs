@@ -3,6 +3,7 @@
 
 mod figure;
 
+use crate::render::fill::Fill;
 use figure::md_figure;
 pub use figure::{figure_svg, MdFigures};
 
@@ -11,8 +12,8 @@ use std::fmt::Write;
 use super::{Exercise, Kind};
 use crate::format::Fmt;
 use crate::lesson::{BodyDef, Lesson, Shape};
+use crate::render::tex::prose;
 use crate::render::{latex, markdown};
-use crate::trace::latex::prose;
 use crate::trace::{Trace, Value};
 
 const INTRO: &str = "Resolve each contact as in the lecture (Millington's impulse-based method). The normal d̂ points from body 2 toward body 1; body 1 receives the impulse g and body 2 receives -g. Inertia tensors are in body coordinates; orientations are quaternions [w, x, y, z]. Work to four decimals.";
@@ -389,7 +390,7 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
         "Seed {} $\\cdot$ {} exercise(s) $\\cdot$ \\texttt{{{}}}\n\n{}",
         r.seed,
         exercises.len(),
-        crate::trace::latex::escape_text(&command(r, answers, "latex")),
+        crate::render::tex::escape_text(&command(r, answers, "latex")),
         prose(INTRO)
     );
     for e in exercises {

@@ -27,10 +27,7 @@ fn refusal(c: char) -> String {
     )
 }
 
-/// Bidirectional-text controls: they make a terminal show text in another order.
-fn is_bidi(c: char) -> bool {
-    matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
-}
+use crate::printable::is_bidi;
 
 /// Characters no lesson string may hold, whatever its kind.
 fn always_refused(c: char) -> bool {

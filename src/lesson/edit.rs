@@ -5,25 +5,19 @@
 use nalgebra::Vector3;
 
 use super::validate::rules;
-use super::Lesson;
+use super::{knob_value, Lesson};
 use crate::format::exact;
-use crate::physics::exact::RestitutionLaw;
-use crate::physics::{FrictionModel, ProjectionMethod};
+use crate::physics::knobs::{self, Kind as KnobKind, Knob, Level, Offered, Value};
 
 /// What an editable field holds.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Key {
     Restitution,
     StaticFriction,
     DynamicFriction,
     Penetration,
-    FrictionModel,
-    VelocityLimit,
-    AngularLimit,
-    Relaxation,
-    Duration,
-    Projection,
-    Exact,
+    /// A knob of the table (`physics::knobs`).
+    Knob(&'static Knob),
     Mass,
     Velocity,
     AngularVelocity,
@@ -38,12 +32,12 @@ pub enum Kind {
     /// Three numbers `x, y, z`.
     Vector,
     /// One of a fixed list of names; entering cycles through them.
-    Choice(&'static [&'static str]),
+    Choice(&'static [(&'static str, &'static str)]),
 }
 
 /// One editable input of contact `k`: a contact field, or a field of the body
 /// `body` (an index into `Lesson::bodies`).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Field {
     pub key: Key,
     pub body: Option<usize>,
@@ -51,35 +45,28 @@ pub struct Field {
     pub label: String,
 }
 
+const FLAG: &[(&str, &str)] = &[("true", ""), ("false", "")];
+
 impl Field {
     pub fn kind(&self) -> Kind {
         match self.key {
             Key::Velocity | Key::AngularVelocity | Key::Acceleration => Kind::Vector,
-            Key::FrictionModel => Kind::Choice(&FRICTION_MODELS),
-            Key::Projection => Kind::Choice(&PROJECTIONS),
-            Key::Exact => Kind::Choice(&EXACT_LAWS),
+            Key::Knob(knob) => match knob.kind {
+                KnobKind::Choice { choices, .. } => Kind::Choice(choices),
+                KnobKind::Flag => Kind::Choice(FLAG),
+                KnobKind::Vector => Kind::Vector,
+                _ => Kind::Number,
+            },
             _ => Kind::Number,
         }
     }
 }
 
-const FRICTION_MODELS: [&str; 3] = ["millington", "kinetic-direction", "velocity-scaling"];
-const PROJECTIONS: [&str; 2] = ["nonlinear", "linear"];
-/// `none` skips the `exact_impact` stage; the others are its restitution laws.
-const EXACT_LAWS: [&str; 4] = ["none", "newton", "poisson", "stronge"];
-
-const CONTACT_FIELDS: [(Key, &str); 11] = [
+const CONTACT_FIELDS: [(Key, &str); 4] = [
     (Key::Restitution, "restitution"),
     (Key::StaticFriction, "static friction μ_s"),
     (Key::DynamicFriction, "dynamic friction μ_d"),
     (Key::Penetration, "penetration"),
-    (Key::FrictionModel, "friction model"),
-    (Key::VelocityLimit, "velocity_limit"),
-    (Key::AngularLimit, "angular_limit"),
-    (Key::Relaxation, "relaxation"),
-    (Key::Duration, "duration"),
-    (Key::Projection, "projection"),
-    (Key::Exact, "exact impact law"),
 ];
 
 const BODY_FIELDS: [(Key, &str); 4] = [
@@ -89,9 +76,11 @@ const BODY_FIELDS: [(Key, &str); 4] = [
     (Key::Acceleration, "acceleration"),
 ];
 
-/// The editable fields of contact `k`: the contact's own, then those of each
-/// movable body in it (an immovable body has nothing to edit).
+/// The editable fields of contact `k`: the contact's own, its knobs (and a
+/// scene's other knobs, which change the run), then those of each movable
+/// body in it (an immovable body has nothing to edit).
 pub fn fields(lesson: &Lesson, k: usize) -> Vec<Field> {
+    let scene = lesson.simulation.is_some();
     let mut out: Vec<Field> = CONTACT_FIELDS
         .iter()
         .map(|&(key, label)| Field {
@@ -100,6 +89,16 @@ pub fn fields(lesson: &Lesson, k: usize) -> Vec<Field> {
             label: label.to_string(),
         })
         .collect();
+    out.extend(
+        knobs::KNOBS
+            .iter()
+            .filter(|knob| knob.edit == Offered::Yes && (scene || knob.level == Level::Contact))
+            .map(|knob| Field {
+                key: Key::Knob(knob),
+                body: None,
+                label: knob.name.to_string(),
+            }),
+    );
     for b in lesson.slots(k).into_iter().flatten() {
         if !lesson.bodies[b].movable() {
             continue;
@@ -119,6 +118,16 @@ fn vector_text(v: &Vector3<f64>) -> String {
     format!("{}, {}, {}", exact(v.x), exact(v.y), exact(v.z))
 }
 
+/// A knob's value for contact `k`: its own settings for a contact's knob,
+/// the lesson's for the others.
+fn knob_value_of(lesson: &Lesson, k: usize, knob: &Knob) -> Value {
+    let mut all = lesson.knobs();
+    if knob.level == Level::Contact {
+        all.contact = lesson.contacts[k].settings;
+    }
+    (knob.get)(&all)
+}
+
 /// The field's current value as editable text (full precision, so that
 /// entering it again changes nothing).
 pub fn get(lesson: &Lesson, k: usize, field: &Field) -> String {
@@ -129,17 +138,7 @@ pub fn get(lesson: &Lesson, k: usize, field: &Field) -> String {
         (Key::StaticFriction, _) => exact(c.static_friction),
         (Key::DynamicFriction, _) => exact(c.dynamic_friction),
         (Key::Penetration, _) => exact(c.penetration),
-        (Key::FrictionModel, _) => c.friction_model.name().to_string(),
-        (Key::VelocityLimit, _) => exact(c.settings.velocity_limit),
-        (Key::AngularLimit, _) => exact(c.settings.angular_limit),
-        (Key::Relaxation, _) => exact(c.settings.relaxation),
-        (Key::Duration, _) => exact(c.settings.duration),
-        (Key::Projection, _) => c.settings.projection.name().to_string(),
-        (Key::Exact, _) => c
-            .settings
-            .exact
-            .map_or("none", RestitutionLaw::name)
-            .to_string(),
+        (Key::Knob(knob), _) => knob_value::text(knob_value_of(lesson, k, knob)),
         (Key::Mass, Some(b)) => exact(b.mass),
         (Key::Velocity, Some(b)) => vector_text(&b.velocity),
         (Key::AngularVelocity, Some(b)) => vector_text(&b.angular_velocity),
@@ -154,8 +153,8 @@ pub fn next_choice(lesson: &Lesson, k: usize, field: &Field) -> Option<String> {
         return None;
     };
     let now = get(lesson, k, field);
-    let i = names.iter().position(|n| *n == now).unwrap_or(0);
-    Some(names[(i + 1) % names.len()].to_string())
+    let i = names.iter().position(|(n, _)| *n == now).unwrap_or(0);
+    Some(names[(i + 1) % names.len()].0.to_string())
 }
 
 fn number(text: &str) -> Result<f64, String> {
@@ -250,43 +249,31 @@ fn apply(lesson: &mut Lesson, k: usize, field: &Field, text: &str) -> Result<(),
         }
         return Ok(());
     }
+    if let Key::Knob(knob) = field.key {
+        let value = knob_value::from_text(knob, text).map_err(|e| {
+            // The rule names the knob; the form already shows it.
+            e.strip_prefix(knob.name)
+                .map(|rest| rest.trim_start_matches(':').trim().to_string())
+                .unwrap_or(e)
+        })?;
+        if knob.level == Level::Contact {
+            let mut own = crate::physics::Settings {
+                contact: lesson.contacts[k].settings,
+                ..Default::default()
+            };
+            (knob.set)(&mut own, value);
+            lesson.contacts[k].settings = own.contact;
+        } else {
+            lesson.set_knob(knob, value);
+        }
+        return Ok(());
+    }
     let c = &mut lesson.contacts[k];
     match field.key {
         Key::Restitution => c.restitution = checked(rules::restitution)?,
         Key::StaticFriction => c.static_friction = checked(rules::friction)?,
         Key::DynamicFriction => c.dynamic_friction = checked(rules::friction)?,
         Key::Penetration => c.penetration = checked(rules::finite)?,
-        Key::VelocityLimit => c.settings.velocity_limit = checked(rules::non_negative)?,
-        Key::AngularLimit => c.settings.angular_limit = checked(rules::angular_limit)?,
-        Key::Relaxation => c.settings.relaxation = checked(rules::relaxation)?,
-        Key::Duration => c.settings.duration = checked(rules::duration)?,
-        Key::FrictionModel => {
-            c.friction_model = FrictionModel::from_name(text.trim()).ok_or_else(|| {
-                format!(
-                    "one of {}, got '{}'",
-                    FRICTION_MODELS.join(", "),
-                    echo(text.trim())
-                )
-            })?
-        }
-        Key::Projection => {
-            c.settings.projection = ProjectionMethod::from_name(text.trim()).ok_or_else(|| {
-                format!(
-                    "one of {}, got '{}'",
-                    PROJECTIONS.join(", "),
-                    echo(text.trim())
-                )
-            })?
-        }
-        Key::Exact => {
-            let name = text.trim();
-            c.settings.exact = match name {
-                "none" => None,
-                _ => Some(RestitutionLaw::from_name(name).ok_or_else(|| {
-                    format!("one of {}, got '{}'", EXACT_LAWS.join(", "), echo(name))
-                })?),
-            }
-        }
         _ => return Err("not a contact field".into()),
     }
     Ok(())
@@ -395,15 +382,15 @@ mod tests {
     #[test]
     fn choices_cycle() {
         let mut l = lecture2();
-        let f = field(&l, "friction model");
+        let f = field(&l, "friction_model");
         let next = next_choice(&l, 0, &f).unwrap();
         assert_eq!(next, "kinetic-direction");
         set(&mut l, 0, &f, &next).unwrap();
         assert_eq!(
-            l.contacts[0].friction_model,
-            FrictionModel::KineticDirection
+            l.contacts[0].settings.friction_model,
+            crate::physics::FrictionModel::KineticDirection
         );
-        let f = field(&l, "exact impact law");
+        let f = field(&l, "exact");
         assert_eq!(get(&l, 0, &f), "none");
         for law in ["newton", "poisson", "stronge", "none"] {
             let next = next_choice(&l, 0, &f).unwrap();
@@ -414,7 +401,10 @@ mod tests {
                 law
             );
         }
-        let e = put(&mut l, "exact impact law", "hooke").unwrap_err();
-        assert!(e.contains("one of none, newton, poisson, stronge"), "{e}");
+        let e = put(&mut l, "exact", "hooke").unwrap_err();
+        assert!(
+            e.contains(r#"one of "none", "newton", "poisson", "stronge""#),
+            "{e}"
+        );
     }
 }

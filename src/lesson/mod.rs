@@ -4,6 +4,7 @@
 pub mod characters;
 pub mod edit;
 pub mod embedded;
+pub mod knob_value;
 pub mod overflow;
 pub mod printed;
 pub mod ranges;
@@ -17,14 +18,18 @@ pub mod validate;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-use crate::physics::exact::RestitutionLaw;
-use crate::physics::params::BoxBoxMode;
+use crate::physics::knobs::{Knob, Level, Value};
+/// The `[settings]` table of a lesson file, as validated: a contact's knobs.
+pub use crate::physics::params::ContactSettings as Settings;
 pub use crate::physics::params::Material;
+/// What `simulate` needs beyond the bodies: forces, the step, sleep, and the
+/// coefficients of generated contacts.
+pub use crate::physics::params::SceneSettings as Simulation;
 use crate::physics::step::SimParams;
 pub use crate::physics::Shape;
 use crate::physics::{
-    c, Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Problem,
-    ProjectionMethod, Real, ResolverParams, RigidBody, SleepParams, StepParams, World, WorldParams,
+    c, Body, BodyId, Contact, ContactInput, Problem, Real, ResolverParams, RigidBody, StepParams,
+    World,
 };
 pub use printed::Printed;
 pub use source::{LessonDiagnostic, LessonError};
@@ -117,124 +122,86 @@ pub struct ContactDef {
     pub restitution: f64,
     pub static_friction: f64,
     pub dynamic_friction: f64,
-    pub friction_model: FrictionModel,
-    /// `[settings]` with this contact's `settings` table over it.
+    /// `[settings]` with this contact's `settings` table over it (and its
+    /// own `friction_model`).
     pub settings: Settings,
 }
 
-/// What `simulate` needs beyond the bodies: forces, the step, sleep, and the
-/// coefficients of generated contacts.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Simulation {
-    pub world: WorldParams<f64>,
-    pub box_box: BoxBoxMode,
-    /// `[world]`'s coefficients, the default of every body.
-    pub material: Material,
-    /// Each body's coefficients (the same indices as `Lesson::bodies`).
-    pub materials: Vec<Material>,
-    /// Closing speed below which generated contacts do not bounce
-    /// (`[world] velocity_limit`, default 0.25 as the reference engine).
-    pub velocity_limit: f64,
-    /// The lecture's micro-collisions: one step of acceleration is not bounced back.
-    pub acceleration_compensation: bool,
-    /// Friction model of generated contacts (`[world] friction_model`).
-    pub friction_model: FrictionModel,
-    /// Gap below which contacts are generated (`[world] contact_margin`, m).
-    pub contact_margin: f64,
-    pub dt: f64,
-    pub steps: u64,
-    pub sleep: SleepParams<f64>,
-}
-
-impl Default for Simulation {
-    fn default() -> Self {
-        Simulation {
-            world: WorldParams::default(),
-            box_box: BoxBoxMode::default(),
-            material: Material::default(),
-            materials: Vec::new(),
-            velocity_limit: 0.25,
-            acceleration_compensation: true,
-            friction_model: FrictionModel::Millington,
-            contact_margin: 0.005,
-            dt: 1.0 / 60.0,
-            steps: 600,
-            sleep: SleepParams::default(),
-        }
-    }
-}
-
 impl Lesson {
-    /// The parameters of the lesson's simulation: its scene tables, with the
-    /// `[settings]` of every generated contact (velocity limit from `[world]`).
-    pub fn sim_params(&self) -> Option<SimParams<f64>> {
-        let sim = self.simulation.as_ref()?;
-        let mut contact = self.settings.contact_params::<f64>();
-        contact.velocity_limit = sim.velocity_limit;
-        Some(SimParams {
-            dt: sim.dt,
-            world: sim.world,
-            sleep: sim.sleep,
+    /// Every knob's value: the lesson's `[settings]`, its resolver's and its
+    /// scene's (defaults for a lesson without one).
+    pub fn knobs(&self) -> crate::physics::Settings {
+        crate::physics::Settings {
+            contact: self.settings,
             resolver: self.resolver,
-            contact,
-            acceleration_compensation: sim.acceleration_compensation,
-            box_box: sim.box_box,
-            friction_model: sim.friction_model,
-            contact_margin: sim.contact_margin,
-        })
-    }
-}
-
-/// The `[settings]` table of a lesson file, as validated: a contact's
-/// parameters plus the last frame's duration (which the world gives the step).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Settings {
-    pub velocity_limit: f64,
-    pub angular_limit: f64,
-    pub relaxation: f64,
-    pub duration: f64,
-    pub projection: ProjectionMethod,
-    /// The restitution law of the `exact_impact` stage (`exact`; default: none).
-    pub exact: Option<RestitutionLaw>,
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        let contact = ContactParams::<f64>::default();
-        Settings {
-            velocity_limit: contact.velocity_limit,
-            angular_limit: contact.angular_limit,
-            relaxation: contact.relaxation,
-            duration: StepParams::<f64>::default().duration,
-            projection: contact.projection,
-            exact: contact.exact,
+            scene: self.simulation.clone().unwrap_or_default(),
         }
     }
-}
 
-impl Settings {
-    /// The contact's share of the settings, in float type `T`.
-    pub fn contact_params<T: Real>(&self) -> ContactParams<T> {
-        ContactParams {
-            velocity_limit: c(self.velocity_limit),
-            angular_limit: c(self.angular_limit),
-            relaxation: c(self.relaxation),
-            projection: self.projection,
-            exact: self.exact,
+    /// Sets `knob`: a contact's knob on `[settings]` and on every contact.
+    pub fn set_knob(&mut self, knob: &Knob, value: Value) {
+        let mut all = self.knobs();
+        (knob.set)(&mut all, value);
+        self.settings = all.contact;
+        self.resolver = all.resolver;
+        if let Some(sim) = &mut self.simulation {
+            *sim = all.scene;
         }
+        if knob.level == Level::Contact {
+            for contact in &mut self.contacts {
+                let mut own = crate::physics::Settings {
+                    contact: contact.settings,
+                    ..Default::default()
+                };
+                (knob.set)(&mut own, value);
+                contact.settings = own.contact;
+            }
+        }
+    }
+
+    /// The parameters of the lesson's simulation: its scene tables, with the
+    /// `[settings]` of every generated contact.
+    pub fn sim_params(&self) -> Option<SimParams<f64>> {
+        self.simulation.as_ref()?;
+        Some(self.knobs().sim_params())
     }
 }
 
-/// Command-line or TUI overrides applied to every contact before solving.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct Overrides {
-    pub friction_model: Option<FrictionModel>,
-    pub projection: Option<ProjectionMethod>,
-    pub relaxation: Option<f64>,
-    pub angular_limit: Option<f64>,
-    pub velocity_limit: Option<f64>,
-    /// Integrate the impact exactly under this law (`solve --exact`).
-    pub exact: Option<RestitutionLaw>,
+/// Command-line or TUI overrides: knobs set on the lesson after it is read
+/// (a contact's knob on every contact).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Overrides(pub Vec<(&'static Knob, Value)>);
+
+impl Overrides {
+    /// Sets `knob`, replacing an earlier value of it.
+    pub fn set(&mut self, knob: &'static Knob, value: Value) {
+        self.0.retain(|(k, _)| k.name != knob.name);
+        self.0.push((knob, value));
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// Overrides from knob names and values as text (`("relaxation", "0.5")`),
+    /// each checked by its rule.
+    pub fn from_pairs(pairs: &[(&str, &str)]) -> Result<Overrides, String> {
+        let mut o = Overrides::default();
+        for (name, text) in pairs {
+            let knob = crate::physics::knobs::find(name)
+                .ok_or_else(|| format!("no knob is named '{name}'"))?;
+            o.set(knob, knob_value::from_text(knob, text)?);
+        }
+        Ok(o)
+    }
+
+    /// The value given for `knob`, if any.
+    pub fn get(&self, knob: &Knob) -> Option<Value> {
+        self.0
+            .iter()
+            .find(|(k, _)| k.name == knob.name)
+            .map(|(_, v)| *v)
+    }
 }
 
 impl Lesson {
@@ -278,27 +245,10 @@ impl Lesson {
         }
     }
 
-    /// Applies overrides to every contact.
+    /// Applies overrides (a contact's knob to every contact).
     pub fn apply(&mut self, o: &Overrides) {
-        for contact in &mut self.contacts {
-            if let Some(m) = o.friction_model {
-                contact.friction_model = m;
-            }
-            if let Some(p) = o.projection {
-                contact.settings.projection = p;
-            }
-            if let Some(r) = o.relaxation {
-                contact.settings.relaxation = r;
-            }
-            if let Some(a) = o.angular_limit {
-                contact.settings.angular_limit = a;
-            }
-            if let Some(v) = o.velocity_limit {
-                contact.settings.velocity_limit = v;
-            }
-            if let Some(law) = o.exact {
-                contact.settings.exact = Some(law);
-            }
+        for (knob, value) in &o.0 {
+            self.set_knob(knob, *value);
         }
     }
 
@@ -346,7 +296,7 @@ impl Lesson {
                     restitution: c(def.restitution),
                     static_friction: c(def.static_friction),
                     dynamic_friction: c(def.dynamic_friction),
-                    friction_model: def.friction_model,
+                    friction_model: def.settings.friction_model,
                     settings: def.settings.contact_params(),
                 },
                 duration: (def.settings.duration != self.settings.duration)

@@ -20,8 +20,8 @@ pub const LIMIT: f64 = 1e300;
 /// The stage records are walked through their `Debug` text, which names
 /// every field and prints every number, so no record can be forgotten as
 /// the stages change; the checks' measurements by the names the trace gives
-/// them (`energy_after`), then their causes. `angular_limit: inf` is the
-/// setting "no limit", not an overflow.
+/// them (`energy_after`), then their causes. A knob set to `inf` for "no
+/// limit" (the angular limit) is a setting, not an overflow.
 pub fn first_overflow(lesson: &Lesson, k: usize) -> Option<(String, f64)> {
     first_overflow_of(&lesson.problem::<f64>(k))
 }
@@ -33,7 +33,7 @@ fn first_overflow_of(problem: &crate::physics::Problem<f64>) -> Option<(String, 
         return Some(found);
     }
     for item in &checks {
-        let named = crate::trace::contact::check_values(item);
+        let named = item.named_values();
         if let Some(found) = named.into_iter().find(|(_, x)| too_large(x)) {
             return Some(found);
         }
@@ -69,7 +69,14 @@ fn first_in_debug(text: &str) -> Option<(String, f64)> {
             continue;
         }
         if let Ok(x) = token.parse::<f64>() {
-            let setting = field == "angular_limit" && x == f64::INFINITY;
+            // A knob whose `inf` means "no limit" is a setting, not an overflow.
+            let setting = x == f64::INFINITY
+                && crate::physics::knobs::find(&field).is_some_and(|k| {
+                    k.kind
+                        == crate::physics::knobs::Kind::Number(
+                            crate::physics::knobs::Range::NonNegativeOrInf,
+                        )
+                });
             if !setting && too_large(&x) {
                 return Some((field, x));
             }
@@ -83,7 +90,7 @@ fn first_in_debug(text: &str) -> Option<(String, f64)> {
 /// its own friction model and under the others (which `--friction-model`,
 /// `--compare-friction` and the TUI can choose).
 pub fn check(lesson: &Lesson, k: usize) -> Result<(), String> {
-    let own = lesson.contacts[k].friction_model;
+    let own = lesson.contacts[k].settings.friction_model;
     let models = std::iter::once(own).chain(FrictionModel::ALL.into_iter().filter(|m| *m != own));
     for model in models {
         let mut problem = lesson.problem::<f64>(k);

@@ -1,6 +1,8 @@
 //! The lesson file as written: serde types that keep each value's span so
 //! validation can name the line and column of a bad value.
 
+use std::collections::BTreeMap;
+
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -18,13 +20,13 @@ pub struct RawLesson {
     #[serde(default, rename = "contact")]
     pub contacts: Vec<RawContact>,
     #[serde(default)]
-    pub settings: RawSettings,
+    pub settings: KnobTable,
     #[serde(default)]
     pub printed: Vec<RawPrinted>,
     /// Time stepping (`simulate`): forces, the step, sleep.
-    pub world: Option<RawWorld>,
-    pub step: Option<RawStep>,
-    pub sleep: Option<RawSleep>,
+    pub world: Option<KnobTable>,
+    pub step: Option<KnobTable>,
+    pub sleep: Option<KnobTable>,
     /// What the pictures draw differently from the numbers.
     pub figure: Option<RawFigure>,
 }
@@ -50,42 +52,10 @@ pub struct RawFigureBody {
     pub orientation: Option<S<[f64; 4]>>,
 }
 
-/// `[world]`: forces and the defaults of generated contacts.
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawWorld {
-    #[serde(default, deserialize_with = "exact::some")]
-    pub gravity: Option<S<[f64; 3]>>,
-    pub linear_damping: Option<S<f64>>,
-    pub angular_damping: Option<S<f64>>,
-    pub box_box: Option<S<String>>,
-    pub velocity_limit: Option<S<f64>>,
-    pub acceleration_compensation: Option<S<bool>>,
-    pub friction_model: Option<S<String>>,
-    pub contact_margin: Option<S<f64>>,
-    pub restitution: Option<S<f64>>,
-    pub friction: Option<S<f64>>,
-    pub static_friction: Option<S<f64>>,
-    pub dynamic_friction: Option<S<f64>>,
-}
-
-/// `[step]`: the time step and how many to take.
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawStep {
-    pub dt: Option<S<f64>>,
-    pub steps: Option<S<i64>>,
-}
-
-/// `[sleep]`: when bodies stop being simulated.
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawSleep {
-    pub enabled: Option<S<bool>>,
-    pub epsilon: Option<S<f64>>,
-    pub mode: Option<S<String>>,
-    pub island_time: Option<S<f64>>,
-}
+/// A table of knobs (`[settings]`, a contact's `settings`, `[world]`,
+/// `[step]`, `[sleep]`) as written: each key and value with its span, read
+/// against the knob table (`physics::knobs`) by the validator.
+pub type KnobTable = BTreeMap<S<String>, S<toml::Value>>;
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -145,28 +115,9 @@ pub struct RawContact {
     pub friction: Option<S<f64>>,
     pub static_friction: Option<S<f64>>,
     pub dynamic_friction: Option<S<f64>>,
-    pub friction_model: Option<S<String>>,
-    pub settings: Option<RawSettings>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawSettings {
-    pub velocity_limit: Option<S<f64>>,
-    pub angular_limit: Option<S<f64>>,
-    pub relaxation: Option<S<f64>>,
-    pub duration: Option<S<f64>>,
-    pub projection: Option<S<String>>,
-    /// The restitution law of the `exact_impact` stage.
-    pub exact: Option<S<String>>,
-    /// The resolver's settings (the lesson's `[settings]` only, not a contact's).
-    pub position_iterations: Option<S<i64>>,
-    pub velocity_iterations: Option<S<i64>>,
-    pub position_epsilon: Option<S<f64>>,
-    pub velocity_epsilon: Option<S<f64>>,
-    pub restitution_from: Option<S<String>>,
-    pub solver: Option<S<String>>,
-    pub warm_start: Option<S<bool>>,
+    /// A knob of the contact's own (`physics::knobs`, table `[[contact]]`).
+    pub friction_model: Option<S<toml::Value>>,
+    pub settings: Option<KnobTable>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -10,6 +10,9 @@
 //!   characters as `path:line:column` is (miette alone counts bytes).
 
 use std::ops::Range;
+
+use crate::printable::is_bidi;
+pub use crate::printable::printable;
 use std::sync::Arc;
 
 use miette::{MietteError, MietteSpanContents, SourceCode, SourceSpan, SpanContents};
@@ -172,32 +175,6 @@ fn suspect(w: &[u8]) -> bool {
         [0xE2, 0x81, 0xA6..=0xA9, ..] => true,
         _ => false,
     }
-}
-
-/// Bidirectional formatting characters, which can reorder what is shown.
-fn is_bidi(c: char) -> bool {
-    matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
-}
-
-/// A message quoting the file (a name, a key) with its control characters
-/// escaped (`\u{1b}`), so it prints as text.
-pub fn printable(message: String) -> String {
-    if !message
-        .chars()
-        .any(|c| (c.is_control() && c != '\n') || is_bidi(c))
-    {
-        return message;
-    }
-    message
-        .chars()
-        .map(|c| {
-            if (c.is_control() && c != '\n') || is_bidi(c) {
-                c.escape_unicode().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
 }
 
 #[cfg(test)]

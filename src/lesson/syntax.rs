@@ -53,7 +53,7 @@ fn retell(message: &str, text: &str, span: Range<usize>) -> (String, Option<Stri
 }
 
 /// "did you mean `restitution`?" for `unknown field `restitutoin`, expected one of …`.
-fn did_you_mean(message: &str) -> Option<String> {
+pub(crate) fn did_you_mean(message: &str) -> Option<String> {
     let mut words = message.split('`').skip(1).step_by(2);
     let unknown = words.next()?;
     let (distance, best) = words

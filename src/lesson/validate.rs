@@ -3,23 +3,20 @@
 
 mod body;
 mod figure;
+mod knobs;
 mod printed;
-mod resolver;
 mod simulation;
-
-pub use simulation::damping_rule;
 
 use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-use super::raw::{RawBody, RawContact, RawLesson, RawSettings, S};
+use super::raw::{self, RawBody, RawContact, RawLesson, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
 use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
-use crate::physics::exact::RestitutionLaw;
-use crate::physics::{FrictionModel, ProjectionMethod};
+use crate::physics::knobs::Table;
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
@@ -207,7 +204,7 @@ impl Validator {
         if raw.bodies.is_empty() {
             self.err(0..0, "the lesson has no [[body]]");
         }
-        let mut simulation = self.simulation(&raw);
+        let (all, mut simulation) = self.knobs(&raw);
         self.body_materials(&raw, simulation.as_mut());
         if raw.contacts.is_empty() && simulation.is_none() {
             self.err(
@@ -215,8 +212,8 @@ impl Validator {
                 "the lesson has no [[contact]] (a scene that generates its contacts needs a [world] or [step] table)",
             );
         }
-        let defaults = self.settings(&raw.settings, Settings::default(), "[settings]");
-        let resolver = self.resolver(&raw.settings);
+        let defaults = all.contact;
+        let resolver = all.resolver;
         let contacts = raw
             .contacts
             .iter()
@@ -249,48 +246,6 @@ impl Validator {
             warnings: Vec::new(),
             figure,
         }
-    }
-
-    fn settings(&mut self, raw: &RawSettings, base: Settings, table: &str) -> Settings {
-        let mut s = base;
-        let what = format!("in {table}");
-        if let Some(x) = &raw.velocity_limit {
-            s.velocity_limit = self.rule(&what, x, rules::velocity_limit);
-        }
-        if let Some(x) = &raw.angular_limit {
-            s.angular_limit = self.rule(&what, x, rules::angular_limit);
-        }
-        if let Some(x) = &raw.relaxation {
-            s.relaxation = self.rule(&what, x, rules::relaxation);
-        }
-        if let Some(x) = &raw.duration {
-            s.duration = self.rule(&what, x, rules::duration);
-        }
-        if let Some(p) = &raw.projection {
-            match ProjectionMethod::from_name(p.get_ref()) {
-                Some(m) => s.projection = m,
-                None => self.err(
-                    p.span(),
-                    format!(
-                        "{what}: projection must be \"linear\" or \"nonlinear\", got \"{}\"",
-                        p.get_ref()
-                    ),
-                ),
-            }
-        }
-        if let Some(law) = &raw.exact {
-            match RestitutionLaw::from_name(law.get_ref()) {
-                Some(l) => s.exact = Some(l),
-                None => self.err(
-                    law.span(),
-                    format!(
-                        "{what}: exact must be \"newton\", \"poisson\" or \"stronge\", got \"{}\"",
-                        law.get_ref()
-                    ),
-                ),
-            }
-        }
-        s
     }
 
     fn contact(
@@ -375,23 +330,17 @@ impl Validator {
             .as_ref()
             .map_or(0.0, |p| self.rule("penetration", p, rules::finite));
         let restitution = self.rule("contact", &raw.restitution, rules::restitution);
-        let friction = raw
-            .friction
-            .as_ref()
-            .map(|f| self.rule("friction", f, rules::friction));
-        let static_friction = raw
-            .static_friction
-            .as_ref()
-            .map(|f| self.rule("static_friction", f, rules::friction));
-        let dynamic_friction = raw
-            .dynamic_friction
-            .as_ref()
-            .map(|f| self.rule("dynamic_friction", f, rules::friction));
-        let mu_s = static_friction.or(friction).unwrap_or(0.0);
-        let mu_d = dynamic_friction
-            .or(friction)
-            .or(static_friction)
-            .unwrap_or(0.0);
+        let material = self.material(
+            "contact",
+            crate::physics::params::Material::default(),
+            (
+                &None,
+                &raw.friction,
+                &raw.static_friction,
+                &raw.dynamic_friction,
+            ),
+        );
+        let (mu_s, mu_d) = (material.static_friction, material.dynamic_friction);
         if mu_d > mu_s {
             if let Some(span) = raw.dynamic_friction.as_ref().map(|f| f.span()) {
                 self.warnings.push(Note::new(
@@ -400,23 +349,19 @@ impl Validator {
                 ));
             }
         }
-        let friction_model = match &raw.friction_model {
-            None => FrictionModel::default(),
-            Some(m) => FrictionModel::from_name(m.get_ref()).unwrap_or_else(|| {
-                self.err(
-                    m.span(),
-                    format!("friction_model must be one of millington, kinetic-direction, velocity-scaling; got \"{}\"", m.get_ref()),
-                );
-                FrictionModel::default()
-            }),
+        let mut own = crate::physics::Settings {
+            contact: defaults,
+            ..Default::default()
         };
-        let settings = match &raw.settings {
-            Some(s) => {
-                self.no_resolver_settings(s);
-                self.settings(s, defaults, "[contact.settings]")
-            }
-            None => defaults,
-        };
+        if let Some(m) = &raw.friction_model {
+            let mut table = raw::KnobTable::new();
+            table.insert(S::new(m.span(), "friction_model".into()), m.clone());
+            self.knob_table(Table::Contact, &table, &mut own, &[]);
+        }
+        if let Some(s) = &raw.settings {
+            self.knob_table(Table::ContactSettings, s, &mut own, &[]);
+        }
+        let settings = own.contact;
         ContactDef {
             name: raw.name.as_ref().map(|n| n.get_ref().clone()),
             bodies: (index.first().copied().unwrap_or(0), index.get(1).copied()),
@@ -427,7 +372,6 @@ impl Validator {
             restitution,
             static_friction: mu_s,
             dynamic_friction: mu_d,
-            friction_model,
             settings,
         }
     }

@@ -2,7 +2,8 @@
 //! that f32 and f64 runs can be compared.
 //!
 //! - [`body`], [`shape`], [`world`]: bodies by id, their shapes, the world of a scene;
-//! - [`params`]: every tunable, one documented struct per level;
+//! - [`knobs`]: every tunable declared once (name, level, doc, default, range);
+//! - [`params`]: the structs the knobs are held in, one per level;
 //! - [`contact`]: ONE contact — frame, problem view, stages, solve, checks
 //!   and the causes of their verdicts;
 //! - [`scale`]: scale-invariant norms and inverse (power-of-two scaling);
@@ -14,6 +15,7 @@ pub mod body;
 pub mod collide;
 pub mod contact;
 pub mod exact;
+pub mod knobs;
 pub mod params;
 pub mod resolver;
 pub mod scale;
@@ -25,8 +27,9 @@ pub use body::RigidBody;
 pub use contact::{causes, checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
 pub use params::{
-    ContactParams, FrictionModel, ProjectionMethod, ResolverParams, RestitutionFrom, SleepParams,
-    Solver, StepParams, WorldParams,
+    ContactParams, ContactSettings, FrictionModel, ProjectionMethod, ResolverParams,
+    RestitutionFrom, SceneSettings, Settings, SimParams, SleepParams, Solver, StepParams,
+    WorldParams,
 };
 pub use shape::Shape;
 pub use world::{Body, BodyId, Contact, World};

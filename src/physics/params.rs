@@ -4,13 +4,20 @@
 //! - [`ContactParams`]: how ONE contact is resolved (per contact, overridable);
 //! - [`StepParams`]: what belongs to a time step (the frame's duration);
 //! - [`ResolverParams`]: how a SET of contacts is resolved together;
-//! - [`WorldParams`], [`SleepParams`]: the forces and sleep of a simulation.
+//! - [`WorldParams`], [`SleepParams`]: the forces and sleep of a simulation;
+//! - [`SimParams`]: all of these, for a run in float type `T`;
+//! - [`Settings`]: every knob's value as a lesson or a command line gives it
+//!   (f64), read and written through the knob table (`physics::knobs`).
 
 use nalgebra::Vector3;
 
 use super::exact::RestitutionLaw;
 use super::step::SleepMode;
 use super::{c, Real};
+
+/// Restitution is 0 below this closing speed for generated contacts (the
+/// reference engine's); the lecture's hand-written contacts default to 0.
+pub const GENERATED_VELOCITY_LIMIT: f64 = 0.25;
 
 /// How friction is modelled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -19,9 +26,11 @@ pub enum FrictionModel {
     /// sliding, then clamp it to the Coulomb cone.
     #[default]
     Millington,
-    /// Companion lectures 002/003: impulse `j(n + μ_k t)`, t against the sliding direction.
+    /// The collisions lectures (Lecture IV Collisions; Pronost's Game
+    /// Physics): impulse `j(n + μ_k t)`, t against the sliding direction.
     KineticDirection,
-    /// Seed 004: remove the planar velocity below `v_c μ_s`, otherwise scale it by μ_d.
+    /// The friction lecture (PSE Friction): remove the planar velocity below
+    /// `v_c μ_s`, otherwise scale it by μ_d.
     VelocityScaling,
 }
 
@@ -176,15 +185,16 @@ impl Solver {
     /// The name used in lesson files and on the command line.
     pub fn name(self) -> &'static str {
         match self {
-            Solver::DeepestFirst => "deepest_first",
-            Solver::SequentialImpulse => "sequential_impulse",
+            Solver::DeepestFirst => "deepest-first",
+            Solver::SequentialImpulse => "sequential-impulse",
         }
     }
 
+    /// The solver named `name` (`deepest_first`, the old spelling, too).
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL
             .into_iter()
-            .find(|m| m.name() == name || m.name().replace('_', "-") == name)
+            .find(|m| m.name() == name || m.name().replace('-', "_") == name)
     }
 }
 
@@ -206,6 +216,10 @@ pub struct ResolverParams {
     /// Desired Δv at or below this is left alone: trades time for closing
     /// velocity left (default: 0.01).
     pub velocity_epsilon: f64,
+    /// Sequential impulses: the slip speed at or below which a contact
+    /// sticks under μ_s (above it, it slides under μ_d) (default: `None` =
+    /// `velocity_epsilon`).
+    pub slip_speed: Option<f64>,
     /// Restitution from the current or the initial contact velocity (default:
     /// current). Sequential impulses always take it from the initial velocity.
     pub restitution_from: RestitutionFrom,
@@ -229,6 +243,7 @@ impl Default for ResolverParams {
             velocity_iterations: None,
             position_epsilon: 0.01,
             velocity_epsilon: 0.01,
+            slip_speed: None,
             restitution_from: RestitutionFrom::Current,
             solver: Solver::DeepestFirst,
             warm_start: false,
@@ -238,6 +253,11 @@ impl Default for ResolverParams {
 }
 
 impl ResolverParams {
+    /// The stick/slip threshold of sequential impulses.
+    pub fn slip(&self) -> f64 {
+        self.slip_speed.unwrap_or(self.velocity_epsilon)
+    }
+
     /// The position iteration limit for `contacts` contacts.
     pub fn position_limit(&self, contacts: usize) -> usize {
         self.position_iterations
@@ -326,7 +346,9 @@ impl BoxBoxMode {
     }
 }
 
-/// Restitution and friction of the contacts generated for a body.
+/// Restitution and friction coefficients: of a contact, a body, or
+/// `[world]`'s default. One rule wherever they are written: `friction` sets
+/// both μ_s and μ_d, and μ_d defaults to μ_s ([`Material::with`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Material {
     pub restitution: f64,
@@ -345,6 +367,36 @@ impl Default for Material {
 }
 
 impl Material {
+    /// `self` with the coefficients a table writes: `friction` sets both,
+    /// `static_friction` μ_s, `dynamic_friction` μ_d; a μ_s given without a
+    /// μ_d (or a `friction`) sets μ_d too.
+    pub fn with(
+        &self,
+        restitution: Option<f64>,
+        friction: Option<f64>,
+        static_friction: Option<f64>,
+        dynamic_friction: Option<f64>,
+    ) -> Material {
+        let mut m = *self;
+        if let Some(e) = restitution {
+            m.restitution = e;
+        }
+        if let Some(mu) = friction {
+            m.static_friction = mu;
+            m.dynamic_friction = mu;
+        }
+        if let Some(mu) = static_friction {
+            m.static_friction = mu;
+            if friction.is_none() && dynamic_friction.is_none() {
+                m.dynamic_friction = mu;
+            }
+        }
+        if let Some(mu) = dynamic_friction {
+            m.dynamic_friction = mu;
+        }
+        m
+    }
+
     /// The coefficients of a contact between two bodies, as Box2D combines
     /// them: restitution the larger, friction the geometric mean √(μ₁μ₂).
     pub fn combine(&self, other: &Material) -> Material {
@@ -352,6 +404,185 @@ impl Material {
             restitution: self.restitution.max(other.restitution),
             static_friction: (self.static_friction * other.static_friction).sqrt(),
             dynamic_friction: (self.dynamic_friction * other.dynamic_friction).sqrt(),
+        }
+    }
+}
+
+/// Everything a simulation needs beyond its bodies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimParams<T: Real> {
+    /// The time step (default: 1/60 s).
+    pub dt: T,
+    pub world: WorldParams<T>,
+    pub sleep: SleepParams<T>,
+    pub resolver: ResolverParams,
+    /// Parameters of every generated contact (velocity limit, angular limit, …).
+    pub contact: ContactParams<T>,
+    /// Acceleration compensation (the lecture's micro-collisions): the
+    /// velocity one step of acceleration builds up is not bounced back
+    /// (default: on). Off, a resting box vibrates.
+    pub acceleration_compensation: bool,
+    /// How a pair of boxes touches (default: manifold).
+    pub box_box: BoxBoxMode,
+    pub friction_model: FrictionModel,
+    /// Contacts are generated for gaps up to this distance (m), with a
+    /// negative penetration: a resting body whose contact the position phase
+    /// just resolved keeps it, instead of losing it for a step and falling
+    /// freely (default: 0.005).
+    pub contact_margin: T,
+}
+
+impl<T: Real> Default for SimParams<T> {
+    fn default() -> Self {
+        Settings::scene_default().sim_params()
+    }
+}
+
+/// A contact's knobs as a lesson gives them (`[settings]`, a contact's
+/// `settings`): its [`ContactParams`], the last frame's duration and the
+/// friction model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactSettings {
+    pub velocity_limit: f64,
+    pub angular_limit: f64,
+    pub relaxation: f64,
+    pub duration: f64,
+    pub projection: ProjectionMethod,
+    /// The restitution law of the `exact_impact` stage (default: none).
+    pub exact: Option<RestitutionLaw>,
+    pub friction_model: FrictionModel,
+}
+
+impl Default for ContactSettings {
+    fn default() -> Self {
+        let contact = ContactParams::<f64>::default();
+        ContactSettings {
+            velocity_limit: contact.velocity_limit,
+            angular_limit: contact.angular_limit,
+            relaxation: contact.relaxation,
+            duration: StepParams::<f64>::default().duration,
+            projection: contact.projection,
+            exact: contact.exact,
+            friction_model: FrictionModel::default(),
+        }
+    }
+}
+
+impl ContactSettings {
+    /// The contact's share of the settings, in float type `T`.
+    pub fn contact_params<T: Real>(&self) -> ContactParams<T> {
+        ContactParams {
+            velocity_limit: c(self.velocity_limit),
+            angular_limit: c(self.angular_limit),
+            relaxation: c(self.relaxation),
+            projection: self.projection,
+            exact: self.exact,
+        }
+    }
+}
+
+/// What a run needs beyond its bodies and contacts' settings: forces, the
+/// step, sleep, contact generation, and the coefficients of generated
+/// contacts (`[world]`, `[step]`, `[sleep]`, the bodies' own).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneSettings {
+    pub world: WorldParams<f64>,
+    pub box_box: BoxBoxMode,
+    /// `[world]`'s coefficients, the default of every body.
+    pub material: Material,
+    /// Each body's coefficients (the same indices as the lesson's bodies).
+    pub materials: Vec<Material>,
+    /// The lecture's micro-collisions: one step of acceleration is not bounced back.
+    pub acceleration_compensation: bool,
+    /// Gap below which contacts are generated (m).
+    pub contact_margin: f64,
+    pub dt: f64,
+    pub steps: u64,
+    pub sleep: SleepParams<f64>,
+}
+
+impl Default for SceneSettings {
+    fn default() -> Self {
+        SceneSettings {
+            world: WorldParams::default(),
+            box_box: BoxBoxMode::default(),
+            material: Material::default(),
+            materials: Vec::new(),
+            acceleration_compensation: true,
+            contact_margin: 0.005,
+            dt: 1.0 / 60.0,
+            steps: 600,
+            sleep: SleepParams::default(),
+        }
+    }
+}
+
+/// Every knob's value (see `physics::knobs`): a contact's, the resolver's
+/// and a run's.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Settings {
+    pub contact: ContactSettings,
+    pub resolver: ResolverParams,
+    pub scene: SceneSettings,
+}
+
+impl Settings {
+    /// The defaults of a scene: generated contacts do not bounce below
+    /// [`GENERATED_VELOCITY_LIMIT`].
+    pub fn scene_default() -> Self {
+        let mut s = Settings::default();
+        s.contact.velocity_limit = GENERATED_VELOCITY_LIMIT;
+        s
+    }
+
+    /// The knobs a run's parameters hold (a contact's duration, the steps
+    /// and the coefficients are not among them: defaults).
+    pub fn of_run(p: &SimParams<f64>) -> Self {
+        Settings {
+            contact: ContactSettings {
+                velocity_limit: p.contact.velocity_limit,
+                angular_limit: p.contact.angular_limit,
+                relaxation: p.contact.relaxation,
+                duration: p.dt,
+                projection: p.contact.projection,
+                exact: p.contact.exact,
+                friction_model: p.friction_model,
+            },
+            resolver: p.resolver,
+            scene: SceneSettings {
+                world: p.world,
+                box_box: p.box_box,
+                acceleration_compensation: p.acceleration_compensation,
+                contact_margin: p.contact_margin,
+                dt: p.dt,
+                sleep: p.sleep,
+                ..SceneSettings::default()
+            },
+        }
+    }
+
+    /// The parameters of a run, in float type `T`.
+    pub fn sim_params<T: Real>(&self) -> SimParams<T> {
+        let scene = &self.scene;
+        SimParams {
+            dt: c(scene.dt),
+            world: WorldParams {
+                gravity: scene.world.gravity.map(c),
+                linear_damping: c(scene.world.linear_damping),
+                angular_damping: c(scene.world.angular_damping),
+            },
+            sleep: SleepParams {
+                enabled: scene.sleep.enabled,
+                epsilon: c(scene.sleep.epsilon),
+                mode: scene.sleep.mode,
+                island_time: c(scene.sleep.island_time),
+            },
+            resolver: self.resolver,
+            contact: self.contact.contact_params(),
+            acceleration_compensation: scene.acceleration_compensation,
+            box_box: scene.box_box,
+            friction_model: self.contact.friction_model,
+            contact_margin: c(scene.contact_margin),
         }
     }
 }

@@ -1,5 +1,6 @@
 //! `solve --compare-friction`: every friction model's result side by side.
 
+use crate::render::fill::Fill;
 use serde_json::json;
 
 use crate::format::Fmt;

@@ -1,6 +1,7 @@
 //! The errata findings (printed numbers against computed ones) as text (an
 //! errata sheet) or JSON, for the `check` subcommand.
 
+use crate::render::fill::Fill;
 use std::fmt::Write;
 
 use serde_json::{json, Value as J};

@@ -4,8 +4,8 @@
 
 use std::fmt::Write;
 
+use crate::render::tex::{prose, to_latex};
 use crate::trace::glossary::{Symbol, GLOSSARY};
-use crate::trace::latex::{prose, to_latex};
 
 fn unit_text(s: &Symbol) -> &'static str {
     if s.unit.is_empty() {

@@ -1,6 +1,7 @@
 //! The JSON of `solve --format json`, documented in `docs/json.md`: full f64
 //! values, one object per stage.
 
+use crate::render::fill::Fill;
 use serde_json::{json, Map, Value as J};
 
 use crate::format::Fmt;

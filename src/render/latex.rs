@@ -2,11 +2,12 @@
 //! body alone (`--fragment`). Stage formulas go in one `align*` each; notes,
 //! titles and summaries are prose with their maths set inline.
 
+use crate::render::fill::Fill;
 use std::fmt::Write;
 
 use crate::format::Fmt;
 use crate::physics::StageId;
-use crate::trace::latex::{escape_text, prose};
+use crate::render::tex::{escape_text, prose};
 use crate::trace::{glossary, Formula, Step, Trace};
 
 /// Packages a fragment needs; the standalone document loads them.
@@ -15,13 +16,13 @@ pub const PACKAGES: &str = "\\usepackage{amsmath}\n\\usepackage{amssymb}";
 /// The formula as rows of an aligned block: `lhs &= rhs`, `&= numbers`,
 /// `&= result` (a row that repeats the previous one is left out).
 pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
-    let latex = f.latex();
+    let latex = super::tex::formula(f);
     let (lhs, rhs) = latex.split_once(" = ").unwrap_or((&latex, ""));
     let mut right: Vec<String> = Vec::new();
     if !rhs.trim().is_empty() {
         right.push(rhs.trim().to_string());
     }
-    if let Some(s) = f.substituted_latex() {
+    if let Some(s) = super::tex::substituted(f) {
         right.push(fmt.fill(&s, step, true));
     }
     if let Some((name, r)) = f.result.as_ref().and_then(|n| Some((n, step.lookup(n)?))) {

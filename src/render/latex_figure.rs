@@ -8,7 +8,7 @@ use std::fmt::Write;
 
 use crate::physics::StageId;
 use crate::render::figure::{flat, ArrowKind, Figure, Silhouette, P};
-use crate::trace::latex::to_latex;
+use crate::render::tex::to_latex;
 use crate::trace::{Plane, SceneView};
 
 /// Width of the drawing in pt; the height follows (at most `MAX_HEIGHT`).
@@ -255,7 +255,7 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
     c.out.push_str("{\\footnotesize Dashed: arms $r$, velocities before $v$ and, when projection moves a body, its outline after; solid: velocities after $v'$, the normal $\\hat{d}$ and the impulse $g$ on body 1 (velocities and impulse to scales of their own; the xy plane).");
     if let Some(note) = &fig.corrected {
         c.out.push(' ');
-        c.out.push_str(&crate::trace::latex::prose(note));
+        c.out.push_str(&crate::render::tex::prose(note));
     }
     c.out.push_str("}\n\\end{center}\n");
     Some(c.out)

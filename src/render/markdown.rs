@@ -2,6 +2,7 @@
 //! as one display-math block (`$$…$$`, symbols, numbers, result), notes as a
 //! list, skipped stages named with their reason.
 
+use crate::render::fill::Fill;
 use std::fmt::Write;
 
 use super::latex::aligned_rows;

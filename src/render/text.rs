@@ -1,6 +1,7 @@
 //! Plain text, laid out like the lecture's worked examples: per stage the
 //! formula, the numbers put into it, the result.
 
+use crate::render::fill::Fill;
 use std::fmt::Write;
 
 use crate::format::Fmt;

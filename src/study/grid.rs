@@ -6,8 +6,8 @@
 
 use super::{Budget, Config, Precision};
 use crate::lesson::Lesson;
-use crate::physics::params::BoxBoxMode;
-use crate::physics::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
+use crate::physics::knobs::Needs;
+use crate::physics::{SimParams, Solver};
 
 /// The default scenes, how long each runs (s), and which solver the
 /// reference uses (the lecture's order for the cradle, whose real answer is
@@ -27,22 +27,17 @@ pub const SCENES: [(&str, f64, Solver); 8] = [
 pub const REFERENCE_DT: f64 = 1.0 / 480.0;
 pub const REFERENCE_EPSILON: f64 = 1e-4;
 
-/// The knobs `--grid` accepts.
-pub const KNOBS: [&str; 13] = [
-    "solver",
-    "warm_start",
-    "budget",
-    "epsilon",
-    "precision",
-    "friction_model",
-    "projection",
-    "relaxation",
-    "velocity_limit",
-    "restitution_from",
-    "box_box",
-    "sleep",
-    "dt",
-];
+/// The study's own dimensions besides the knob table's: the iteration
+/// budget (visits per contact, or converged) and the float type.
+pub const DIMENSIONS: [&str; 2] = ["budget", "precision"];
+
+/// The names `--grid` accepts.
+pub fn knob_names() -> Vec<&'static str> {
+    DIMENSIONS
+        .into_iter()
+        .chain(super::study_knobs().map(|k| k.name))
+        .collect()
+}
 
 /// `1/60` for a time step that is one over a whole number, else the number.
 pub fn dt_label(dt: f64) -> String {
@@ -55,85 +50,51 @@ pub fn dt_label(dt: f64) -> String {
 }
 
 /// The scene's own configuration: its lesson's settings, the lecture's
-/// solver and budget (8 visits per contact), f64.
+/// budget (8 visits per contact), f64.
 pub fn default_config(lesson: &Lesson) -> Option<Config> {
-    let p = lesson.sim_params()?;
+    let mut params = lesson.sim_params()?;
+    params.resolver.position_iterations = None;
+    params.resolver.velocity_iterations = None;
     Some(Config {
-        solver: p.resolver.solver,
-        warm_start: p.resolver.warm_start,
+        params,
         budget: Budget::PerContact(8),
-        epsilon: p.resolver.position_epsilon,
         precision: Precision::F64,
-        friction_model: p.friction_model,
-        projection: p.contact.projection,
-        relaxation: p.contact.relaxation,
-        velocity_limit: p.contact.velocity_limit,
-        restitution_from: p.resolver.restitution_from,
-        box_box: p.box_box,
-        sleep: p.sleep.enabled,
-        dt: p.dt,
     })
 }
 
 /// The most accurate configuration: `solver` (warm-started if sequential),
-/// converged, epsilon 1e-4, f64, dt = 1/480 s, no sleep.
+/// converged, epsilons 1e-4, f64, dt = 1/480 s, no sleep.
 pub fn reference(default: &Config, solver: Solver) -> Config {
-    Config {
-        solver,
-        warm_start: solver == Solver::SequentialImpulse,
-        budget: Budget::Converged,
-        epsilon: REFERENCE_EPSILON,
-        precision: Precision::F64,
-        sleep: false,
-        dt: REFERENCE_DT,
-        ..*default
-    }
+    let mut c = *default;
+    c.params.resolver.solver = solver;
+    c.params.resolver.warm_start = solver == Solver::SequentialImpulse;
+    c.params.resolver.position_epsilon = REFERENCE_EPSILON;
+    c.params.resolver.velocity_epsilon = REFERENCE_EPSILON;
+    c.params.sleep.enabled = false;
+    c.params.dt = REFERENCE_DT;
+    c.budget = Budget::Converged;
+    c.precision = Precision::F64;
+    c
 }
 
 /// The reference in words.
 pub fn describe_reference(c: &Config) -> String {
     format!(
         "{}, {} visits per contact (to convergence), epsilon {}, f64, dt = {} s, no sleep, the scene's other settings",
-        match c.solver {
+        match c.solver() {
             Solver::DeepestFirst => "the lecture's deepest-first order",
             Solver::SequentialImpulse => "sequential impulses, warm-started",
         },
         super::CONVERGED,
-        crate::format::exact(c.epsilon),
-        dt_label(c.dt)
+        crate::format::exact(c.params.resolver.position_epsilon),
+        dt_label(c.params.dt)
     )
 }
 
 /// Sets `knob` to the text `value` in `config`; an error names what is accepted.
 pub fn set(config: &mut Config, knob: &str, value: &str) -> Result<(), String> {
     let bad = |accepted: &str| Err(format!("{knob}={value}: expected {accepted}"));
-    let number = |v: &str| -> Option<f64> {
-        let x = match v.split_once('/') {
-            Some((a, b)) => a.trim().parse::<f64>().ok()? / b.trim().parse::<f64>().ok()?,
-            None => v.trim().parse().ok()?,
-        };
-        x.is_finite().then_some(x)
-    };
-    let on = |v: &str| match v {
-        "on" | "true" | "yes" => Some(true),
-        "off" | "false" | "no" => Some(false),
-        _ => None,
-    };
     match knob {
-        "solver" => match value {
-            "sequential_impulse+warm" => {
-                config.solver = Solver::SequentialImpulse;
-                config.warm_start = true;
-            }
-            _ => match Solver::from_name(value) {
-                Some(s) => config.solver = s,
-                None => return bad("deepest_first, sequential_impulse or sequential_impulse+warm"),
-            },
-        },
-        "warm_start" => match on(value) {
-            Some(b) => config.warm_start = b,
-            None => return bad("on or off"),
-        },
         "budget" => match value {
             "converged" => config.budget = Budget::Converged,
             _ => match value
@@ -145,52 +106,26 @@ pub fn set(config: &mut Config, knob: &str, value: &str) -> Result<(), String> {
                 _ => return bad("visits per contact, 1 to 100000, or converged"),
             },
         },
-        "epsilon" => match number(value) {
-            Some(x) if x >= 0.0 => config.epsilon = x,
-            _ => return bad("a number ≥ 0"),
-        },
         "precision" => match value {
             "f32" => config.precision = Precision::F32,
             "f64" => config.precision = Precision::F64,
             _ => return bad("f32 or f64"),
         },
-        "friction_model" => match FrictionModel::from_name(value) {
-            Some(m) => config.friction_model = m,
-            None => return bad("millington, kinetic-direction or velocity-scaling"),
-        },
-        "projection" => match ProjectionMethod::from_name(value) {
-            Some(m) => config.projection = m,
-            None => return bad("linear or nonlinear"),
-        },
-        "relaxation" => match number(value) {
-            Some(x) if x > 0.0 && x <= 1.0 => config.relaxation = x,
-            _ => return bad("a number in (0, 1]"),
-        },
-        "velocity_limit" => match number(value) {
-            Some(x) if x >= 0.0 => config.velocity_limit = x,
-            _ => return bad("a speed ≥ 0"),
-        },
-        "restitution_from" => match RestitutionFrom::from_name(value) {
-            Some(m) => config.restitution_from = m,
-            None => return bad("current or initial"),
-        },
-        "box_box" => match BoxBoxMode::from_name(value) {
-            Some(m) => config.box_box = m,
-            None => return bad("single or manifold"),
-        },
-        "sleep" => match on(value) {
-            Some(b) => config.sleep = b,
-            None => return bad("on or off"),
-        },
-        "dt" => match number(value) {
-            Some(x) if (1e-5..=0.1).contains(&x) => config.dt = x,
-            _ => return bad("a time step from 1e-5 to 0.1 s, e.g. 1/120"),
-        },
+        // The label the study gives a warm-started solver (`sequential-impulse+warm`).
+        _ if value.ends_with("+warm") => {
+            set(config, knob, value.trim_end_matches("+warm"))?;
+            config.params.resolver.warm_start = true;
+        }
         _ => {
-            return Err(format!(
-                "unknown knob '{knob}': the knobs are {}",
-                KNOBS.join(", ")
-            ))
+            let Some(k) = super::study_knobs().find(|k| k.name == knob.replace('-', "_")) else {
+                return Err(format!(
+                    "unknown knob '{knob}': the knobs are {}",
+                    knob_names().join(", ")
+                ));
+            };
+            let v = crate::lesson::knob_value::from_text(k, value)
+                .map_err(|e| format!("{knob}={value}: {e}"))?;
+            config.set(k, v);
         }
     }
     Ok(())
@@ -201,7 +136,7 @@ pub fn parse_grid(arg: &str) -> Result<(String, Vec<String>), String> {
     let (knob, values) = arg.split_once('=').ok_or_else(|| {
         format!(
             "--grid {arg}: expected KNOB=V1,V2,… (knobs: {})",
-            KNOBS.join(", ")
+            knob_names().join(", ")
         )
     })?;
     let knob = knob.trim().replace('-', "_");
@@ -215,19 +150,9 @@ pub fn parse_grid(arg: &str) -> Result<(String, Vec<String>), String> {
 
 fn probe_config() -> Config {
     Config {
-        solver: Solver::DeepestFirst,
-        warm_start: false,
+        params: SimParams::default(),
         budget: Budget::PerContact(8),
-        epsilon: 0.01,
         precision: Precision::F64,
-        friction_model: FrictionModel::Millington,
-        projection: ProjectionMethod::Nonlinear,
-        relaxation: 1.0,
-        velocity_limit: 0.25,
-        restitution_from: RestitutionFrom::Current,
-        box_box: BoxBoxMode::Manifold,
-        sleep: true,
-        dt: 1.0 / 60.0,
     }
 }
 
@@ -327,12 +252,9 @@ pub fn rows(
     };
     for &(solver, warm_start) in solvers {
         for &budget in budgets {
-            let c = Config {
-                solver,
-                warm_start,
-                budget,
-                ..*default
-            };
+            let mut c = Config { budget, ..*default };
+            c.params.resolver.solver = solver;
+            c.params.resolver.warm_start = warm_start;
             push(
                 "budget",
                 &format!("{} {}", c.solver_label(), budget.label()),
@@ -354,23 +276,16 @@ pub fn rows(
         one("dt", &["1/30"], &mut out);
         return out;
     }
-    one("epsilon", &["0.1", "0.001"], &mut out);
     one("precision", &["f32"], &mut out);
-    if features.friction {
-        one(
-            "friction_model",
-            &["millington", "kinetic-direction", "velocity-scaling"],
-            &mut out,
-        );
+    for knob in super::study_knobs().filter(|k| !k.grid.is_empty()) {
+        let wanted = match knob.needs {
+            Needs::Always => true,
+            Needs::Friction => features.friction,
+            Needs::BoxPairs => features.box_pairs,
+        };
+        if wanted {
+            one(knob.name, knob.grid, &mut out);
+        }
     }
-    one("projection", &["linear", "nonlinear"], &mut out);
-    one("relaxation", &["0.5"], &mut out);
-    one("velocity_limit", &["0", "0.25", "1"], &mut out);
-    one("restitution_from", &["current", "initial"], &mut out);
-    if features.box_pairs {
-        one("box_box", &["single", "manifold"], &mut out);
-    }
-    one("sleep", &["on", "off"], &mut out);
-    one("dt", &["1/30", "1/60", "1/120", "1/240", "1/480"], &mut out);
     out
 }

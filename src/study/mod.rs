@@ -9,8 +9,8 @@ pub mod pareto;
 pub mod run;
 pub mod sweep;
 
-use crate::physics::params::BoxBoxMode;
-use crate::physics::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
+use crate::physics::knobs::{Knob, Offered, Value, KNOBS};
+use crate::physics::{Settings, SimParams, Solver};
 
 /// Visits per contact that stand for "to convergence": the phases stop at
 /// their epsilons long before (a limit that binds is counted per row).
@@ -56,53 +56,60 @@ impl Precision {
     }
 }
 
-/// One configuration: every knob the study turns.
+/// One configuration: the run's knobs (the scene's, with the study's
+/// choices over them), the iteration budget and the float type.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Config {
-    pub solver: Solver,
-    pub warm_start: bool,
+    pub params: SimParams<f64>,
     pub budget: Budget,
-    /// Position and velocity epsilon (one knob).
-    pub epsilon: f64,
     pub precision: Precision,
-    pub friction_model: FrictionModel,
-    pub projection: ProjectionMethod,
-    pub relaxation: f64,
-    pub velocity_limit: f64,
-    pub restitution_from: RestitutionFrom,
-    pub box_box: BoxBoxMode,
-    pub sleep: bool,
-    pub dt: f64,
 }
 
 impl Config {
     /// The solver with its warm start, as one label.
     pub fn solver_label(&self) -> &'static str {
-        match (self.solver, self.warm_start) {
-            (Solver::DeepestFirst, _) => "deepest_first",
-            (Solver::SequentialImpulse, false) => "sequential_impulse",
-            (Solver::SequentialImpulse, true) => "sequential_impulse+warm",
+        match (self.params.resolver.solver, self.params.resolver.warm_start) {
+            (Solver::DeepestFirst, _) => "deepest-first",
+            (Solver::SequentialImpulse, false) => "sequential-impulse",
+            (Solver::SequentialImpulse, true) => "sequential-impulse+warm",
         }
     }
 
-    /// Every knob's value as (name, text), in a fixed order.
-    pub fn knobs(&self) -> Vec<(&'static str, String)> {
-        vec![
-            ("solver", self.solver.name().to_string()),
-            ("warm_start", self.warm_start.to_string()),
-            ("budget", self.budget.label()),
-            ("epsilon", crate::format::exact(self.epsilon)),
-            ("precision", self.precision.name().into()),
-            ("friction_model", self.friction_model.name().into()),
-            ("projection", self.projection.name().into()),
-            ("relaxation", crate::format::exact(self.relaxation)),
-            ("velocity_limit", crate::format::exact(self.velocity_limit)),
-            ("restitution_from", self.restitution_from.name().into()),
-            ("box_box", self.box_box.name().into()),
-            ("sleep", if self.sleep { "on" } else { "off" }.into()),
-            ("dt", grid::dt_label(self.dt)),
-        ]
+    pub fn solver(&self) -> Solver {
+        self.params.resolver.solver
     }
+
+    /// The value of `knob` here.
+    pub fn get(&self, knob: &Knob) -> Value {
+        (knob.get)(&Settings::of_run(&self.params))
+    }
+
+    /// Sets `knob` to `value`.
+    pub fn set(&mut self, knob: &Knob, value: Value) {
+        let mut all = Settings::of_run(&self.params);
+        (knob.set)(&mut all, value);
+        let resolver = self.params.resolver;
+        self.params = all.sim_params();
+        // The budget decides the limits: no explicit count.
+        self.params.resolver.position_iterations = resolver.position_iterations;
+        self.params.resolver.velocity_iterations = resolver.velocity_iterations;
+    }
+
+    /// Every knob's value as (name, text), in a fixed order: the budget, the
+    /// float type, then the knob table's study knobs.
+    pub fn knobs(&self) -> Vec<(&'static str, String)> {
+        let mut out = vec![
+            ("budget", self.budget.label()),
+            ("precision", self.precision.name().into()),
+        ];
+        out.extend(study_knobs().map(|k| (k.name, crate::lesson::knob_value::text(self.get(k)))));
+        out
+    }
+}
+
+/// The knobs the study turns (and `--grid` takes), from the knob table.
+pub fn study_knobs() -> impl Iterator<Item = &'static Knob> {
+    KNOBS.iter().filter(|k| k.study == Offered::Yes)
 }
 
 /// What one configuration did.

@@ -83,7 +83,7 @@ pub fn verdict(study: &SceneStudy, cost_unit: &str) -> String {
         s.push_str(&format!(
             "; at equal work (8 visits per contact) the lecture's order leaves error {} m and {} {} m: {winner}",
             fmt.num(a),
-            si.config.solver_label().replace('_', " "),
+            si.config.solver_label().replace('-', " "),
             fmt.num(b),
         ));
     }

@@ -45,24 +45,13 @@ pub fn steps(seconds: f64, dt: f64) -> usize {
     ((seconds / dt).round() as usize).max(1)
 }
 
-/// The lesson's simulation parameters with `config` applied (f64).
-pub fn params(lesson: &Lesson, config: &Config) -> SimParams<f64> {
-    let mut p = lesson.sim_params().unwrap_or_default();
-    p.resolver.solver = config.solver;
-    p.resolver.warm_start = config.warm_start;
+/// The run's parameters (f64): the configuration's knobs, its budget as
+/// visits per contact.
+pub fn params(config: &Config) -> SimParams<f64> {
+    let mut p = config.params;
     p.resolver.visits_per_contact = config.budget.per_contact();
     p.resolver.position_iterations = None;
     p.resolver.velocity_iterations = None;
-    p.resolver.position_epsilon = config.epsilon;
-    p.resolver.velocity_epsilon = config.epsilon;
-    p.resolver.restitution_from = config.restitution_from;
-    p.friction_model = config.friction_model;
-    p.contact.projection = config.projection;
-    p.contact.relaxation = config.relaxation;
-    p.contact.velocity_limit = config.velocity_limit;
-    p.box_box = config.box_box;
-    p.sleep.enabled = config.sleep;
-    p.dt = config.dt;
     p
 }
 
@@ -98,7 +87,7 @@ fn cast<T: Real>(p: &SimParams<f64>) -> SimParams<T> {
 }
 
 fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
-    let p = cast::<T>(&params(lesson, config));
+    let p = cast::<T>(&params(config));
     let mut world = lesson.world::<T>();
     world.contacts.clear();
     let materials = lesson
@@ -119,7 +108,7 @@ pub fn measure(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
 
 fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
     let mut sim = simulation::<T>(lesson, config);
-    let n = steps(seconds, config.dt);
+    let n = steps(seconds, config.params.dt);
     let g = sim.params.world.gravity.map(to_f64);
     let up = if g.norm() > 0.0 {
         -g / g.norm()
@@ -223,7 +212,7 @@ pub fn time(lesson: &Lesson, config: &Config, seconds: f64, repeats: usize) -> V
 
 fn time_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> f64 {
     let mut sim = simulation::<T>(lesson, config);
-    let n = steps(seconds, config.dt);
+    let n = steps(seconds, config.params.dt);
     let t0 = Instant::now();
     for _ in 0..n {
         if sim.advance().is_err() {

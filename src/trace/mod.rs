@@ -13,11 +13,10 @@
 mod acceleration;
 pub mod contact;
 pub mod glossary;
-pub mod grade;
-pub mod latex;
+
 mod names;
 mod plane;
-pub mod player;
+
 pub mod resolver;
 pub mod run;
 mod scene;
@@ -98,23 +97,6 @@ pub struct Formula {
     pub substituted: Option<String>,
     /// Name of the value (in `values` or `inputs`) that is the result.
     pub result: Option<String>,
-}
-
-impl Formula {
-    /// LaTeX of `lhs = rhs`, made on demand (only the LaTeX and Markdown
-    /// renderers need it, so building a trace does not pay for it).
-    pub fn latex(&self) -> String {
-        format!(
-            "{} = {}",
-            latex::to_latex(&self.lhs),
-            latex::to_latex(&self.rhs)
-        )
-    }
-
-    /// LaTeX of the substituted form, placeholders kept.
-    pub fn substituted_latex(&self) -> Option<String> {
-        self.substituted.as_deref().map(latex::to_latex)
-    }
 }
 
 /// One stage of the worked solution.

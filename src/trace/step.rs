@@ -201,8 +201,8 @@ impl StepTrace {
                         restitution: i.restitution,
                         static_friction: i.static_friction,
                         dynamic_friction: i.dynamic_friction,
-                        friction_model: i.friction_model,
                         settings: Settings {
+                            friction_model: i.friction_model,
                             velocity_limit: i.settings.velocity_limit,
                             angular_limit: i.settings.angular_limit,
                             relaxation: i.settings.relaxation,

@@ -1,10 +1,11 @@
 //! Keys of the help pages (keys, then the glossary) and predict mode's
-//! answers: typed, graded with [`crate::trace::grade`], scored, revealed.
+//! answers: typed, graded with [`crate::exercise::answer`], scored, revealed.
 
+use crate::render::fill::Fill;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use super::app::{App, Mode};
-use crate::trace::grade;
+use crate::exercise::answer as grade;
 use crate::trace::{glossary, Value};
 
 impl App {

@@ -12,9 +12,9 @@ use super::form::Form;
 use super::screens::{ResolverView, RunView, Screen, Targets};
 use super::theme::Theme;
 use super::write;
+use crate::exercise::answer::Score;
 use crate::format::Fmt;
 use crate::lesson::{edit, Lesson};
-use crate::trace::grade::Score;
 use crate::trace::Trace;
 
 /// A lesson as loaded, and as edited in this session.

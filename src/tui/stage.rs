@@ -2,6 +2,7 @@
 //! it and the result (hidden in predict mode until revealed), then the notes;
 //! page 0 is the lesson's overview.
 
+use crate::render::fill::Fill;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::style::Style;

@@ -2,6 +2,7 @@
 //! (header, lessons and stages, stage panel, picture, checks, key bar) and
 //! puts the overlay of the active mode on top.
 
+use crate::render::fill::Fill;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Style;

@@ -12,7 +12,7 @@ use crate::trace::Trace;
 pub fn default_name(trace: &Trace) -> String {
     format!(
         "{}-contact-{}.md",
-        crate::commands::file_stem(&trace.lesson),
+        crate::output_file::file_stem(&trace.lesson),
         trace.contact
     )
 }

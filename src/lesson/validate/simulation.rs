@@ -2,12 +2,11 @@
 //! and of the per-body fields only scenes use (a half-space's `normal`, the
 //! coefficients of generated contacts).
 
-use super::super::raw::{RawBody, RawLesson, S};
+use super::super::raw::{KnobTable, RawBody, RawLesson, S};
 use super::super::{Material, Simulation};
 use super::{rules, v3, Validator};
-use crate::physics::params::BoxBoxMode;
-use crate::physics::step::SleepMode;
-use crate::physics::Shape;
+use crate::physics::knobs::Table;
+use crate::physics::{Settings, Shape};
 
 /// `restitution`, `friction`, `static_friction`, `dynamic_friction` as written.
 type MaterialFields<'a> = (
@@ -17,145 +16,76 @@ type MaterialFields<'a> = (
     &'a Option<S<f64>>,
 );
 
-/// The most steps a lesson may ask for (a longer run is a loop, not a lesson).
-pub const MAX_STEPS: i64 = 10_000_000;
+/// The coefficients `[world]` gives every body (not knobs: data of the scene).
+const MATERIAL_FIELDS: [&str; 4] = [
+    "restitution",
+    "friction",
+    "static_friction",
+    "dynamic_friction",
+];
 
 impl Validator {
-    /// `Some` when the lesson has any of `[world]`, `[step]`, `[sleep]`.
-    pub(super) fn simulation(&mut self, raw: &RawLesson) -> Option<Simulation> {
-        if raw.world.is_none() && raw.step.is_none() && raw.sleep.is_none() {
-            return None;
-        }
-        let mut sim = Simulation::default();
+    /// Every knob of the lesson's tables, over the defaults (a scene's when
+    /// the lesson has any of `[world]`, `[step]`, `[sleep]`), and the scene,
+    /// when it has one.
+    pub(super) fn knobs(&mut self, raw: &RawLesson) -> (Settings, Option<Simulation>) {
+        let scene = raw.world.is_some() || raw.step.is_some() || raw.sleep.is_some();
+        let mut all = if scene {
+            Settings::scene_default()
+        } else {
+            Settings::default()
+        };
+        self.knob_table(Table::Settings, &raw.settings, &mut all, &[]);
         if let Some(w) = &raw.world {
-            if let Some(g) = &w.gravity {
-                sim.world.gravity = v3(self.finite("[world] gravity", g));
-            }
-            let damping = |v: &mut Validator, x: &Option<S<f64>>, what: &str, out: &mut f64| {
-                if let Some(x) = x {
-                    *out = v.rule(&format!("[world] {what}"), x, damping_rule);
-                }
-            };
-            damping(
-                self,
-                &w.linear_damping,
-                "linear_damping",
-                &mut sim.world.linear_damping,
-            );
-            damping(
-                self,
-                &w.angular_damping,
-                "angular_damping",
-                &mut sim.world.angular_damping,
-            );
-            if let Some(m) = &w.box_box {
-                match BoxBoxMode::from_name(m.get_ref()) {
-                    Some(mode) => sim.box_box = mode,
-                    None => self.err(
-                        m.span(),
-                        format!(
-                            "[world] box_box must be \"single\" or \"manifold\", got \"{}\"",
-                            m.get_ref()
-                        ),
-                    ),
-                }
-            }
-            if let Some(v) = &w.velocity_limit {
-                sim.velocity_limit = self.rule("[world] velocity_limit", v, rules::velocity_limit);
-            }
-            if let Some(m) = &w.friction_model {
-                match crate::physics::FrictionModel::from_name(m.get_ref()) {
-                    Some(model) => sim.friction_model = model,
-                    None => self.err(
-                        m.span(),
-                        format!("[world] friction_model must be one of millington, kinetic-direction, velocity-scaling; got \"{}\"", m.get_ref()),
-                    ),
-                }
-            }
-            if let Some(m) = &w.contact_margin {
-                sim.contact_margin = self.rule("[world] contact_margin", m, rules::non_negative);
-            }
-            if let Some(a) = &w.acceleration_compensation {
-                sim.acceleration_compensation = *a.get_ref();
-            }
-            sim.material = self.material(
+            self.knob_table(Table::World, w, &mut all, &MATERIAL_FIELDS);
+            let fields = MATERIAL_FIELDS.map(|f| self.number_field(w, f));
+            all.scene.material = self.material(
                 "[world]",
                 Material::default(),
-                (
-                    &w.restitution,
-                    &w.friction,
-                    &w.static_friction,
-                    &w.dynamic_friction,
-                ),
+                (&fields[0], &fields[1], &fields[2], &fields[3]),
             );
         }
         if let Some(step) = &raw.step {
-            if let Some(dt) = &step.dt {
-                sim.dt = self.rule("[step] dt", dt, rules::duration);
-            }
-            if let Some(n) = &step.steps {
-                let steps = *n.get_ref();
-                if !(0..=MAX_STEPS).contains(&steps) {
-                    self.err(
-                        n.span(),
-                        format!("[step] steps must be between 0 and {MAX_STEPS}, got {steps}"),
-                    );
-                } else {
-                    sim.steps = steps as u64;
-                }
-            }
+            self.knob_table(Table::Step, step, &mut all, &[]);
         }
         if let Some(sleep) = &raw.sleep {
-            if let Some(e) = &sleep.enabled {
-                sim.sleep.enabled = *e.get_ref();
-            }
-            if let Some(e) = &sleep.epsilon {
-                sim.sleep.epsilon = self.rule("[sleep] epsilon", e, rules::non_negative);
-            }
-            if let Some(t) = &sleep.island_time {
-                sim.sleep.island_time = self.rule("[sleep] island_time", t, rules::non_negative);
-            }
-            if let Some(m) = &sleep.mode {
-                match SleepMode::from_name(m.get_ref()) {
-                    Some(mode) => sim.sleep.mode = mode,
-                    None => self.err(
-                        m.span(),
-                        format!(
-                            "[sleep] mode must be \"body\" or \"island\", got \"{}\"",
-                            m.get_ref()
-                        ),
-                    ),
-                }
-            }
+            self.knob_table(Table::Sleep, sleep, &mut all, &[]);
         }
-        Some(sim)
+        let simulation = scene.then(|| all.scene.clone());
+        (all, simulation)
     }
 
-    /// Restitution and friction coefficients over `base`: `friction` sets
-    /// both, `static_friction` / `dynamic_friction` each one.
+    /// A number field of a table read as a map.
+    fn number_field(&mut self, table: &KnobTable, name: &str) -> Option<S<f64>> {
+        let (_, value) = table.iter().find(|(k, _)| k.get_ref() == name)?;
+        match value.get_ref() {
+            toml::Value::Float(x) => Some(S::new(value.span(), *x)),
+            toml::Value::Integer(n) => Some(S::new(value.span(), *n as f64)),
+            _ => {
+                self.err(value.span(), format!("{name} must be a number"));
+                None
+            }
+        }
+    }
+
+    /// Restitution and friction coefficients over `base` (the one rule of
+    /// [`Material::with`]: `friction` sets both, μ_d defaults to μ_s).
     pub(super) fn material(
         &mut self,
         table: &str,
         base: Material,
         (restitution, friction, mu_s, mu_d): MaterialFields,
     ) -> Material {
-        let mut m = base;
         let what = format!("{table} ");
-        if let Some(c) = restitution {
-            m.restitution = self.rule(&format!("{what}restitution"), c, rules::restitution);
-        }
-        if let Some(mu) = friction {
-            let mu = self.rule(&format!("{what}friction"), mu, rules::friction);
-            m.static_friction = mu;
-            m.dynamic_friction = mu;
-        }
-        if let Some(mu) = mu_s {
-            m.static_friction = self.rule(&format!("{what}static_friction"), mu, rules::friction);
-        }
-        if let Some(mu) = mu_d {
-            m.dynamic_friction = self.rule(&format!("{what}dynamic_friction"), mu, rules::friction);
-        }
-        m
+        let mut read = |x: &Option<S<f64>>, name: &str, rule: fn(f64) -> Result<(), String>| {
+            x.as_ref()
+                .map(|x| self.rule(&format!("{what}{name}"), x, rule))
+        };
+        let e = read(restitution, "restitution", rules::restitution);
+        let mu = read(friction, "friction", rules::friction);
+        let s = read(mu_s, "static_friction", rules::friction);
+        let d = read(mu_d, "dynamic_friction", rules::friction);
+        base.with(e, mu, s, d)
     }
 
     /// Each body's coefficients: `[world]`'s, overridden by the body's own
@@ -243,23 +173,5 @@ impl Validator {
                 format!("body '{name}': `normal` is only for a half_space shape"),
             ),
         }
-    }
-}
-
-/// A damping: the fraction of velocity kept per second, in (0, 1] and not
-/// below 1e-60 (also `simulate --damping`).
-pub fn damping_rule(x: f64) -> Result<(), String> {
-    if x > 0.0 && x < rules::MIN_MAGNITUDE {
-        Err(format!(
-            "damping {}",
-            super::super::ranges::too_small_positive(x)
-        ))
-    } else if x > 0.0 && x <= 1.0 {
-        Ok(())
-    } else {
-        Err(format!(
-            "damping is the fraction of velocity kept per second and must be in (0, 1], got {}",
-            crate::format::exact(x)
-        ))
     }
 }

@@ -90,6 +90,64 @@ impl<T: Real> CheckItem<T> {
     pub fn kind(&self) -> CheckKind {
         self.measured.kind()
     }
+
+    /// The check's values by their JSON names, in the order the `checks`
+    /// stage lists them (suffix 1 or 2 is the body slot): identifiers, as
+    /// stage ids are, from this one place.
+    pub fn named_values(&self) -> Vec<(String, T)> {
+        let item = self;
+        let named = |pairs: &[(&str, T)]| -> Vec<(String, T)> {
+            pairs.iter().map(|(n, v)| (n.to_string(), *v)).collect()
+        };
+        match item.measured {
+            Measured::LinearMomentum { error } => named(&[("linear_momentum_error", error)]),
+            Measured::AngularMomentum { body, error } => {
+                vec![(format!("angular_momentum_error{}", body + 1), error)]
+            }
+            Measured::Restitution {
+                before,
+                after,
+                expected,
+            } => named(&[
+                ("separating_velocity_before", before),
+                ("separating_velocity", after),
+                ("separating_velocity_expected", expected),
+            ]),
+            Measured::Energy {
+                before,
+                after,
+                change,
+            } => named(&[
+                ("energy_before", before),
+                ("energy_after", after),
+                ("energy_change", change),
+            ]),
+            Measured::FrictionCone {
+                normal,
+                tangential,
+                limit,
+            } => named(&[
+                ("normal_impulse", normal),
+                ("tangential_impulse", tangential),
+                ("cone_limit", limit),
+            ]),
+            Measured::Slip { before, after } => {
+                named(&[("slip_speed_before", before), ("slip_speed_after", after)])
+            }
+            Measured::ResidualPenetration {
+                depth,
+                gained,
+                residual,
+            } => named(&[
+                ("depth_to_resolve", depth),
+                ("separation_gained", gained),
+                ("residual_penetration", residual),
+            ]),
+            Measured::UnitQuaternion { body, error } => {
+                vec![(format!("orientation_norm_error{}", body + 1), error)]
+            }
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Default)]

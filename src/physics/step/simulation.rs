@@ -10,56 +10,11 @@ pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use super::{audit, energy};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
-use crate::physics::params::{BoxBoxMode, Material};
+use crate::physics::params::Material;
+pub use crate::physics::params::SimParams;
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
-use crate::physics::{
-    c, to_f64, BodyId, Contact, ContactInput, ContactParams, FrictionModel, Real, ResolverParams,
-    SleepParams, Solver, World, WorldParams,
-};
-
-/// Everything a simulation needs beyond its bodies.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SimParams<T: Real> {
-    /// The time step (default: 1/60 s).
-    pub dt: T,
-    pub world: WorldParams<T>,
-    pub sleep: SleepParams<T>,
-    pub resolver: ResolverParams,
-    /// Parameters of every generated contact (velocity limit, angular limit, …).
-    pub contact: ContactParams<T>,
-    /// Acceleration compensation (the lecture's micro-collisions): the
-    /// velocity one step of acceleration builds up is not bounced back
-    /// (default: on). Off, a resting box vibrates.
-    pub acceleration_compensation: bool,
-    /// How a pair of boxes touches (default: manifold).
-    pub box_box: BoxBoxMode,
-    pub friction_model: FrictionModel,
-    /// Contacts are generated for gaps up to this distance (m), with a
-    /// negative penetration: a resting body whose contact the position phase
-    /// just resolved keeps it, instead of losing it for a step and falling
-    /// freely (default: 0.005).
-    pub contact_margin: T,
-}
-
-impl<T: Real> Default for SimParams<T> {
-    fn default() -> Self {
-        SimParams {
-            dt: c(1.0 / 60.0),
-            world: WorldParams::default(),
-            sleep: SleepParams::default(),
-            resolver: ResolverParams::default(),
-            contact: ContactParams {
-                velocity_limit: c(0.25),
-                ..ContactParams::default()
-            },
-            acceleration_compensation: true,
-            box_box: BoxBoxMode::default(),
-            friction_model: FrictionModel::default(),
-            contact_margin: c(0.005),
-        }
-    }
-}
+use crate::physics::{c, to_f64, BodyId, Contact, ContactInput, Real, Solver, World};
 
 /// A world stepping in time.
 #[derive(Debug, Clone)]
@@ -136,7 +91,7 @@ impl<T: Real> Simulation<T> {
         &mut self,
         observer: &mut O,
     ) -> Result<StepReport, BlowUp> {
-        let p = self.params.clone();
+        let p = self.params;
         let mut events = Vec::new();
         // 1. Contacts from the shapes where the bodies are now.
         self.generate_contacts();

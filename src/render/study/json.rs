@@ -4,7 +4,8 @@
 
 use serde_json::{json, Map, Value};
 
-use crate::study::{Budget, Config, Row, Study};
+use crate::lesson::knob_value;
+use crate::study::{study_knobs, Budget, Config, Row, Study};
 
 fn number(x: f64) -> Value {
     if x.is_finite() {
@@ -16,24 +17,19 @@ fn number(x: f64) -> Value {
 
 /// Every knob with its typed value.
 pub fn config(c: &Config) -> Value {
-    json!({
-        "solver": c.solver.name(),
-        "warm_start": c.warm_start,
-        "budget": match c.budget {
+    let mut o = Map::new();
+    o.insert(
+        "budget".into(),
+        match c.budget {
             Budget::PerContact(n) => json!(n),
             Budget::Converged => json!("converged"),
         },
-        "epsilon": c.epsilon,
-        "precision": c.precision.name(),
-        "friction_model": c.friction_model.name(),
-        "projection": c.projection.name(),
-        "relaxation": c.relaxation,
-        "velocity_limit": c.velocity_limit,
-        "restitution_from": c.restitution_from.name(),
-        "box_box": c.box_box.name(),
-        "sleep": c.sleep,
-        "dt": c.dt,
-    })
+    );
+    o.insert("precision".into(), json!(c.precision.name()));
+    for k in study_knobs() {
+        o.insert(k.name.into(), knob_value::json(c.get(k)));
+    }
+    Value::Object(o)
 }
 
 fn row(r: &Row) -> Value {

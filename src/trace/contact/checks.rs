@@ -6,60 +6,9 @@ use crate::physics::checks::{CheckItem, CheckKind, Measured};
 use crate::physics::StageId;
 use crate::trace::{Step, Verdict};
 
-/// The named values of one check, in the order the `checks` stage lists them
-/// (suffix 1 or 2 is the body slot).
+/// The named values of one check (`CheckItem::named_values`).
 pub fn check_values(item: &CheckItem<f64>) -> Vec<(String, f64)> {
-    let named = |pairs: &[(&str, f64)]| -> Vec<(String, f64)> {
-        pairs.iter().map(|(n, v)| (n.to_string(), *v)).collect()
-    };
-    match item.measured {
-        Measured::LinearMomentum { error } => named(&[("linear_momentum_error", error)]),
-        Measured::AngularMomentum { body, error } => {
-            vec![(format!("angular_momentum_error{}", body + 1), error)]
-        }
-        Measured::Restitution {
-            before,
-            after,
-            expected,
-        } => named(&[
-            ("separating_velocity_before", before),
-            ("separating_velocity", after),
-            ("separating_velocity_expected", expected),
-        ]),
-        Measured::Energy {
-            before,
-            after,
-            change,
-        } => named(&[
-            ("energy_before", before),
-            ("energy_after", after),
-            ("energy_change", change),
-        ]),
-        Measured::FrictionCone {
-            normal,
-            tangential,
-            limit,
-        } => named(&[
-            ("normal_impulse", normal),
-            ("tangential_impulse", tangential),
-            ("cone_limit", limit),
-        ]),
-        Measured::Slip { before, after } => {
-            named(&[("slip_speed_before", before), ("slip_speed_after", after)])
-        }
-        Measured::ResidualPenetration {
-            depth,
-            gained,
-            residual,
-        } => named(&[
-            ("depth_to_resolve", depth),
-            ("separation_gained", gained),
-            ("residual_penetration", residual),
-        ]),
-        Measured::UnitQuaternion { body, error } => {
-            vec![(format!("orientation_norm_error{}", body + 1), error)]
-        }
-    }
+    item.named_values()
 }
 
 /// Every check's values, with the formulas of the restitution target and

@@ -7,7 +7,7 @@ use super::*;
 use crate::physics::checks::Measured;
 use crate::physics::stages::FrictionRegime;
 use crate::physics::{solve, ContactInput, ContactParams, FrictionModel, RigidBody};
-use crate::trace::{latex::to_latex, Value};
+use crate::trace::Value;
 
 fn body(mass: f64, inertia: f64, position: [f64; 3], velocity: [f64; 3]) -> RigidBody<f64> {
     let tensor = Matrix3::from_diagonal_element(inertia);
@@ -309,21 +309,4 @@ fn what_the_scene_wrote_is_noted() {
     assert!(step(&plain, StageId::UnitImpulse)
         .value("shape_inertia1")
         .is_none());
-}
-
-#[test]
-fn latex_is_made_on_demand_from_the_unicode() {
-    let p = cube_on_floor();
-    let s = solve(&p);
-    let steps = build(&p, &s, &names("cube", Some("floor")));
-    let f = &step(&steps, StageId::DesiredDeltaVelocity).formulas[0];
-    assert_eq!(
-        f.latex(),
-        format!("{} = {}", to_latex(&f.lhs), to_latex(&f.rhs))
-    );
-    assert_eq!(
-        f.substituted_latex(),
-        f.substituted.as_deref().map(to_latex)
-    );
-    assert!(f.latex().contains("\\omega"), "{}", f.latex());
 }

@@ -4,7 +4,8 @@
 
 use crate::lesson::edit::{Field, Key};
 use crate::lesson::Lesson;
-use crate::trace::player::SceneEdit;
+use crate::physics::knobs::{Knob, Offered};
+use crate::session::SceneEdit;
 use crate::tui::app::App;
 
 /// The change to the run that an edit of `field` (contact `k`, `before` →
@@ -36,11 +37,16 @@ fn scene_edit(
             bodies: pair(),
             value: c.dynamic_friction,
         },
-        (Key::FrictionModel, _) => SceneEdit::FrictionModel(c.friction_model),
-        (Key::VelocityLimit, _) => SceneEdit::VelocityLimit(c.settings.velocity_limit),
-        (Key::AngularLimit, _) => SceneEdit::AngularLimit(c.settings.angular_limit),
-        (Key::Relaxation, _) => SceneEdit::Relaxation(c.settings.relaxation),
-        (Key::Projection, _) => SceneEdit::Projection(c.settings.projection),
+        (Key::Knob(knob), _) => {
+            let mut all = after.knobs();
+            if knob.level == crate::physics::knobs::Level::Contact {
+                all.contact = c.settings;
+            }
+            if knob.level == crate::physics::knobs::Level::Contact && !knob_in_run(knob) {
+                return Err(knob_note(knob));
+            }
+            SceneEdit::Knob(knob, (knob.get)(&all))
+        }
         (Key::Mass, Some(b)) => SceneEdit::Mass {
             body: b,
             mass: after.bodies[b].mass,
@@ -59,15 +65,26 @@ fn scene_edit(
         (Key::Penetration, _) => {
             return Err("a scene's penetrations come from its shapes at each step")
         }
-        (Key::Duration, _) => return Err("a scene's contacts last its time step"),
-        (Key::Exact, _) => {
-            return Err("the exact impact integration only describes this contact; the run applies the one-shot impulse")
-        }
         (Key::Acceleration, _) => {
             return Err("in a run a body's acceleration is what gravity and damping give it")
         }
         (_, None) => return Err("no body"),
     })
+}
+
+/// A contact's knob the run's generated contacts take (not the frame's
+/// duration, which is the time step, nor the exact impact, which applies
+/// nothing).
+fn knob_in_run(knob: &Knob) -> bool {
+    knob.study == Offered::Yes
+}
+
+/// Why a contact's knob does not change the run.
+fn knob_note(knob: &Knob) -> &'static str {
+    match knob.study {
+        Offered::No(why) => why,
+        Offered::Yes => "",
+    }
 }
 
 impl App {

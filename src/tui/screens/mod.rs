@@ -16,7 +16,7 @@ use std::cell::Cell;
 
 use ratatui::layout::Rect;
 
-use crate::trace::player::Player;
+use crate::session::Player;
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
 

@@ -8,7 +8,7 @@ use ratatui::crossterm::event::{
 };
 
 use super::{Pick, ResolverView, RunView, Screen, Toggles, EVENT_KINDS, SPEEDS};
-use crate::trace::player::Player;
+use crate::session::Player;
 use crate::trace::step::StepTrace;
 use crate::tui::app::{App, Entry, Mode};
 

@@ -11,7 +11,7 @@
 //!   impulse), `g ← g + Δg`, `g_n ← max(g_n, 0)`, and where `|g_t| > μ g_n`
 //!   the tangential part is scaled to `μ g_n` (circular cone). Each contact
 //!   has ONE cone for the step: `μ = μ_s` if it sticks when the step begins
-//!   (slip `|v_t - a_t Δt| ≤ velocity_epsilon`), `μ_d` if it slides (Coulomb);
+//!   (slip `|v_t - a_t Δt| ≤ slip_speed`, by default the velocity epsilon), `μ_d` if it slides (Coulomb);
 //!   an iterate that leaves the cone is scaled back onto the same cone. A
 //!   SLIDING contact's clamped iterate is put on the rim against its slip
 //!   velocity, with the normal part solved again so the normal target holds
@@ -78,7 +78,7 @@ pub fn on_the_rim<T: Real>(
 }
 
 /// The radius of contact `k`'s friction cone this step (Coulomb): `μ_s` if
-/// its slip before this step's accelerations is within `velocity_epsilon`,
+/// its slip before this step's accelerations is within `slip_speed`,
 /// else `μ_d`; `None` without friction.
 pub fn cone<T: Real>(r: &Resolver<T>, k: usize) -> Option<T> {
     let setup = &r.setups[k];
@@ -91,9 +91,9 @@ pub fn cone<T: Real>(r: &Resolver<T>, k: usize) -> Option<T> {
 }
 
 /// Whether contact `k` slides when the step begins: its slip before this
-/// step's accelerations exceeds `velocity_epsilon`.
+/// step's accelerations exceeds `slip_speed` (the stick/slip threshold).
 pub fn sliding<T: Real>(r: &Resolver<T>, k: usize) -> bool {
-    r.setups[k].slip > c::<T>(r.params.velocity_epsilon)
+    r.setups[k].slip > c::<T>(r.params.slip())
 }
 
 /// Applies the contact-space impulse `delta` of contact `k` to its bodies.

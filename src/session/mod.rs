@@ -7,11 +7,11 @@
 mod edit;
 pub use edit::SceneEdit;
 
-use super::resolver::Names;
-use super::run::RunTrace;
-use super::step::{record_next, StepTrace};
 use crate::lesson::Lesson;
 use crate::physics::step::{BlowUp, Simulation};
+use crate::trace::resolver::Names;
+use crate::trace::run::RunTrace;
+use crate::trace::step::{record_next, StepTrace};
 
 /// Steps between two kept copies of the simulation.
 pub const CHECKPOINT: u64 = 8;

@@ -341,3 +341,38 @@ mod tests {
         assert_eq!(to_latex("x̂ ab̂"), "\\hat{x} a\\hat{b}");
     }
 }
+
+/// LaTeX of a formula's `lhs = rhs`, made on demand (only the LaTeX and
+/// Markdown renderers need it, so building a trace does not pay for it).
+pub fn formula(f: &crate::trace::Formula) -> String {
+    format!("{} = {}", to_latex(&f.lhs), to_latex(&f.rhs))
+}
+
+/// LaTeX of a formula's substituted form, placeholders kept.
+pub fn substituted(f: &crate::trace::Formula) -> Option<String> {
+    f.substituted.as_deref().map(to_latex)
+}
+
+#[cfg(test)]
+mod formula_tests {
+    use super::*;
+    use crate::lesson::Lesson;
+
+    #[test]
+    fn latex_is_made_on_demand_from_the_unicode() {
+        let lesson = Lesson::load("lecture-2").unwrap();
+        let t = crate::worked_solution(&lesson, 0);
+        let f = &t
+            .stages
+            .iter()
+            .find(|s| s.id == crate::physics::StageId::DesiredDeltaVelocity)
+            .unwrap()
+            .formulas[0];
+        assert_eq!(
+            formula(f),
+            format!("{} = {}", to_latex(&f.lhs), to_latex(&f.rhs))
+        );
+        assert_eq!(substituted(f), f.substituted.as_deref().map(to_latex));
+        assert!(formula(f).contains("\\omega"), "{}", formula(f));
+    }
+}

@@ -5,8 +5,9 @@
 use nalgebra::Vector3;
 
 use super::Player;
+use crate::physics::knobs::{Knob, Value};
 use crate::physics::step::Simulation;
-use crate::physics::{FrictionModel, ProjectionMethod};
+use crate::physics::Settings;
 
 /// What an edit changes, from the start of a step on.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,12 +42,9 @@ pub enum SceneEdit {
         bodies: Vec<usize>,
         value: f64,
     },
-    /// Settings of every generated contact.
-    FrictionModel(FrictionModel),
-    VelocityLimit(f64),
-    AngularLimit(f64),
-    Relaxation(f64),
-    Projection(ProjectionMethod),
+    /// A knob of the run (a setting of every generated contact, the
+    /// resolver's, the world's, sleep's).
+    Knob(&'static Knob, Value),
 }
 
 impl SceneEdit {
@@ -105,11 +103,11 @@ impl SceneEdit {
                     m.dynamic_friction = *value;
                 }
             }
-            SceneEdit::FrictionModel(m) => sim.params.friction_model = *m,
-            SceneEdit::VelocityLimit(v) => sim.params.contact.velocity_limit = *v,
-            SceneEdit::AngularLimit(a) => sim.params.contact.angular_limit = *a,
-            SceneEdit::Relaxation(r) => sim.params.contact.relaxation = *r,
-            SceneEdit::Projection(p) => sim.params.contact.projection = *p,
+            SceneEdit::Knob(knob, value) => {
+                let mut all = Settings::of_run(&sim.params);
+                (knob.set)(&mut all, *value);
+                sim.params = all.sim_params();
+            }
         }
         // The bodies it changed wake: the run must see the change.
         let epsilon = sim.params.sleep.epsilon;
