@@ -520,3 +520,20 @@ settings = { projection = "linear" }
         );
     }
 }
+
+#[test]
+fn solve_and_resolve_share_one_after_table_with_units() {
+    let header = |args: &[&str]| -> String {
+        let r = run(args);
+        assert_eq!(r.code, Some(0), "{args:?}: {}", r.stderr);
+        r.stdout
+            .lines()
+            .find(|l| l.starts_with("| body |"))
+            .unwrap_or_else(|| panic!("{args:?}: no After table"))
+            .to_string()
+    };
+    let solve = header(&["solve", "lecture-2", "--format", "md"]);
+    let resolve = header(&["resolve", "box-four-corners", "--format", "md"]);
+    assert_eq!(solve, resolve);
+    assert!(solve.contains("velocity (m/s)"), "{solve}");
+}

@@ -151,11 +151,18 @@ pub fn contact_with(trace: &Trace, fmt: &Fmt, level: usize, figures: &Figures) -
         }
     }
     out.push_str(&heading(level + 1, "After"));
-    out.push_str(
-        "| body | position (m) | orientation | velocity (m/s) | angular velocity (rad/s) |\n",
+    out.push_str(&after_table(&trace.after, fmt));
+    out.push('\n');
+    out
+}
+
+/// The bodies after, one row a body, units in the header: the one "After"
+/// table of `solve` and `resolve` in Markdown.
+pub(crate) fn after_table(bodies: &[(String, crate::trace::AfterState)], fmt: &Fmt) -> String {
+    let mut out = String::from(
+        "| body | position (m) | orientation | velocity (m/s) | angular velocity (rad/s) |\n|---|---|---|---|---|\n",
     );
-    out.push_str("|---|---|---|---|---|\n");
-    for (name, a) in &trace.after {
+    for (name, a) in bodies {
         let v = |x: &[f64]| format!("({})", fmt.list(x));
         let _ = writeln!(
             out,
@@ -167,7 +174,6 @@ pub fn contact_with(trace: &Trace, fmt: &Fmt, level: usize, figures: &Figures) -
             v(&a.angular_velocity)
         );
     }
-    out.push('\n');
     out
 }
 

@@ -70,23 +70,7 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     let _ = writeln!(out, "\n## Contacts after (the resolver's bookkeeping)\n");
     table(&mut out, &trace.contacts_after, fmt);
     let _ = writeln!(out, "\n## After\n");
-    let _ = writeln!(
-        out,
-        "| body | position | orientation | velocity | angular velocity |"
-    );
-    let _ = writeln!(out, "|---|---|---|---|---|");
-    for (name, a) in &trace.after {
-        let v = |x: &[f64]| format!("({})", fmt.list(x));
-        let _ = writeln!(
-            out,
-            "| {} | {} | [{}] | {} | {} |",
-            cell(name),
-            v(&a.position),
-            fmt.list(&a.orientation),
-            v(&a.velocity),
-            v(&a.angular_velocity)
-        );
-    }
+    out.push_str(&crate::render::markdown::after_table(&trace.after, fmt));
     let _ = writeln!(out, "\n## Checks\n");
     for v in &trace.verdicts {
         let _ = writeln!(
