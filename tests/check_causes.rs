@@ -52,7 +52,7 @@ fn verdict(t: &Trace, label_start: &str) -> Option<bool> {
 
 /// The checks stage as the text renderer prints it (notes filled in).
 fn notes(t: &Trace) -> String {
-    let text = render::text::render(t, &Fmt::default());
+    let text = render::contact::text::render(t, &Fmt::default());
     let at = text.find("[checks]").expect("a checks stage");
     text[at..].to_string()
 }
@@ -94,7 +94,7 @@ friction = 1.0
         n.contains("SLIP FROM LAST FRAME'S ACCELERATION") && n.contains("(0.03 m/s)"),
         "{n}"
     );
-    let text = render::text::render(&t, &Fmt::default());
+    let text = render::contact::text::render(&t, &Fmt::default());
     assert!(!text.contains('✗'), "{text}");
 }
 
@@ -211,7 +211,7 @@ fn an_ill_conditioned_energy_jump_is_round_off_not_kane() {
     );
     assert!(n.contains("κ(M) = 3.0407e15"), "{n}");
     assert!(!n.contains("Kane"), "{n}");
-    let text = render::text::render(&t, &Fmt::default());
+    let text = render::contact::text::render(&t, &Fmt::default());
     assert!(!text.contains('✗'), "{text}");
 }
 

@@ -285,7 +285,7 @@ fn stage_text(t: &Trace) -> String {
         out.push_str(&format!("skipped: {why}\n"));
     }
     for f in &step.formulas {
-        for line in render::text::formula_lines(f, step, &fmt) {
+        for line in render::contact::text::formula_lines(f, step, &fmt) {
             out.push_str(&format!("   {line}\n"));
         }
     }
@@ -331,8 +331,8 @@ fn impulse_space_figure_in_the_svg_output() {
     let plain = svg::render(&trace(&Lesson::load("lecture-2").unwrap(), 0), Plane::Xy);
     assert!(plain.contains(r#"height="720""#));
     assert!(!plain.contains("Impulse space"));
-    let alone = render::impact::svg(&rod).unwrap();
-    assert!(render::impact::svg(&trace(&Lesson::load("lecture-2").unwrap(), 0)).is_none());
+    let alone = render::contact::impact::svg(&rod).unwrap();
+    assert!(render::contact::impact::svg(&trace(&Lesson::load("lecture-2").unwrap(), 0)).is_none());
     common::snapshot_settings().bind(|| {
         insta::assert_snapshot!("exact_impulse_svg@rod-reverses", alone);
     });

@@ -44,8 +44,8 @@ fn no_nan_or_inf_is_ever_printed_and_every_check_holds() {
     for lesson in extremes() {
         for k in 0..lesson.contacts.len() {
             let t = contact_lab::worked_solution(&lesson, k);
-            let text = render::text::render(&t, &Fmt::default());
-            let json = render::json::render(&t);
+            let text = render::contact::text::render(&t, &Fmt::default());
+            let json = render::contact::json::render(&t);
             for bad in ["NaN", "inf"] {
                 assert!(!text.contains(bad), "{} #{k}: text shows {bad}", lesson.id);
             }

@@ -100,7 +100,7 @@ fn every_figure_format_says_the_geometry_is_corrected() {
             svg.contains("Drawn with the corrected geometry"),
             "{id} svg"
         );
-        let tex = contact_lab::render::latex_figure::picture(&t.scene, None).unwrap();
+        let tex = contact_lab::render::contact::latex_figure::picture(&t.scene, None).unwrap();
         assert!(
             tex.contains("Drawn with the corrected geometry"),
             "{id} latex"
@@ -116,7 +116,7 @@ fn the_latex_figure_draws_a_sphere_as_a_ring() {
     // 24 rim pieces a sphere; a circle was once drawn as its bounding box's
     // diagonal, there and back.
     let t = trace("lecture-1");
-    let tex = contact_lab::render::latex_figure::picture(&t.scene, None).unwrap();
+    let tex = contact_lab::render::contact::latex_figure::picture(&t.scene, None).unwrap();
     let pieces: Vec<(String, String)> = tex
         .lines()
         .filter_map(|l| {

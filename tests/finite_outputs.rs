@@ -204,15 +204,15 @@ fn check(lesson: &Lesson, k: usize, t: &Trace) -> Result<(), String> {
         }
     }
     let fmt = Fmt::default();
-    let text = render::text::render(t, &fmt);
-    let md = render::markdown::document(std::slice::from_ref(t), &fmt, &[]);
-    let latex = render::latex::document(std::slice::from_ref(t), &fmt, false);
+    let text = render::contact::text::render(t, &fmt);
+    let md = render::contact::markdown::document(std::slice::from_ref(t), &fmt, &[]);
+    let latex = render::contact::latex::document(std::slice::from_ref(t), &fmt, false);
     for (what, out) in [("text", &text), ("markdown", &md), ("latex", &latex)] {
         if out.contains("NaN") || (!no_limit && shows_inf(out)) {
             return Err(format!("{what} shows NaN or inf:\n{out}"));
         }
     }
-    let json = render::json::render(t);
+    let json = render::contact::json::render(t);
     if json.matches("null").count() != json.matches("\"skipped\": null").count() {
         return Err(format!("JSON has a non-finite number (null):\n{json}"));
     }

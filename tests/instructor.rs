@@ -41,7 +41,10 @@ fn latex_documents() -> Vec<(String, String)> {
             let traces: Vec<_> = (0..l.contacts.len())
                 .map(|k| contact_lab::worked_solution(l, k))
                 .collect();
-            (l.id.clone(), render::latex::document(&traces, &fmt, false))
+            (
+                l.id.clone(),
+                render::contact::latex::document(&traces, &fmt, false),
+            )
         })
         .collect();
     for kind in [None, Some(Kind::Frictionless), Some(Kind::Penetration)] {

@@ -16,8 +16,14 @@ fn markdown_latex_and_svg_of_the_lecture_lessons() {
                 .map(|k| contact_lab::worked_solution(&lesson, k))
                 .collect();
             let fmt = Fmt::default();
-            insta::assert_snapshot!("solve_md", render::markdown::document(&traces, &fmt, &[]));
-            insta::assert_snapshot!("solve_latex", render::latex::document(&traces, &fmt, false));
+            insta::assert_snapshot!(
+                "solve_md",
+                render::contact::markdown::document(&traces, &fmt, &[])
+            );
+            insta::assert_snapshot!(
+                "solve_latex",
+                render::contact::latex::document(&traces, &fmt, false)
+            );
             let svg: Vec<String> = traces
                 .iter()
                 .map(|t| render::svg::render(t, Plane::Xy))

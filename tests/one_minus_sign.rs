@@ -32,11 +32,11 @@ fn no_rendering_of_any_lesson_has_a_unicode_minus() {
         let traces: Vec<_> = (0..lesson.contacts.len())
             .map(|k| contact_lab::worked_solution(&lesson, k))
             .collect();
-        ascii_minus(id, &render::markdown::document(&traces, &fmt, &[]));
-        ascii_minus(id, &render::latex::document(&traces, &fmt, false));
+        ascii_minus(id, &render::contact::markdown::document(&traces, &fmt, &[]));
+        ascii_minus(id, &render::contact::latex::document(&traces, &fmt, false));
         for t in &traces {
-            ascii_minus(id, &render::text::render(t, &fmt));
-            ascii_minus(id, &render::json::render(t));
+            ascii_minus(id, &render::contact::text::render(t, &fmt));
+            ascii_minus(id, &render::contact::json::render(t));
             for plane in [Plane::Xy, Plane::Yz, Plane::Zx] {
                 ascii_minus(id, &render::svg::render(t, plane));
                 for stage in StageId::ALL {

@@ -15,8 +15,8 @@ fn solve_text_and_json_of_every_lesson() {
             let mut out_json = String::new();
             for k in 0..lesson.contacts.len() {
                 let trace = contact_lab::worked_solution(&lesson, k);
-                out_text.push_str(&render::text::render(&trace, &Fmt::default()));
-                out_json.push_str(&render::json::render(&trace));
+                out_text.push_str(&render::contact::text::render(&trace, &Fmt::default()));
+                out_json.push_str(&render::contact::json::render(&trace));
             }
             insta::assert_snapshot!("solve_text", out_text);
             insta::assert_snapshot!("solve_json", out_json);

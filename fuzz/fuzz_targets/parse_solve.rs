@@ -15,8 +15,8 @@ fuzz_target!(|data: &[u8]| {
         Ok(lesson) => {
             for k in 0..lesson.contacts.len() {
                 let trace = contact_lab::worked_solution(&lesson, k);
-                render::text::render(&trace, &Fmt::default());
-                render::json::render(&trace);
+                render::contact::text::render(&trace, &Fmt::default());
+                render::contact::json::render(&trace);
             }
         }
         Err(e) => {

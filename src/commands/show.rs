@@ -150,12 +150,14 @@ pub fn show(
     let trace = crate::worked_solution(&at, k);
     let preamble = preamble(lesson, show, &moment, fmt);
     let text = match format {
-        ResolveFormat::Json => render::json::render(&trace),
-        ResolveFormat::Text => format!("{preamble}\n{}", render::text::render(&trace, fmt)),
+        ResolveFormat::Json => render::contact::json::render(&trace),
+        ResolveFormat::Text => {
+            format!("{preamble}\n{}", render::contact::text::render(&trace, fmt))
+        }
         ResolveFormat::Md => format!(
             "> {}\n\n{}",
-            render::markdown::escape(preamble.trim_end()).replace('\n', "\n> "),
-            render::markdown::document(&[trace], fmt, &[])
+            render::contact::markdown::escape(preamble.trim_end()).replace('\n', "\n> "),
+            render::contact::markdown::document(&[trace], fmt, &[])
         ),
     };
     out.write_all(text.as_bytes()).map_err(io)

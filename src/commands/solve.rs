@@ -8,8 +8,8 @@ use crate::error::AppError;
 use crate::format::Fmt;
 use crate::physics::{FrictionModel, Solution};
 use crate::render;
-use crate::render::compare::Compared;
-use crate::render::markdown::Figures;
+use crate::render::contact::compare::Compared;
+use crate::render::contact::markdown::Figures;
 use crate::render::svg::{self, Plane};
 
 fn usage(args: &SolveArgs) -> Result<(), AppError> {
@@ -56,8 +56,8 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
             })
             .collect::<Result<_, AppError>>()?;
         let text = match args.format {
-            Format::Json => render::compare::json(&compared),
-            _ => render::compare::text(&compared, &fmt),
+            Format::Json => render::contact::compare::json(&compared),
+            _ => render::contact::compare::text(&compared, &fmt),
         };
         return out.write_all(text.as_bytes()).map_err(io);
     }
@@ -78,22 +78,22 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     let text = match args.format {
         Format::Text => traces
             .iter()
-            .map(|t| render::text::render(t, &fmt))
+            .map(|t| render::contact::text::render(t, &fmt))
             .collect::<Vec<_>>()
             .join("\n"),
         Format::Json if args.all_contacts => {
-            let all: Vec<_> = traces.iter().map(render::json::to_json).collect();
+            let all: Vec<_> = traces.iter().map(render::contact::json::to_json).collect();
             serde_json::to_string_pretty(&all).expect("JSON of traces") + "\n"
         }
-        Format::Json => render::json::render(&traces[0]),
+        Format::Json => render::contact::json::render(&traces[0]),
         Format::Md => {
             let figures = match &args.figures {
                 Some(dir) => figures(dir, &lesson.id, &contacts, &traces)?,
                 None => vec![],
             };
-            render::markdown::document(&traces, &fmt, &figures)
+            render::contact::markdown::document(&traces, &fmt, &figures)
         }
-        Format::Latex => render::latex::document(&traces, &fmt, args.fragment),
+        Format::Latex => render::contact::latex::document(&traces, &fmt, args.fragment),
     };
     let text = if args.all_contacts && lesson.contacts.len() > 1 {
         alone_note(&text, &lesson.id, args.format)
@@ -124,7 +124,7 @@ fn alone_note(text: &str, id: &str, format: Format) -> String {
     match format {
         Format::Json => text.to_string(),
         Format::Text => format!("{note}\n\n{text}"),
-        Format::Md => format!("> {}\n\n{text}", render::markdown::escape(&note)),
+        Format::Md => format!("> {}\n\n{text}", render::contact::markdown::escape(&note)),
         Format::Latex => {
             let para = format!(
                 "\\noindent\\emph{{{}}}\n\n",
@@ -168,7 +168,7 @@ fn figures(
                 format!("{stem}-contact-{k}.svg"),
                 svg::render(&picture, Plane::Xy),
             )?;
-            let impulse = render::impact::svg(t)
+            let impulse = render::contact::impact::svg(t)
                 .map(|text| write(format!("{stem}-contact-{k}-impulse.svg"), text))
                 .transpose()?;
             Ok(Figures {

@@ -12,8 +12,8 @@ use std::fmt::Write;
 use super::{Exercise, Kind};
 use crate::format::Fmt;
 use crate::lesson::{BodyDef, Lesson, Shape};
+use crate::render::contact::{latex, markdown};
 use crate::render::tex::prose;
-use crate::render::{latex, markdown};
 use crate::trace::{Trace, Value};
 
 const INTRO: &str = "Resolve each contact as in the lecture (Millington's impulse-based method). The normal d̂ points from body 2 toward body 1; body 1 receives the impulse g and body 2 receives -g. Inertia tensors are in body coordinates; orientations are quaternions [w, x, y, z]. Work to four decimals.";
@@ -421,7 +421,7 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
             prose(&contact_line(l, &inputs))
         );
         // The set-up as the question sees it: no impulse, nothing after.
-        if let Some(fig) = crate::render::latex_figure::picture(
+        if let Some(fig) = crate::render::contact::latex_figure::picture(
             &e.trace.scene,
             Some(crate::physics::StageId::ContactFrame),
         ) {

@@ -166,7 +166,7 @@ pub fn json(items: &[Item]) -> String {
                 "component": i.component,
                 "where": i.location,
                 "printed": printed_json(&i.printed),
-                "computed": i.computed.as_ref().map_or(J::Null, super::json::value),
+                "computed": i.computed.as_ref().map_or(J::Null, super::contact::json::value),
                 "agrees": i.agrees,
                 "erratum": i.erratum,
                 "status": i.status.name().replace(' ', "_"),

@@ -53,10 +53,10 @@ pub fn markdown() -> String {
             out,
             "| ${}$ | {} | {} | {} | {} |",
             to_latex(s.symbol).replace('|', "\\vert "),
-            super::markdown::cell(s.meaning),
+            super::contact::markdown::cell(s.meaning),
             unit_text(s),
             s.stage_numbers(),
-            super::markdown::cell(s.elsewhere)
+            super::contact::markdown::cell(s.elsewhere)
         );
     }
     out
@@ -90,7 +90,7 @@ pub fn latex() -> String {
         }
         body.push_str("\\hline\n\\end{tabular}\n\n\\bigskip\n");
     }
-    super::latex::standalone(&body)
+    super::contact::latex::standalone(&body)
 }
 
 /// JSON: `{"symbols": [{"symbol", "meaning", "unit", "stages": [stage ids], "elsewhere"}]}`.

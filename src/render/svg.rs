@@ -4,7 +4,7 @@
 //! 1280 × 720, for a slide. What is drawn comes from the
 //! [figure model](crate::render::figure); here it is fitted to the page.
 //! When the `exact_impact` stage ran, the impulse-space figure
-//! ([`crate::render::impact`]) goes below it, on a taller page.
+//! ([`crate::render::contact::impact`]) goes below it, on a taller page.
 
 mod labels;
 mod legend;
@@ -15,8 +15,8 @@ use std::fmt::Write;
 use page::{c, colour, xml, LabelAt, Page, PageArrow, View, AREA, FILL, FONT, HEADS, HEIGHT};
 use page::{INK, MOVED, WIDTH};
 
+use crate::render::contact::impact;
 use crate::render::figure::{flat, ArrowKind, Figure, PointKind, Silhouette, P};
-use crate::render::impact;
 pub use crate::trace::Plane;
 use crate::trace::Trace;
 

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::format::Fmt;
-use crate::render::markdown;
+use crate::render::contact::markdown;
 use crate::trace::Trace;
 
 /// A file name for the trace: `lecture-2-contact-0.md`.
@@ -17,7 +17,7 @@ pub fn default_name(trace: &Trace) -> String {
     )
 }
 
-/// The Markdown document of `render::markdown` for one contact, with the
+/// The Markdown document of `render::contact::markdown` for one contact, with the
 /// edits made in the TUI listed after the lesson's preamble.
 pub fn markdown(trace: &Trace, edits: &[String], fmt: &Fmt) -> String {
     let mut out = markdown::preamble(trace, 1);

@@ -4,7 +4,7 @@
 use serde_json::{json, Map, Value as J};
 
 use super::Seconds;
-use crate::render::json::value;
+use crate::render::contact::json::value;
 use crate::trace::resolver::{PhaseTrace, ResolverTrace};
 use crate::trace::Value;
 

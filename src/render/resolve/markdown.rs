@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use super::{action, how, phase_heading, phase_notes, updates};
 use crate::format::Fmt;
-use crate::render::markdown::{cell, escape};
+use crate::render::contact::markdown::{cell, escape};
 use crate::trace::resolver::{ContactRow, PhaseTrace, ResolverTrace};
 
 fn table(out: &mut String, rows: &[ContactRow], fmt: &Fmt) {
@@ -70,7 +70,10 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     let _ = writeln!(out, "\n## Contacts after (the resolver's bookkeeping)\n");
     table(&mut out, &trace.contacts_after, fmt);
     let _ = writeln!(out, "\n## After\n");
-    out.push_str(&crate::render::markdown::after_table(&trace.after, fmt));
+    out.push_str(&crate::render::contact::markdown::after_table(
+        &trace.after,
+        fmt,
+    ));
     let _ = writeln!(out, "\n## Checks\n");
     for v in &trace.verdicts {
         let _ = writeln!(

@@ -94,7 +94,7 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     let _ = writeln!(out, "Contacts after (the resolver's bookkeeping)");
     table(&mut out, &trace.contacts_after, fmt);
     let _ = writeln!(out);
-    crate::render::text::after(&mut out, &trace.after, fmt);
+    crate::render::contact::text::after(&mut out, &trace.after, fmt);
     let _ = writeln!(out);
     let _ = writeln!(out, "Checks");
     for v in &trace.verdicts {

@@ -16,13 +16,13 @@ pub const PACKAGES: &str = "\\usepackage{amsmath}\n\\usepackage{amssymb}";
 /// The formula as rows of an aligned block: `lhs &= rhs`, `&= numbers`,
 /// `&= result` (a row that repeats the previous one is left out).
 pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
-    let latex = super::tex::formula(f);
+    let latex = crate::render::tex::formula(f);
     let (lhs, rhs) = latex.split_once(" = ").unwrap_or((&latex, ""));
     let mut right: Vec<String> = Vec::new();
     if !rhs.trim().is_empty() {
         right.push(rhs.trim().to_string());
     }
-    if let Some(s) = super::tex::substituted(f) {
+    if let Some(s) = crate::render::tex::substituted(f) {
         right.push(fmt.fill(&s, step, true));
     }
     if let Some((name, r)) = f.result.as_ref().and_then(|n| Some((n, step.lookup(n)?))) {

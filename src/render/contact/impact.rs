@@ -2,7 +2,7 @@
 //! (v_n and each tangential component that moves) against the normal
 //! impulse P_n, the phase changes marked, drawn with `render::chart`.
 
-use super::chart::{escape, Chart, Mark, Series, PALETTE};
+use crate::render::chart::{escape, Chart, Mark, Series, PALETTE};
 use crate::trace::{ImpactCurves, Trace};
 
 /// Width and height of the figure, alone or below the contact's picture.
