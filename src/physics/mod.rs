@@ -13,6 +13,7 @@
 pub mod body;
 pub mod collide;
 pub mod contact;
+pub mod detect;
 pub mod exact;
 pub mod params;
 pub mod resolver;
