@@ -14,6 +14,7 @@
 
 use nalgebra::Vector3;
 
+pub use super::epa_observer::{EpaIteration, EpaObserver, EpaRecord, EpaRecorder};
 use super::epa_start::tetrahedron;
 use super::features::{feature_pair, FeaturePair};
 use super::gjk::Pair;
@@ -34,7 +35,8 @@ impl<T: Real> Default for EpaOptions<T> {
     fn default() -> Self {
         EpaOptions {
             max_iterations: 128,
-            tolerance: c(1e-10),
+            // 1e-10 in f64; 64 ulps of the float type where that is coarser (f32).
+            tolerance: c::<T>(1e-10).max(T::default_epsilon() * c(64.0)),
         }
     }
 }
@@ -61,73 +63,6 @@ impl EpaEnd {
         EpaEnd::Stalled,
         EpaEnd::Degenerate,
     ];
-}
-
-/// One split.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct EpaIteration<T: Real> {
-    pub index: usize,
-    /// The face closest to the origin (its three w), its unit outward
-    /// normal n_k and distance δ_k = n_k·w.
-    pub face: [Vector3<T>; 3],
-    pub normal: Vector3<T>,
-    pub distance: T,
-    /// w_k = s_A(n_k) − s_B(−n_k) with its two shape points (world).
-    pub support: Vertex<T>,
-    /// n_k·w_k − δ_k = |v_k − w_k| along n_k, where v_k = δ_k n_k.
-    pub gap: T,
-    /// How many faces the split removed (those w_k sees) and added (one per horizon edge).
-    pub removed: usize,
-    pub added: usize,
-}
-
-/// Observer of a run; every method does nothing by default.
-pub trait EpaObserver<T: Real> {
-    /// True to be given the faces removed and added (they are built only then).
-    fn wants_faces(&self) -> bool {
-        false
-    }
-    fn iteration(
-        &mut self,
-        _it: &EpaIteration<T>,
-        _removed: &[[Vector3<T>; 3]],
-        _added: &[[Vector3<T>; 3]],
-    ) {
-    }
-}
-
-impl<T: Real> EpaObserver<T> for () {}
-
-/// One recorded split with its faces.
-#[derive(Debug, Clone, PartialEq)]
-pub struct EpaRecord<T: Real> {
-    pub iteration: EpaIteration<T>,
-    pub removed: Vec<[Vector3<T>; 3]>,
-    pub added: Vec<[Vector3<T>; 3]>,
-}
-
-/// Keeps every split with its faces.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct EpaRecorder<T: Real> {
-    pub iterations: Vec<EpaRecord<T>>,
-}
-
-impl<T: Real> EpaObserver<T> for EpaRecorder<T> {
-    fn wants_faces(&self) -> bool {
-        true
-    }
-    fn iteration(
-        &mut self,
-        it: &EpaIteration<T>,
-        removed: &[[Vector3<T>; 3]],
-        added: &[[Vector3<T>; 3]],
-    ) {
-        self.iterations.push(EpaRecord {
-            iteration: *it,
-            removed: removed.to_vec(),
-            added: added.to_vec(),
-        });
-    }
 }
 
 /// The penetration EPA found, world coordinates.

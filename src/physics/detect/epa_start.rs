@@ -30,7 +30,7 @@ where
         .iter()
         .map(|d| pair.vertex(d).w.norm())
         .fold(size, T::max);
-    let eps = c::<T>(1e-10) * size;
+    let eps = c::<T>(1e-10).max(T::default_epsilon() * c(64.0)) * size;
     if pts.len() == 4 && volume(&pts).abs() <= eps * eps * eps {
         pts = best_face(&pts);
     }

@@ -39,8 +39,9 @@ impl<T: Real> Default for GjkOptions<T> {
     fn default() -> Self {
         GjkOptions {
             max_iterations: 128,
-            relative_tolerance: c(1e-12),
-            touching_tolerance: c(1e-12),
+            // 1e-12 in f64; a few ulps of the float type where that is coarser (f32).
+            relative_tolerance: c::<T>(1e-12).max(T::default_epsilon() * c(8.0)),
+            touching_tolerance: c::<T>(1e-12).max(T::default_epsilon() * c(8.0)),
             use_margins: true,
         }
     }

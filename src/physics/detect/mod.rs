@@ -9,7 +9,7 @@
 //!   variant, a [`Capsule`], a [`ConvexHull`]), the plane's deepest point;
 //! - [`hull`] (+ `hull_faces`): the hull of a point cloud, its faces, its mass;
 //! - [`simplex`]: the signed-volumes sub-algorithm; [`gjk`]; [`epa`]
-//!   (+ `epa_start`, growing GJK's simplex to a tetrahedron);
+//!   (+ `epa_start`, growing GJK's simplex to a tetrahedron, `epa_observer`);
 //! - [`query`]: GJK then EPA (or the margins) for one pair;
 //! - [`features`]: feature kinds and every identifier name;
 //! - [`sat`]: exact depth and normal for polyhedra (the tests' reference);
@@ -21,6 +21,7 @@
 //! [`Shape`]: crate::physics::Shape
 
 pub mod epa;
+mod epa_observer;
 mod epa_start;
 pub mod features;
 pub mod gjk;

@@ -121,3 +121,37 @@ fn spheres_keep_the_single_point() {
     assert_eq!(m[0].reference, None);
     assert!((m[0].penetration - 0.05).abs() < 1e-12);
 }
+
+#[test]
+fn hulls_and_boxes_rest_on_each_other_with_four_points() {
+    let slab = ConvexHull::new(&super::box_points([2.0, 0.5, 2.0])).unwrap();
+    let block = ConvexHull::new(&super::box_points([0.5, 0.5, 0.5])).unwrap();
+    let (floor, pf) = (Convex::hull(slab), Pose::at(Vector3::new(0.0, -0.5, 0.0)));
+    let turn = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 0.4);
+    let on = Pose::from_unit(Vector3::new(0.2, 0.49, -0.1), &turn);
+    for top in [Convex::hull(block), Convex::Cuboid { half: [0.5; 3] }] {
+        let m = contacts(&top, &on, &floor, &pf);
+        assert_eq!(m.len(), 4, "{m:?}");
+        for p in &m {
+            assert!((p.penetration - 0.01).abs() < 1e-12, "{p:?}");
+            assert!((p.normal - Vector3::y()).norm() < 1e-12);
+        }
+    }
+    // A box on a standing cylinder's cap: the cap is the reference face,
+    // the box's bottom face is clipped to it.
+    let can = Convex::Cylinder {
+        radius: 1.0,
+        half_height: 0.5,
+    };
+    let top = Convex::Cuboid { half: [0.4; 3] };
+    let m = contacts(
+        &top,
+        &Pose::from_unit(Vector3::new(0.0, 0.89, 0.0), &turn),
+        &can,
+        &Pose::at(Vector3::zeros()),
+    );
+    assert_eq!(m.len(), 4, "{m:?}");
+    assert!(m
+        .iter()
+        .all(|p| (p.penetration - 0.01).abs() < 1e-9 && p.reference == Some(Side::B)));
+}

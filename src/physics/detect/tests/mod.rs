@@ -11,6 +11,7 @@ mod parry;
 mod records;
 mod reference;
 mod robust;
+mod support;
 
 use nalgebra::{UnitQuaternion, Vector3};
 

@@ -56,6 +56,7 @@ fn ten_thousand_random_pairs_agree_with_parry() {
     let mut capped = 0;
     let mut worst_round = 0.0f64;
     let mut worst_margins = 0.0f64;
+    let (mut gjk_iterations, mut epa_iterations) = (Vec::new(), Vec::new());
     for k in 0..10_000u64 {
         let (a, b) = (rng.shape(k), rng.shape(k / 6));
         let (xa, qa) = (rng.vector(1.6), rng.rotation());
@@ -69,6 +70,10 @@ fn ten_thousand_random_pairs_agree_with_parry() {
             .distance;
         let contact = query::contact(&ppa, &*sa, &ppb, &*sb, 0.0).expect("parry supports the pair");
         let depth = ours.penetration.map_or(0.0, |p| p.depth);
+        gjk_iterations.push(ours.gjk.iterations);
+        if let Some(e) = ours.epa {
+            epa_iterations.push(e.iterations);
+        }
         if ours.gjk.distance < 1e-6 && depth < 1e-6 {
             near += 1;
             continue;

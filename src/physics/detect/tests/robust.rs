@@ -244,17 +244,7 @@ fn gjk_and_epa_run_in_f32_too() {
     let a = Convex::Cuboid { half: [0.5; 3] };
     let pa = Pose::<f32>::at(Vector3::new(0.2, 0.9, 0.1));
     let pb = Pose::<f32>::at(Vector3::zeros());
-    let options = QueryOptions {
-        gjk: GjkOptions {
-            relative_tolerance: 1e-6,
-            touching_tolerance: 1e-6,
-            ..GjkOptions::default()
-        },
-        epa: crate::physics::detect::EpaOptions {
-            tolerance: 1e-5,
-            ..Default::default()
-        },
-    };
+    let options = QueryOptions::default();
     let q = query(&a, &pa, &a, &pb, &options, &mut (), &mut ());
     let p = q.penetration.unwrap();
     assert!((p.depth - 0.1).abs() < 1e-5, "{}", p.depth);
