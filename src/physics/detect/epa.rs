@@ -130,14 +130,35 @@ where
     B: Support<T> + ?Sized,
     O: EpaObserver<T> + ?Sized,
 {
-    let pair = Pair::new(a, pose_a, b, pose_b, false);
+    run(
+        &Pair::new(a, pose_a, b, pose_b, false),
+        simplex,
+        options,
+        observer,
+    )
+}
+
+/// EPA on `pair` (whole shapes, or cores when the pair says so) from a
+/// world-coordinate simplex.
+pub(super) fn run<T, A, B, O>(
+    pair: &Pair<'_, T, A, B>,
+    simplex: &Simplex<T>,
+    options: &EpaOptions<T>,
+    observer: &mut O,
+) -> EpaResult<T>
+where
+    T: Real,
+    A: Support<T> + ?Sized,
+    B: Support<T> + ?Sized,
+    O: EpaObserver<T> + ?Sized,
+{
     let mut local = *simplex;
     for p in local.vertices.iter_mut().take(local.len) {
         p.a -= pair.origin;
         p.b -= pair.origin;
     }
     let Some(start) = tetrahedron(&pair, &local) else {
-        return degenerate(&pair, &local);
+        return degenerate(pair, &local);
     };
     let mut verts: Vec<Vertex<T>> = start.to_vec();
     let scale = verts.iter().map(|v| v.w.norm()).fold(T::zero(), T::max);
@@ -232,7 +253,7 @@ where
         best = next;
     }
     let f = faces[best];
-    result(&pair, &verts, &f, end, gap, eps, iterations)
+    result(pair, &verts, &f, end, gap, eps, iterations)
 }
 
 /// The faces that see `w` (beyond their plane by more than `eps`) reached

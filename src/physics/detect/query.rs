@@ -1,14 +1,16 @@
 //! One narrow-phase query: GJK on the cores; separated shapes end there;
 //! shapes whose cores are apart but margins overlap (spheres, capsules) get
 //! their penetration from the cores, δ = m_A + m_B − |v| along v̂ (exact);
-//! shapes whose cores overlap run GJK again on the whole shapes and EPA
-//! from its terminal simplex.
+//! shapes whose cores overlap run EPA on the cores and add the margins
+//! (exact too); where both cores are flat (points, segments: spheres and
+//! capsules crossing at their cores) the depth is m_A + m_B along a normal
+//! of the flat set. Shapes without margins run EPA from GJK's simplex.
 
 use nalgebra::Vector3;
 
-use super::epa::{epa, EpaObserver, EpaOptions, EpaResult};
+use super::epa::{self, epa, EpaEnd, EpaObserver, EpaOptions, EpaResult};
 use super::features::{feature_of, FeaturePair};
-use super::gjk::{gjk, GjkObserver, GjkOptions, GjkResult, GjkVerdict};
+use super::gjk::{gjk, GjkObserver, GjkOptions, GjkResult, GjkVerdict, Pair};
 use super::support::Support;
 use crate::physics::collide::Pose;
 use crate::physics::{c, Real};
@@ -23,7 +25,7 @@ pub struct QueryOptions<T: Real> {
 /// Where the penetration came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum PenetrationSource {
-    /// EPA on the whole shapes.
+    /// EPA (on the cores, plus the margins, where the shapes have them).
     Epa,
     /// The cores' distance and the margins (sphere, capsule).
     Margins,
@@ -118,37 +120,128 @@ where
             penetration: Some(penetration),
         };
     }
-    let whole = if options.gjk.use_margins
-        && (first.margins[0] > T::zero() || first.margins[1] > T::zero())
-    {
-        let options = GjkOptions {
-            use_margins: false,
-            ..options.gjk
+    // Cores overlap: EPA on the cores, then the margins on top, exact since
+    // A − B = (core_A − core_B) ⊕ ball(m_A + m_B): δ = δ_core + m_A + m_B
+    // along the same normal. Two flat cores (points, segments) give EPA no
+    // solid: see below.
+    let [ma, mb] = first.margins;
+    if ma + mb > T::zero() {
+        let pair = Pair::new(a, pose_a, b, pose_b, true);
+        let found = epa::run(&pair, &first.simplex, &options.epa, epa_observer);
+        if found.end != EpaEnd::Degenerate {
+            let n = found.normal;
+            let point_a = found.point_a - n * ma;
+            let point_b = found.point_b + n * mb;
+            let depth = found.depth + ma + mb;
+            let found = EpaResult {
+                depth,
+                point_a,
+                point_b,
+                point: (point_a + point_b) * c::<T>(0.5),
+                ..found
+            };
+            return Query {
+                gjk: first,
+                epa: Some(found),
+                penetration: Some(penetration(&found)),
+            };
+        }
+        // Two flat cores crossing: the origin lies in the flat set F of
+        // core_A − core_B, and the depth min_d (h_F(d) + m_A + m_B) is
+        // m_A + m_B exactly, along a normal of F's span.
+        let n = flat_normal(&pair, &(pose_a.position - pose_b.position));
+        let (ca, cb) = (first.closest_a, first.closest_b);
+        let point_a = ca - n * ma;
+        let point_b = cb + n * mb;
+        let flat = EpaResult {
+            depth: ma + mb,
+            normal: n,
+            point_a,
+            point_b,
+            point: (point_a + point_b) * c::<T>(0.5),
+            ..found
         };
-        gjk(a, pose_a, b, pose_b, &options, gjk_observer)
-    } else {
-        first
-    };
+        return Query {
+            gjk: first,
+            epa: Some(flat),
+            penetration: Some(penetration(&flat)),
+        };
+    }
     let found = epa(
         a,
         pose_a,
         b,
         pose_b,
-        &whole.simplex,
+        &first.simplex,
         &options.epa,
         epa_observer,
     );
     Query {
-        gjk: whole,
+        gjk: first,
         epa: Some(found),
-        penetration: Some(Penetration {
-            depth: found.depth,
-            normal: found.normal,
-            point_a: found.point_a,
-            point_b: found.point_b,
-            point: found.point,
-            feature: found.feature,
-            source: PenetrationSource::Epa,
-        }),
+        penetration: Some(penetration(&found)),
+    }
+}
+
+/// A unit normal of the span of core_A − core_B (a point, a segment or a
+/// parallelogram), from its supports along ±x, ±y, ±z, turned toward A.
+fn flat_normal<T, A, B>(pair: &Pair<'_, T, A, B>, towards_a: &Vector3<T>) -> Vector3<T>
+where
+    T: Real,
+    A: Support<T> + ?Sized,
+    B: Support<T> + ?Sized,
+{
+    let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
+    let pts: Vec<Vector3<T>> = axes
+        .iter()
+        .flat_map(|d| [pair.vertex(d).w, pair.vertex(&-d).w])
+        .collect();
+    let size = pts.iter().map(|p| p.norm()).fold(T::zero(), T::max);
+    let eps = c::<T>(1e-9) * size;
+    let mut e1 = Vector3::zeros();
+    for p in &pts {
+        for q in &pts {
+            if (q - p).norm() > e1.norm() {
+                e1 = q - p;
+            }
+        }
+    }
+    let n = if e1.norm() <= eps {
+        *towards_a
+    } else {
+        let u = e1.normalize();
+        let off = pts
+            .iter()
+            .map(|p| {
+                let r = p - pts[0];
+                r - u * u.dot(&r)
+            })
+            .fold(
+                Vector3::zeros(),
+                |m, r| if r.norm() > m.norm() { r } else { m },
+            );
+        if off.norm() > eps {
+            u.cross(&off)
+        } else {
+            u.cross(&axes[u.iamin()])
+        }
+    };
+    let n = n.try_normalize(T::zero()).unwrap_or_else(Vector3::y);
+    if n.dot(towards_a) < T::zero() {
+        -n
+    } else {
+        n
+    }
+}
+
+fn penetration<T: Real>(found: &EpaResult<T>) -> Penetration<T> {
+    Penetration {
+        depth: found.depth,
+        normal: found.normal,
+        point_a: found.point_a,
+        point_b: found.point_b,
+        point: found.point,
+        feature: found.feature,
+        source: PenetrationSource::Epa,
     }
 }

@@ -140,6 +140,16 @@ fn ten_thousand_random_pairs_agree_with_parry() {
          worst relative distance error {worst_distance:.1e} (exact shapes), {worst_round:.1e} (curved, absolute), worst EPA depth error {worst_depth:.1e}, parry off the closed-form margin depth by {worst_margins:.1e}, \
          EPA capped {capped}"
     );
+    let stats = |v: &[usize]| {
+        let mean = v.iter().sum::<usize>() as f64 / v.len().max(1) as f64;
+        (mean, v.iter().max().copied().unwrap_or(0))
+    };
+    eprintln!(
+        "iterations (mean, max): GJK {:?}; EPA {:?} over {} runs",
+        stats(&gjk_iterations),
+        stats(&epa_iterations),
+        epa_iterations.len()
+    );
     assert!(
         separated > 2500 && overlapping > 2500,
         "{separated} {overlapping}"

@@ -94,7 +94,7 @@ fn each_epa_split_removes_the_faces_it_sees_and_closes_the_horizon() {
 }
 
 #[test]
-fn overlapping_sphere_cores_run_gjk_again_on_the_whole_shapes() {
+fn a_sphere_centre_inside_a_box_runs_epa_on_the_cores_and_adds_the_radius() {
     let ball = Convex::Sphere { radius: 1.0 };
     let cube = Convex::Cuboid { half: [1.0; 3] };
     let (pa, pb) = (
@@ -111,9 +111,69 @@ fn overlapping_sphere_cores_run_gjk_again_on_the_whole_shapes() {
         &mut g,
         &mut (),
     );
-    assert_eq!(g.runs, 2);
+    assert_eq!(g.runs, 1);
     let p = q.penetration.unwrap();
-    // Out through the top face: 1 + 1 − 0.5.
-    assert!((p.depth - 1.5).abs() < 1e-6, "{}", p.depth);
-    assert!((p.normal - Vector3::y()).norm() < 1e-6);
+    // Out through the top face: (1 − 0.5) + 1, exactly.
+    assert!((p.depth - 1.5).abs() < 1e-12, "{}", p.depth);
+    assert!((p.normal - Vector3::y()).norm() < 1e-12);
+    assert!((p.point_a - Vector3::new(0.2, -0.5, 0.0)).norm() < 1e-12);
+    assert!((p.point_b - Vector3::new(0.2, 1.0, 0.0)).norm() < 1e-12);
+}
+
+#[test]
+fn crossing_flat_cores_penetrate_by_the_sum_of_the_margins() {
+    let (a, b) = (
+        Convex::Sphere { radius: 1.0 },
+        Convex::Sphere { radius: 0.5 },
+    );
+    let at = Pose::<f64>::at(Vector3::new(3.0, -1.0, 2.0));
+    let mut g = GjkRecorder::default();
+    let q = query(&a, &at, &b, &at, &QueryOptions::default(), &mut g, &mut ());
+    assert_eq!(g.runs, 1);
+    let p = q.penetration.unwrap();
+    // Concentric: any direction will do; the depth is the sum of the radii.
+    assert_eq!(p.depth, 1.5);
+    assert!((p.normal.norm() - 1.0).abs() < 1e-12);
+    // Two capsules crossing at right angles: out along the common normal.
+    let cap = Convex::Capsule(crate::physics::detect::Capsule {
+        radius: 0.3,
+        height: 2.0,
+    });
+    let lying = Pose::from_unit(
+        Vector3::new(0.0, 0.1, 0.0),
+        &UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2),
+    );
+    let standing = Pose::from_unit(
+        Vector3::zeros(),
+        &UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::FRAC_PI_2),
+    );
+    let q = query(
+        &cap,
+        &lying,
+        &cap,
+        &standing,
+        &QueryOptions::default(),
+        &mut (),
+        &mut (),
+    );
+    let p = q.penetration.unwrap();
+    // Cores 0.1 apart along y: the margins path, 0.6 − 0.1.
+    assert!((p.depth - 0.5).abs() < 1e-12 && (p.normal - Vector3::y()).norm() < 1e-12);
+    let crossing = Pose {
+        position: Vector3::zeros(),
+        ..lying
+    };
+    let p = query(
+        &cap,
+        &crossing,
+        &cap,
+        &standing,
+        &QueryOptions::default(),
+        &mut (),
+        &mut (),
+    )
+    .penetration
+    .unwrap();
+    assert!((p.depth - 0.6).abs() < 1e-12, "{}", p.depth);
+    assert!(p.normal.y.abs() > 1.0 - 1e-12, "{}", p.normal);
 }
