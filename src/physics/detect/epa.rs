@@ -157,7 +157,7 @@ where
         p.a -= pair.origin;
         p.b -= pair.origin;
     }
-    let Some(start) = tetrahedron(&pair, &local) else {
+    let Some(start) = tetrahedron(pair, &local) else {
         return degenerate(pair, &local);
     };
     let mut verts: Vec<Vertex<T>> = start.to_vec();
