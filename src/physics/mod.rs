@@ -14,6 +14,7 @@
 pub mod body;
 pub mod collide;
 pub mod contact;
+pub mod detect;
 pub mod exact;
 pub mod knobs;
 pub mod params;

@@ -1,0 +1,49 @@
+//! Detection for every convex pair: support mappings, GJK (distance and
+//! intersection), EPA (depth, normal, contact point, feature pair), a
+//! separating-axis reference for polyhedra, and a contact manifold for a
+//! resting pair. Pure maths with complete records: each iteration goes to an
+//! observer whose methods do nothing by default, so a query that nobody
+//! watches builds no record and allocates nothing but EPA's polytope.
+//!
+//! - [`support`]: the [`Support`] trait, [`Convex`] (every convex [`Shape`]
+//!   variant, a [`Capsule`], a [`ConvexHull`]), the plane's deepest point;
+//! - [`hull`] (+ `hull_faces`): the hull of a point cloud, its faces, its mass;
+//! - [`simplex`]: the signed-volumes sub-algorithm; [`gjk`]; [`epa`]
+//!   (+ `epa_start`, growing GJK's simplex to a tetrahedron, `epa_observer`);
+//! - [`query`]: GJK then EPA (or the margins) for one pair;
+//! - [`features`]: feature kinds and every identifier name;
+//! - [`sat`]: exact depth and normal for polyhedra (the tests' reference);
+//! - [`manifold`] (+ `support_face`): the clipped support faces of a resting pair.
+//!
+//! Conventions as in `collide`: the normal points from B (body 2) toward A
+//! (body 1); moving A along it by the depth separates the pair.
+//!
+//! [`Shape`]: crate::physics::Shape
+
+pub mod epa;
+mod epa_observer;
+mod epa_start;
+pub mod features;
+pub mod gjk;
+pub mod hull;
+mod hull_faces;
+pub mod manifold;
+pub mod query;
+pub mod sat;
+pub mod simplex;
+pub mod support;
+mod support_face;
+
+#[cfg(test)]
+mod tests;
+
+pub use epa::{epa, EpaEnd, EpaIteration, EpaObserver, EpaOptions, EpaRecorder, EpaResult};
+pub use features::{FeatureKind, FeaturePair};
+pub use gjk::{
+    gjk, GjkEnd, GjkIteration, GjkObserver, GjkOptions, GjkRecorder, GjkResult, GjkVerdict,
+};
+pub use hull::{ConvexHull, HullError, HullFace, MassProperties};
+pub use manifold::{manifold, ManifoldPoint};
+pub use query::{query, Penetration, PenetrationSource, Query, QueryOptions};
+pub use sat::{sat, Polyhedron, SatResult};
+pub use support::{plane_depth, Capsule, Convex, Support};
