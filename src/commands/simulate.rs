@@ -181,8 +181,9 @@ pub fn simulation(
             let n = (t / p.dt).round();
             if n > MAX_STEPS as f64 {
                 return usage(&format!(
-                    "--seconds {t} at dt = {} is over {MAX_STEPS} steps",
-                    p.dt
+                    "--seconds {} at dt = {} is over the limit of {MAX_STEPS} steps",
+                    exact(t),
+                    exact(p.dt)
                 ));
             }
             n as u64
