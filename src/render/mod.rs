@@ -12,6 +12,7 @@ pub mod latex_figure;
 pub mod markdown;
 pub mod resolve;
 pub mod run;
+pub mod run_stream;
 pub mod study;
 pub mod svg;
 pub mod text;
