@@ -57,3 +57,57 @@ fn seconds_beyond_the_step_limit_name_the_limit_in_scientific_notation() {
     );
     assert!(err.len() < 200, "{err}");
 }
+
+#[test]
+fn a_study_beyond_its_caps_asks_for_force() {
+    let (code, out, err) = run(&[
+        "study",
+        "ball-drop",
+        "--grid",
+        "dt=0.00001",
+        "--seconds",
+        "60",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("simulated steps") && err.contains("over the cap of 10 million steps"),
+        "{err}"
+    );
+    assert!(err.contains("--force"), "{err}");
+    let budgets: Vec<String> = (1..=60).map(|k| k.to_string()).collect();
+    let epsilons: Vec<String> = (1..=40).map(|k| format!("0.00{k}")).collect();
+    let (code, _, err) = run(&[
+        "study",
+        "--grid",
+        &format!("budget={}", budgets.join(",")),
+        "--grid",
+        &format!("epsilon={}", epsilons.join(",")),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("configurations, over the cap of 2,000 configurations"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_run_beyond_its_cap_asks_for_force() {
+    let (code, out, err) = run(&["simulate", "sphere-row-20", "--steps", "10000000"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("10000000 steps of 20 movable bodies, over the cap of 100 million"),
+        "{err}"
+    );
+    assert!(err.contains("--force"), "{err}");
+}
+
+#[test]
+fn progress_is_shown_only_on_a_terminal() {
+    // stderr is a pipe here: the run says nothing there.
+    let (code, out, err) = run(&["simulate", "ball-drop", "--steps", "3000"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("ball-drop"));
+    assert!(err.is_empty(), "{err}");
+}

@@ -4,6 +4,7 @@ mod errata;
 mod exercise;
 mod figure;
 mod list;
+mod progress;
 mod resolve;
 mod show;
 mod simulate;

@@ -3,7 +3,7 @@
 
 use std::io::Write;
 
-use super::{figure::plane, io, warn};
+use super::{figure::plane, io, progress, warn};
 use crate::cli::{BoxBoxArg, RunFormat, SimulateArgs, SleepModeArg};
 use crate::error::AppError;
 use crate::format::exact;
@@ -30,6 +30,23 @@ pub fn simulate(
     if let Some(n) = args.trace_step {
         return trace_step(&lesson, args, sim, steps, n, out);
     }
+    let movable = sim.world.bodies.iter().filter(|b| b.movable).count().max(1) as u64;
+    if !args.force && steps.saturating_mul(movable) > progress::SIMULATE_WORK_CAP {
+        return Err(progress::beyond_cap(
+            format!("{steps} steps of {movable} movable bodies"),
+            "100 million steps × bodies",
+        ));
+    }
+    let mut bar = progress::bar(
+        steps,
+        "steps",
+        &format!(
+            "{}: {steps} steps of {} s ({} s of scene time), {movable} movable bodies",
+            lesson.id,
+            exact(sim.params.dt),
+            exact(steps as f64 * sim.params.dt)
+        ),
+    );
     let names = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let mut trace = RunTrace::new(&lesson.id, &lesson.title, names, &sim);
     let kind = match args.format {
@@ -49,6 +66,7 @@ pub fn simulate(
                     w.frame(&mut trace, &RunTrace::frame(&sim, &report))
                         .map_err(io)?;
                 }
+                bar.at(n);
             }
             Err(blow_up) => {
                 // The output written so far stays one document, ending
