@@ -93,7 +93,7 @@ fn film(
     out: &mut dyn Write,
 ) -> Result<(), AppError> {
     let every = args.every.max(1);
-    let total = 1 + steps / every + u64::from(steps % every != 0);
+    let total = 1 + steps / every + u64::from(!steps.is_multiple_of(every));
     let picks = run::film_picks(total as usize);
     let keep = |trace: &mut RunTrace, mut f: Frame| {
         if picks.binary_search(&trace.frames.len()).is_err() {

@@ -160,7 +160,7 @@ mod tests {
                     }
                     let fmt = Fmt::new(4);
                     assert_eq!(
-                        streamed(&run, Streamed::Text(fmt.clone())),
+                        streamed(&run, Streamed::Text(fmt)),
                         super::super::run::text(&run, &fmt),
                         "{id} text"
                     );
