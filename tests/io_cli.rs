@@ -56,6 +56,9 @@ fn seconds_beyond_the_step_limit_name_the_limit_in_scientific_notation() {
         "{err}"
     );
     assert!(err.len() < 200, "{err}");
+    let (code, _, err) = run(&["study", "--seconds", "1e300"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("at most 60 s, got 1e300"), "{err}");
 }
 
 #[test]

@@ -26,7 +26,8 @@ fn specs(args: &StudyArgs, err: &mut dyn Write) -> Result<Vec<SceneSpec>, AppErr
     if let Some(t) = args.seconds {
         if !(t.is_finite() && t > 0.0 && t <= MAX_SECONDS) {
             return Err(AppError::Usage(format!(
-                "--seconds must be a time > 0 and at most {MAX_SECONDS} s, got {t}"
+                "--seconds must be a time > 0 and at most {MAX_SECONDS} s, got {}",
+                crate::format::exact(t)
             )));
         }
     }
