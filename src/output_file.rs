@@ -107,8 +107,15 @@ pub(crate) fn kind(t: std::fs::FileType) -> &'static str {
     }
 }
 
-/// Writes `bytes` to `path` as described in the module documentation.
-pub fn write(path: &Path, bytes: &[u8], existing: Existing) -> Result<(), Error> {
+/// Whether [`write`] would accept `path` as its target (a file name; absent,
+/// or a regular file that may be replaced), without writing anything: a
+/// command that writes several files checks its main one first.
+pub fn check(path: &Path, existing: Existing) -> Result<(), Error> {
+    target(path, existing).map(|_| ())
+}
+
+/// The checks of the target: the permissions of the file it replaces, if any.
+fn target(path: &Path, existing: Existing) -> Result<Option<std::fs::Permissions>, Error> {
     let io = |source: std::io::Error| Error::Io {
         path: path.to_path_buf(),
         source,
@@ -130,6 +137,16 @@ pub fn write(path: &Path, bytes: &[u8], existing: Existing) -> Result<(), Error>
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
         Err(e) => return Err(io(e)),
     };
+    Ok(permissions)
+}
+
+/// Writes `bytes` to `path` as described in the module documentation.
+pub fn write(path: &Path, bytes: &[u8], existing: Existing) -> Result<(), Error> {
+    let io = |source: std::io::Error| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let permissions = target(path, existing)?;
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),

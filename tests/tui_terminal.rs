@@ -58,6 +58,7 @@ fn a_panic_inside_the_app_restores_the_terminal() {
         "echo restored:\n{stty}"
     );
     assert_mouse_off(&text, "panic");
+    assert_cursor_shown(&text, "panic");
 }
 
 /// Mouse reports (`?1000h`) were switched on, and off (`?1000l`) after.
@@ -118,6 +119,35 @@ fn assert_restored(text: &str, signal: &str, number: i32) {
         "{signal}: echo restored:\n{stty}"
     );
     assert_mouse_off(text, signal);
+    assert_cursor_shown(text, signal);
+}
+
+/// The frames hid the cursor (`?25l`); it was shown again (`?25h`) after.
+fn assert_cursor_shown(text: &str, case: &str) {
+    let hidden = text
+        .rfind("\x1b[?25l")
+        .unwrap_or_else(|| panic!("{case}: the frames hid the cursor"));
+    let shown = text
+        .rfind("\x1b[?25h")
+        .unwrap_or_else(|| panic!("{case}: the cursor was never shown again"));
+    assert!(
+        shown > hidden,
+        "{case}: the cursor shown after it was last hidden"
+    );
+}
+
+#[test]
+fn sigint_restores_the_terminal_and_shows_the_cursor() {
+    if let Some(text) = run_and_signal("INT", "lecture-2") {
+        assert_restored(&text, "SIGINT", 2);
+    }
+}
+
+#[test]
+fn sigquit_restores_the_terminal_and_shows_the_cursor() {
+    if let Some(text) = run_and_signal("QUIT", "stack-5") {
+        assert_restored(&text, "SIGQUIT", 3);
+    }
 }
 
 #[test]

@@ -90,7 +90,7 @@ pub enum Format {
     /// Markdown with LaTeX maths ($…$).
     #[value(alias = "markdown")]
     Md,
-    /// A standalone LaTeX document (article + amsmath); --fragment for the body.
+    /// A standalone LaTeX document (article + amsmath).
     #[value(alias = "tex")]
     Latex,
 }

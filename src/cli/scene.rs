@@ -114,6 +114,9 @@ pub struct SimulateArgs {
     /// sleep's), each over the lesson's.
     #[command(flatten)]
     pub knobs: KnobArgs<RunLevel>,
+    /// Run even beyond the work cap (steps × movable bodies over 100 million).
+    #[arg(long)]
+    pub force: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -155,4 +158,7 @@ pub struct StudyArgs {
     /// Significant digits of text and Markdown (JSON and CSV carry full f64).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Run even beyond the caps (over 2,000 configurations or 10 million simulated steps).
+    #[arg(long)]
+    pub force: bool,
 }

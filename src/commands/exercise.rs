@@ -23,18 +23,42 @@ fn kind_named(name: &str) -> Result<ExerciseKind, AppError> {
     use clap::ValueEnum;
     ExerciseKind::from_str(name, false).map_err(|_| {
         AppError::Usage(format!(
-            "unknown exercise kind \"{name}\" (kinds: mixed, frictionless, static-friction, dynamic-friction, penetration)"
+            "unknown exercise kind \"{}\" (kinds: mixed, frictionless, static-friction, dynamic-friction, penetration)",
+            exercise::grade::echo(name)
         ))
     })
 }
 
 /// `exercise --grade FILE`: the sheet regenerated from the file's seed, each
 /// answer graded, the report and the score.
+/// The file is read as a lesson is (a regular file only, never a FIFO or a
+/// device) and refused above [`exercise::grade::MAX_BYTES`].
 fn grade_file(path: &std::path::Path, out: &mut dyn Write) -> Result<(), AppError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| AppError::Runtime(format!("cannot read {}: {e}", path.display())))?;
-    let (id, answers) = exercise::grade::read(&text)
-        .map_err(|e| AppError::Usage(format!("{}: {e}", path.display())))?;
+    use crate::lesson::read::{read_regular, Refused};
+    let shown = crate::output_file::shown(path);
+    let cannot =
+        |reason: String| AppError::Runtime(format!("cannot read answer file {shown}: {reason}"));
+    let limit = exercise::grade::MAX_BYTES;
+    let bytes = read_regular(path, limit).map_err(|e| match e {
+        Refused::Open(e) | Refused::Read(e) => cannot(e.to_string()),
+        Refused::NotRegular(what) => cannot(format!(
+            "it is {what}, not an answer file (an answer file is a TOML file)"
+        )),
+    })?;
+    if bytes.len() > limit {
+        return Err(cannot(format!(
+            "larger than {} KiB; an answer file for at most 50 exercises is a few KiB",
+            limit >> 10
+        )));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        cannot(format!(
+            "not UTF-8 text (invalid bytes at byte {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    let (id, answers) =
+        exercise::grade::read(&text).map_err(|e| AppError::Usage(format!("{shown}: {e}")))?;
     let (k, _) = kind(kind_named(&id.kind)?);
     let exercises = exercise::generate(id.seed, k, id.count).map_err(AppError::Runtime)?;
     let (report, _) = exercise::grade::report(&exercises, &answers);
@@ -73,11 +97,21 @@ pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError
         count,
     };
     let fmt = Fmt::new(args.digits as usize);
+    // The figures written beside the sheet, removed again if the sheet is not.
+    let mut written = vec![];
     let text = match args.format {
         SheetFormat::Md => {
             let figures = match &args.output {
                 None => sheet::MdFigures::Inline,
-                Some(path) => sheet::MdFigures::Files(write_figures(path, &exercises)?),
+                Some(path) => {
+                    // The sheet's target refused (a directory, a link) before
+                    // any figure is written beside it.
+                    crate::output_file::check(path, crate::output_file::Existing::Replace)
+                        .map_err(|e| AppError::Runtime(format!("cannot write {e}")))?;
+                    let (links, files) = write_figures(path, &exercises)?;
+                    written = files;
+                    sheet::MdFigures::Files(links)
+                }
             };
             sheet::markdown(&exercises, &request, args.answers, &fmt, &figures)
         }
@@ -99,25 +133,38 @@ pub fn exercise(args: &ExerciseArgs, out: &mut dyn Write) -> Result<(), AppError
         },
     };
     match &args.output {
-        Some(path) => write_atomic(path, text.as_bytes()),
+        Some(path) => write_atomic(path, text.as_bytes()).inspect_err(|_| {
+            for f in &written {
+                let _ = std::fs::remove_file(f);
+            }
+        }),
         None => out.write_all(text.as_bytes()).map_err(io),
     }
 }
 
 /// Each exercise's figure written beside the sheet `path` (`STEM-N.svg`,
-/// N from 1); the links, relative to the sheet.
+/// N from 1); the links, relative to the sheet, and the files written (a
+/// failure part way removes those already written).
 fn write_figures(
     path: &std::path::Path,
     exercises: &[exercise::Exercise],
-) -> Result<Vec<String>, AppError> {
+) -> Result<(Vec<String>, Vec<std::path::PathBuf>), AppError> {
     let stem = path
         .file_stem()
         .map_or_else(|| "sheet".into(), |s| s.to_string_lossy().into_owned());
     let dir = path.parent().unwrap_or(std::path::Path::new(""));
     let mut links = vec![];
+    let mut files: Vec<std::path::PathBuf> = vec![];
     for (i, e) in exercises.iter().enumerate() {
         let name = format!("{stem}-{}.svg", i + 1);
-        write_atomic(&dir.join(&name), sheet::figure_svg(e).as_bytes())?;
+        let file = dir.join(&name);
+        if let Err(err) = write_atomic(&file, sheet::figure_svg(e).as_bytes()) {
+            for f in &files {
+                let _ = std::fs::remove_file(f);
+            }
+            return Err(err);
+        }
+        files.push(file);
         // A Markdown link target: no raw spaces or parentheses.
         let link = name
             .replace(' ', "%20")
@@ -125,5 +172,5 @@ fn write_figures(
             .replace(')', "%29");
         links.push(link);
     }
-    Ok(links)
+    Ok((links, files))
 }

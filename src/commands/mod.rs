@@ -4,6 +4,7 @@ mod errata;
 mod exercise;
 mod figure;
 mod list;
+mod progress;
 mod resolve;
 mod show;
 mod simulate;
@@ -88,6 +89,14 @@ pub(crate) fn load(
             .map_err(|e| AppError::Usage(format!("with these options, {e}")))?;
     }
     if let Some(k) = contact {
+        if lesson.contacts.is_empty() && lesson.simulation.is_some() {
+            return Err(AppError::Usage(format!(
+                "'{}' is a scene and writes no [[contact]]: its contacts are generated from the shapes at every step. \
+                 Run it with `contact-lab simulate {}` (one step's contacts: `--trace-step N`)",
+                lesson.id,
+                name.to_string_lossy()
+            )));
+        }
         if k >= lesson.contacts.len() {
             return Err(AppError::Usage(format!(
                 "--contact {k}: lesson '{}' has {} contact(s), numbered from 0",

@@ -75,6 +75,17 @@ pub fn resolve(
     let params = lesson.resolver;
     super::warn_knobs(&params, err);
     let implementation = implementation(args);
+    let n = lesson.contacts.len();
+    // A large resolve says that it works (on a terminal), until it prints.
+    let _spinner = (n >= super::progress::RESOLVE_SPINNER_FROM).then(|| {
+        super::progress::spinner(format!(
+            "{}: resolving {n} contacts (checked first, then up to {} position and {} velocity iterations{})",
+            lesson.id,
+            params.position_limit(n),
+            params.velocity_limit(n),
+            if args.repeat > 1 { format!(", {} timed runs", args.repeat) } else { String::new() }
+        ))
+    });
     crate::lesson::overflow::check_resolve(&lesson, &params, implementation)
         .map_err(|e| AppError::Runtime(format!("{}: {e}", lesson.id)))?;
     let fmt = Fmt::new(args.digits as usize);

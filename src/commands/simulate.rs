@@ -4,7 +4,7 @@
 use std::io::Write;
 
 use super::warn_knobs;
-use super::{figure::plane, io, warn};
+use super::{figure::plane, io, progress, warn};
 use crate::cli::{RunFormat, SimulateArgs};
 use crate::error::AppError;
 use crate::format::exact;
@@ -13,7 +13,8 @@ use crate::lesson::{knob_value, Lesson};
 use crate::physics::knobs::{Kind, Level, Range, Value, KNOBS, MAX_STEPS};
 use crate::physics::step::Simulation;
 use crate::render::run;
-use crate::trace::run::RunTrace;
+use crate::render::run_stream::{RunWriter, Streamed};
+use crate::trace::run::{Frame, RunTrace};
 
 pub fn simulate(
     args: &SimulateArgs,
@@ -27,31 +28,92 @@ pub fn simulate(
     if let Some(n) = args.trace_step {
         return trace_step(&lesson, args, sim, steps, n, out);
     }
+    let movable = sim.world.bodies.iter().filter(|b| b.movable).count().max(1) as u64;
+    if !args.force && steps.saturating_mul(movable) > progress::SIMULATE_WORK_CAP {
+        return Err(progress::beyond_cap(
+            format!("{steps} steps of {movable} movable bodies"),
+            "100 million steps × bodies",
+        ));
+    }
+    let mut bar = progress::bar(
+        steps,
+        "steps",
+        &format!(
+            "{}: {steps} steps of {} s ({} s of scene time), {movable} movable bodies",
+            lesson.id,
+            exact(sim.params.dt),
+            exact(steps as f64 * sim.params.dt)
+        ),
+    );
     let names = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let mut trace = RunTrace::new(&lesson.id, &lesson.title, names, &sim);
-    trace.frames.push(RunTrace::initial(&sim));
+    let kind = match args.format {
+        RunFormat::Svg => return film(&lesson, args, sim, steps, trace, out),
+        RunFormat::Text => Streamed::Text(Fmt::new(args.digits as usize)),
+        RunFormat::Json => Streamed::Json,
+    };
+    // Written as computed: memory stays flat in the number of steps.
+    let buffered = std::io::BufWriter::with_capacity(1 << 16, out);
+    let mut w = RunWriter::begin(buffered, kind, &trace).map_err(io)?;
+    w.frame(&mut trace, &RunTrace::initial(&sim)).map_err(io)?;
     for n in 1..=steps {
         match sim.advance() {
             Ok(report) => {
                 trace.add_events(&report);
                 if n % args.every == 0 || n == steps {
-                    trace.frames.push(RunTrace::frame(&sim, &report));
+                    w.frame(&mut trace, &RunTrace::frame(&sim, &report))
+                        .map_err(io)?;
                 }
+                bar.at(n);
             }
-            Err(blow_up) => return Err(blew_up(&lesson, &blow_up)),
+            Err(blow_up) => {
+                // The output written so far stays one document, ending
+                // where the run stopped.
+                let names = crate::trace::resolver::Names::of_lesson(&lesson);
+                trace.stopped = Some(crate::session::blew_up(&names, &blow_up));
+                w.end(&trace).map_err(io)?;
+                return Err(blew_up(&lesson, &blow_up));
+            }
         }
     }
-    let text = match args.format {
-        RunFormat::Text => run::text(&trace, &Fmt::new(args.digits as usize)),
-        RunFormat::Json => {
-            let mut s = serde_json::to_string_pretty(&run::json(&trace))
-                .map_err(|e| AppError::Runtime(e.to_string()))?;
-            s.push('\n');
-            s
+    w.end(&trace).map_err(io)?;
+    Ok(())
+}
+
+/// The SVG film strip: the frames it draws are kept whole, the others only
+/// for the charts (their numbers, not their bodies).
+fn film(
+    lesson: &Lesson,
+    args: &SimulateArgs,
+    mut sim: Simulation<f64>,
+    steps: u64,
+    mut trace: RunTrace,
+    out: &mut dyn Write,
+) -> Result<(), AppError> {
+    let every = args.every.max(1);
+    let total = 1 + steps / every + u64::from(!steps.is_multiple_of(every));
+    let picks = run::film_picks(total as usize);
+    let keep = |trace: &mut RunTrace, mut f: Frame| {
+        if picks.binary_search(&trace.frames.len()).is_err() {
+            f.bodies = Vec::new();
+            f.contact_points = Vec::new();
         }
-        RunFormat::Svg => run::svg(&trace, plane(args.plane)),
+        trace.frames.push(f);
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    keep(&mut trace, RunTrace::initial(&sim));
+    for n in 1..=steps {
+        match sim.advance() {
+            Ok(report) => {
+                trace.add_events(&report);
+                if n % every == 0 || n == steps {
+                    keep(&mut trace, RunTrace::frame(&sim, &report));
+                }
+            }
+            Err(blow_up) => return Err(blew_up(lesson, &blow_up)),
+        }
+    }
+    out.write_all(run::svg(&trace, plane(args.plane)).as_bytes())
+        .map_err(io)
 }
 
 fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
@@ -155,7 +217,7 @@ pub fn simulation(
             let n = (t / p.dt).round();
             if n > MAX_STEPS as f64 {
                 return usage(&format!(
-                    "--seconds {} at dt = {} is over {MAX_STEPS} steps",
+                    "--seconds {} at dt = {} is over the limit of {MAX_STEPS} steps",
                     exact(t),
                     exact(p.dt)
                 ));

@@ -1,13 +1,10 @@
 //! `contact-lab study`: speed against accuracy (docs/study.md). Loads the
-//! scenes, runs the study with a progress bar on stderr (only on a terminal,
-//! and only once the study has run for a second), renders it.
+//! scenes, says what it will run and runs it with a progress bar on stderr
+//! (only on a terminal), renders it. Beyond its caps it asks for `--force`.
 
-use std::io::{IsTerminal, Write};
-use std::time::{Duration, Instant};
+use std::io::Write;
 
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-
-use super::{io, warn};
+use super::{io, progress, warn};
 use crate::cli::{StudyArgs, StudyFormat};
 use crate::error::AppError;
 use crate::format::Fmt;
@@ -29,7 +26,8 @@ fn specs(args: &StudyArgs, err: &mut dyn Write) -> Result<Vec<SceneSpec>, AppErr
     if let Some(t) = args.seconds {
         if !(t.is_finite() && t > 0.0 && t <= MAX_SECONDS) {
             return Err(AppError::Usage(format!(
-                "--seconds must be a time > 0 and at most {MAX_SECONDS} s, got {t}"
+                "--seconds must be a time > 0 and at most {MAX_SECONDS} s, got {}",
+                crate::format::exact(t)
             )));
         }
     }
@@ -70,23 +68,32 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         grid: user,
     };
     let total = sweep::planned(&specs, &options) as u64;
-    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
-    bar.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} configurations · {msg} · {elapsed}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    let steps = planned_steps(&specs, &options);
+    if !args.force && total > progress::STUDY_CONFIGURATIONS_CAP {
+        return Err(progress::beyond_cap(
+            format!("{total} configurations"),
+            "2,000 configurations",
+        ));
+    }
+    if !args.force && steps > progress::STUDY_STEPS_CAP {
+        return Err(progress::beyond_cap(
+            format!("{steps} simulated steps ({total} configurations, timing repeats included)"),
+            "10 million steps (the default study simulates about half a million)",
+        ));
+    }
+    let progress = progress::bar(
+        total,
+        "configurations",
+        &format!(
+            "study: {total} configurations over {} scene(s), {steps} simulated steps in all",
+            specs.len()
+        ),
     );
-    let start = Instant::now();
-    let terminal = std::io::stderr().is_terminal();
-    let mut shown = false;
     let study = sweep::study(&specs, &options, &mut |done, scene| {
-        if !shown && terminal && start.elapsed() > Duration::from_secs(1) {
-            bar.set_draw_target(ProgressDrawTarget::stderr());
-            shown = true;
-        }
-        bar.set_message(scene.to_string());
-        bar.set_position(done as u64);
+        progress.bar.set_message(scene.to_string());
+        progress.bar.set_position(done as u64);
     });
-    bar.finish_and_clear();
+    drop(progress);
     let fmt = Fmt::new(args.digits as usize);
     let text = match args.format {
         StudyFormat::Text => render::text(&study, &fmt),
@@ -96,4 +103,24 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         StudyFormat::Md => render::markdown::render(&study, &fmt),
     };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// The steps the study will simulate: each configuration's run, and its
+/// timed repeats when timed, over every scene (the reference included).
+fn planned_steps(specs: &[SceneSpec], o: &Options) -> u64 {
+    use crate::study::run::steps;
+    let runs = 1 + if o.timed { o.repeats.max(1) as u64 } else { 0 };
+    specs
+        .iter()
+        .map(|s| {
+            let Some(d) = grid::default_config(&s.lesson) else {
+                return 0;
+            };
+            let reference = steps(s.seconds, grid::reference(&d, s.reference_solver).params.dt) as u64;
+            grid::rows(&d, grid::features(&s.lesson), o.quick, &o.grid)
+                .iter()
+                .map(|(_, _, c)| runs.saturating_mul(steps(s.seconds, c.params.dt) as u64))
+                .fold(reference, u64::saturating_add)
+        })
+        .fold(0, u64::saturating_add)
 }

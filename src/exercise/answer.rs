@@ -44,10 +44,10 @@ pub fn parse(answer: &str) -> Result<Vec<PrintedNum>, String> {
                 value: x,
                 decimals: decimals_of(token.trim_start_matches(['-', '+'])),
             }),
-            Ok(_) => return Err(format!("«{token}» is not a finite number")),
+            Ok(_) => return Err(format!("«{}» is not a finite number", quoted(token))),
             // A unit after the numbers (m/s, N·s, °) is allowed; a stray word is not.
             Err(_) if !numbers.is_empty() && is_unit(token) => {}
-            Err(_) => return Err(format!("«{token}» is not a number")),
+            Err(_) => return Err(format!("«{}» is not a number", quoted(token))),
         }
     }
     if numbers.is_empty() {
@@ -61,6 +61,15 @@ fn is_unit(token: &str) -> bool {
         .chars()
         .all(|c| c.is_alphabetic() || "/·°²⁻¹*^-".contains(c) || c.is_ascii_digit())
         && token.chars().any(|c| c.is_alphabetic() || c == '°')
+}
+
+/// A token of the answer quoted in a problem: its first 16 characters
+/// (the whole answer is echoed beside the problem already), control
+/// characters escaped.
+fn quoted(token: &str) -> String {
+    let cut: String = token.chars().take(16).collect();
+    let more = if cut.len() < token.len() { "…" } else { "" };
+    crate::lesson::snippet::printable(cut) + more
 }
 
 /// Grades `answer` against `expected`. Numbers: every component within the

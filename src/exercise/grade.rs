@@ -36,6 +36,29 @@ pub fn template(id: &SheetId, exercises: &[Exercise]) -> String {
     out
 }
 
+/// The largest answer file read (a filled template for 50 exercises is
+/// about 10 KiB).
+pub const MAX_BYTES: usize = 1 << 20;
+
+/// The longest answer or key echoed back, in characters (the rest is cut
+/// with "…"): a report line stays a line.
+const ECHO_CHARS: usize = 80;
+
+/// Text from the answer file as echoed in a report or a message: control
+/// and bidirectional characters escaped (`\u{1b}`), so the file cannot move
+/// the cursor, retitle or clear the terminal, and cut after [`ECHO_CHARS`].
+pub fn echo(text: &str) -> String {
+    let cut: String = text.chars().take(ECHO_CHARS).collect();
+    let more = if cut.len() < text.len() { "…" } else { "" };
+    crate::lesson::snippet::printable(cut).replace('\n', "\\n") + more
+}
+
+/// A parser's message, which may quote the file: escaped like [`echo`],
+/// its lines kept.
+fn echo_message(text: &str) -> String {
+    crate::lesson::snippet::printable(text.to_string())
+}
+
 /// Per exercise, the (key, answer text) pairs of an answer file.
 pub type Answers = Vec<Vec<(String, String)>>;
 
@@ -43,7 +66,7 @@ pub type Answers = Vec<Vec<(String, String)>>;
 pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
     let doc: toml::Table = text
         .parse()
-        .map_err(|e: toml::de::Error| e.message().to_string())?;
+        .map_err(|e: toml::de::Error| echo_message(e.message()))?;
     let seed = match doc.get("seed") {
         Some(toml::Value::Integer(n)) if *n >= 0 => *n as u64,
         _ => return Err("`seed` (a whole number ≥ 0) is missing".into()),
@@ -60,9 +83,15 @@ pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
     };
     let count = match doc.get("count") {
         Some(toml::Value::Integer(n)) if (1..=50).contains(n) => *n as usize,
-        None if !tables.is_empty() => tables.len(),
+        None if (1..=50).contains(&tables.len()) => tables.len(),
         _ => return Err("`count` (1 to 50) is missing".into()),
     };
+    if tables.len() > count {
+        return Err(format!(
+            "{} [[exercise]] tables for a sheet of {count} exercise(s): one table per exercise, in order",
+            tables.len()
+        ));
+    }
     let mut answers = Vec::new();
     for (i, t) in tables.iter().enumerate() {
         let toml::Value::Table(t) = t else {
@@ -75,20 +104,29 @@ pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
                 toml::Value::Float(x) => format!("{x}"),
                 toml::Value::Integer(n) => n.to_string(),
                 toml::Value::Array(xs) => {
-                    let parts: Vec<String> = xs
-                        .iter()
-                        .map(|x| match x {
+                    let mut parts = Vec::new();
+                    for x in xs {
+                        parts.push(match x {
                             toml::Value::Float(x) => format!("{x}"),
                             toml::Value::Integer(n) => n.to_string(),
-                            other => other.to_string(),
-                        })
-                        .collect();
+                            toml::Value::String(s) => s.clone(),
+                            _ => {
+                                return Err(format!(
+                                    "exercise {}: `{}` holds a nested array or table; an answer is a string, a number or a list of numbers",
+                                    i + 1,
+                                    echo(key)
+                                ))
+                            }
+                        });
+                    }
                     format!("({})", parts.join(", "))
                 }
                 other => {
                     return Err(format!(
-                        "exercise {}: `{key}` = {other} is not an answer",
-                        i + 1
+                        "exercise {}: `{}` = {} is not an answer",
+                        i + 1,
+                        echo(key),
+                        echo(&other.to_string())
                     ))
                 }
             };
@@ -121,9 +159,9 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
             let g = grade(text, a.value);
             score.record(&g);
             let mark = if g.correct { "✓" } else { "✗" };
-            let _ = write!(out, "   {mark} {} = {}", a.label, text.trim());
+            let _ = write!(out, "   {mark} {} = {}", a.label, echo(text.trim()));
             if let Some(problem) = &g.problem {
-                let _ = writeln!(out, "   right: {right} ({problem})");
+                let _ = writeln!(out, "   right: {right} ({})", echo(problem));
             } else if g.difference.is_empty() {
                 let _ = writeln!(
                     out,
@@ -146,7 +184,8 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
             if !keys.iter().any(|a| a.key == key) {
                 let _ = writeln!(
                     out,
-                    "   ? `{key}` is not an answer of this exercise (not graded)"
+                    "   ? `{}` is not an answer of this exercise (not graded)",
+                    echo(key)
                 );
             }
         }

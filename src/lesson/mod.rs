@@ -276,33 +276,46 @@ impl Lesson {
     /// The physics input of contact `k`, in float type `T`: a view of the
     /// lesson's world. Immovable bodies become empty slots.
     pub fn problem<T: Real>(&self, k: usize) -> Problem<T> {
-        self.world::<T>().problem(k)
+        // Only the contact's own bodies are built (not the whole world: a
+        // check of every contact would otherwise cost contacts × bodies).
+        let contact = self.contact::<T>(k);
+        let body = |id: Option<BodyId>| {
+            let b = self.bodies[id?.0].body::<T>();
+            b.dynamic().cloned()
+        };
+        Problem {
+            bodies: [body(Some(contact.body1)), body(contact.body2)],
+            duration: contact.duration.unwrap_or(c(self.settings.duration)),
+            contact: contact.input,
+        }
+    }
+
+    /// Contact `k` as the world holds it, in float type `T`.
+    fn contact<T: Real>(&self, k: usize) -> Contact<T> {
+        let def = &self.contacts[k];
+        Contact {
+            body1: BodyId(def.bodies.0),
+            body2: def.bodies.1.map(BodyId),
+            input: ContactInput {
+                point: def.point.map(c),
+                normal: def.normal.map(c),
+                penetration: c(def.penetration),
+                restitution: c(def.restitution),
+                static_friction: c(def.static_friction),
+                dynamic_friction: c(def.dynamic_friction),
+                friction_model: def.settings.friction_model,
+                settings: def.settings.contact_params(),
+            },
+            duration: (def.settings.duration != self.settings.duration)
+                .then(|| c(def.settings.duration)),
+        }
     }
 
     /// The lesson as a world of bodies by id (the same indices as `bodies`)
     /// and contacts between them, in float type `T`.
     pub fn world<T: Real>(&self) -> World<T> {
         let bodies = self.bodies.iter().map(BodyDef::body).collect();
-        let contacts = self
-            .contacts
-            .iter()
-            .map(|def| Contact {
-                body1: BodyId(def.bodies.0),
-                body2: def.bodies.1.map(BodyId),
-                input: ContactInput {
-                    point: def.point.map(c),
-                    normal: def.normal.map(c),
-                    penetration: c(def.penetration),
-                    restitution: c(def.restitution),
-                    static_friction: c(def.static_friction),
-                    dynamic_friction: c(def.dynamic_friction),
-                    friction_model: def.settings.friction_model,
-                    settings: def.settings.contact_params(),
-                },
-                duration: (def.settings.duration != self.settings.duration)
-                    .then(|| c(def.settings.duration)),
-            })
-            .collect();
+        let contacts = (0..self.contacts.len()).map(|k| self.contact(k)).collect();
         World {
             bodies,
             contacts,
@@ -341,6 +354,27 @@ impl BodyDef {
             },
             shape: self.shape,
             movable: true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod problem_tests {
+    use super::*;
+
+    /// `problem(k)` builds only contact k's bodies; it is the world's view.
+    #[test]
+    fn a_contacts_problem_is_the_worlds_view_of_it() {
+        for id in embedded::ids() {
+            let lesson = Lesson::load(id).unwrap();
+            let world = lesson.world::<f64>();
+            for k in 0..lesson.contacts.len() {
+                assert_eq!(
+                    lesson.problem::<f64>(k),
+                    world.problem(k),
+                    "{id} contact {k}"
+                );
+            }
         }
     }
 }

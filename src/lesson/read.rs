@@ -56,19 +56,43 @@ pub fn read(path: &Path, shown: &str) -> Result<Vec<u8>, LessonError> {
         path: shown.to_string(),
         reason,
     };
-    let file = open(path).map_err(|e| open_error(&e, shown))?;
+    match read_regular(path, validate::MAX_BYTES) {
+        Ok(bytes) => Ok(bytes),
+        Err(Refused::Open(e)) => Err(open_error(&e, shown)),
+        Err(Refused::NotRegular(what)) => Err(unreadable(format!(
+            "it is {what}, not a lesson file (a lesson is a TOML file)"
+        ))),
+        Err(Refused::Read(e)) => Err(unreadable(e.to_string())),
+    }
+}
+
+/// Why [`read_regular`] read nothing.
+#[derive(Debug)]
+pub enum Refused {
+    /// The path could not be opened (nothing there, permission, …).
+    Open(std::io::Error),
+    /// It is not a regular file: what it is (`a FIFO (named pipe)`, …).
+    NotRegular(&'static str),
+    Read(std::io::Error),
+}
+
+/// The file at `path` read by the lesson loader's rules: opened without
+/// blocking, a regular file only (checked on the open file), and at most
+/// `limit` + 1 bytes read, so that a caller sees a file over `limit` as one
+/// longer than `limit` without ever holding more.
+pub fn read_regular(path: &Path, limit: usize) -> Result<Vec<u8>, Refused> {
+    let file = open(path).map_err(Refused::Open)?;
     // fstat on the open file: what was opened is what is checked.
-    let meta = file.metadata().map_err(|e| unreadable(e.to_string()))?;
+    let meta = file.metadata().map_err(Refused::Read)?;
     if !meta.is_file() {
-        return Err(unreadable(format!(
-            "it is {}, not a lesson file (a lesson is a TOML file)",
-            crate::output_file::kind(meta.file_type())
+        return Err(Refused::NotRegular(crate::output_file::kind(
+            meta.file_type(),
         )));
     }
     let mut bytes = Vec::new();
-    file.take(validate::MAX_BYTES as u64 + 1)
+    file.take(limit as u64 + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| unreadable(e.to_string()))?;
+        .map_err(Refused::Read)?;
     Ok(bytes)
 }
 

@@ -9,6 +9,7 @@ pub mod glossary;
 pub mod knobs;
 pub mod resolve;
 pub mod run;
+pub mod run_stream;
 pub mod study;
 pub mod svg;
 pub mod tex;

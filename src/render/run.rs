@@ -9,11 +9,31 @@ use serde_json::{json, Map, Value as J};
 use super::chart::{escape, Chart, Mark, Series, PALETTE};
 use crate::format::Fmt;
 use crate::render::figure::{outline, Silhouette};
-use crate::trace::run::{Frame, RunTrace};
+use crate::trace::run::{EventLine, Frame, RunTrace};
 use crate::trace::Plane;
 
 /// The text table: one row per recorded frame, events between the rows.
 pub fn text(run: &RunTrace, fmt: &Fmt) -> String {
+    let mut out = text_header(run, fmt);
+    let mut next_event = 0;
+    for f in &run.frames {
+        while next_event < run.events.len() && run.events[next_event].step <= f.step {
+            out.push_str(&event_line(&run.events[next_event], fmt));
+            next_event += 1;
+        }
+        out.push_str(&frame_row(f, fmt));
+    }
+    for e in &run.events[next_event..] {
+        out.push_str(&event_line(e, fmt));
+    }
+    if let Some(why) = &run.stopped {
+        let _ = writeln!(out, "\nstopped: {why}");
+    }
+    out
+}
+
+/// The text table's title, legend and column heads.
+pub(super) fn text_header(run: &RunTrace, fmt: &Fmt) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{} — {}", run.lesson, run.title);
     let _ = writeln!(
@@ -28,46 +48,33 @@ pub fn text(run: &RunTrace, fmt: &Fmt) -> String {
     );
     let _ = writeln!(out, "{header}");
     let _ = writeln!(out, "{}", "─".repeat(header.chars().count()));
-    let mut next_event = 0;
-    for f in &run.frames {
-        while next_event < run.events.len() && run.events[next_event].step <= f.step {
-            let e = &run.events[next_event];
-            let _ = writeln!(
-                out,
-                "        · t = {} s (step {}): {}",
-                fmt.num(e.time),
-                e.step,
-                e.text
-            );
-            next_event += 1;
-        }
-        let _ = writeln!(
-            out,
-            "{:>7} {:>9} {:>8} {:>5} {:>11} {:>11} {:>11} {:>11} {:>9}",
-            f.step,
-            fmt.num(f.time),
-            f.contacts,
-            f.awake,
-            fmt.num(f.max_penetration),
-            fmt.num(f.kinetic_energy),
-            fmt.num(f.potential_energy),
-            fmt.num(f.kinetic_energy + f.potential_energy),
-            format!("{}/{}", f.position_iterations, f.velocity_iterations)
-        );
-    }
-    for e in &run.events[next_event..] {
-        let _ = writeln!(
-            out,
-            "        · t = {} s (step {}): {}",
-            fmt.num(e.time),
-            e.step,
-            e.text
-        );
-    }
-    if let Some(why) = &run.stopped {
-        let _ = writeln!(out, "\nstopped: {why}");
-    }
     out
+}
+
+/// An event's line between the rows.
+pub(super) fn event_line(e: &EventLine, fmt: &Fmt) -> String {
+    format!(
+        "        · t = {} s (step {}): {}\n",
+        fmt.num(e.time),
+        e.step,
+        e.text
+    )
+}
+
+/// A frame's row.
+pub(super) fn frame_row(f: &Frame, fmt: &Fmt) -> String {
+    format!(
+        "{:>7} {:>9} {:>8} {:>5} {:>11} {:>11} {:>11} {:>11} {:>9}\n",
+        f.step,
+        fmt.num(f.time),
+        f.contacts,
+        f.awake,
+        fmt.num(f.max_penetration),
+        fmt.num(f.kinetic_energy),
+        fmt.num(f.potential_energy),
+        fmt.num(f.kinetic_energy + f.potential_energy),
+        format!("{}/{}", f.position_iterations, f.velocity_iterations)
+    )
 }
 
 fn body_json(run: &RunTrace, f: &Frame) -> J {
@@ -87,28 +94,33 @@ fn body_json(run: &RunTrace, f: &Frame) -> J {
     J::Object(bodies)
 }
 
+/// One entry of the JSON's `steps`.
+pub(super) fn frame_json(run: &RunTrace, f: &Frame) -> J {
+    json!({
+        "step": f.step, "time": f.time, "contacts": f.contacts, "awake": f.awake,
+        "max_penetration": f.max_penetration, "kinetic_energy": f.kinetic_energy,
+        "potential_energy": f.potential_energy,
+        "position_iterations": f.position_iterations,
+        "velocity_iterations": f.velocity_iterations,
+        "bodies": body_json(run, f)
+    })
+}
+
+/// The JSON's `events`.
+pub(super) fn events_json(run: &RunTrace) -> J {
+    J::Array(
+        run.events
+            .iter()
+            .map(|e| json!({ "step": e.step, "time": e.time, "kind": e.kind, "text": e.text }))
+            .collect(),
+    )
+}
+
 /// The JSON contract: `{ lesson, dt, steps: [ … ], events: [ … ] }`.
 pub fn json(run: &RunTrace) -> J {
-    let steps: Vec<J> = run
-        .frames
-        .iter()
-        .map(|f| {
-            json!({
-                "step": f.step, "time": f.time, "contacts": f.contacts, "awake": f.awake,
-                "max_penetration": f.max_penetration, "kinetic_energy": f.kinetic_energy,
-                "potential_energy": f.potential_energy,
-                "position_iterations": f.position_iterations,
-                "velocity_iterations": f.velocity_iterations,
-                "bodies": body_json(run, f)
-            })
-        })
-        .collect();
-    let events: Vec<J> = run
-        .events
-        .iter()
-        .map(|e| json!({ "step": e.step, "time": e.time, "kind": e.kind, "text": e.text }))
-        .collect();
-    let mut out = json!({ "lesson": run.lesson, "dt": run.dt, "steps": steps, "events": events });
+    let steps: Vec<J> = run.frames.iter().map(|f| frame_json(run, f)).collect();
+    let mut out =
+        json!({ "lesson": run.lesson, "dt": run.dt, "steps": steps, "events": events_json(run) });
     if let Some(why) = &run.stopped {
         out["stopped"] = J::String(why.clone());
     }
@@ -188,20 +200,30 @@ pub fn svg(run: &RunTrace, plane: Plane) -> String {
     out
 }
 
+/// The frames the film strip draws, of `frames`: up to six, spread over
+/// the run from the first to the last, in order.
+pub fn film_picks(frames: usize) -> Vec<usize> {
+    let n = frames.min(6);
+    (0..n)
+        .map(|i| {
+            if n == 1 {
+                0
+            } else {
+                i * (frames - 1) / (n - 1)
+            }
+        })
+        .collect()
+}
+
 /// Six panels of the scene, the same scale in each.
 fn film_strip(out: &mut String, run: &RunTrace, plane: Plane) {
     if run.frames.is_empty() {
         return;
     }
     let n = run.frames.len().min(6);
-    let picks: Vec<&Frame> = (0..n)
-        .map(|i| {
-            &run.frames[if n == 1 {
-                0
-            } else {
-                i * (run.frames.len() - 1) / (n - 1)
-            }]
-        })
+    let picks: Vec<&Frame> = film_picks(run.frames.len())
+        .into_iter()
+        .map(|i| &run.frames[i])
         .collect();
     // One scale for all panels: the bounds of every finite body in every pick.
     let (mut lo, mut hi) = (

@@ -143,6 +143,7 @@ impl Player {
             return false;
         };
         edit.apply(&mut sim);
+        self.background = None;
         self.run.frames.truncate(step as usize);
         self.run.events.retain(|e| e.step < step);
         self.run.stopped = None;

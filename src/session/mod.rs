@@ -8,13 +8,45 @@ mod edit;
 pub use edit::SceneEdit;
 
 use crate::lesson::Lesson;
-use crate::physics::step::{BlowUp, Simulation};
+use crate::physics::step::{BlowUp, Simulation, StepReport};
 use crate::trace::resolver::Names;
 use crate::trace::run::RunTrace;
 use crate::trace::step::{record_next, StepTrace};
+use std::sync::{Arc, Mutex};
 
 /// Steps between two kept copies of the simulation.
 pub const CHECKPOINT: u64 = 8;
+
+/// A scene this large computes its steps on another thread (the TUI's keys
+/// keep answering while a step takes seconds): this many movable bodies, or
+/// this many contacts at the last step.
+pub const BACKGROUND_BODIES: usize = 100;
+pub const BACKGROUND_CONTACTS: usize = 2_000;
+
+/// What [`Player::poll`] found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Poll {
+    /// The next step is computed (true), or the run has ended (false).
+    Ready(bool),
+    /// The next step is being computed on another thread.
+    Busy,
+}
+
+/// The outcome of a step computed on another thread, when it is done.
+type Slot = Arc<Mutex<Option<(Simulation<f64>, Result<StepReport, BlowUp>)>>>;
+
+/// A step being computed on another thread (clones share it).
+#[derive(Clone)]
+struct Background {
+    step: u64,
+    slot: Slot,
+}
+
+impl std::fmt::Debug for Background {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Background {{ step: {} }}", self.step)
+    }
+}
 
 #[derive(Debug, Clone)]
 pub struct Player {
@@ -27,6 +59,8 @@ pub struct Player {
     /// Copies of the simulation after the step they are paired with (every
     /// `CHECKPOINT`th, and where an edit changed it), in step order.
     checkpoints: Vec<(u64, Simulation<f64>)>,
+    /// The next step, when a large scene computes it on another thread.
+    background: Option<Background>,
 }
 
 impl Player {
@@ -46,6 +80,7 @@ impl Player {
             names,
             checkpoints: vec![(0, sim.clone())],
             sim,
+            background: None,
         })
     }
 
@@ -55,11 +90,71 @@ impl Player {
     }
 
     /// Computes one more step; false at the scene's end or once it blew up.
+    /// (A step being computed on another thread is dropped: this one is
+    /// computed here, from the last step kept.)
     pub fn advance(&mut self) -> bool {
-        if self.run.stopped.is_some() || self.computed() >= self.steps {
+        self.background = None;
+        if self.ended() {
             return false;
         }
-        match self.sim.advance() {
+        let result = self.sim.advance();
+        self.accept(result)
+    }
+
+    /// The run has stopped or reached the scene's last step.
+    fn ended(&self) -> bool {
+        self.run.stopped.is_some() || self.computed() >= self.steps
+    }
+
+    /// Whether the next steps go to another thread: a large scene.
+    fn heavy(&self) -> bool {
+        let movable = self.sim.world.bodies.iter().filter(|b| b.movable).count();
+        movable >= BACKGROUND_BODIES || self.sim.world.contacts.len() >= BACKGROUND_CONTACTS
+    }
+
+    /// The step being computed on another thread, if one is.
+    pub fn computing(&self) -> Option<u64> {
+        self.background.as_ref().map(|b| b.step)
+    }
+
+    /// One more step without blocking on a large scene: a small scene's step
+    /// is computed at once; a large scene's on another thread, `Busy` until
+    /// it is done (call again to collect it).
+    pub fn poll(&mut self) -> Poll {
+        if let Some(bg) = &self.background {
+            let done = bg.slot.lock().map(|mut s| s.take()).unwrap_or(None);
+            let Some((sim, result)) = done else {
+                return Poll::Busy;
+            };
+            self.background = None;
+            self.sim = sim;
+            return Poll::Ready(self.accept(result));
+        }
+        if self.ended() {
+            return Poll::Ready(false);
+        }
+        if !self.heavy() {
+            return Poll::Ready(self.advance());
+        }
+        let slot: Slot = Arc::new(Mutex::new(None));
+        let mut sim = self.sim.clone();
+        let out = Arc::clone(&slot);
+        std::thread::spawn(move || {
+            let result = sim.advance();
+            if let Ok(mut s) = out.lock() {
+                *s = Some((sim, result));
+            }
+        });
+        self.background = Some(Background {
+            step: self.computed() + 1,
+            slot,
+        });
+        Poll::Busy
+    }
+
+    /// Keeps the outcome of the step just computed (into `self.sim`).
+    fn accept(&mut self, result: Result<StepReport, BlowUp>) -> bool {
+        match result {
             Ok(report) => {
                 self.run.add_events(&report);
                 self.run.frames.push(RunTrace::frame(&self.sim, &report));

@@ -5,6 +5,7 @@ use ratatui::crossterm::event::KeyEvent;
 
 use super::app::{App, Mode};
 use super::form::{Form, Outcome};
+use super::screens::Screen;
 use crate::lesson::edit;
 use crate::trace::{Trace, Value};
 
@@ -65,7 +66,10 @@ impl App {
                     }
                     Err(e) => form.error = Some(e),
                 }
-                self.mode = Mode::Edit(form);
+                // An edit that stopped the run went back to the run screen.
+                if self.screen != Screen::Run {
+                    self.mode = Mode::Edit(form);
+                }
             }
         }
     }

@@ -117,12 +117,16 @@ pub fn run(mut app: App) -> Result<(), AppError> {
     let hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
         mouse(false);
+        show_cursor();
         hook(info)
     }));
     mouse(true);
     let result = run_loop(&mut terminal, &mut app, &signal);
     mouse(false);
     ratatui::restore();
+    // The terminal shows the cursor again when it is dropped; a signal ends
+    // the process before that, so it is shown here on every path.
+    show_cursor();
     signals::end_if_signalled(&signal);
     result.map_err(|e| AppError::Runtime(format!("terminal: {e}")))
 }
@@ -136,6 +140,12 @@ fn mouse(on: bool) {
     } else {
         ratatui::crossterm::execute!(out, DisableMouseCapture)
     };
+}
+
+/// Shows the cursor the frames hid (`ESC [ ? 25 h`).
+fn show_cursor() {
+    use ratatui::crossterm::cursor::Show;
+    let _ = ratatui::crossterm::execute!(std::io::stdout(), Show);
 }
 
 /// Playback redraws at 60 frames per second.
@@ -199,9 +209,25 @@ mod signals {
             std::thread::sleep(std::time::Duration::from_millis(100));
             if flag.load(Ordering::Relaxed) != 0 {
                 std::thread::sleep(std::time::Duration::from_secs(1));
+                restore_directly();
                 end_if_signalled(&flag);
             }
         });
+    }
+
+    /// The loop did not come back to restore the terminal: raw mode off,
+    /// and the escape codes that end mouse reports and the alternate screen
+    /// and show the cursor written to the terminal device itself (standard
+    /// output's lock may be held by the stuck loop). Errors are ignored: a
+    /// terminal that hung up has nothing left to restore.
+    fn restore_directly() {
+        use std::io::Write;
+        let _ = ratatui::crossterm::terminal::disable_raw_mode();
+        if let Ok(mut tty) = std::fs::OpenOptions::new().write(true).open("/dev/tty") {
+            let _ = tty.write_all(
+                b"\x1b[?1000l\x1b[?1002l\x1b[?1003l\x1b[?1015l\x1b[?1006l\x1b[?1049l\x1b[?25h",
+            );
+        }
     }
 
     /// After the terminal is restored: end the process by the signal that

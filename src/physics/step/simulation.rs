@@ -4,6 +4,7 @@
 //! then velocity phase), update sleep. What happened is reported per step.
 
 use nalgebra::Vector3;
+use std::collections::HashMap;
 
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
@@ -357,13 +358,17 @@ impl<T: Real> Simulation<T> {
         // before and the fastest separating after.
         let mut pairs: Vec<(BodyId, Option<BodyId>, bool)> = Vec::new();
         let mut speeds: Vec<(f64, f64, bool)> = Vec::new();
+        // Pair → its index in `pairs` (a search of `pairs` per contact made
+        // this pass quadratic: minutes a step on a pile of 1,000 spheres).
+        let mut index: HashMap<(BodyId, Option<BodyId>), usize> =
+            HashMap::with_capacity(self.world.contacts.len());
         for (i, k) in self.world.contacts.iter().enumerate() {
             let vn0 = to_f64(before[i].0);
             let (vn1, vt1) = (to_f64(after[i].0), to_f64(after[i].1));
             // Sliding: faster than residual jitter of resting contacts (5 cm/s).
             let slides = vt1 > 0.05;
             let bouncy = k.input.restitution > T::zero();
-            match pairs.iter().position(|p| p.0 == k.body1 && p.1 == k.body2) {
+            match index.get(&(k.body1, k.body2)).copied() {
                 Some(j) => {
                     pairs[j].2 |= slides;
                     speeds[j] = (
@@ -373,6 +378,7 @@ impl<T: Real> Simulation<T> {
                     );
                 }
                 None => {
+                    index.insert((k.body1, k.body2), pairs.len());
                     pairs.push((k.body1, k.body2, slides));
                     speeds.push((-vn0, vn1, bouncy));
                 }
@@ -391,17 +397,19 @@ impl<T: Real> Simulation<T> {
                 });
             }
         }
+        let was: HashMap<(BodyId, Option<BodyId>), bool> =
+            self.touching.iter().map(|q| ((q.0, q.1), q.2)).collect();
         for p in &pairs {
-            match self.touching.iter().find(|q| q.0 == p.0 && q.1 == p.1) {
+            match was.get(&(p.0, p.1)).copied() {
                 None => events.push(Event::ContactMade {
                     body1: p.0,
                     body2: p.1,
                 }),
-                Some(q) if q.2 && !p.2 => events.push(Event::Sticks {
+                Some(slid) if slid && !p.2 => events.push(Event::Sticks {
                     body1: p.0,
                     body2: p.1,
                 }),
-                Some(q) if !q.2 && p.2 => events.push(Event::Slides {
+                Some(slid) if !slid && p.2 => events.push(Event::Slides {
                     body1: p.0,
                     body2: p.1,
                     speed: 0.0,
@@ -410,7 +418,7 @@ impl<T: Real> Simulation<T> {
             }
         }
         for q in &self.touching {
-            if !pairs.iter().any(|p| p.0 == q.0 && p.1 == q.1) {
+            if !index.contains_key(&(q.0, q.1)) {
                 events.push(Event::ContactLost {
                     body1: q.0,
                     body2: q.1,

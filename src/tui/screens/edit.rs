@@ -104,8 +104,23 @@ impl App {
             Ok(e) => e,
             Err(why) => return Some(format!("; the run is unchanged ({why})")),
         };
-        if !run.player.edit(step, &edit) {
+        if step == 0 || step > run.player.computed() {
             return Some(format!("; the run stopped before step {step}: unchanged"));
+        }
+        if !run.player.edit(step, &edit) {
+            // The run computed again stopped before the step edited (a
+            // blow-up): the frames before it are kept, the step's resolution
+            // no longer exists, so the run screen shows where it stopped.
+            run.frame = run.player.computed() as usize;
+            run.playing = false;
+            let why = run.player.run.stopped.clone().unwrap_or_default();
+            self.resolver = None;
+            self.opened = None;
+            self.baseline = None;
+            self.screen = super::Screen::Run;
+            return Some(format!(
+                "; the run computed again from step {step} stopped: {why}"
+            ));
         }
         run.frame = step as usize;
         if let Some(trace) = run.player.record(step) {

@@ -8,7 +8,7 @@ use ratatui::crossterm::event::{
 };
 
 use super::{Pick, ResolverView, RunView, Screen, Toggles, EVENT_KINDS, SPEEDS};
-use crate::session::Player;
+use crate::session::{Player, Poll};
 use crate::trace::step::StepTrace;
 use crate::tui::app::{App, Entry, Mode};
 
@@ -50,29 +50,51 @@ impl App {
         self.screen = Screen::Resolver;
     }
 
-    /// Whether the run is playing (the terminal loop then ticks).
+    /// Whether the run is playing, or a step is being computed on another
+    /// thread (the terminal loop then ticks).
     pub fn playing(&self) -> bool {
-        self.screen == Screen::Run && self.run.as_ref().is_some_and(|r| r.playing)
+        self.run.as_ref().is_some_and(|r| {
+            (self.screen == Screen::Run && r.playing) || r.player.computing().is_some()
+        })
     }
 
-    /// Playback: `seconds` of real time passed.
+    /// Playback: `seconds` of real time passed. A large scene's step being
+    /// computed on another thread is collected here when it is done.
     pub fn tick(&mut self, seconds: f64) {
         if !self.playing() {
             return;
         }
+        let on_run = self.screen == Screen::Run;
         let Some(run) = self.run.as_deref_mut() else {
             return;
         };
+        if !(on_run && run.playing) {
+            // A step asked for with → (or left over from playback): shown
+            // when it is done, if the frame before it is still on show.
+            let waiting = run.frame as u64 == run.player.computed();
+            if run.player.poll() == Poll::Ready(true) && waiting && on_run {
+                run.frame += 1;
+            }
+            return;
+        }
         let dt = run.player.run.dt;
         run.owed += seconds * SPEEDS[run.speed];
         let mut steps = 0;
         while run.owed >= dt && steps < STEPS_PER_TICK {
             run.owed -= dt;
             steps += 1;
-            if !forward(run) {
-                run.playing = false;
-                run.owed = 0.0;
-                break;
+            match forward(run) {
+                Forward::Moved => {}
+                Forward::End => {
+                    run.playing = false;
+                    run.owed = 0.0;
+                    break;
+                }
+                Forward::Busy => {
+                    // Playback waits for the step; time owed meanwhile is dropped.
+                    run.owed = 0.0;
+                    break;
+                }
             }
         }
         if steps == STEPS_PER_TICK {
@@ -130,8 +152,10 @@ impl App {
             }
             KeyCode::Right | KeyCode::Char('l') => {
                 run.playing = false;
-                if !forward(run) {
-                    said = Some(end_of_run(run));
+                match forward(run) {
+                    Forward::Moved => {}
+                    Forward::End => said = Some(end_of_run(run)),
+                    Forward::Busy => said = Some(computing(run)),
                 }
             }
             KeyCode::Left | KeyCode::Char('h') => {
@@ -344,14 +368,38 @@ fn contains(r: ratatui::layout::Rect, col: u16, row: u16) -> bool {
     col >= r.x && col < r.x + r.width && row >= r.y && row < r.y + r.height
 }
 
-/// One frame forward, computing it when needed; false at the run's end.
-fn forward(run: &mut RunView) -> bool {
-    if (run.frame as u64) < run.player.computed() || run.player.advance() {
+/// What one frame forward did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Forward {
+    Moved,
+    /// The run's end (or where it stopped).
+    End,
+    /// A large scene's next step is being computed on another thread.
+    Busy,
+}
+
+/// One frame forward, computing it when needed (a large scene's step on
+/// another thread: `Busy` until it is done).
+fn forward(run: &mut RunView) -> Forward {
+    if (run.frame as u64) < run.player.computed() {
         run.frame += 1;
-        true
-    } else {
-        false
+        return Forward::Moved;
     }
+    match run.player.poll() {
+        Poll::Ready(true) => {
+            run.frame += 1;
+            Forward::Moved
+        }
+        Poll::Ready(false) => Forward::End,
+        Poll::Busy => Forward::Busy,
+    }
+}
+
+fn computing(run: &RunView) -> String {
+    format!(
+        "computing step {} (a large scene: the keys still answer; q quits)",
+        run.player.computing().unwrap_or(0)
+    )
 }
 
 fn end_of_run(run: &RunView) -> String {
@@ -384,8 +432,10 @@ fn jump_event(run: &mut RunView, next: bool) -> Option<String> {
                 run.frame = s as usize;
                 return None;
             }
-            if !run.player.advance() {
-                return Some(format!("no {kind} event after step {step}"));
+            match run.player.poll() {
+                Poll::Ready(true) => {}
+                Poll::Ready(false) => return Some(format!("no {kind} event after step {step}")),
+                Poll::Busy => return Some(computing(run)),
             }
         }
     }

@@ -1,0 +1,94 @@
+//! Progress on a terminal for the long commands (`simulate`, `study`,
+//! `resolve`): an estimate up front and a bar with the time left, on stderr
+//! and only when stderr is a terminal (a script's output stays clean); and
+//! the work caps beyond which a command asks for `--force`.
+
+use std::io::IsTerminal;
+use std::time::{Duration, Instant};
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use crate::error::AppError;
+
+/// `simulate`: steps × movable bodies beyond which `--force` is asked for.
+pub const SIMULATE_WORK_CAP: u64 = 100_000_000;
+/// `study`: configurations beyond which `--force` is asked for.
+pub const STUDY_CONFIGURATIONS_CAP: u64 = 2_000;
+/// `study`: simulated steps (every configuration, timing repeats included).
+pub const STUDY_STEPS_CAP: u64 = 10_000_000;
+/// `resolve`: contacts from which a spinner shows that it is working.
+pub const RESOLVE_SPINNER_FROM: usize = 10_000;
+
+/// The refusal of work beyond a cap: what was asked, the cap, and `--force`.
+pub fn beyond_cap(what: String, cap: &str) -> AppError {
+    AppError::Usage(format!(
+        "{what}, over the cap of {cap}: this may take very long; add --force to run it anyway"
+    ))
+}
+
+/// A bar of `total` units (`unit` names them), drawn on stderr when it is a
+/// terminal, with the time elapsed and an estimate of the time left; hidden
+/// otherwise. `plan` is said first, on its own line (the estimate up front).
+pub fn bar(total: u64, unit: &str, plan: &str) -> Progress {
+    let terminal = std::io::stderr().is_terminal();
+    let target = if terminal {
+        eprintln!("{plan}");
+        ProgressDrawTarget::stderr_with_hz(10)
+    } else {
+        ProgressDrawTarget::hidden()
+    };
+    let bar = ProgressBar::with_draw_target(Some(total), target);
+    bar.set_style(
+        ProgressStyle::with_template(&format!(
+            "{{bar:40}} {{pos}}/{{len}} {unit} · {{msg}} · {{elapsed}} elapsed, about {{eta}} left"
+        ))
+        .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    Progress {
+        bar,
+        last: Instant::now(),
+    }
+}
+
+/// A spinner with `text`, ticking on its own thread, on a terminal only.
+pub fn spinner(text: String) -> Progress {
+    let target = if std::io::stderr().is_terminal() {
+        ProgressDrawTarget::stderr_with_hz(10)
+    } else {
+        ProgressDrawTarget::hidden()
+    };
+    let bar = ProgressBar::with_draw_target(None, target);
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} {msg} · {elapsed}")
+            .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+    );
+    bar.set_message(text);
+    bar.enable_steady_tick(Duration::from_millis(100));
+    Progress {
+        bar,
+        last: Instant::now(),
+    }
+}
+
+/// A bar or spinner; cleared when dropped.
+pub struct Progress {
+    pub bar: ProgressBar,
+    last: Instant,
+}
+
+impl Progress {
+    /// Sets the position, at most twenty times a second (a step of a fast
+    /// run costs less than drawing it would).
+    pub fn at(&mut self, done: u64) {
+        if self.last.elapsed() >= Duration::from_millis(50) {
+            self.last = Instant::now();
+            self.bar.set_position(done);
+        }
+    }
+}
+
+impl Drop for Progress {
+    fn drop(&mut self) {
+        self.bar.finish_and_clear();
+    }
+}
