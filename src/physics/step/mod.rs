@@ -6,6 +6,7 @@
 pub mod audit;
 pub mod energy;
 pub mod integrate;
+pub mod replay;
 pub mod report;
 pub mod simulation;
 pub mod sleep;

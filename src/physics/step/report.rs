@@ -46,11 +46,18 @@ pub enum Event {
     VelocityLimit {
         left: f64,
     },
-    /// The velocity phase added `gained` J of kinetic energy (reported when
-    /// it starts, not again while it goes on), and what can explain it.
+    /// The resolution added `gained` J of kinetic energy (reported when it
+    /// starts, not again while it goes on), and the causes that the step,
+    /// re-run from the same inputs with them switched off, shows.
     EnergyGain {
         gained: f64,
         cause: super::audit::EnergyCause,
+    },
+    /// The position phase lifted bodies out of penetration, adding `gained`
+    /// J of potential energy beyond the settling of resting contacts
+    /// (reported when it starts, not again while it goes on).
+    ProjectionLift {
+        gained: f64,
     },
 }
 

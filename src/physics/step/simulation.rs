@@ -5,10 +5,11 @@
 
 use nalgebra::Vector3;
 
+use super::audit::Switches;
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
-use super::{audit, energy};
+use super::{audit, energy, replay};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
 use crate::physics::resolver::sequential::WarmCache;
@@ -88,6 +89,9 @@ pub struct Simulation<T: Real> {
     /// Whether the last step's velocity phase added energy (reported once
     /// when it starts).
     gaining: bool,
+    /// Whether the last step's position phase lifted bodies (reported once
+    /// when it starts).
+    lifting: bool,
 }
 
 impl<T: Real> Simulation<T> {
@@ -108,6 +112,7 @@ impl<T: Real> Simulation<T> {
             energy_scale: 0.0,
             limits_hit: [false; 2],
             gaining: false,
+            lifting: false,
         };
         sim.world.contacts.clear();
         let g = sim.params.world.gravity;
@@ -138,36 +143,13 @@ impl<T: Real> Simulation<T> {
     ) -> Result<StepReport, BlowUp> {
         let p = self.params.clone();
         let mut events = Vec::new();
-        // 1. Contacts from the shapes where the bodies are now.
-        self.generate_contacts();
-        // 2. Velocities of the awake bodies: gravity and damping over the step.
-        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
-            if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate_velocity(
-                    &mut body.state,
-                    &p.world.gravity,
-                    &Loads::default(),
-                    p.world.linear_damping,
-                    p.world.angular_damping,
-                    p.dt,
-                );
-            }
-        }
-        self.world.step.duration = p.dt;
-        // Resolved between the velocity and the position update, the
-        // contacts see this step's build-up already: nothing to anticipate.
-        self.world.step.anticipate_planar_acceleration = false;
+        self.begin_step(&mut events);
         let max_penetration = self
             .world
             .contacts
             .iter()
             .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
-        // 3. Wake sleepers that an awake body presses on.
-        if p.sleep.enabled {
-            self.wake_touched(&mut events);
-        }
         let closing_before = self.normal_velocities();
-        let kinetic_before = to_f64(energy::kinetic(&self.world));
         // 4. Resolve the contacts together.
         let resolver = match &mut self.resolver {
             Some(r) => {
@@ -183,23 +165,38 @@ impl<T: Real> Simulation<T> {
         observer.resolving(&self.world, resolver);
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
-        if warm {
-            self.warm.store(&self.world, resolver);
-        }
-        resolver.write_back(&mut self.world);
+        // The audits, while the world still holds the step's inputs.
+        let energy = replay::resolved(&self.world, resolver, &p.world.gravity);
         let gained = audit::gain(
-            kinetic_before,
-            to_f64(energy::kinetic(&self.world)),
+            energy.kinetic_before,
+            energy.kinetic_after,
             self.energy_scale,
         );
+        let inputs = replay::StepInputs {
+            world: &self.world,
+            params: &p.resolver,
+            warm: &self.warm,
+            gravity: p.world.gravity,
+            scale: self.energy_scale,
+        };
         let gain_event = match (gained, self.gaining) {
             (Some(gained), false) => Some(Event::EnergyGain {
                 gained,
-                cause: audit::cause(&self.world, p.acceleration_compensation),
+                cause: inputs.attribute(),
             }),
             _ => None,
         };
         self.gaining = gained.is_some();
+        let lifted = projection_lift(&energy, p.resolver.position_epsilon, self.energy_scale);
+        let lift_event = match (lifted, self.lifting) {
+            (Some(gained), false) => Some(Event::ProjectionLift { gained }),
+            _ => None,
+        };
+        self.lifting = lifted.is_some();
+        if warm {
+            self.warm.store(&self.world, resolver);
+        }
+        resolver.write_back(&mut self.world);
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
@@ -213,6 +210,7 @@ impl<T: Real> Simulation<T> {
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
+        events.extend(lift_event);
         events.extend(gain_event);
         if position.limit_reached && !self.limits_hit[0] {
             events.push(Event::PositionLimit {
@@ -248,6 +246,56 @@ impl<T: Real> Simulation<T> {
             velocity_iterations: velocity.iterations_used,
             events,
         })
+    }
+
+    /// The step up to its resolution: contacts generated, velocities
+    /// integrated, sleepers woken.
+    fn begin_step(&mut self, events: &mut Vec<Event>) {
+        let p = self.params.clone();
+        // 1. Contacts from the shapes where the bodies are now.
+        self.generate_contacts();
+        // 2. Velocities of the awake bodies: gravity and damping over the step.
+        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
+            if body.movable && (sleep.awake || !p.sleep.enabled) {
+                integrate_velocity(
+                    &mut body.state,
+                    &p.world.gravity,
+                    &Loads::default(),
+                    p.world.linear_damping,
+                    p.world.angular_damping,
+                    p.dt,
+                );
+            }
+        }
+        self.world.step.duration = p.dt;
+        // Resolved between the velocity and the position update, the
+        // contacts see this step's build-up already: nothing to anticipate.
+        self.world.step.anticipate_planar_acceleration = false;
+        // 3. Wake sleepers that an awake body presses on.
+        if p.sleep.enabled {
+            self.wake_touched(events);
+        }
+    }
+
+    /// The next step's resolution re-run from its inputs with `off`
+    /// switched off (the experiment behind an energy event), leaving this
+    /// simulation as it is.
+    pub fn replay_next(&self, off: Switches) -> replay::Resolved {
+        let mut sim = self.clone();
+        sim.begin_step(&mut Vec::new());
+        replay::StepInputs {
+            world: &sim.world,
+            params: &sim.params.resolver,
+            warm: &sim.warm,
+            gravity: sim.params.world.gravity,
+            scale: sim.energy_scale,
+        }
+        .replay(off)
+    }
+
+    /// The scene's energy scale (J): what gains and blow-ups are measured against.
+    pub fn energy_scale(&self) -> f64 {
+        self.energy_scale
     }
 
     /// Replaces the world's contacts with those the shapes generate now.
@@ -465,6 +513,15 @@ impl<T: Real> Simulation<T> {
         events.append(&mut bounces);
         self.touching = pairs;
     }
+}
+
+/// The potential energy the position phase added, when it is worth an
+/// event: more than rounding, and more than lifting every resolved body by
+/// the position epsilon (the settling of resting contacts, which the
+/// position phase leaves up to that depth and then resolves).
+fn projection_lift(e: &replay::Resolved, position_epsilon: f64, scale: f64) -> Option<f64> {
+    let settling = e.weight * position_epsilon;
+    audit::gain(0.0, e.potential_rise, scale).filter(|rise| *rise > settling)
 }
 
 /// A potential-energy scale: m |g| (the body's height above the lowest body + 1).
