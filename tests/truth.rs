@@ -140,3 +140,107 @@ fn a_rod_gaining_under_a_friction_model_blames_the_model_not_compensation() {
         }
     }
 }
+
+/// The simulation of a lesson given as TOML text.
+fn scene(toml: &str) -> Simulation<f64> {
+    let lesson = contact_lab::lesson::validate::parse("test.toml", toml).unwrap();
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let materials = lesson.simulation.unwrap().materials;
+    Simulation::new(world, params, materials)
+}
+
+const BALL_IN_THE_AIR: &str = r#"
+id = "ball-in-the-air"
+title = "A ball dropped from 10 m"
+[world]
+[step]
+steps = 60
+[[body]]
+name = "ball"
+mass = 1.0
+shape = { sphere = 0.1 }
+position = [0, 10, 0]
+[[body]]
+name = "floor"
+mass = inf
+shape = "half_space"
+position = [0, 0, 0]
+"#;
+
+#[test]
+fn island_sleep_with_no_wait_does_not_stop_a_ball_in_mid_air() {
+    use contact_lab::physics::step::SleepMode;
+    let mut sim = scene(BALL_IN_THE_AIR);
+    sim.params.sleep.mode = SleepMode::Island;
+    sim.params.sleep.island_time = 0.0;
+    for _ in 0..60 {
+        let r = sim.advance().unwrap();
+        assert!(
+            !r.events
+                .iter()
+                .any(|e| matches!(e, Event::FallsAsleep { .. })),
+            "step {}: the ball falls asleep in the air",
+            r.step
+        );
+    }
+    // One second of free fall: 4.9 m, and still falling.
+    let ball = &sim.world.bodies[0].state;
+    assert!(
+        (ball.position.y - (10.0 - 4.9)).abs() < 0.1,
+        "{}",
+        ball.position.y
+    );
+    assert!(ball.velocity.y < -9.0, "{}", ball.velocity.y);
+}
+
+#[test]
+fn a_ball_coasting_slowly_in_free_space_reaches_the_wall() {
+    let mut sim = scene(
+        r#"
+id = "coasting-ball"
+title = "A ball coasts at 0.5 m/s toward a wall 2 m away (the lecture's per-body sleep stopped it 0.6 m short)"
+[world]
+gravity = [0, 0, 0]
+[step]
+steps = 120
+[[body]]
+name = "ball"
+mass = 1.0
+shape = { sphere = 0.1 }
+position = [0.3, 0, 0]
+velocity = [0.5, 0, 0]
+[[body]]
+name = "wall"
+mass = inf
+shape = "half_space"
+normal = [-1, 0, 0]
+position = [2.4, 0, 0]
+"#,
+    );
+    assert!(sim.params.sleep.enabled);
+    let mut reached = None;
+    for _ in 0..300 {
+        let r = sim.advance().unwrap();
+        if reached.is_none()
+            && r.events
+                .iter()
+                .any(|e| matches!(e, Event::ContactMade { .. }))
+        {
+            reached = Some(r.time);
+        }
+        assert!(
+            !r.events
+                .iter()
+                .any(|e| matches!(e, Event::FallsAsleep { .. }))
+                || reached.is_some(),
+            "step {}: the ball falls asleep in free space at x = {}",
+            r.step,
+            sim.world.bodies[0].state.position.x
+        );
+    }
+    let t = reached.expect("the ball reaches the wall");
+    // 2 m at 0.5 m/s, a little slower with the default damping.
+    assert!(t > 4.0 && t < 4.2, "reached at {t} s");
+}

@@ -404,10 +404,23 @@ impl<T: Real> Simulation<T> {
         islands(self.world.bodies.len(), links)
     }
 
+    /// Sleep after the step. A body falls asleep only while it touches
+    /// something (one of this step's contacts, the margin included): sleep
+    /// is for resting contacts, and a body in flight or coasting in free
+    /// space is not resting however slowly it moves. In island mode an
+    /// island needs every body slow for at least one step and `island_time`.
     fn update_sleep(&mut self, events: &mut Vec<Event>) {
         let p = self.params.sleep;
         let dt = self.params.dt;
-        let mut falls = vec![false; self.world.bodies.len()];
+        let n = self.world.bodies.len();
+        let mut touching = vec![false; n];
+        for k in &self.world.contacts {
+            touching[k.body1.0] = true;
+            if let Some(b) = k.body2 {
+                touching[b.0] = true;
+            }
+        }
+        let mut falls = vec![false; n];
         for (i, (body, state)) in self
             .world
             .bodies
@@ -416,18 +429,21 @@ impl<T: Real> Simulation<T> {
             .enumerate()
         {
             if body.movable && state.awake {
-                falls[i] = update_motion(state, &body.state, p.epsilon, dt);
+                falls[i] = update_motion(state, &body.state, p.epsilon, dt) && touching[i];
             }
         }
         if p.mode == SleepMode::Island {
             let roots = self.islands();
-            let n = self.world.bodies.len();
+            let long_enough = if p.island_time > dt {
+                p.island_time
+            } else {
+                dt
+            };
             let mut ready = vec![true; n];
             for i in 0..n {
-                let b = &self.world.bodies[i];
-                if b.movable && (self.sleep[i].slow_for < p.island_time || !self.sleep[i].awake) {
-                    ready[roots[i]] &=
-                        !self.sleep[i].awake || self.sleep[i].slow_for >= p.island_time;
+                let (b, s) = (&self.world.bodies[i], &self.sleep[i]);
+                if b.movable && s.awake {
+                    ready[roots[i]] &= s.slow_for >= long_enough && touching[i];
                 }
             }
             for (i, fall) in falls.iter_mut().enumerate() {
