@@ -244,3 +244,80 @@ position = [2.4, 0, 0]
     // 2 m at 0.5 m/s, a little slower with the default damping.
     assert!(t > 4.0 && t < 4.2, "reached at {t} s");
 }
+
+/// Every event of `steps` steps of a scene, with its step.
+fn events(sim: &mut Simulation<f64>, steps: usize) -> Vec<(u64, Event)> {
+    let mut all = Vec::new();
+    for _ in 0..steps {
+        let r = sim.advance().unwrap();
+        all.extend(r.events.iter().map(|e| (r.step, *e)));
+    }
+    all
+}
+
+#[test]
+fn a_millimetre_ball_dropped_from_ten_centimetres_rests_on_the_floor() {
+    let mut sim = simulation("millimetre-ball");
+    let lowered = sim.lowered_tolerances();
+    assert_eq!(lowered.len(), 4, "{lowered:?}");
+    let seen = events(&mut sim, 120);
+    let ball = &sim.world.bodies[0].state;
+    // Resting on the floor: its centre one radius up, give or take a tenth.
+    assert!(
+        (ball.position.y - 0.0005).abs() < 0.00005,
+        "the ball's centre at {} m",
+        ball.position.y
+    );
+    // It arrived 2.3 cm deep in one step (over twice its width): said so.
+    assert!(
+        seen.iter()
+            .any(|(_, e)| matches!(e, Event::WhollyInside { .. })),
+        "{seen:?}"
+    );
+}
+
+#[test]
+fn a_ball_pushed_out_through_the_far_side_of_a_thin_slab_is_reported() {
+    use contact_lab::physics::BodyId;
+    let mut sim = simulation("slab-tunnel");
+    let seen = events(&mut sim, 10);
+    assert!(
+        seen.contains(&(
+            2,
+            Event::PushedThrough {
+                body: BodyId(0),
+                through: BodyId(1)
+            }
+        )),
+        "{seen:?}"
+    );
+    // It did go through: past the slab, still flying.
+    assert!(sim.world.bodies[0].state.position.x > 4.0);
+}
+
+#[test]
+fn a_speck_inside_a_planet_is_reported_wholly_inside() {
+    use contact_lab::physics::BodyId;
+    let mut sim = simulation("sphere-in-sphere");
+    let seen = events(&mut sim, 3);
+    let inside: Vec<_> = seen
+        .iter()
+        .filter_map(|(step, e)| match *e {
+            Event::WhollyInside {
+                body1,
+                body2,
+                penetration,
+                width,
+            } => Some((*step, body1, body2, penetration, width)),
+            _ => None,
+        })
+        .collect();
+    // Once, when it starts; 6e8 radii deep against a width of 2e-12 m.
+    assert_eq!(inside.len(), 1, "{seen:?}");
+    let (step, a, b, penetration, width) = inside[0];
+    assert_eq!((step, a, b), (1, BodyId(0), Some(BodyId(1))));
+    assert!(
+        penetration > 5e-4 && (width - 2e-12).abs() < 1e-24,
+        "{penetration} {width}"
+    );
+}

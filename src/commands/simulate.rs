@@ -26,12 +26,18 @@ pub fn simulate(
     let lesson = Lesson::load(&args.lesson)?;
     warn(&lesson, err);
     let (mut sim, steps) = simulation(&lesson, args)?;
+    for l in sim.lowered_tolerances() {
+        let _ = writeln!(err, "warning: {}", crate::trace::run::lowered_text(&l));
+    }
     if let Some(n) = args.trace_step {
         return trace_step(&lesson, args, sim, steps, n, out);
     }
     let names = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let mut trace = RunTrace::new(&lesson.id, &lesson.title, names, &sim);
     trace.frames.push(RunTrace::initial(&sim));
+    // A blow-up stops the run: what was computed up to it is still written
+    // (its last line says where and why it stopped), then the command fails.
+    let mut failure = None;
     for n in 1..=steps {
         match sim.advance() {
             Ok(report) => {
@@ -40,7 +46,12 @@ pub fn simulate(
                     trace.frames.push(RunTrace::frame(&sim, &report));
                 }
             }
-            Err(blow_up) => return Err(blew_up(&lesson, &blow_up)),
+            Err(blow_up) => {
+                let e = blew_up(&lesson, &blow_up);
+                trace.stopped = Some(e.to_string());
+                failure = Some(e);
+                break;
+            }
         }
     }
     let text = match args.format {
@@ -53,7 +64,8 @@ pub fn simulate(
         }
         RunFormat::Svg => run::svg(&trace, plane(args.plane)),
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    out.write_all(text.as_bytes()).map_err(io)?;
+    failure.map_or(Ok(()), Err)
 }
 
 fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {

@@ -110,6 +110,20 @@ impl Player {
 pub fn blew_up(names: &Names, e: &BlowUp) -> String {
     let body = match e {
         BlowUp::NonFinite { body, .. } | BlowUp::Energy { body, .. } => *body,
+        BlowUp::Surge { bodies, .. } => {
+            let f = crate::format::Fmt::new(3);
+            let list: Vec<String> = bodies
+                .iter()
+                .map(|(b, v0, v1)| {
+                    let name = names.bodies.get(*b).map_or("?", String::as_str);
+                    format!("'{name}' {} → {} m/s", f.num(*v0), f.num(*v1))
+                })
+                .collect();
+            return format!(
+                "the scene blew up: {e}; the bodies that sped up most: {}",
+                list.join(", ")
+            );
+        }
     };
     let name = names.bodies.get(body).map_or("?", String::as_str);
     format!("the scene blew up: {e} (body '{name}')")

@@ -210,6 +210,28 @@ impl RunTrace {
                     cause_text(cause)
                 ),
             ),
+            Event::WhollyInside {
+                body1,
+                body2,
+                penetration,
+                width,
+            } => (
+                "overlap",
+                format!(
+                    "wholly inside: {} overlap by {} m, at least the smaller body's width along the normal ({} m): the contact cannot tell which way is out",
+                    self.pair(body1, body2),
+                    f.num(penetration),
+                    f.num(width)
+                ),
+            ),
+            Event::PushedThrough { body, through } => (
+                "overlap",
+                format!(
+                    "pushed through: {} crossed the middle of {} in one step, and the position phase pushes it out through the far side",
+                    self.name(body),
+                    self.name(through)
+                ),
+            ),
             Event::ProjectionLift { gained } => (
                 "energy",
                 format!(
@@ -264,4 +286,33 @@ fn cause_text(cause: EnergyCause) -> String {
             switch_list(tried, ", ")
         ),
     }
+}
+
+/// A tolerance the bodies' size lowered, as a warning says it.
+pub fn lowered_text(l: &crate::physics::step::tolerance::Lowered) -> String {
+    use crate::physics::step::tolerance::Tolerance;
+    let f = crate::format::Fmt::new(3);
+    let (name, unit, bound) = match l.which {
+        Tolerance::PositionEpsilon => (
+            "position epsilon",
+            "m",
+            "a tenth of the smallest body's half-width",
+        ),
+        Tolerance::ContactMargin => (
+            "contact margin",
+            "m",
+            "a tenth of the smallest body's half-width",
+        ),
+        Tolerance::VelocityEpsilon => (
+            "velocity epsilon",
+            "m/s",
+            "a tenth of √(|g| × the smallest half-width)",
+        ),
+        Tolerance::SleepEpsilon => ("sleep epsilon", "m²/s²", "|g| × the smallest half-width"),
+    };
+    format!(
+        "the {name} {} {unit} would swallow the smallest body; {} {unit} is used ({bound})",
+        f.num(l.given),
+        f.num(l.used)
+    )
 }

@@ -9,7 +9,7 @@ use super::audit::Switches;
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
-use super::{audit, energy, replay};
+use super::{audit, energy, overlap, replay, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::{BoxBoxMode, Material};
 use crate::physics::resolver::sequential::WarmCache;
@@ -92,6 +92,16 @@ pub struct Simulation<T: Real> {
     /// Whether the last step's position phase lifted bodies (reported once
     /// when it starts).
     lifting: bool,
+    /// Each body's speed at the start of the step (storage kept).
+    speeds: Vec<f64>,
+    /// The smallest half-width of a movable body (the tolerances' scale).
+    size: Option<f64>,
+    /// The parameters the scaled ones were made from, and the scaled ones.
+    scaled_for: Option<SimParams<T>>,
+    scaled: SimParams<T>,
+    /// Pairs wholly inside one another this step and the last.
+    inside: Vec<(BodyId, Option<BodyId>)>,
+    inside_before: Vec<(BodyId, Option<BodyId>)>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -113,8 +123,15 @@ impl<T: Real> Simulation<T> {
             limits_hit: [false; 2],
             gaining: false,
             lifting: false,
+            speeds: Vec::new(),
+            size: None,
+            scaled_for: None,
+            scaled: SimParams::default(),
+            inside: Vec::new(),
+            inside_before: Vec::new(),
         };
         sim.world.contacts.clear();
+        sim.size = tolerance::smallest_size(&sim.world);
         let g = sim.params.world.gravity;
         let scale = energy::kinetic(&sim.world) + potential_scale(&sim.world, &g);
         sim.energy_scale = to_f64(scale).abs().max(1e-9);
@@ -141,8 +158,43 @@ impl<T: Real> Simulation<T> {
         &mut self,
         observer: &mut O,
     ) -> Result<StepReport, BlowUp> {
+        self.with_scaled_tolerances(|sim| sim.advance_scaled(observer))
+    }
+
+    /// The tolerances the scene's sizes lowered (see [`tolerance`]), for
+    /// the parameters as they are now.
+    pub fn lowered_tolerances(&self) -> Vec<tolerance::Lowered> {
+        tolerance::scaled(&self.params, self.size).1
+    }
+
+    /// Runs `f` with the tolerances scaled to the bodies in `params`, and
+    /// the parameters as given restored after it.
+    fn with_scaled_tolerances<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
+        if self.scaled_for.as_ref() != Some(&self.params) {
+            self.scaled = tolerance::scaled(&self.params, self.size).0;
+            self.scaled_for = Some(self.params.clone());
+        }
+        let given = std::mem::replace(&mut self.params, self.scaled.clone());
+        let result = f(self);
+        self.params = given;
+        result
+    }
+
+    fn advance_scaled<O: Observer<T>>(&mut self, observer: &mut O) -> Result<StepReport, BlowUp> {
         let p = self.params.clone();
         let mut events = Vec::new();
+        // What this step may give at most (the blow-up rule), and each
+        // body's speed to name the ones that blew up.
+        let kinetic_start = to_f64(energy::kinetic(&self.world));
+        let surge_bound =
+            super::report::surge_bound(&self.world, to_f64(p.world.gravity.norm()), to_f64(p.dt));
+        self.speeds.clear();
+        self.speeds.extend(
+            self.world
+                .bodies
+                .iter()
+                .map(|b| to_f64(b.state.velocity.norm())),
+        );
         self.begin_step(&mut events);
         let max_penetration = self
             .world
@@ -225,6 +277,15 @@ impl<T: Real> Simulation<T> {
         self.limits_hit = [position.limit_reached, velocity.limit_reached];
         super::report::check_finite(&self.world, self.step)?;
         let kinetic = to_f64(energy::kinetic(&self.world));
+        if kinetic > super::report::SURGE_FACTOR * surge_bound + 1e-9 * self.energy_scale {
+            return Err(BlowUp::Surge {
+                step: self.step,
+                before: kinetic_start,
+                after: kinetic,
+                bound: surge_bound,
+                bodies: super::report::sped_up(&self.world, &self.speeds),
+            });
+        }
         if kinetic > 1e6 * self.energy_scale {
             return Err(BlowUp::Energy {
                 step: self.step,
@@ -254,6 +315,7 @@ impl<T: Real> Simulation<T> {
         let p = self.params.clone();
         // 1. Contacts from the shapes where the bodies are now.
         self.generate_contacts();
+        self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
@@ -277,11 +339,40 @@ impl<T: Real> Simulation<T> {
         }
     }
 
+    /// Bodies wholly inside others (when it starts) and bodies about to be
+    /// pushed through a thin body, from this step's contacts and the
+    /// velocities that brought the bodies here.
+    fn overlap_events(&mut self, events: &mut Vec<Event>) {
+        std::mem::swap(&mut self.inside, &mut self.inside_before);
+        self.inside.clear();
+        for k in &self.world.contacts {
+            if let Some(width) = overlap::wholly_inside(&self.world, k) {
+                let pair = (k.body1, k.body2);
+                if !self.inside_before.contains(&pair) {
+                    events.push(Event::WhollyInside {
+                        body1: k.body1,
+                        body2: k.body2,
+                        penetration: to_f64(k.input.penetration),
+                        width,
+                    });
+                }
+                self.inside.push(pair);
+            }
+            if let Some((body, through)) = overlap::pushed_through(&self.world, k, self.params.dt) {
+                let event = Event::PushedThrough { body, through };
+                if !events.contains(&event) {
+                    events.push(event);
+                }
+            }
+        }
+    }
+
     /// The next step's resolution re-run from its inputs with `off`
     /// switched off (the experiment behind an energy event), leaving this
     /// simulation as it is.
     pub fn replay_next(&self, off: Switches) -> replay::Resolved {
         let mut sim = self.clone();
+        sim.params = tolerance::scaled(&self.params, self.size).0;
         sim.begin_step(&mut Vec::new());
         replay::StepInputs {
             world: &sim.world,
