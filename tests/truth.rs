@@ -321,3 +321,65 @@ fn a_speck_inside_a_planet_is_reported_wholly_inside() {
         "{penetration} {width}"
     );
 }
+
+#[test]
+fn a_surge_far_beyond_what_the_step_can_give_stops_the_run_where_the_old_guard_did_not() {
+    use contact_lab::physics::step::BlowUp;
+    let mut sim = simulation("runaway-friction");
+    let scale = sim.energy_scale();
+    match sim.advance() {
+        Err(BlowUp::Surge {
+            step,
+            before,
+            after,
+            bound,
+            bodies,
+        }) => {
+            assert_eq!(step, 1);
+            assert_eq!(before, 2.0);
+            assert!(after > 1000.0 * bound, "{after} {bound}");
+            // Below the 10⁶ × energy-scale guard: only the new rule catches it.
+            assert!(after < 1e6 * scale, "{after} {scale}");
+            assert_eq!(bodies[0].0, 0);
+            assert!(bodies[0].1 == 2.0 && bodies[0].2 > 100.0, "{bodies:?}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_run_that_blows_up_writes_what_it_computed_and_exits_1() {
+    use assert_cmd::Command;
+    let file = "tests/truth/runaway-friction.toml";
+    let run = |format: &str| {
+        let out = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["simulate", file, "--format", format])
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+        )
+    };
+    let (code, stdout, stderr) = run("json");
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("step 1:") && stderr.contains("'box' 2 → 315 m/s"),
+        "{stderr}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&stdout).expect("valid JSON");
+    assert_eq!(
+        json["steps"].as_array().unwrap().len(),
+        1,
+        "the initial frame"
+    );
+    assert!(json["stopped"].as_str().unwrap().contains("blew up"));
+    let (code, stdout, _) = run("text");
+    assert_eq!(code, Some(1));
+    assert!(
+        stdout.contains("\nstopped: ") && stdout.contains("step 1:"),
+        "{stdout}"
+    );
+}
