@@ -8,7 +8,7 @@
 
 use nalgebra::Vector3;
 
-use crate::physics::{to_f64, BodyId, Contact, Real, World};
+use crate::physics::{to_f64, BodyId, Contact, Real, Shape, World};
 
 /// The width of a body along the world direction `n` (`None`: a half-space
 /// or a body without a shape, unbounded).
@@ -23,9 +23,27 @@ pub fn width_along<T: Real>(world: &World<T>, id: BodyId, n: &Vector3<f64>) -> O
     Some((far - near).dot(&local))
 }
 
+/// A lower bound on a body's width along any direction: a sphere's
+/// diameter, a box's smallest side, a cylinder's smaller of diameter and
+/// height (infinite for a half-space or a body without a shape).
+fn thinnest<T: Real>(world: &World<T>, id: BodyId) -> f64 {
+    match world.body(id).shape {
+        Some(Shape::Sphere { radius }) | Some(Shape::HollowSphere { radius }) => 2.0 * radius,
+        Some(Shape::Box { sides }) => sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)),
+        Some(Shape::Cylinder { radius, height }) => (2.0 * radius).min(height),
+        Some(Shape::HalfSpace { .. }) | None => f64::INFINITY,
+    }
+}
+
 /// Whether a contact's penetration reaches the smaller body's width along
 /// its normal: one body is wholly inside the other. Returns that width.
 pub fn wholly_inside<T: Real>(world: &World<T>, k: &Contact<T>) -> Option<f64> {
+    // Cheap test first: shallower than either body's thinnest width.
+    let depth = to_f64(k.input.penetration);
+    let thin = k.body2.map_or(f64::INFINITY, |b| thinnest(world, b));
+    if depth < thinnest(world, k.body1).min(thin) {
+        return None;
+    }
     let n = k.input.normal.map(to_f64);
     let w1 = width_along(world, k.body1, &n);
     let w2 = k.body2.and_then(|b| width_along(world, b, &n));
