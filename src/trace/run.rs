@@ -278,7 +278,7 @@ fn cause_text(cause: EnergyCause) -> String {
             switch_list(s, " or ")
         ),
         EnergyCause::Together(s) => format!(
-            "{} together (no one of them alone, all of them switched off remove the gain)",
+            "{} together (no one of them alone removes the gain; all of them switched off do)",
             switch_list(s, " and ")
         ),
         EnergyCause::Unexplained { tried } => format!(
