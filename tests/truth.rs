@@ -43,6 +43,14 @@ fn verified_run(sim: &mut Simulation<f64>, steps: usize, what: &str) -> Vec<Veri
             Err(e) => panic!("{what}: {e}"),
         };
         for e in &report.events {
+            if let Event::ProjectionLift { gained } = *e {
+                // The lift comes back in a replay, and goes without projection.
+                use contact_lab::physics::step::audit::Switch;
+                let again = before.replay_next(Switches::empty());
+                assert_eq!(again.potential_rise, gained, "{what} step {}", report.step);
+                let without = before.replay_next(Switches::one(Switch::Projection));
+                assert_eq!(without.potential_rise, 0.0, "{what} step {}", report.step);
+            }
             let Event::EnergyGain { gained, cause } = *e else {
                 continue;
             };

@@ -293,25 +293,19 @@ pub fn lowered_text(l: &crate::physics::step::tolerance::Lowered) -> String {
     use crate::physics::step::tolerance::Tolerance;
     let f = crate::format::Fmt::new(3);
     let (name, unit, bound) = match l.which {
-        Tolerance::PositionEpsilon => (
-            "position epsilon",
-            "m",
-            "a tenth of the smallest body's half-width",
-        ),
-        Tolerance::ContactMargin => (
-            "contact margin",
-            "m",
-            "a tenth of the smallest body's half-width",
-        ),
+        Tolerance::PositionEpsilon => {
+            ("position epsilon", "m", "at most a tenth of its half-width")
+        }
+        Tolerance::ContactMargin => ("contact margin", "m", "at most a tenth of its half-width"),
         Tolerance::VelocityEpsilon => (
             "velocity epsilon",
             "m/s",
-            "a tenth of √(|g| × the smallest half-width)",
+            "at most a tenth of √(g × its half-width)",
         ),
-        Tolerance::SleepEpsilon => ("sleep epsilon", "m²/s²", "|g| × the smallest half-width"),
+        Tolerance::SleepEpsilon => ("sleep epsilon", "m²/s²", "at most g × its half-width"),
     };
     format!(
-        "the {name} {} {unit} would swallow the smallest body; {} {unit} is used ({bound})",
+        "the {name} {} {unit} is lowered to {} {unit} for the smallest body ({bound})",
         f.num(l.given),
         f.num(l.used)
     )
