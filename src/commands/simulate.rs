@@ -25,6 +25,9 @@ pub fn simulate(
     warn(&lesson, err);
     let (mut sim, steps) = simulation(&lesson, args)?;
     warn_knobs(&sim.params.resolver, err);
+    for l in sim.lowered_tolerances() {
+        let _ = writeln!(err, "warning: {}", crate::trace::run::lowered_text(&l));
+    }
     if let Some(n) = args.trace_step {
         return trace_step(&lesson, args, sim, steps, n, out);
     }
@@ -101,6 +104,7 @@ fn film(
         trace.frames.push(f);
     };
     keep(&mut trace, RunTrace::initial(&sim));
+    let mut failure = None;
     for n in 1..=steps {
         match sim.advance() {
             Ok(report) => {
@@ -109,11 +113,18 @@ fn film(
                     keep(&mut trace, RunTrace::frame(&sim, &report));
                 }
             }
-            Err(blow_up) => return Err(blew_up(lesson, &blow_up)),
+            Err(blow_up) => {
+                // The film strip up to the stop is still drawn.
+                let e = blew_up(lesson, &blow_up);
+                trace.stopped = Some(e.to_string());
+                failure = Some(e);
+                break;
+            }
         }
     }
     out.write_all(run::svg(&trace, plane(args.plane)).as_bytes())
-        .map_err(io)
+        .map_err(io)?;
+    failure.map_or(Ok(()), Err)
 }
 
 fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {

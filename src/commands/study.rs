@@ -116,7 +116,8 @@ fn planned_steps(specs: &[SceneSpec], o: &Options) -> u64 {
             let Some(d) = grid::default_config(&s.lesson) else {
                 return 0;
             };
-            let reference = steps(s.seconds, grid::reference(&d, s.reference_solver).params.dt) as u64;
+            let reference =
+                steps(s.seconds, grid::reference(&d, s.reference_solver).params.dt) as u64;
             grid::rows(&d, grid::features(&s.lesson), o.quick, &o.grid)
                 .iter()
                 .map(|(_, _, c)| runs.saturating_mul(steps(s.seconds, c.params.dt) as u64))

@@ -1,7 +1,7 @@
 //! The description of a run in time: one frame per recorded step (the step's
 //! numbers and every body's state) and the events in words, with body names.
 
-use crate::physics::step::audit::EnergyCause;
+use crate::physics::step::audit::{EnergyCause, Switch, Switches};
 use crate::physics::step::{Event, Simulation, StepReport};
 use crate::physics::{BodyId, Shape};
 
@@ -205,25 +205,108 @@ impl RunTrace {
             Event::EnergyGain { gained, cause } => (
                 "energy",
                 format!(
-                    "the velocity phase added {} J of kinetic energy (from now on, each step, until it stops); cause: {}",
+                    "the resolution added {} J of kinetic energy (from now on, each step, until it stops); cause: {}",
                     f.num(gained),
                     cause_text(cause)
+                ),
+            ),
+            Event::WhollyInside {
+                body1,
+                body2,
+                penetration,
+                width,
+            } => (
+                "overlap",
+                format!(
+                    "wholly inside: {} overlap by {} m, at least the smaller body's width along the normal ({} m): the contact cannot tell which way is out",
+                    self.pair(body1, body2),
+                    f.num(penetration),
+                    f.num(width)
+                ),
+            ),
+            Event::PushedThrough { body, through } => (
+                "overlap",
+                format!(
+                    "pushed through: {} crossed the middle of {} in one step, and the position phase pushes it out through the far side",
+                    self.name(body),
+                    self.name(through)
+                ),
+            ),
+            Event::ProjectionLift { gained } => (
+                "energy",
+                format!(
+                    "projection lifted bodies out of penetration, adding {} J of potential energy (from now on, each step, until it stops)",
+                    f.num(gained)
                 ),
             ),
         }
     }
 }
 
-/// Why the velocity phase may have added energy, as the event says it.
-fn cause_text(cause: EnergyCause) -> &'static str {
-    match cause {
-        EnergyCause::RestitutionWithFriction => {
-            "restitution with friction (Newton's law with sticking friction can gain energy, as in the Kane example)"
-        }
-        EnergyCause::AccelerationCompensation => {
-            "acceleration compensation (a desired Δv from last frame's acceleration)"
-        }
-        EnergyCause::Both => "restitution with friction, or acceleration compensation",
-        EnergyCause::Unexplained => "no stated cause: a defect",
+/// The switches of an energy audit in words.
+fn switch_text(s: Switch) -> &'static str {
+    match s {
+        Switch::RestitutionWithFriction => "restitution with friction (Newton's law with sticking friction, as in the Kane example)",
+        Switch::VelocityScaling => "the velocity-scaling friction model's rule",
+        Switch::KineticDirection => "the kinetic-direction friction model's rule",
+        Switch::WarmStart => "warm starting from last step's impulses",
+        Switch::AccelerationCompensation => "acceleration compensation (a desired Δv from last frame's acceleration)",
+        Switch::Projection => "projection (the position phase)",
+        Switch::Friction => "friction at contacts solved together",
+        Switch::Restitution => "restitution at contacts solved together",
     }
+}
+
+fn switch_list(s: Switches, joint: &str) -> String {
+    let words: Vec<&str> = s.iter().map(switch_text).collect();
+    match words.as_slice() {
+        [] => "nothing".to_string(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{}{joint}{last}", init.join(", ")),
+    }
+}
+
+/// What the audit's re-runs of the step showed, as the event says it.
+fn cause_text(cause: EnergyCause) -> String {
+    match cause {
+        EnergyCause::Each(s) if s.len() == 1 => format!(
+            "{} (the same step without it gains nothing)",
+            switch_list(s, "")
+        ),
+        EnergyCause::Each(s) => format!(
+            "{} (the same step without any one of them gains nothing)",
+            switch_list(s, " or ")
+        ),
+        EnergyCause::Together(s) => format!(
+            "{} together (no one of them alone removes the gain; all of them switched off do)",
+            switch_list(s, " and ")
+        ),
+        EnergyCause::Unexplained { tried } => format!(
+            "none found: the same step still gains with each of these switched off, and with all of them: {}",
+            switch_list(tried, ", ")
+        ),
+    }
+}
+
+/// A tolerance the bodies' size lowered, as a warning says it.
+pub fn lowered_text(l: &crate::physics::step::tolerance::Lowered) -> String {
+    use crate::physics::step::tolerance::Tolerance;
+    let f = crate::format::Fmt::new(3);
+    let (name, unit, bound) = match l.which {
+        Tolerance::PositionEpsilon => {
+            ("position epsilon", "m", "at most a tenth of its half-width")
+        }
+        Tolerance::ContactMargin => ("contact margin", "m", "at most a tenth of its half-width"),
+        Tolerance::VelocityEpsilon => (
+            "velocity epsilon",
+            "m/s",
+            "at most a tenth of √(g × its half-width)",
+        ),
+        Tolerance::SleepEpsilon => ("sleep epsilon", "m²/s²", "at most g × its half-width"),
+    };
+    format!(
+        "the {name} {} {unit} is lowered to {} {unit} for the smallest body ({bound})",
+        f.num(l.given),
+        f.num(l.used)
+    )
 }

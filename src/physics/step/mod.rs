@@ -6,9 +6,12 @@
 pub mod audit;
 pub mod energy;
 pub mod integrate;
+pub mod overlap;
+pub mod replay;
 pub mod report;
 pub mod simulation;
 pub mod sleep;
+pub mod tolerance;
 
 pub use integrate::{integrate, Loads};
 pub use simulation::{BlowUp, Event, SimParams, Simulation, StepReport};

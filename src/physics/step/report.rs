@@ -46,11 +46,33 @@ pub enum Event {
     VelocityLimit {
         left: f64,
     },
-    /// The velocity phase added `gained` J of kinetic energy (reported when
-    /// it starts, not again while it goes on), and what can explain it.
+    /// The resolution added `gained` J of kinetic energy (reported when it
+    /// starts, not again while it goes on), and the causes that the step,
+    /// re-run from the same inputs with them switched off, shows.
     EnergyGain {
         gained: f64,
         cause: super::audit::EnergyCause,
+    },
+    /// A body is wholly inside another: the contact's penetration reaches
+    /// the smaller body's `width` along the normal (reported when it starts).
+    WhollyInside {
+        body1: BodyId,
+        body2: Option<BodyId>,
+        penetration: f64,
+        width: f64,
+    },
+    /// The position phase is about to push `body` out through the far side
+    /// of `through` (the thinner of the two): last step `body` was on the
+    /// other side of `through`'s centre.
+    PushedThrough {
+        body: BodyId,
+        through: BodyId,
+    },
+    /// The position phase lifted bodies out of penetration, adding `gained`
+    /// J of potential energy beyond the settling of resting contacts
+    /// (reported when it starts, not again while it goes on).
+    ProjectionLift {
+        gained: f64,
     },
 }
 
@@ -89,6 +111,49 @@ pub enum BlowUp {
         energy: f64,
         scale: f64,
     },
+    /// One step's kinetic energy rose more than [`SURGE_FACTOR`] times what
+    /// the step could give (see [`surge_bound`]).
+    #[error("step {step}: the kinetic energy rose from {before:e} J to {after:e} J in one step, over {SURGE_FACTOR} times the {bound:e} J that the bodies' speeds and one step of acceleration account for")]
+    Surge {
+        step: u64,
+        before: f64,
+        after: f64,
+        bound: f64,
+        /// The bodies that sped up most: (body, speed before, speed after),
+        /// fastest first, at most five.
+        bodies: Vec<(usize, f64, f64)>,
+    },
+}
+
+/// How many times the step's own bound a step's kinetic energy may reach
+/// before the run stops. The bound holds the energy the bodies brought and
+/// what one step of gravity (and last frame's acceleration, for
+/// compensation) can add to it; restitution ≤ 1 gives back at most what was
+/// there. The lecture's ingredients that can gain energy on their own
+/// (restitution with friction, the friction models' rules, compensation)
+/// are `energy` events, and stay well under this factor: the worst seen,
+/// velocity-scaling friction with μ = 5, multiplies a step's energy by
+/// about 85. A thousand times (about 32 times the speed) is a blow-up.
+pub const SURGE_FACTOR: f64 = 1000.0;
+
+/// A step's bound: `Σ ½ m (|v| + (|g| + |a|) dt)² + K` over the movable
+/// bodies at the start of the step (sleepers too: v their velocity, ω folded in as
+/// `|ω| × bounding radius`, a last frame's acceleration).
+pub fn surge_bound<T: Real>(world: &World<T>, gravity: f64, dt: f64) -> f64 {
+    world
+        .bodies
+        .iter()
+        .filter(|b| b.movable)
+        .map(|b| {
+            let s = &b.state;
+            let reach = b.shape.and_then(|sh| sh.bounding_radius()).unwrap_or(0.0);
+            let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
+            let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
+            let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);
+            // Angular energy beyond what |ω| × radius stands for (thin bodies).
+            e + to_f64(s.kinetic_energy(&s.velocity, &s.angular_velocity))
+        })
+        .sum()
 }
 
 /// The first movable body with a non-finite state, as a blow-up.
@@ -122,4 +187,20 @@ pub fn fastest<T: Real>(world: &World<T>) -> usize {
         .filter(|i| world.bodies[*i].movable)
         .max_by(|a, b| speed(&world.bodies[*a]).total_cmp(&speed(&world.bodies[*b])))
         .unwrap_or(0)
+}
+
+/// The bodies that sped up most in a step, fastest-gaining first (at most
+/// five): (body, speed before, speed after).
+pub fn sped_up<T: Real>(world: &World<T>, before: &[f64]) -> Vec<(usize, f64, f64)> {
+    let mut rows: Vec<(usize, f64, f64)> = world
+        .bodies
+        .iter()
+        .zip(before)
+        .enumerate()
+        .filter(|(_, (b, _))| b.movable)
+        .map(|(i, (b, v0))| (i, *v0, to_f64(b.state.velocity.norm())))
+        .collect();
+    rows.sort_by(|a, b| (b.2 - b.1).total_cmp(&(a.2 - a.1)));
+    rows.truncate(5);
+    rows
 }

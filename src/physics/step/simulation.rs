@@ -6,10 +6,11 @@
 use nalgebra::Vector3;
 use std::collections::HashMap;
 
+use super::audit::Switches;
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
-use super::{audit, energy};
+use super::{audit, energy, overlap, replay, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
@@ -44,6 +45,19 @@ pub struct Simulation<T: Real> {
     /// Whether the last step's velocity phase added energy (reported once
     /// when it starts).
     gaining: bool,
+    /// Whether the last step's position phase lifted bodies (reported once
+    /// when it starts).
+    lifting: bool,
+    /// Each body's speed at the start of the step (storage kept).
+    speeds: Vec<f64>,
+    /// The smallest half-width of a movable body (the tolerances' scale).
+    size: Option<f64>,
+    /// The parameters the scaled ones were made from, and the scaled ones.
+    scaled_for: Option<SimParams<T>>,
+    scaled: SimParams<T>,
+    /// Pairs wholly inside one another this step and the last.
+    inside: Vec<(BodyId, Option<BodyId>)>,
+    inside_before: Vec<(BodyId, Option<BodyId>)>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -64,8 +78,16 @@ impl<T: Real> Simulation<T> {
             energy_scale: 0.0,
             limits_hit: [false; 2],
             gaining: false,
+            lifting: false,
+            speeds: Vec::new(),
+            size: None,
+            scaled_for: None,
+            scaled: SimParams::default(),
+            inside: Vec::new(),
+            inside_before: Vec::new(),
         };
         sim.world.contacts.clear();
+        sim.size = tolerance::smallest_size(&sim.world);
         let g = sim.params.world.gravity;
         let scale = energy::kinetic(&sim.world) + potential_scale(&sim.world, &g);
         sim.energy_scale = to_f64(scale).abs().max(1e-9);
@@ -92,38 +114,50 @@ impl<T: Real> Simulation<T> {
         &mut self,
         observer: &mut O,
     ) -> Result<StepReport, BlowUp> {
+        self.with_scaled_tolerances(|sim| sim.advance_scaled(observer))
+    }
+
+    /// The tolerances the scene's sizes lowered (see [`tolerance`]), for
+    /// the parameters as they are now.
+    pub fn lowered_tolerances(&self) -> Vec<tolerance::Lowered> {
+        tolerance::scaled(&self.params, self.size).1
+    }
+
+    /// Runs `f` with the tolerances scaled to the bodies in `params`, and
+    /// the parameters as given restored after it.
+    fn with_scaled_tolerances<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
+        if self.scaled_for.as_ref() != Some(&self.params) {
+            self.scaled = tolerance::scaled(&self.params, self.size).0;
+            self.scaled_for = Some(self.params);
+        }
+        let given = std::mem::replace(&mut self.params, self.scaled);
+        let result = f(self);
+        self.params = given;
+        result
+    }
+
+    fn advance_scaled<O: Observer<T>>(&mut self, observer: &mut O) -> Result<StepReport, BlowUp> {
         let p = self.params;
         let mut events = Vec::new();
-        // 1. Contacts from the shapes where the bodies are now.
-        self.generate_contacts();
-        // 2. Velocities of the awake bodies: gravity and damping over the step.
-        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
-            if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate_velocity(
-                    &mut body.state,
-                    &p.world.gravity,
-                    &Loads::default(),
-                    p.world.linear_damping,
-                    p.world.angular_damping,
-                    p.dt,
-                );
-            }
-        }
-        self.world.step.duration = p.dt;
-        // Resolved between the velocity and the position update, the
-        // contacts see this step's build-up already: nothing to anticipate.
-        self.world.step.anticipate_planar_acceleration = false;
+        // What this step may give at most (the blow-up rule), and each
+        // body's speed to name the ones that blew up.
+        let kinetic_start = to_f64(energy::kinetic(&self.world));
+        let surge_bound =
+            super::report::surge_bound(&self.world, to_f64(p.world.gravity.norm()), to_f64(p.dt));
+        self.speeds.clear();
+        self.speeds.extend(
+            self.world
+                .bodies
+                .iter()
+                .map(|b| to_f64(b.state.velocity.norm())),
+        );
+        self.begin_step(&mut events);
         let max_penetration = self
             .world
             .contacts
             .iter()
             .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
-        // 3. Wake sleepers that an awake body presses on.
-        if p.sleep.enabled {
-            self.wake_touched(&mut events);
-        }
         let closing_before = self.normal_velocities();
-        let kinetic_before = to_f64(energy::kinetic(&self.world));
         // 4. Resolve the contacts together.
         let resolver = match &mut self.resolver {
             Some(r) => {
@@ -139,23 +173,38 @@ impl<T: Real> Simulation<T> {
         observer.resolving(&self.world, resolver);
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
-        if warm {
-            self.warm.store(&self.world, resolver);
-        }
-        resolver.write_back(&mut self.world);
+        // The audits, while the world still holds the step's inputs.
+        let energy = replay::resolved(&self.world, resolver, &p.world.gravity);
         let gained = audit::gain(
-            kinetic_before,
-            to_f64(energy::kinetic(&self.world)),
+            energy.kinetic_before,
+            energy.kinetic_after,
             self.energy_scale,
         );
+        let inputs = replay::StepInputs {
+            world: &self.world,
+            params: &p.resolver,
+            warm: &self.warm,
+            gravity: p.world.gravity,
+            scale: self.energy_scale,
+        };
         let gain_event = match (gained, self.gaining) {
             (Some(gained), false) => Some(Event::EnergyGain {
                 gained,
-                cause: audit::cause(&self.world, p.acceleration_compensation),
+                cause: inputs.attribute(),
             }),
             _ => None,
         };
         self.gaining = gained.is_some();
+        let lifted = projection_lift(&energy, p.resolver.position_epsilon, self.energy_scale);
+        let lift_event = match (lifted, self.lifting) {
+            (Some(gained), false) => Some(Event::ProjectionLift { gained }),
+            _ => None,
+        };
+        self.lifting = lifted.is_some();
+        if warm {
+            self.warm.store(&self.world, resolver);
+        }
+        resolver.write_back(&mut self.world);
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
@@ -169,6 +218,7 @@ impl<T: Real> Simulation<T> {
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
+        events.extend(lift_event);
         events.extend(gain_event);
         if position.limit_reached && !self.limits_hit[0] {
             events.push(Event::PositionLimit {
@@ -183,6 +233,15 @@ impl<T: Real> Simulation<T> {
         self.limits_hit = [position.limit_reached, velocity.limit_reached];
         super::report::check_finite(&self.world, self.step)?;
         let kinetic = to_f64(energy::kinetic(&self.world));
+        if kinetic > super::report::SURGE_FACTOR * surge_bound + 1e-9 * self.energy_scale {
+            return Err(BlowUp::Surge {
+                step: self.step,
+                before: kinetic_start,
+                after: kinetic,
+                bound: surge_bound,
+                bodies: super::report::sped_up(&self.world, &self.speeds),
+            });
+        }
         if kinetic > 1e6 * self.energy_scale {
             return Err(BlowUp::Energy {
                 step: self.step,
@@ -204,6 +263,86 @@ impl<T: Real> Simulation<T> {
             velocity_iterations: velocity.iterations_used,
             events,
         })
+    }
+
+    /// The step up to its resolution: contacts generated, velocities
+    /// integrated, sleepers woken.
+    fn begin_step(&mut self, events: &mut Vec<Event>) {
+        let p = self.params;
+        // 1. Contacts from the shapes where the bodies are now.
+        self.generate_contacts();
+        self.overlap_events(events);
+        // 2. Velocities of the awake bodies: gravity and damping over the step.
+        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
+            if body.movable && (sleep.awake || !p.sleep.enabled) {
+                integrate_velocity(
+                    &mut body.state,
+                    &p.world.gravity,
+                    &Loads::default(),
+                    p.world.linear_damping,
+                    p.world.angular_damping,
+                    p.dt,
+                );
+            }
+        }
+        self.world.step.duration = p.dt;
+        // Resolved between the velocity and the position update, the
+        // contacts see this step's build-up already: nothing to anticipate.
+        self.world.step.anticipate_planar_acceleration = false;
+        // 3. Wake sleepers that an awake body presses on.
+        if p.sleep.enabled {
+            self.wake_touched(events);
+        }
+    }
+
+    /// Bodies wholly inside others (when it starts) and bodies about to be
+    /// pushed through a thin body, from this step's contacts and the
+    /// velocities that brought the bodies here.
+    fn overlap_events(&mut self, events: &mut Vec<Event>) {
+        std::mem::swap(&mut self.inside, &mut self.inside_before);
+        self.inside.clear();
+        for k in &self.world.contacts {
+            if let Some(width) = overlap::wholly_inside(&self.world, k) {
+                let pair = (k.body1, k.body2);
+                if !self.inside_before.contains(&pair) {
+                    events.push(Event::WhollyInside {
+                        body1: k.body1,
+                        body2: k.body2,
+                        penetration: to_f64(k.input.penetration),
+                        width,
+                    });
+                }
+                self.inside.push(pair);
+            }
+            if let Some((body, through)) = overlap::pushed_through(&self.world, k, self.params.dt) {
+                let event = Event::PushedThrough { body, through };
+                if !events.contains(&event) {
+                    events.push(event);
+                }
+            }
+        }
+    }
+
+    /// The next step's resolution re-run from its inputs with `off`
+    /// switched off (the experiment behind an energy event), leaving this
+    /// simulation as it is.
+    pub fn replay_next(&self, off: Switches) -> replay::Resolved {
+        let mut sim = self.clone();
+        sim.params = tolerance::scaled(&self.params, self.size).0;
+        sim.begin_step(&mut Vec::new());
+        replay::StepInputs {
+            world: &sim.world,
+            params: &sim.params.resolver,
+            warm: &sim.warm,
+            gravity: sim.params.world.gravity,
+            scale: sim.energy_scale,
+        }
+        .replay(off)
+    }
+
+    /// The scene's energy scale (J): what gains and blow-ups are measured against.
+    pub fn energy_scale(&self) -> f64 {
+        self.energy_scale
     }
 
     /// Replaces the world's contacts with those the shapes generate now.
@@ -312,10 +451,23 @@ impl<T: Real> Simulation<T> {
         islands(self.world.bodies.len(), links)
     }
 
+    /// Sleep after the step. A body falls asleep only while it touches
+    /// something (one of this step's contacts, the margin included): sleep
+    /// is for resting contacts, and a body in flight or coasting in free
+    /// space is not resting however slowly it moves. In island mode an
+    /// island needs every body slow for at least one step and `island_time`.
     fn update_sleep(&mut self, events: &mut Vec<Event>) {
         let p = self.params.sleep;
         let dt = self.params.dt;
-        let mut falls = vec![false; self.world.bodies.len()];
+        let n = self.world.bodies.len();
+        let mut touching = vec![false; n];
+        for k in &self.world.contacts {
+            touching[k.body1.0] = true;
+            if let Some(b) = k.body2 {
+                touching[b.0] = true;
+            }
+        }
+        let mut falls = vec![false; n];
         for (i, (body, state)) in self
             .world
             .bodies
@@ -324,18 +476,21 @@ impl<T: Real> Simulation<T> {
             .enumerate()
         {
             if body.movable && state.awake {
-                falls[i] = update_motion(state, &body.state, p.epsilon, dt);
+                falls[i] = update_motion(state, &body.state, p.epsilon, dt) && touching[i];
             }
         }
         if p.mode == SleepMode::Island {
             let roots = self.islands();
-            let n = self.world.bodies.len();
+            let long_enough = if p.island_time > dt {
+                p.island_time
+            } else {
+                dt
+            };
             let mut ready = vec![true; n];
             for i in 0..n {
-                let b = &self.world.bodies[i];
-                if b.movable && (self.sleep[i].slow_for < p.island_time || !self.sleep[i].awake) {
-                    ready[roots[i]] &=
-                        !self.sleep[i].awake || self.sleep[i].slow_for >= p.island_time;
+                let (b, s) = (&self.world.bodies[i], &self.sleep[i]);
+                if b.movable && s.awake {
+                    ready[roots[i]] &= s.slow_for >= long_enough && touching[i];
                 }
             }
             for (i, fall) in falls.iter_mut().enumerate() {
@@ -428,6 +583,15 @@ impl<T: Real> Simulation<T> {
         events.append(&mut bounces);
         self.touching = pairs;
     }
+}
+
+/// The potential energy the position phase added, when it is worth an
+/// event: more than rounding, and more than lifting every resolved body by
+/// the position epsilon (the settling of resting contacts, which the
+/// position phase leaves up to that depth and then resolves).
+fn projection_lift(e: &replay::Resolved, position_epsilon: f64, scale: f64) -> Option<f64> {
+    let settling = e.weight * position_epsilon;
+    audit::gain(0.0, e.potential_rise, scale).filter(|rise| *rise > settling)
 }
 
 /// A potential-energy scale: m |g| (the body's height above the lowest body + 1).

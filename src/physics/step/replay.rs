@@ -1,0 +1,178 @@
+//! A step's resolution run again from its inputs with switches off: the
+//! experiment behind every energy event ([`super::audit`]). The inputs are
+//! the world as the step hands it to the resolver (bodies after the
+//! velocity update, this step's contacts) and last step's warm-start cache;
+//! the step keeps them untouched until the resolver writes back, so nothing
+//! is copied on the fast path: a re-run clones them only when a gain is
+//! being explained.
+
+use nalgebra::Vector3;
+
+use super::audit::{gain, EnergyCause, Switch, Switches};
+use crate::physics::resolver::sequential::WarmCache;
+use crate::physics::resolver::{Implementation, Resolver, Silent};
+use crate::physics::{to_f64, FrictionModel, Real, ResolverParams, Solver, World};
+
+/// What one resolution did to the energy of the bodies it moved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Resolved {
+    /// Kinetic energy of the resolved bodies before and after (J).
+    pub kinetic_before: f64,
+    pub kinetic_after: f64,
+    /// Potential energy the position phase added, `−Σ m g·Δx` (J).
+    pub potential_rise: f64,
+    /// `Σ m |g|` over the resolved bodies (kg m/s², the weight that a lift
+    /// is measured against).
+    pub weight: f64,
+}
+
+/// Energy of `r`'s bodies before (as in `world`) and after resolution
+/// (`½ m v·v + ½ ωᵀ I ω`, with I in the orientation after projection).
+pub fn resolved<T: Real>(world: &World<T>, r: &Resolver<T>, gravity: &Vector3<T>) -> Resolved {
+    let mut out = Resolved {
+        kinetic_before: 0.0,
+        kinetic_after: 0.0,
+        potential_rise: 0.0,
+        weight: 0.0,
+    };
+    for b in &r.bodies {
+        let before = &world.body(b.id).state;
+        out.kinetic_before +=
+            to_f64(before.kinetic_energy(&before.velocity, &before.angular_velocity));
+        let mut after = before.clone();
+        after.orientation = b.orientation;
+        out.kinetic_after += to_f64(after.kinetic_energy(&b.velocity, &b.angular_velocity));
+        out.potential_rise -= to_f64(before.mass * gravity.dot(&(b.position - before.position)));
+        out.weight += to_f64(before.mass * gravity.norm());
+    }
+    out
+}
+
+/// A step's resolution inputs.
+#[derive(Debug, Clone, Copy)]
+pub struct StepInputs<'a, T: Real> {
+    /// Bodies after the velocity update; this step's contacts.
+    pub world: &'a World<T>,
+    pub params: &'a ResolverParams,
+    /// Last step's accumulated impulses (used when warm starting).
+    pub warm: &'a WarmCache<T>,
+    pub gravity: Vector3<T>,
+    /// The scene's energy scale (J), for what counts as a gain.
+    pub scale: f64,
+}
+
+impl<T: Real> StepInputs<'_, T> {
+    fn warm_starts(&self) -> bool {
+        self.params.warm_start && self.params.solver == Solver::SequentialImpulse
+    }
+
+    /// The switches that change anything in this step.
+    pub fn applicable(&self) -> Switches {
+        let w = self.world;
+        let any = |f: &dyn Fn(&crate::physics::Contact<T>) -> bool| w.contacts.iter().any(f);
+        let mut s = Switches::empty();
+        if any(&|k| k.input.restitution > T::zero() && k.input.has_friction()) {
+            s.insert(Switch::RestitutionWithFriction);
+        }
+        for (model, switch) in [
+            (FrictionModel::VelocityScaling, Switch::VelocityScaling),
+            (FrictionModel::KineticDirection, Switch::KineticDirection),
+        ] {
+            if any(&|k| k.input.has_friction() && k.input.friction_model == model) {
+                s.insert(switch);
+            }
+        }
+        if self.warm_starts() && !self.warm.is_empty() {
+            s.insert(Switch::WarmStart);
+        }
+        let accelerated = w
+            .bodies
+            .iter()
+            .filter_map(|b| b.dynamic())
+            .any(|b| b.acceleration.iter().any(|a| *a != T::zero()));
+        let compensated = any(&|k| k.duration.is_none_or(|d| d != T::zero()));
+        if accelerated && compensated && w.step.duration != T::zero() {
+            s.insert(Switch::AccelerationCompensation);
+        }
+        if !w.contacts.is_empty() {
+            s.insert(Switch::Projection);
+        }
+        if any(&|k| k.input.has_friction()) {
+            s.insert(Switch::Friction);
+        }
+        if any(&|k| k.input.restitution > T::zero()) {
+            s.insert(Switch::Restitution);
+        }
+        s
+    }
+
+    /// The step's resolution again with `off` switched off.
+    pub fn replay(&self, off: Switches) -> Resolved {
+        let mut world = self.world.clone();
+        for k in &mut world.contacts {
+            let friction = k.input.has_friction();
+            if off.contains(Switch::RestitutionWithFriction) && friction {
+                k.input.restitution = T::zero();
+            }
+            let model = k.input.friction_model;
+            if (off.contains(Switch::VelocityScaling) && model == FrictionModel::VelocityScaling)
+                || (off.contains(Switch::KineticDirection)
+                    && model == FrictionModel::KineticDirection)
+            {
+                k.input.friction_model = FrictionModel::Millington;
+            }
+            if off.contains(Switch::Friction) {
+                k.input.static_friction = T::zero();
+                k.input.dynamic_friction = T::zero();
+            }
+            if off.contains(Switch::Restitution) {
+                k.input.restitution = T::zero();
+            }
+            if off.contains(Switch::AccelerationCompensation) {
+                k.duration = Some(T::zero());
+            }
+        }
+        let mut params = *self.params;
+        if off.contains(Switch::WarmStart) {
+            params.warm_start = false;
+        }
+        let mut r = Resolver::prepare(&world, &params);
+        if self.warm_starts() && params.warm_start {
+            self.warm.stage(&world, &mut r);
+        }
+        if !off.contains(Switch::Projection) {
+            r.position_phase(Implementation::Indexed, &mut Silent);
+        }
+        r.velocity_phase(Implementation::Indexed, &mut Silent);
+        resolved(&world, &r, &self.gravity)
+    }
+
+    /// Whether the step, re-run with `off` switched off, still gains kinetic energy.
+    pub fn gains(&self, off: Switches) -> Option<f64> {
+        let e = self.replay(off);
+        gain(e.kinetic_before, e.kinetic_after, self.scale)
+    }
+
+    /// The causes of a kinetic-energy gain, by experiment: each applicable
+    /// narrow switch on its own, then each broad one, then all together.
+    pub fn attribute(&self) -> EnergyCause {
+        let tried = self.applicable();
+        let removes = |broad: bool| -> Switches {
+            tried
+                .iter()
+                .filter(|s| s.is_broad() == broad && self.gains(Switches::one(*s)).is_none())
+                .collect()
+        };
+        let mut each = removes(false);
+        if each.is_empty() {
+            each = removes(true);
+        }
+        if !each.is_empty() {
+            EnergyCause::Each(each)
+        } else if tried.len() > 1 && self.gains(tried).is_none() {
+            EnergyCause::Together(tried)
+        } else {
+            EnergyCause::Unexplained { tried }
+        }
+    }
+}

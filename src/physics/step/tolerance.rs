@@ -1,0 +1,113 @@
+//! Tolerances that scale with the bodies. The defaults (position and
+//! velocity epsilon 0.01, contact margin 0.005 m, sleep epsilon 0.3 m²/s²)
+//! suit bodies of tens of centimetres and more; for a 1 mm ball the 0.01 m
+//! position epsilon is ten radii, and the ball can rest wholly under the
+//! floor. The rule: with `s` the smallest half-width of a movable body
+//! (sphere radius, half the smallest side of a box, the smaller of a
+//! cylinder's radius and half height) and `u = √(|g| s)` the speed of a fall
+//! through that size,
+//!
+//! - position epsilon and contact margin ≤ s / 10,
+//! - velocity epsilon ≤ u / 10 (with gravity),
+//! - sleep epsilon ≤ u² (with gravity; it is a `v·v + ω·ω`).
+//!
+//! A value already below its bound is kept. One scale for the whole scene:
+//! in a scene of mixed sizes the large bodies get the small bodies'
+//! tolerances (more iterations, never coarser physics).
+
+use crate::physics::{c, to_f64, Real, Shape, World};
+
+use super::SimParams;
+
+/// The smallest half-width of a movable body with a finite shape.
+pub fn smallest_size<T: Real>(world: &World<T>) -> Option<f64> {
+    world
+        .bodies
+        .iter()
+        .filter(|b| b.movable)
+        .filter_map(|b| match b.shape? {
+            Shape::Sphere { radius } | Shape::HollowSphere { radius } => Some(radius),
+            Shape::Box { sides } => Some(sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)) / 2.0),
+            Shape::Cylinder { radius, height } => Some(radius.min(height / 2.0)),
+            Shape::HalfSpace { .. } => None,
+        })
+        .filter(|s| s.is_finite() && *s > 0.0)
+        .reduce(f64::min)
+}
+
+/// A tolerance the rule lowered.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lowered {
+    pub which: Tolerance,
+    pub given: f64,
+    pub used: f64,
+}
+
+/// The tolerances the rule can lower.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Tolerance {
+    PositionEpsilon,
+    VelocityEpsilon,
+    ContactMargin,
+    SleepEpsilon,
+}
+
+/// The parameters with the scaled tolerances, and what was lowered.
+pub fn scaled<T: Real>(params: &SimParams<T>, size: Option<f64>) -> (SimParams<T>, Vec<Lowered>) {
+    let mut p = *params;
+    let mut lowered = Vec::new();
+    let Some(s) = size else {
+        return (p, lowered);
+    };
+    let g = to_f64(params.world.gravity.norm());
+    let u = (g * s).sqrt();
+    let mut lower = |which: Tolerance, value: &mut f64, bound: f64| {
+        if bound.is_finite() && bound > 0.0 && *value > bound {
+            lowered.push(Lowered {
+                which,
+                given: *value,
+                used: bound,
+            });
+            *value = bound;
+        }
+    };
+    lower(
+        Tolerance::PositionEpsilon,
+        &mut p.resolver.position_epsilon,
+        s / 10.0,
+    );
+    let mut margin = to_f64(p.contact_margin);
+    lower(Tolerance::ContactMargin, &mut margin, s / 10.0);
+    p.contact_margin = c(margin);
+    if g > 0.0 {
+        lower(
+            Tolerance::VelocityEpsilon,
+            &mut p.resolver.velocity_epsilon,
+            u / 10.0,
+        );
+        let mut sleep = to_f64(p.sleep.epsilon);
+        lower(Tolerance::SleepEpsilon, &mut sleep, u * u);
+        p.sleep.epsilon = c(sleep);
+    }
+    (p, lowered)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_millimetre_ball_gets_millimetre_tolerances_and_a_metre_box_keeps_the_defaults() {
+        let p = SimParams::<f64>::default();
+        let (q, lowered) = scaled(&p, Some(0.0005));
+        assert_eq!(q.resolver.position_epsilon, 0.00005);
+        assert!((q.contact_margin - 0.00005).abs() < 1e-18);
+        let u: f64 = (9.81f64 * 0.0005).sqrt();
+        assert!((q.resolver.velocity_epsilon - u / 10.0).abs() < 1e-15);
+        assert!((q.sleep.epsilon - u * u).abs() < 1e-15);
+        assert_eq!(lowered.len(), 4);
+        let (q, lowered) = scaled(&p, Some(0.5));
+        assert_eq!(q, p);
+        assert!(lowered.is_empty());
+    }
+}
