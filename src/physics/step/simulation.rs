@@ -3,6 +3,8 @@
 //! awake body presses on, resolve the contacts together (position phase,
 //! then velocity phase), update sleep. What happened is reported per step.
 
+use std::collections::hash_map::{Entry, HashMap};
+
 use nalgebra::Vector3;
 
 use super::integrate::{integrate_position, integrate_velocity, Loads};
@@ -357,14 +359,19 @@ impl<T: Real> Simulation<T> {
         // before and the fastest separating after.
         let mut pairs: Vec<(BodyId, Option<BodyId>, bool)> = Vec::new();
         let mut speeds: Vec<(f64, f64, bool)> = Vec::new();
+        // Pair → its index in `pairs` (the order of first appearance, so the
+        // events come out as a linear search would give them, in O(pairs)).
+        let mut index: HashMap<(BodyId, Option<BodyId>), usize> =
+            HashMap::with_capacity(self.world.contacts.len());
         for (i, k) in self.world.contacts.iter().enumerate() {
             let vn0 = to_f64(before[i].0);
             let (vn1, vt1) = (to_f64(after[i].0), to_f64(after[i].1));
             // Sliding: faster than residual jitter of resting contacts (5 cm/s).
             let slides = vt1 > 0.05;
             let bouncy = k.input.restitution > T::zero();
-            match pairs.iter().position(|p| p.0 == k.body1 && p.1 == k.body2) {
-                Some(j) => {
+            match index.entry((k.body1, k.body2)) {
+                Entry::Occupied(j) => {
+                    let j = *j.get();
                     pairs[j].2 |= slides;
                     speeds[j] = (
                         speeds[j].0.max(-vn0),
@@ -372,7 +379,8 @@ impl<T: Real> Simulation<T> {
                         speeds[j].2 || bouncy,
                     );
                 }
-                None => {
+                Entry::Vacant(slot) => {
+                    slot.insert(pairs.len());
                     pairs.push((k.body1, k.body2, slides));
                     speeds.push((-vn0, vn1, bouncy));
                 }
@@ -391,8 +399,11 @@ impl<T: Real> Simulation<T> {
                 });
             }
         }
+        // Last step's pairs by key: a pair is in it at most once.
+        let last: HashMap<(BodyId, Option<BodyId>), bool> =
+            self.touching.iter().map(|q| ((q.0, q.1), q.2)).collect();
         for p in &pairs {
-            match self.touching.iter().find(|q| q.0 == p.0 && q.1 == p.1) {
+            match last.get(&(p.0, p.1)).map(|slid| (p.0, p.1, *slid)) {
                 None => events.push(Event::ContactMade {
                     body1: p.0,
                     body2: p.1,
@@ -410,7 +421,7 @@ impl<T: Real> Simulation<T> {
             }
         }
         for q in &self.touching {
-            if !pairs.iter().any(|p| p.0 == q.0 && p.1 == q.1) {
+            if !index.contains_key(&(q.0, q.1)) {
                 events.push(Event::ContactLost {
                     body1: q.0,
                     body2: q.1,
