@@ -85,7 +85,7 @@ fn a_study_beyond_its_caps_asks_for_force() {
         "--grid",
         &format!("budget={}", budgets.join(",")),
         "--grid",
-        &format!("epsilon={}", epsilons.join(",")),
+        &format!("position_epsilon={}", epsilons.join(",")),
     ]);
     assert_eq!(code, 2, "{err}");
     assert!(
