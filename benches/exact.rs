@@ -13,7 +13,7 @@ use contact_lab::physics::{solve, ContactInput, ContactParams, FrictionModel, Pr
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
-/// The 45° rod of `tests/exact_impact.rs`: its end slides, halts and slides back.
+/// The 45° rod of `tests/physics/exact_impact.rs`: its end slides, halts and slides back.
 fn rod() -> Problem<f64> {
     let h = std::f64::consts::FRAC_1_SQRT_2;
     let inertia = Matrix3::from_diagonal(&Vector3::new(1.0 / 3.0, 0.01, 1.0 / 3.0));

@@ -4,6 +4,7 @@
 pub mod dd;
 pub mod random;
 pub mod svg;
+pub mod tui;
 
 use contact_lab::lesson::{embedded, Lesson};
 

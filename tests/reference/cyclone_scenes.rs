@@ -1,5 +1,5 @@
 //! The reference scenes in the driver's input format, each with the output
-//! of cyclone's `resolveContacts` on it (see `tests/resolver_reference.rs`
+//! of cyclone's `resolveContacts` on it (see `tests/physics/resolver_reference.rs`
 //! for how they were produced). `(name, scene, cyclone's output)`.
 
 pub const BOX_FOUR_CORNERS: (&str, &str, &str) = (

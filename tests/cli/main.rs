@@ -1,0 +1,16 @@
+//! The binary through assert_cmd: subcommands, flags, exit codes, JSON/CSV
+//! contracts, files written.
+//! Where a test goes, and the shared helpers: tests/README.md.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod exercise_figures;
+mod grading;
+mod instructor;
+mod io_cli;
+mod io_exercise;
+mod io_simulate;
+mod output_files;
+mod resolve_cli;
+mod study;

@@ -1,0 +1,162 @@
+//! `contact-lab study` through the binary: the `--no-timing` output held as
+//! snapshots (a quick grid on two small scenes), the JSON and CSV contracts
+//! of docs/study.md, the SVG as well-formed XML with one panel per scene and
+//! a Pareto front, and bad input (unknown scene 66, not a scene 2, bad knob 2).
+
+use crate::common;
+
+use assert_cmd::Command;
+use serde_json::Value as J;
+
+fn contact_lab() -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_contact-lab"));
+    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
+    cmd
+}
+
+fn run(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = contact_lab().args(args).output().expect("contact-lab runs");
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The quick study of two small scenes, half a second each, no timing.
+const QUICK: [&str; 7] = [
+    "study",
+    "ramp-stick",
+    "cradle-over-time",
+    "--quick",
+    "--no-timing",
+    "--seconds",
+    "0.5",
+];
+
+fn quick(format: &str) -> String {
+    let mut args = QUICK.to_vec();
+    args.extend(["--format", format]);
+    let (code, out, err) = run(&args);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.is_empty(), "no progress bar off a terminal: {err}");
+    out
+}
+
+#[test]
+fn no_timing_text_and_markdown_are_held_as_snapshots() {
+    let text = quick("text");
+    assert_eq!(text, quick("text"), "deterministic");
+    common::snapshot_settings().bind(|| {
+        insta::assert_snapshot!("study_quick_text", text);
+        insta::assert_snapshot!("study_quick_md", quick("md"));
+    });
+}
+
+#[test]
+fn json_rows_carry_the_contract_and_mark_a_front() {
+    let v: J = serde_json::from_str(&quick("json")).unwrap();
+    assert_eq!(v["cost"], "contact_visits_per_step");
+    let scenes = v["scenes"].as_array().unwrap();
+    assert_eq!(scenes.len(), 2);
+    for s in scenes {
+        assert!(s["reference"].as_str().unwrap().contains("dt = 1/480"));
+        let rows = s["rows"].as_array().unwrap();
+        // default, 2 solvers × 3 budgets less the default's own, f32, dt = 1/30.
+        assert_eq!(rows.len(), 8, "{}", s["scene"]);
+        for r in rows {
+            for key in [
+                "config",
+                "max_penetration",
+                "max_closing_velocity",
+                "energy_gain",
+                "drift",
+                "error_vs_reference",
+                "pareto",
+            ] {
+                assert!(r.get(key).is_some(), "{key} in {r}");
+            }
+            assert!(r.get("microseconds_per_step").is_none(), "--no-timing");
+            // The budget, the float type and every study knob of the table.
+            let knobs = contact_lab::study::study_knobs().count();
+            assert_eq!(r["config"].as_object().unwrap().len(), 2 + knobs);
+        }
+        assert!(rows.iter().any(|r| r["pareto"] == true));
+    }
+    // ramp-stick: the lecture's order creeps, sequential impulses stick.
+    let ramp = &scenes[0]["rows"];
+    let error = |solver: &str, budget: J| {
+        ramp.as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["config"]["solver"] == solver && r["config"]["budget"] == budget)
+            .unwrap()["error_vs_reference"]
+            .as_f64()
+            .unwrap()
+    };
+    assert!(error("deepest-first", J::from(8)) > 0.05);
+    assert!(error("sequential-impulse", J::from(8)) < 1e-3);
+}
+
+#[test]
+fn csv_has_one_line_per_row_and_the_same_columns() {
+    let csv = quick("csv");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 1 + 16);
+    let columns = lines[0].split(',').count();
+    assert!(lines[0].starts_with("scene,knob,value,budget,precision,friction_model,"));
+    assert!(!lines[0].contains("microseconds"));
+    for l in &lines[1..] {
+        assert_eq!(l.split(',').count(), columns, "{l}");
+    }
+}
+
+#[test]
+fn svg_is_well_formed_with_a_panel_per_scene_and_a_front() {
+    let svg = quick("svg");
+    let doc = roxmltree::Document::parse(&svg).expect("well-formed SVG");
+    let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).collect();
+    assert!(texts.iter().any(|t| t.contains("ramp-stick")));
+    assert!(texts.iter().any(|t| t.contains("cradle-over-time")));
+    assert!(svg.contains("<polyline"), "the front is joined");
+}
+
+#[test]
+fn a_user_grid_runs_its_cross_product() {
+    let (code, out, err) = run(&[
+        "study",
+        "cradle-over-time",
+        "--no-timing",
+        "--seconds",
+        "0.2",
+        "--grid",
+        "solver=deepest_first,sequential_impulse",
+        "--grid",
+        "budget=1,4",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: J = serde_json::from_str(&out).unwrap();
+    let rows = v["scenes"][0]["rows"].as_array().unwrap();
+    // The default and the four combinations.
+    assert_eq!(rows.len(), 5);
+    assert_eq!(rows[1]["value"], "solver=deepest_first, budget=1");
+}
+
+#[test]
+fn bad_input_gets_a_clear_error_and_its_exit_code() {
+    let (code, _, err) = run(&["study", "no-such-scene", "--no-timing"]);
+    assert_eq!(code, Some(66), "{err}");
+    let (code, _, err) = run(&["study", "lecture-2", "--no-timing"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("not a scene"), "{err}");
+    let (code, _, err) = run(&["study", "ball-drop", "--grid", "budget=lots"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("budget=lots"), "{err}");
+    let (code, _, err) = run(&["study", "ball-drop", "--grid", "colour=red"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("unknown knob 'colour'"), "{err}");
+    let (code, _, err) = run(&["study", "ball-drop", "--seconds", "-1"]);
+    assert_eq!(code, Some(2), "{err}");
+}

@@ -1,0 +1,13 @@
+//! Lesson files: parsing, validation and bad files (exit codes, FILE:LINE:COLUMN),
+//! the lecture's printed numbers, the extreme lessons, random valid lessons.
+//! Where a test goes, and the shared helpers: tests/README.md.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod damaged_lessons;
+mod extremes;
+mod finite_outputs;
+mod invalid_lessons;
+mod knobs;
+mod lecture_numbers;

@@ -1,0 +1,17 @@
+//! Measurement reports (run with `--nocapture` for the tables): accuracy
+//! against double-double, the impact integration's error, energy by restitution
+//! law, the 10,000-contact one-shot study, the slide angle. Built only with
+//! `--features measure`; CI runs it as its own step, in release:
+//! `cargo test --locked --release --features measure --test measure`.
+//! Where a test goes, and the shared helpers: tests/README.md.
+
+#[path = "../common/mod.rs"]
+mod common;
+#[path = "../exact_support/mod.rs"]
+mod exact_support;
+
+mod accuracy;
+mod exact_accuracy;
+mod exact_energy;
+mod exact_study;
+mod slide_angle;

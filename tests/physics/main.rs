@@ -1,0 +1,28 @@
+//! The physics layer through `contact_lab::physics`: one contact's stages and
+//! checks, the resolver, contact generation, time stepping, impact integration;
+//! lessons only as input.
+//! Where a test goes, and the shared helpers: tests/README.md.
+
+#[path = "../collide_support/mod.rs"]
+mod collide_support;
+#[path = "../common/mod.rs"]
+mod common;
+#[path = "../exact_support/mod.rs"]
+mod exact_support;
+
+mod collide;
+mod collide_properties;
+mod exact_impact;
+mod floors;
+mod invariants;
+mod models_and_options;
+mod properties;
+mod resolver_alloc;
+mod resolver_properties;
+mod resolver_reference;
+mod resolver_semantics;
+mod scale_invariance;
+mod scenes;
+mod sequential;
+mod truth;
+mod world;

@@ -1,0 +1,24 @@
+//! Trace and render: what a solution says (values, notes, checks' labels and
+//! causes, glossary, docs/json.md) and how each output shows it (text, JSON,
+//! Markdown, LaTeX, SVG figures), with the insta snapshots of snapshots/.
+//! Where a test goes, and the shared helpers: tests/README.md.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod check_causes;
+mod docs;
+mod every_number_substituted;
+mod exact_stage;
+mod figure_corrected;
+mod figure_labels;
+mod figure_stages;
+mod figure_strokes;
+mod glossary;
+mod instructor_snapshots;
+mod one_minus_sign;
+mod resolve_snapshots;
+mod scene_snapshots;
+mod solve_snapshots;
+mod trace_step;
+mod verdict_labels;

@@ -1,0 +1,13 @@
+//! The TUI: scripted keys into a TestBackend (helpers in common/tui.rs), and
+//! a real pseudo-terminal restored after panics and signals.
+//! Where a test goes, and the shared helpers: tests/README.md.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod io_tui_edits;
+mod io_tui_responsive;
+mod tui;
+mod tui_scenes;
+mod tui_teaching;
+mod tui_terminal;
