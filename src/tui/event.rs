@@ -1,10 +1,13 @@
 //! Terminal events, and the keys of the main screen as [`Action`]s.
 //! (The edit form and the write prompt read keys themselves: they take text.)
 
+use super::keys::Binding;
 use ratatui::crossterm::event::{
     self, Event as CtEvent, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent,
     MouseEventKind,
 };
+
+use Action::*;
 
 /// What the main screen does with a key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -34,77 +37,119 @@ pub enum Action {
     Quit,
 }
 
-/// Every key of the main screen: keys, action, what it does (help overlay and README).
-pub const KEYS: &[(&str, &str)] = &[
-    ("→ l", "next stage"),
-    ("← h", "previous stage"),
-    (
-        "Space Enter",
-        "next stage; in predict mode first reveal the next result",
-    ),
-    ("Home g / End G", "first / last stage"),
-    ("Tab / Shift-Tab", "next / previous contact"),
-    ("] / [", "next / previous lesson"),
-    (
-        "↓ j / ↑ k",
-        "scroll the stage panel a line (the mouse wheel too)",
-    ),
-    ("PgDn / PgUp", "scroll the stage panel a page"),
-    (
-        "e",
-        "edit restitution, friction, masses, velocities, … of this contact",
-    ),
-    ("r", "reset this lesson to its file's values"),
-    ("p", "predict mode: hide each result until Space reveals it"),
-    ("v", "view plane of the picture: xy → yz → zx"),
-    ("z", "picture full size / beside the stages"),
-    (
-        "s",
-        "list the symbols of the stage's formulas, with meaning and unit",
-    ),
-    (
-        "0-9 - . ( [",
-        "predict mode: type your answer to the hidden result (number or vector); Enter grades it",
-    ),
-    ("w", "write this worked solution to a Markdown file"),
-    ("?", "this help; ? again: the glossary of every symbol"),
-    ("q Esc Ctrl-C", "quit"),
+/// The contact screen's keys: what the help shows and what each key does.
+pub const KEYS: &[Binding<Action>] = &[
+    Binding {
+        label: "→ l",
+        help: "next stage",
+        keys: &[(KeyCode::Right, NextStage), (KeyCode::Char('l'), NextStage)],
+    },
+    Binding {
+        label: "← h",
+        help: "previous stage",
+        keys: &[(KeyCode::Left, PrevStage), (KeyCode::Char('h'), PrevStage)],
+    },
+    Binding {
+        label: "Space Enter",
+        help: "next stage; in predict mode first reveal the next result",
+        keys: &[(KeyCode::Char(' '), Advance), (KeyCode::Enter, Advance)],
+    },
+    Binding {
+        label: "Home g / End G",
+        help: "first / last stage",
+        keys: &[
+            (KeyCode::Home, FirstStage),
+            (KeyCode::Char('g'), FirstStage),
+            (KeyCode::End, LastStage),
+            (KeyCode::Char('G'), LastStage),
+        ],
+    },
+    Binding {
+        label: "Tab / Shift-Tab",
+        help: "next / previous contact",
+        keys: &[(KeyCode::Tab, NextContact), (KeyCode::BackTab, PrevContact)],
+    },
+    Binding {
+        label: "] / [",
+        help: "next / previous lesson",
+        keys: &[(KeyCode::Char(']'), NextLesson), (KeyCode::Char('['), PrevLesson)],
+    },
+    Binding {
+        label: "↓ j / ↑ k",
+        help: "scroll the stage panel a line (the mouse wheel too)",
+        keys: &[
+            (KeyCode::Down, LineDown),
+            (KeyCode::Char('j'), LineDown),
+            (KeyCode::Up, LineUp),
+            (KeyCode::Char('k'), LineUp),
+        ],
+    },
+    Binding {
+        label: "PgDn / PgUp",
+        help: "scroll the stage panel a page",
+        keys: &[(KeyCode::PageDown, ScrollDown), (KeyCode::PageUp, ScrollUp)],
+    },
+    Binding {
+        label: "e",
+        help: "edit restitution, friction, masses, velocities, … of this contact",
+        keys: &[(KeyCode::Char('e'), Edit)],
+    },
+    Binding {
+        label: "r",
+        help: "reset this lesson to its file's values",
+        keys: &[(KeyCode::Char('r'), Reset)],
+    },
+    Binding {
+        label: "p",
+        help: "predict mode: hide each result until Space reveals it",
+        keys: &[(KeyCode::Char('p'), Predict)],
+    },
+    Binding {
+        label: "v",
+        help: "view plane of the picture: xy → yz → zx",
+        keys: &[(KeyCode::Char('v'), Plane)],
+    },
+    Binding {
+        label: "z",
+        help: "picture full size / beside the stages",
+        keys: &[(KeyCode::Char('z'), Zoom)],
+    },
+    Binding {
+        label: "s",
+        help: "list the symbols of the stage's formulas, with meaning and unit",
+        keys: &[(KeyCode::Char('s'), Symbols)],
+    },
+    Binding {
+        label: "0-9 - . ( [",
+        help: "predict mode: type your answer to the hidden result (number or vector); Enter grades it",
+        keys: &[],
+    },
+    Binding {
+        label: "w",
+        help: "write this worked solution to a Markdown file",
+        keys: &[(KeyCode::Char('w'), Write)],
+    },
+    Binding {
+        label: "?",
+        help: "this help; ? again: the glossary of every symbol",
+        keys: &[(KeyCode::Char('?'), Help)],
+    },
+    Binding {
+        label: "q Esc Ctrl-C",
+        help: "quit",
+        keys: &[(KeyCode::Char('q'), Quit), (KeyCode::Esc, Quit)],
+    },
 ];
 
-/// The main screen's meaning of a key press, if any.
+/// The main screen's meaning of a key press, if any (from [`KEYS`]).
 pub fn action(key: KeyEvent) -> Option<Action> {
-    use Action::*;
     if key.kind != KeyEventKind::Press {
         return None;
     }
     if key.modifiers.contains(KeyModifiers::CONTROL) {
-        return matches!(key.code, KeyCode::Char('c')).then_some(Quit);
+        return matches!(key.code, KeyCode::Char('c')).then_some(Action::Quit);
     }
-    Some(match key.code {
-        KeyCode::Right | KeyCode::Char('l') => NextStage,
-        KeyCode::Left | KeyCode::Char('h') => PrevStage,
-        KeyCode::Char(' ') | KeyCode::Enter => Advance,
-        KeyCode::Home | KeyCode::Char('g') => FirstStage,
-        KeyCode::End | KeyCode::Char('G') => LastStage,
-        KeyCode::Tab => NextContact,
-        KeyCode::BackTab => PrevContact,
-        KeyCode::Char(']') => NextLesson,
-        KeyCode::Char('[') => PrevLesson,
-        KeyCode::Down | KeyCode::Char('j') => LineDown,
-        KeyCode::Up | KeyCode::Char('k') => LineUp,
-        KeyCode::PageDown => ScrollDown,
-        KeyCode::PageUp => ScrollUp,
-        KeyCode::Char('e') => Edit,
-        KeyCode::Char('r') => Reset,
-        KeyCode::Char('p') => Predict,
-        KeyCode::Char('v') => Plane,
-        KeyCode::Char('z') => Zoom,
-        KeyCode::Char('s') => Symbols,
-        KeyCode::Char('w') => Write,
-        KeyCode::Char('?') => Help,
-        KeyCode::Char('q') | KeyCode::Esc => Quit,
-        _ => return None,
-    })
+    super::keys::find(KEYS, key.code)
 }
 
 /// A terminal event the app cares about.

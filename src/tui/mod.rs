@@ -7,6 +7,7 @@ pub mod app;
 mod edited;
 pub mod event;
 pub mod form;
+pub mod keys;
 mod lists;
 mod overlay;
 pub mod scene;

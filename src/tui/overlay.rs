@@ -51,7 +51,7 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
             "Esc or Backspace: up to the resolver iterations this contact came from.",
         );
     }
-    help_list(app, " Keys ", KEYS, &notes, area, buf);
+    help_list(app, " Keys ", &super::keys::help(KEYS), &notes, area, buf);
 }
 
 /// Help's second page: every symbol with its meaning, unit, stages and the

@@ -186,7 +186,7 @@ fn help_overlay_lists_every_key() {
         draw(&mut t, &a);
         snapshot(&format!("tui_help_{w}x{h}"), &t);
         let text = buffer_text(t.backend().buffer());
-        for (k, _) in contact_lab::tui::event::KEYS {
+        for (k, _) in contact_lab::tui::keys::help(contact_lab::tui::event::KEYS) {
             assert!(text.contains(k), "help lists {k}");
         }
         key(&mut a, KeyCode::Char('x'));
@@ -411,7 +411,7 @@ fn tui_subcommand_needs_a_terminal() {
 #[test]
 fn readme_lists_every_tui_key() {
     let readme = include_str!("../../README.md");
-    for (k, what) in contact_lab::tui::event::KEYS {
+    for (k, what) in contact_lab::tui::keys::help(contact_lab::tui::event::KEYS) {
         assert!(
             readme.contains(&format!("| {k} | {what} |")),
             "README lacks {k}"
@@ -493,4 +493,22 @@ fn a_3000_character_file_name_scrolls_and_its_error_stays_in_view() {
     let text = buffer_text(t.backend().buffer());
     assert!(text.contains("nnZ▏"), "{text}");
     assert!(text.contains("cannot write: File name too long"), "{text}");
+}
+
+#[test]
+fn every_bound_key_does_what_its_help_row_says() {
+    use contact_lab::tui::event::{action, KEYS};
+    use ratatui::crossterm::event::{KeyEvent, KeyModifiers};
+    // One table dispatches and prints the help: each key of a row acts as the row binds it,
+    // and a key no row binds does nothing.
+    for row in KEYS {
+        for (code, bound) in row.keys {
+            let got = action(KeyEvent::new(*code, KeyModifiers::NONE));
+            assert_eq!(got, Some(*bound), "{} ({:?})", row.label, code);
+        }
+    }
+    assert_eq!(
+        action(KeyEvent::new(KeyCode::Char('x'), KeyModifiers::NONE)),
+        None
+    );
 }

@@ -203,7 +203,7 @@ fn help_lists_each_screens_keys_and_the_readme_has_them() {
         let mut t = term(100, 30);
         draw(&mut t, &a);
         let shown = text(t.backend().buffer());
-        for (k, what) in list {
+        for (k, what) in contact_lab::tui::keys::help(list) {
             assert!(shown.contains(k), "{lesson}: help lacks {k}\n{shown}");
             assert!(
                 readme.contains(&format!("| {k} | {what} |")),
@@ -394,4 +394,20 @@ fn highlighting_marks_the_next_contact_the_changes_and_sleeping_bodies() {
         !text(t.backend().buffer()).contains("(asleep)"),
         "s hides the sleep state"
     );
+}
+
+#[test]
+fn the_run_and_resolver_tables_dispatch_their_keys() {
+    use contact_lab::tui::keys::find;
+    // A key bound twice in one table would make its second row a lie.
+    for table in [RUN_KEYS, RESOLVER_KEYS] {
+        let mut seen = Vec::new();
+        for row in table {
+            for (code, bound) in row.keys {
+                assert!(!seen.contains(code), "{code:?} bound twice");
+                seen.push(*code);
+                assert_eq!(find(table, *code), Some(*bound), "{}", row.label);
+            }
+        }
+    }
 }

@@ -77,10 +77,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if app.mode == Mode::Help {
         let (title, keys) = match app.screen {
-            Screen::Run => (" Keys · run ", RUN_KEYS),
-            _ => (" Keys · resolver ", RESOLVER_KEYS),
+            Screen::Run => (" Keys · run ", crate::tui::keys::help(RUN_KEYS)),
+            _ => (" Keys · resolver ", crate::tui::keys::help(RESOLVER_KEYS)),
         };
-        crate::tui::overlay::help_list(app, title, keys, &NOTES, area, buf);
+        crate::tui::overlay::help_list(app, title, &keys, &NOTES, area, buf);
     }
     if let Mode::Glossary(scroll) = app.mode {
         crate::tui::overlay::glossary(app, scroll, area, buf);

@@ -105,54 +105,223 @@ pub enum Pick {
     Body(usize),
 }
 
-/// The run screen's keys (help overlay and README).
-pub const RUN_KEYS: &[(&str, &str)] = &[
-    ("Space", "play / pause"),
-    ("→ l / ← h", "one step forward / back (pauses)"),
-    ("Home g / End G", "restart at step 0 / last step computed"),
-    ("+ / -", "speed ¼× … 4×"),
-    ("n / N", "next / previous event (of the kind f chooses)"),
-    (
-        "f",
-        "events to jump to: any, bounce, contact, sleep, limit, energy",
-    ),
-    ("Enter", "this step's resolver iterations"),
-    (
-        "c o s b",
-        "picture: contacts, normals, sleep state, body names",
-    ),
-    ("v", "view plane of the picture: xy → yz → zx"),
-    ("PgUp / PgDn", "scroll the events list"),
-    (
-        "↓ j / ↑ k",
-        "scroll the events list a line (the mouse wheel too)",
-    ),
-    ("] / [", "next / previous lesson"),
-    ("?", "this help"),
-    ("q Ctrl-C", "quit"),
+/// What a key does on the run or the resolver screen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Key {
+    PlayPause,
+    /// → on the run: a step forward; on the resolver: the next stop.
+    Forward,
+    Back,
+    First,
+    Last,
+    Faster,
+    Slower,
+    NextEvent,
+    PrevEvent,
+    EventKind,
+    /// Enter: down a level (the step's resolver, the contact's stages).
+    Open,
+    Toggle(Toggle),
+    PageUp,
+    PageDown,
+    NextContact,
+    PrevContact,
+    /// Esc / Backspace: up a level (quits at the top).
+    Up,
+    Plane,
+    NextLesson,
+    PrevLesson,
+    LineDown,
+    LineUp,
+    Help,
+    Quit,
+}
+
+/// What the run screen's picture shows or hides.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Toggle {
+    Contacts,
+    Normals,
+    Sleep,
+    Names,
+}
+
+use crate::tui::keys::Binding;
+use ratatui::crossterm::event::KeyCode as C;
+
+/// The rows both screens end with: lessons, help, quit (and the line
+/// scroll, whose list differs).
+macro_rules! tail_rows {
+    ($scroll:expr, $quit:expr, $quit_keys:expr) => {
+        [
+            Binding {
+                label: "↓ j / ↑ k",
+                help: $scroll,
+                keys: &[
+                    (C::Down, Key::LineDown),
+                    (C::Char('j'), Key::LineDown),
+                    (C::Up, Key::LineUp),
+                    (C::Char('k'), Key::LineUp),
+                ],
+            },
+            Binding {
+                label: "] / [",
+                help: "next / previous lesson",
+                keys: &[
+                    (C::Char(']'), Key::NextLesson),
+                    (C::Char('['), Key::PrevLesson),
+                ],
+            },
+            Binding {
+                label: "?",
+                help: "this help",
+                keys: &[(C::Char('?'), Key::Help)],
+            },
+            Binding {
+                label: "q Ctrl-C",
+                help: $quit,
+                keys: $quit_keys,
+            },
+        ]
+    };
+}
+
+const PLANE: Binding<Key> = Binding {
+    label: "v",
+    help: "view plane of the picture: xy → yz → zx",
+    keys: &[(C::Char('v'), Key::Plane)],
+};
+
+const RUN_TAIL: [Binding<Key>; 4] = tail_rows!(
+    "scroll the events list a line (the mouse wheel too)",
+    "quit",
+    &[(C::Char('q'), Key::Quit), (C::Esc, Key::Quit)]
+);
+
+const RESOLVER_TAIL: [Binding<Key>; 4] = tail_rows!(
+    "scroll the contacts table (the mouse wheel too)",
+    "quit (Esc too, at the top)",
+    &[(C::Char('q'), Key::Quit)]
+);
+
+/// The run screen's keys: what the help shows and what each key does.
+pub const RUN_KEYS: &[Binding<Key>] = &[
+    Binding {
+        label: "Space",
+        help: "play / pause",
+        keys: &[(C::Char(' '), Key::PlayPause)],
+    },
+    Binding {
+        label: "→ l / ← h",
+        help: "one step forward / back (pauses)",
+        keys: &[
+            (C::Right, Key::Forward),
+            (C::Char('l'), Key::Forward),
+            (C::Left, Key::Back),
+            (C::Char('h'), Key::Back),
+        ],
+    },
+    Binding {
+        label: "Home g / End G",
+        help: "restart at step 0 / last step computed",
+        keys: &[
+            (C::Home, Key::First),
+            (C::Char('g'), Key::First),
+            (C::End, Key::Last),
+            (C::Char('G'), Key::Last),
+        ],
+    },
+    Binding {
+        label: "+ / -",
+        help: "speed ¼× … 4×",
+        keys: &[
+            (C::Char('+'), Key::Faster),
+            (C::Char('='), Key::Faster),
+            (C::Char('-'), Key::Slower),
+        ],
+    },
+    Binding {
+        label: "n / N",
+        help: "next / previous event (of the kind f chooses)",
+        keys: &[
+            (C::Char('n'), Key::NextEvent),
+            (C::Char('N'), Key::PrevEvent),
+        ],
+    },
+    Binding {
+        label: "f",
+        help: "events to jump to: any, bounce, contact, sleep, limit, energy",
+        keys: &[(C::Char('f'), Key::EventKind)],
+    },
+    Binding {
+        label: "Enter",
+        help: "this step's resolver iterations",
+        keys: &[(C::Enter, Key::Open)],
+    },
+    Binding {
+        label: "c o s b",
+        help: "picture: contacts, normals, sleep state, body names",
+        keys: &[
+            (C::Char('c'), Key::Toggle(Toggle::Contacts)),
+            (C::Char('o'), Key::Toggle(Toggle::Normals)),
+            (C::Char('s'), Key::Toggle(Toggle::Sleep)),
+            (C::Char('b'), Key::Toggle(Toggle::Names)),
+        ],
+    },
+    PLANE,
+    Binding {
+        label: "PgUp / PgDn",
+        help: "scroll the events list",
+        keys: &[(C::PageUp, Key::PageUp), (C::PageDown, Key::PageDown)],
+    },
+    RUN_TAIL[0],
+    RUN_TAIL[1],
+    RUN_TAIL[2],
+    RUN_TAIL[3],
 ];
 
-/// The resolver screen's keys (help overlay and README).
-pub const RESOLVER_KEYS: &[(&str, &str)] = &[
-    (
-        "→ l / ← h",
-        "next / previous iteration (position phase, then velocity)",
-    ),
-    ("Home g / End G", "first stop / last stop"),
-    ("Tab / Shift-Tab", "select the next / previous contact"),
-    (
-        "Enter",
-        "this contact's stages, bodies as this iteration finds them",
-    ),
-    ("Esc Backspace", "up to the run (a scene)"),
-    ("v", "view plane of the picture: xy → yz → zx"),
-    (
-        "↓ j / ↑ k",
-        "scroll the contacts table (the mouse wheel too)",
-    ),
-    ("] / [", "next / previous lesson"),
-    ("?", "this help"),
-    ("q Ctrl-C", "quit (Esc too, at the top)"),
+/// The resolver screen's keys: what the help shows and what each key does.
+pub const RESOLVER_KEYS: &[Binding<Key>] = &[
+    Binding {
+        label: "→ l / ← h",
+        help: "next / previous iteration (position phase, then velocity)",
+        keys: &[
+            (C::Right, Key::Forward),
+            (C::Char('l'), Key::Forward),
+            (C::Left, Key::Back),
+            (C::Char('h'), Key::Back),
+        ],
+    },
+    Binding {
+        label: "Home g / End G",
+        help: "first stop / last stop",
+        keys: &[
+            (C::Home, Key::First),
+            (C::Char('g'), Key::First),
+            (C::End, Key::Last),
+            (C::Char('G'), Key::Last),
+        ],
+    },
+    Binding {
+        label: "Tab / Shift-Tab",
+        help: "select the next / previous contact",
+        keys: &[(C::Tab, Key::NextContact), (C::BackTab, Key::PrevContact)],
+    },
+    Binding {
+        label: "Enter",
+        help: "this contact's stages, bodies as this iteration finds them",
+        keys: &[(C::Enter, Key::Open)],
+    },
+    Binding {
+        label: "Esc Backspace",
+        help: "up to the run (a scene)",
+        keys: &[(C::Esc, Key::Up), (C::Backspace, Key::Up)],
+    },
+    PLANE,
+    RESOLVER_TAIL[0],
+    RESOLVER_TAIL[1],
+    RESOLVER_TAIL[2],
+    RESOLVER_TAIL[3],
 ];
 
 /// The contact screen's keys when a level lies above it.

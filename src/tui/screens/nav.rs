@@ -7,10 +7,14 @@ use ratatui::crossterm::event::{
     KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
 
-use super::{Pick, ResolverView, RunView, Screen, Toggles, EVENT_KINDS, SPEEDS};
+use super::{
+    Key, Pick, ResolverView, RunView, Screen, Toggle, Toggles, EVENT_KINDS, RESOLVER_KEYS,
+    RUN_KEYS, SPEEDS,
+};
 use crate::session::{Player, Poll};
 use crate::trace::step::StepTrace;
 use crate::tui::app::{App, Entry, Mode};
+use crate::tui::keys;
 
 /// At most this many steps are computed in one tick (playback falls behind
 /// real time rather than freezing the app).
@@ -113,44 +117,55 @@ impl App {
         true
     }
 
-    /// A key on the run or resolver screen.
+    /// A key on the run or resolver screen, through the screen's key table.
     pub(crate) fn screen_key(&mut self, key: KeyEvent) {
-        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-        match key.code {
-            KeyCode::Char('c') if ctrl => self.quit = true,
-            _ if ctrl => {}
-            KeyCode::Char('q') => self.quit = true,
-            KeyCode::Char('?') => {
+        if key.modifiers.contains(KeyModifiers::CONTROL) {
+            if key.code == KeyCode::Char('c') {
+                self.quit = true;
+            }
+            return;
+        }
+        let table = if self.screen == Screen::Run {
+            RUN_KEYS
+        } else {
+            RESOLVER_KEYS
+        };
+        let Some(action) = keys::find(table, key.code) else {
+            return;
+        };
+        match action {
+            Key::Quit => self.quit = true,
+            Key::Help => {
                 self.help_scroll = 0;
                 self.mode = Mode::Help;
             }
-            KeyCode::Char('v') => self.plane = self.plane.next(),
-            KeyCode::Char(']') => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
-            KeyCode::Char('[') => {
+            Key::Plane => self.plane = self.plane.next(),
+            Key::NextLesson => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
+            Key::PrevLesson => {
                 let n = self.lessons.len();
                 self.goto_lesson((self.lesson + n - 1) % n)
             }
-            KeyCode::Down | KeyCode::Char('j') => self.wheel(false),
-            KeyCode::Up | KeyCode::Char('k') => self.wheel(true),
-            _ if self.screen == Screen::Run => self.run_key(key.code),
-            _ => self.resolver_key(key.code),
+            Key::LineDown => self.wheel(false),
+            Key::LineUp => self.wheel(true),
+            _ if self.screen == Screen::Run => self.run_key(action),
+            _ => self.resolver_key(action),
         }
     }
 
-    fn run_key(&mut self, code: KeyCode) {
+    fn run_key(&mut self, action: Key) {
         let Some(run) = self.run.as_deref_mut() else {
             return;
         };
         let mut said = None;
-        match code {
-            KeyCode::Char(' ') => {
+        match action {
+            Key::PlayPause => {
                 if !run.playing && run.frame as u64 >= run.player.steps {
                     run.frame = 0;
                 }
                 run.playing = !run.playing;
                 run.owed = 0.0;
             }
-            KeyCode::Right | KeyCode::Char('l') => {
+            Key::Forward => {
                 run.playing = false;
                 match forward(run) {
                     Forward::Moved => {}
@@ -158,32 +173,30 @@ impl App {
                     Forward::Busy => said = Some(computing(run)),
                 }
             }
-            KeyCode::Left | KeyCode::Char('h') => {
+            Key::Back => {
                 run.playing = false;
                 run.frame = run.frame.saturating_sub(1);
             }
-            KeyCode::Home | KeyCode::Char('g') => {
+            Key::First => {
                 run.playing = false;
                 run.frame = 0;
             }
-            KeyCode::End | KeyCode::Char('G') => {
+            Key::Last => {
                 run.playing = false;
                 run.frame = run.player.computed() as usize;
             }
-            KeyCode::Char('+') | KeyCode::Char('=') => {
-                run.speed = (run.speed + 1).min(SPEEDS.len() - 1)
-            }
-            KeyCode::Char('-') => run.speed = run.speed.saturating_sub(1),
-            KeyCode::Char('f') => run.event_kind = (run.event_kind + 1) % EVENT_KINDS.len(),
-            KeyCode::Char('n') => said = jump_event(run, true),
-            KeyCode::Char('N') => said = jump_event(run, false),
-            KeyCode::Char('c') => run.toggles.contacts = !run.toggles.contacts,
-            KeyCode::Char('o') => run.toggles.normals = !run.toggles.normals,
-            KeyCode::Char('s') => run.toggles.sleep = !run.toggles.sleep,
-            KeyCode::Char('b') => run.toggles.names = !run.toggles.names,
-            KeyCode::PageUp => run.events_scroll += 5,
-            KeyCode::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
-            KeyCode::Enter => {
+            Key::Faster => run.speed = (run.speed + 1).min(SPEEDS.len() - 1),
+            Key::Slower => run.speed = run.speed.saturating_sub(1),
+            Key::EventKind => run.event_kind = (run.event_kind + 1) % EVENT_KINDS.len(),
+            Key::NextEvent => said = jump_event(run, true),
+            Key::PrevEvent => said = jump_event(run, false),
+            Key::Toggle(Toggle::Contacts) => run.toggles.contacts = !run.toggles.contacts,
+            Key::Toggle(Toggle::Normals) => run.toggles.normals = !run.toggles.normals,
+            Key::Toggle(Toggle::Sleep) => run.toggles.sleep = !run.toggles.sleep,
+            Key::Toggle(Toggle::Names) => run.toggles.names = !run.toggles.names,
+            Key::PageUp => run.events_scroll += 5,
+            Key::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
+            Key::Open => {
                 run.playing = false;
                 let frame = run.frame as u64;
                 match run.player.record(frame) {
@@ -191,7 +204,7 @@ impl App {
                     None => said = Some("step 0 is the state before the first step: nothing is resolved yet (→ takes a step)".into()),
                 }
             }
-            KeyCode::Esc => self.quit = true,
+            Key::Up => self.quit = true,
             _ => {}
         }
         if let Some(text) = said {
@@ -199,17 +212,17 @@ impl App {
         }
     }
 
-    fn resolver_key(&mut self, code: KeyCode) {
+    fn resolver_key(&mut self, action: Key) {
         let Some(r) = self.resolver.as_deref_mut() else {
             return;
         };
         let last = r.trace.tables.len().saturating_sub(1);
         let contacts = r.trace.world.contacts.len();
-        let stop = match code {
-            KeyCode::Right | KeyCode::Char('l') => Some((r.stop + 1).min(last)),
-            KeyCode::Left | KeyCode::Char('h') => Some(r.stop.saturating_sub(1)),
-            KeyCode::Home | KeyCode::Char('g') => Some(0),
-            KeyCode::End | KeyCode::Char('G') => Some(last),
+        let stop = match action {
+            Key::Forward => Some((r.stop + 1).min(last)),
+            Key::Back => Some(r.stop.saturating_sub(1)),
+            Key::First => Some(0),
+            Key::Last => Some(last),
             _ => None,
         };
         if let Some(s) = stop {
@@ -219,16 +232,16 @@ impl App {
             }
             return;
         }
-        match code {
-            KeyCode::Tab if contacts > 0 => r.selected = (r.selected + 1) % contacts,
-            KeyCode::BackTab if contacts > 0 => r.selected = (r.selected + contacts - 1) % contacts,
-            KeyCode::Enter if contacts == 0 => self.say("this step has no contacts".into(), false),
-            KeyCode::Enter => self.open_contact(),
-            KeyCode::Esc | KeyCode::Backspace if self.run.is_some() => {
+        match action {
+            Key::NextContact if contacts > 0 => r.selected = (r.selected + 1) % contacts,
+            Key::PrevContact if contacts > 0 => r.selected = (r.selected + contacts - 1) % contacts,
+            Key::Open if contacts == 0 => self.say("this step has no contacts".into(), false),
+            Key::Open => self.open_contact(),
+            Key::Up if self.run.is_some() => {
                 self.resolver = None;
                 self.screen = Screen::Run;
             }
-            KeyCode::Esc => self.quit = true,
+            Key::Up => self.quit = true,
             _ => {}
         }
     }
