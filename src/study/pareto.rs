@@ -1,25 +1,58 @@
 //! The Pareto front of a scene's rows (no other row is both cheaper and more
-//! accurate) and the one sentence that says what the trade is.
+//! accurate, beyond the spread of the timed runs) and the one sentence that
+//! says what the trade is.
 
 use super::{Budget, Row, SceneStudy};
 use crate::format::Fmt;
 use crate::physics::Solver;
 
-/// Marks the rows on the front of (cost, error): a row is on it when no
-/// other row has cost ≤ and error ≤ with one of them strictly less. Rows
-/// that failed or have no finite numbers take no part.
+/// Errors this close (relative, or absolute in metres) are a tie: the runs
+/// are deterministic, so only round-off parts them.
+const ERROR_TIE_RELATIVE: f64 = 1e-6;
+const ERROR_TIE_ABSOLUTE: f64 = 1e-12;
+
+/// A row's cost as a range: the min–max of its timed runs, or its visits
+/// per step (one number) where timing is off.
+fn cost_range(r: &Row) -> (f64, f64) {
+    match r.microseconds {
+        Some([_, lo, hi]) => (lo, hi),
+        None => (r.visits_per_step, r.visits_per_step),
+    }
+}
+
+/// `a` below `b` beyond round-off.
+fn less_error(a: f64, b: f64) -> bool {
+    a < b - (ERROR_TIE_RELATIVE * b.abs()).max(ERROR_TIE_ABSOLUTE)
+}
+
+/// True when `j` dominates `i`: cheaper beyond both ranges and no less
+/// accurate, or no dearer (the ranges overlap: a tie on cost) and more
+/// accurate beyond round-off.
+fn dominates(j: ((f64, f64), f64), i: ((f64, f64), f64)) -> bool {
+    let (((jlo, jhi), ej), ((ilo, ihi), ei)) = (j, i);
+    let cheaper = jhi < ilo;
+    let no_dearer = jlo <= ihi;
+    (cheaper && !less_error(ei, ej)) || (no_dearer && less_error(ej, ei))
+}
+
+/// Marks the rows on the front of (cost, error): a row leaves it only when
+/// another row dominates it ([`dominates`]): rows whose cost ranges overlap
+/// and whose errors tie both stay (a tie is shown as a tie). Rows that
+/// failed or have no finite numbers take no part.
 pub fn mark(rows: &mut [Row]) {
     let point = |r: &Row| {
-        let (c, e) = (r.cost(), r.error_vs_reference);
-        (r.failure.is_none() && c.is_finite() && e.is_finite()).then_some((c, e))
+        let ((lo, hi), e) = (cost_range(r), r.error_vs_reference);
+        (r.failure.is_none() && lo.is_finite() && hi.is_finite() && e.is_finite())
+            .then_some(((lo, hi), e))
     };
-    let points: Vec<Option<(f64, f64)>> = rows.iter().map(point).collect();
+    let points: Vec<_> = rows.iter().map(point).collect();
     for (i, row) in rows.iter_mut().enumerate() {
         row.pareto = match points[i] {
             None => false,
-            Some((c, e)) => !points.iter().enumerate().any(|(j, q)| {
-                j != i && q.is_some_and(|(c2, e2)| c2 <= c && e2 <= e && (c2 < c || e2 < e))
-            }),
+            Some(p) => !points
+                .iter()
+                .enumerate()
+                .any(|(j, q)| j != i && q.is_some_and(|q| dominates(q, p))),
         };
     }
 }
@@ -68,8 +101,10 @@ pub fn verdict(study: &SceneStudy, cost_unit: &str) -> String {
             fmt.num(best.error_vs_reference),
         )
     };
+    // The labels are the study's (`Config::solver_label`): warm-started
+    // sequential impulses where the grid has them (quick and full both do).
     let df = at_budget(&study.rows, Solver::DeepestFirst.name(), 8);
-    let si = at_budget(&study.rows, "sequential_impulse+warm", 8)
+    let si = at_budget(&study.rows, "sequential-impulse+warm", 8)
         .or_else(|| at_budget(&study.rows, Solver::SequentialImpulse.name(), 8));
     if let (Some(df), Some(si)) = (df, si) {
         let (a, b) = (df.error_vs_reference, si.error_vs_reference);
@@ -88,5 +123,10 @@ pub fn verdict(study: &SceneStudy, cost_unit: &str) -> String {
         ));
     }
     s.push('.');
+    if let Some(missing) = study.partial {
+        s.push_str(&format!(
+            " The grid is partial (quick): {missing} rows of the full grid were not run, and they could move the front; the solvers are compared on the same rows as the full grid's."
+        ));
+    }
     s
 }

@@ -101,12 +101,29 @@ fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
 /// Runs `config` for `seconds` and measures it.
 pub fn measure(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
     match config.precision {
-        Precision::F64 => measure_in::<f64>(lesson, config, seconds),
-        Precision::F32 => measure_in::<f32>(lesson, config, seconds),
+        Precision::F64 => measure_in::<f64>(lesson, config, seconds, &mut |_| {}),
+        Precision::F32 => measure_in::<f32>(lesson, config, seconds, &mut |_| {}),
     }
 }
 
-fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
+/// As [`measure`], in f64 whatever the configuration says, with
+/// `after_step` shown the simulation after every step (what a run
+/// exercised is read from it).
+pub fn measure_watched(
+    lesson: &Lesson,
+    config: &Config,
+    seconds: f64,
+    after_step: &mut dyn FnMut(&Simulation<f64>),
+) -> Measured {
+    measure_in::<f64>(lesson, config, seconds, after_step)
+}
+
+fn measure_in<T: Real>(
+    lesson: &Lesson,
+    config: &Config,
+    seconds: f64,
+    after_step: &mut dyn FnMut(&Simulation<T>),
+) -> Measured {
     let mut sim = simulation::<T>(lesson, config);
     let n = steps(seconds, config.params.dt);
     let g = sim.params.world.gravity.map(to_f64);
@@ -156,6 +173,7 @@ fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measur
                 break;
             }
         };
+        after_step(&sim);
         visits += report.position_iterations + report.velocity_iterations;
         // A phase that used its whole budget (it may have just made it).
         let limit = config.budget.per_contact() * report.contacts;

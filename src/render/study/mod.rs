@@ -3,6 +3,7 @@
 //! ([`json`], [`csv`]), a log–log plot of error against cost ([`svg`]) and a
 //! report an instructor can hand out ([`markdown`]).
 
+pub mod advise;
 pub mod csv;
 pub mod json;
 pub mod markdown;
