@@ -27,6 +27,9 @@ pub enum Mark {
     Squares,
     Triangles,
     Diamonds,
+    /// Crosses (×) and pluses (+), stroked.
+    Crosses,
+    Pluses,
     /// A step line (the value holds until the next point), for counts.
     Steps,
 }
@@ -226,7 +229,12 @@ impl Chart {
                 ""
             };
             match s.mark {
-                Mark::Dots | Mark::Squares | Mark::Triangles | Mark::Diamonds => {
+                Mark::Dots
+                | Mark::Squares
+                | Mark::Triangles
+                | Mark::Diamonds
+                | Mark::Crosses
+                | Mark::Pluses => {
                     for (x, y) in &pts {
                         marker(out, s.mark, *x, *y, s.colour);
                     }
@@ -351,6 +359,26 @@ pub fn marker(out: &mut String, mark: Mark, x: f64, y: f64, colour: &str) {
             x + r * 1.3,
             y + r * 1.3,
             x - r * 1.3
+        ),
+        Mark::Crosses => writeln!(
+            out,
+            r##"<path d="M{:.1},{:.1} L{:.1},{:.1} M{:.1},{:.1} L{:.1},{:.1}" stroke="{colour}" stroke-width="2" fill="none"/>"##,
+            x - r,
+            y - r,
+            x + r,
+            y + r,
+            x - r,
+            y + r,
+            x + r,
+            y - r
+        ),
+        Mark::Pluses => writeln!(
+            out,
+            r##"<path d="M{:.1},{y:.1} L{:.1},{y:.1} M{x:.1},{:.1} L{x:.1},{:.1}" stroke="{colour}" stroke-width="2" fill="none"/>"##,
+            x - r * 1.2,
+            x + r * 1.2,
+            y - r * 1.2,
+            y + r * 1.2
         ),
         _ => writeln!(
             out,

@@ -171,37 +171,60 @@ pub fn value_of(c: &Config, name: &str) -> String {
         .find(|(n, _)| *n == name)
         .map_or_else(String::new, |(_, v)| match name {
             "budget" => v.trim_end_matches('×').to_string(),
+            "dt" => grid::dt_label(c.params.dt),
             _ => v,
         })
 }
 
-/// Measures configurations, each once.
+/// Measures configurations, each once (a run stopped at a cost cap is run
+/// again only when asked with a higher cap).
 struct Evaluator<'a> {
     lesson: &'a Lesson,
     seconds: f64,
     reference: Vec<nalgebra::Vector3<f64>>,
-    cache: Vec<Eval>,
+    /// Each configuration's evaluation, and the cap it was stopped at.
+    cache: Vec<(Eval, Option<f64>)>,
     steps: usize,
+    runs: usize,
 }
 
 impl Evaluator<'_> {
-    fn eval(&mut self, config: &Config) -> Eval {
-        if let Some(e) = self.cache.iter().find(|e| e.config == *config) {
-            return *e;
+    /// `config` measured, or, when its cost passes `cap`, an evaluation of
+    /// infinite cost (it cannot be chosen against a row that costs `cap`).
+    fn eval(&mut self, config: &Config, cap: f64) -> Eval {
+        if let Some((e, stopped)) = self.cache.iter().find(|(e, _)| e.config == *config) {
+            if stopped.is_none_or(|c| cap <= c) {
+                return *e;
+            }
         }
-        let m = run::measure(self.lesson, config, self.seconds);
-        self.steps += m.steps;
-        let error = if m.failure.is_some() {
-            f64::NAN
+        let work = cap * self.seconds;
+        let limit = if work.is_finite() && work < 1e18 {
+            work.ceil() as usize
         } else {
-            run::rms_distance(&m.positions, &self.reference)
+            usize::MAX
         };
-        let e = Eval {
-            config: *config,
-            cost: cost(&m, self.seconds),
-            error,
+        let m = run::measure_capped(self.lesson, config, self.seconds, limit);
+        self.runs += 1;
+        self.steps += m.steps;
+        let e = if m.capped {
+            Eval {
+                config: *config,
+                cost: f64::INFINITY,
+                error: f64::NAN,
+            }
+        } else {
+            Eval {
+                config: *config,
+                cost: cost(&m, self.seconds),
+                error: if m.failure.is_some() {
+                    f64::NAN
+                } else {
+                    run::rms_distance(&m.positions, &self.reference)
+                },
+            }
         };
-        self.cache.push(e);
+        self.cache.retain(|(x, _)| x.config != *config);
+        self.cache.push((e, m.capped.then_some(cap)));
         e
     }
 }
@@ -224,13 +247,16 @@ fn best_of(
     dim: &Dimension,
     target: Option<f64>,
 ) -> (usize, Vec<Eval>) {
+    // Nothing dearer than the current configuration can be chosen, nor be
+    // the cheap setting: runs stop once they pass its cost.
+    let cap = ev.eval(current, f64::INFINITY).cost * (1.0 + 2.0 * COST_TIE);
     let evals: Vec<Eval> = dim
         .values
         .iter()
         .map(|v| {
             let mut c = *current;
             let _ = grid::set(&mut c, dim.name, v);
-            ev.eval(&c)
+            ev.eval(&c, cap)
         })
         .collect();
     let mut best: Option<usize> = None;
@@ -264,13 +290,14 @@ pub fn advise(
         reference: reference_run.positions.clone(),
         cache: Vec::new(),
         steps: reference_run.steps,
+        runs: 1,
     };
     let reference_eval = Eval {
         config: reference_config,
         cost: cost(&reference_run, seconds),
         error: 0.0,
     };
-    ev.cache.push(reference_eval);
+    ev.cache.push((reference_eval, None));
     let mut current = reference_config;
     let mut passes = 0;
     while passes < MAX_PASSES {
@@ -289,7 +316,7 @@ pub fn advise(
             break;
         }
     }
-    let choice = ev.eval(&current);
+    let choice = ev.eval(&current, f64::INFINITY);
     // What each dimension buys: its cheap setting (the cheapest value, ties
     // to the earlier) with everything else as chosen.
     let mut needed = Vec::new();
@@ -323,7 +350,7 @@ pub fn advise(
         needed,
         not_needed,
         held,
-        runs: ev.cache.len(),
+        runs: ev.runs,
         steps: ev.steps,
         passes,
         exercised,

@@ -11,13 +11,13 @@ use crate::physics::Solver;
 const ERROR_TIE_RELATIVE: f64 = 1e-6;
 const ERROR_TIE_ABSOLUTE: f64 = 1e-12;
 
-/// A row's cost as a range: the min–max of its timed runs, or its visits
-/// per step (one number) where timing is off.
-fn cost_range(r: &Row) -> (f64, f64) {
-    match r.microseconds {
-        Some([_, lo, hi]) => (lo, hi),
-        None => (r.visits_per_step, r.visits_per_step),
-    }
+/// A row's cost: its contact visits per step (deterministic) and, when
+/// timed, the min–max of its timed runs.
+fn cost_of(r: &Row) -> (f64, Option<(f64, f64)>) {
+    (
+        r.visits_per_step,
+        r.microseconds.map(|[_, lo, hi]| (lo, hi)),
+    )
 }
 
 /// `a` below `b` beyond round-off.
@@ -25,25 +25,33 @@ fn less_error(a: f64, b: f64) -> bool {
     a < b - (ERROR_TIE_RELATIVE * b.abs()).max(ERROR_TIE_ABSOLUTE)
 }
 
-/// True when `j` dominates `i`: cheaper beyond both ranges and no less
-/// accurate, or no dearer (the ranges overlap: a tie on cost) and more
-/// accurate beyond round-off.
-fn dominates(j: ((f64, f64), f64), i: ((f64, f64), f64)) -> bool {
-    let (((jlo, jhi), ej), ((ilo, ihi), ei)) = (j, i);
-    let cheaper = jhi < ilo;
-    let no_dearer = jlo <= ihi;
-    (cheaper && !less_error(ei, ej)) || (no_dearer && less_error(ej, ei))
+/// True when `j` dominates `i`: `j` does no more work (visits) and `i` is
+/// not faster beyond the spread of the runs (its whole min–max range below
+/// `j`'s), and `j` is either cheaper in work and no less accurate, or more
+/// accurate beyond round-off. Timing alone never decides (its noise moved
+/// the marks between two runs); it only keeps a row that is measurably
+/// faster than one doing less work.
+fn dominates(j: (f64, Option<(f64, f64)>, f64), i: (f64, Option<(f64, f64)>, f64)) -> bool {
+    let ((jv, jt, ej), (iv, it, ei)) = (j, i);
+    let faster_beyond_spread = match (it, jt) {
+        (Some((_, ihi)), Some((jlo, _))) => ihi < jlo,
+        _ => false,
+    };
+    if faster_beyond_spread || jv > iv {
+        return false;
+    }
+    (jv < iv && !less_error(ei, ej)) || less_error(ej, ei)
 }
 
 /// Marks the rows on the front of (cost, error): a row leaves it only when
-/// another row dominates it ([`dominates`]): rows whose cost ranges overlap
-/// and whose errors tie both stay (a tie is shown as a tie). Rows that
-/// failed or have no finite numbers take no part.
+/// another row dominates it ([`dominates`]); rows of equal work and tied
+/// errors both stay (a tie is shown as a tie). Rows that failed or have no
+/// finite numbers take no part.
 pub fn mark(rows: &mut [Row]) {
     let point = |r: &Row| {
-        let ((lo, hi), e) = (cost_range(r), r.error_vs_reference);
-        (r.failure.is_none() && lo.is_finite() && hi.is_finite() && e.is_finite())
-            .then_some(((lo, hi), e))
+        let (v, t) = cost_of(r);
+        let e = r.error_vs_reference;
+        (r.failure.is_none() && v.is_finite() && e.is_finite()).then_some((v, t, e))
     };
     let points: Vec<_> = rows.iter().map(point).collect();
     for (i, row) in rows.iter_mut().enumerate() {
@@ -57,10 +65,15 @@ pub fn mark(rows: &mut [Row]) {
     }
 }
 
-/// The rows of the front, cheapest first.
+/// The rows of the front, cheapest first: by contact visits (deterministic),
+/// then by error, so that the order does not follow timing noise.
 pub fn front(rows: &[Row]) -> Vec<&Row> {
     let mut f: Vec<&Row> = rows.iter().filter(|r| r.pareto).collect();
-    f.sort_by(|a, b| a.cost().total_cmp(&b.cost()));
+    f.sort_by(|a, b| {
+        a.visits_per_step
+            .total_cmp(&b.visits_per_step)
+            .then(b.error_vs_reference.total_cmp(&a.error_vs_reference))
+    });
     f
 }
 
@@ -75,8 +88,11 @@ fn at_budget<'a>(rows: &'a [Row], label: &str, per_contact: usize) -> Option<&'a
 }
 
 /// One sentence: the cheapest and the most accurate configuration of the
-/// front, and the two solvers at equal work (8 visits per contact).
-pub fn verdict(study: &SceneStudy, cost_unit: &str) -> String {
+/// front, and the two solvers at equal work (8 visits per contact). Costs
+/// are quoted in contact visits per step (deterministic) whether or not
+/// timing is on, so the same study gives the same sentence.
+pub fn verdict(study: &SceneStudy) -> String {
+    let cost_unit = "visits/step";
     let fmt = Fmt::new(2);
     let f = front(&study.rows);
     let (Some(cheap), Some(best)) = (f.first(), f.last()) else {
@@ -87,17 +103,17 @@ pub fn verdict(study: &SceneStudy, cost_unit: &str) -> String {
         format!(
             "One configuration is both the cheapest and the most accurate: {} ({} {cost_unit}, error {} m)",
             name(cheap),
-            fmt.num(cheap.cost()),
+            fmt.num(cheap.visits_per_step),
             fmt.num(cheap.error_vs_reference),
         )
     } else {
         format!(
             "The front runs from {} ({} {cost_unit}, error {} m) to {} ({} {cost_unit}, error {} m)",
             name(cheap),
-            fmt.num(cheap.cost()),
+            fmt.num(cheap.visits_per_step),
             fmt.num(cheap.error_vs_reference),
             name(best),
-            fmt.num(best.cost()),
+            fmt.num(best.visits_per_step),
             fmt.num(best.error_vs_reference),
         )
     };

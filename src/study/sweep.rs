@@ -99,8 +99,7 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
             verdict: String::new(),
             partial,
         };
-        let unit = if o.timed { "µs/step" } else { "visits/step" };
-        scene.verdict = pareto::verdict(&scene, unit);
+        scene.verdict = pareto::verdict(&scene);
         scenes.push(scene);
     }
     Study {

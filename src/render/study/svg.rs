@@ -1,5 +1,5 @@
 //! The study as a figure: per scene, error against cost on log–log axes,
-//! one colour and marker per row (eight colours × four markers), the Pareto
+//! one colour and marker per row (eight colours × six markers), the Pareto
 //! front joined, the reference named under the panel's title, and a legend
 //! in its own column inside the canvas (★ beside the rows on the front).
 //! Rows with an error of 0 or that blew up cannot be drawn on a log axis and
@@ -14,9 +14,16 @@ const PLOT: f64 = 560.0;
 const PANEL: f64 = 360.0;
 const LEGEND_LINE: f64 = 14.0;
 /// The markers, in the order rows take them (colour first).
-const MARKS: [Mark; 4] = [Mark::Dots, Mark::Squares, Mark::Triangles, Mark::Diamonds];
+const MARKS: [Mark; 6] = [
+    Mark::Dots,
+    Mark::Squares,
+    Mark::Triangles,
+    Mark::Diamonds,
+    Mark::Crosses,
+    Mark::Pluses,
+];
 
-/// The colour and marker of the `k`-th row: distinct for 32 rows.
+/// The colour and marker of the `k`-th row: distinct for 48 rows.
 pub fn style(k: usize) -> (&'static str, Mark) {
     (
         PALETTE[k % PALETTE.len()],
@@ -38,7 +45,7 @@ fn drawable(r: &Row, x: f64) -> bool {
 }
 
 /// Characters per legend line (11 px text in the column right of the plot).
-pub const LEGEND_CHARS: usize = 56;
+pub const LEGEND_CHARS: usize = 52;
 /// Lines the reference takes at most under the legend.
 const REFERENCE_LINES: usize = 5;
 
@@ -79,7 +86,7 @@ pub fn render(study: &Study) -> String {
         r##"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height}" viewBox="0 0 {WIDTH} {height}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">
 <rect width="100%" height="100%" fill="#FFFFFF"/>
 <text x="24" y="36" font-size="22" font-weight="bold">Speed against accuracy</text>
-<text x="24" y="60" font-size="14" fill="#444444">error against the reference (m) vs {}, log–log; one colour and marker per row; the Pareto front joined</text>
+<text x="24" y="60" font-size="14" fill="#444444">error (m) vs {}, log–log: one colour and marker per row, the front dotted</text>
 "##,
         escape(x_label)
     );
@@ -125,7 +132,7 @@ pub fn render(study: &Study) -> String {
         // The legend: one line per row, in the column right of the plot.
         let lx = 24.0 + PLOT + 16.0;
         out.push_str(&format!(
-            r##"<g font-size="11"><text x="{lx:.1}" y="{:.1}" font-weight="bold">rows (★ on the front; dotted line: the front)</text>
+            r##"<g font-size="11"><text x="{lx:.1}" y="{:.1}" font-size="11" font-weight="bold">rows (★ on the front; dotted line: the front)</text>
 "##,
             y0 + 40.0
         ));
@@ -141,7 +148,7 @@ pub fn render(study: &Study) -> String {
                 ""
             };
             out.push_str(&format!(
-                r##"<text x="{:.1}" y="{y:.1}">{}{note}</text>
+                r##"<text x="{:.1}" y="{y:.1}" font-size="11">{}{note}</text>
 "##,
                 lx + 16.0,
                 escape(&row_name(r))
@@ -154,7 +161,7 @@ pub fn render(study: &Study) -> String {
             .enumerate()
         {
             out.push_str(&format!(
-                r##"<text x="{lx:.1}" y="{:.1}" fill="#444444">{}</text>
+                r##"<text x="{lx:.1}" y="{:.1}" font-size="11" fill="#444444">{}</text>
 "##,
                 first + LEGEND_LINE * i as f64,
                 escape(line)
