@@ -90,10 +90,7 @@ fn check_advice(id: &str, seconds: f64, solver: Solver, target: f64, knobs: bool
             grid::set(&mut x, name, v).unwrap();
             let m = run::measure(&l, &x, seconds);
             let cost = contact_lab::study::advise::cost(&m, seconds);
-            let err = run::rms_distance(
-                &m.positions,
-                &run::measure(&l, &reference, seconds).positions,
-            );
+            let err = run::rms_distance(&m.positions, &reference_positions);
             if best.as_ref().is_none_or(|b| cost < b.1 * (1.0 - 1e-9)) {
                 best = Some((v.clone(), cost, err));
             }
