@@ -11,13 +11,9 @@ use crate::physics::Solver;
 const ERROR_TIE_RELATIVE: f64 = 1e-6;
 const ERROR_TIE_ABSOLUTE: f64 = 1e-12;
 
-/// A row's cost: its contact visits per step (deterministic) and, when
-/// timed, the min–max of its timed runs.
-fn cost_of(r: &Row) -> (f64, Option<(f64, f64)>) {
-    (
-        r.visits_per_step,
-        r.microseconds.map(|[_, lo, hi]| (lo, hi)),
-    )
+/// A row's cost for the front: its contact visits per step (deterministic).
+fn cost_of(r: &Row) -> f64 {
+    r.visits_per_step
 }
 
 /// `a` below `b` beyond round-off.
@@ -25,19 +21,15 @@ fn less_error(a: f64, b: f64) -> bool {
     a < b - (ERROR_TIE_RELATIVE * b.abs()).max(ERROR_TIE_ABSOLUTE)
 }
 
-/// True when `j` dominates `i`: `j` does no more work (visits) and `i` is
-/// not faster beyond the spread of the runs (its whole min–max range below
-/// `j`'s), and `j` is either cheaper in work and no less accurate, or more
-/// accurate beyond round-off. Timing alone never decides (its noise moved
-/// the marks between two runs); it only keeps a row that is measurably
-/// faster than one doing less work.
-fn dominates(j: (f64, Option<(f64, f64)>, f64), i: (f64, Option<(f64, f64)>, f64)) -> bool {
-    let ((jv, jt, ej), (iv, it, ei)) = (j, i);
-    let faster_beyond_spread = match (it, jt) {
-        (Some((_, ihi)), Some((jlo, _))) => ihi < jlo,
-        _ => false,
-    };
-    if faster_beyond_spread || jv > iv {
+/// True when `j` dominates `i`: `j` does no more work (contact visits) and
+/// is either cheaper in work and no less accurate, or more accurate beyond
+/// round-off. Timing does not decide: a rule on the timed min–max ranges
+/// (a row dominated only when slower beyond both ranges) still moved the
+/// marks between two runs wherever two ranges nearly touched, so the marks
+/// follow the work, and the table shows each row's timed range beside it.
+fn dominates(j: (f64, f64), i: (f64, f64)) -> bool {
+    let ((jv, ej), (iv, ei)) = (j, i);
+    if jv > iv {
         return false;
     }
     (jv < iv && !less_error(ei, ej)) || less_error(ej, ei)
@@ -49,9 +41,8 @@ fn dominates(j: (f64, Option<(f64, f64)>, f64), i: (f64, Option<(f64, f64)>, f64
 /// finite numbers take no part.
 pub fn mark(rows: &mut [Row]) {
     let point = |r: &Row| {
-        let (v, t) = cost_of(r);
-        let e = r.error_vs_reference;
-        (r.failure.is_none() && v.is_finite() && e.is_finite()).then_some((v, t, e))
+        let (v, e) = (cost_of(r), r.error_vs_reference);
+        (r.failure.is_none() && v.is_finite() && e.is_finite()).then_some((v, e))
     };
     let points: Vec<_> = rows.iter().map(point).collect();
     for (i, row) in rows.iter_mut().enumerate() {
