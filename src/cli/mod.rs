@@ -26,6 +26,7 @@ Examples:
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab study stack-5 ramp-stick              speed against accuracy: tables with the Pareto front
   contact-lab study --format svg > study.svg        error against µs per step, log–log
+  contact-lab advise ramp-stick --error 0.001       the cheapest model within 1 mm, to paste
   contact-lab exercise --seed 1 --count 5 --answers --format md
   contact-lab knobs                                 every tunable: what it trades, default, values
 
@@ -53,6 +54,8 @@ pub enum Command {
     Simulate(SimulateArgs),
     /// Speed against accuracy: run scenes under a grid of knobs, cost and error against a reference.
     Study(StudyArgs),
+    /// The cheapest configuration whose error against the scene's reference stays below a target.
+    Advise(AdviseArgs),
     /// Compare every number a lesson prints ([[printed]]) with the computed one.
     #[command(name = "check")]
     Errata(ErrataArgs),

@@ -162,3 +162,31 @@ pub struct StudyArgs {
     #[arg(long)]
     pub force: bool,
 }
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AdviseFormat {
+    /// The configuration to paste, what each knob buys, what the run exercised.
+    Text,
+    #[value(alias = "markdown")]
+    Md,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct AdviseArgs {
+    /// A scene id or a lesson file with [world] or [step].
+    pub scene: std::ffi::OsString,
+    /// The largest error allowed against the scene's reference, m (RMS over
+    /// the movable bodies of the distance between final positions).
+    #[arg(long)]
+    pub error: f64,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = AdviseFormat::Text)]
+    pub format: AdviseFormat,
+    /// Simulated seconds (default: the study's choice for the scene, 0.5 to 2 s).
+    #[arg(long)]
+    pub seconds: Option<f64>,
+    /// Significant digits of text and Markdown (JSON carries full f64).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+}

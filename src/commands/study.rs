@@ -15,7 +15,7 @@ use crate::study::grid::{self, SCENES};
 use crate::study::sweep::{self, Options, SceneSpec};
 
 /// The most simulated seconds per scene.
-const MAX_SECONDS: f64 = 60.0;
+pub(super) const MAX_SECONDS: f64 = 60.0;
 
 fn specs(args: &StudyArgs, err: &mut dyn Write) -> Result<Vec<SceneSpec>, AppError> {
     let names: Vec<std::ffi::OsString> = if args.scenes.is_empty() {

@@ -23,6 +23,13 @@ pub enum Mark {
     Line,
     /// Dots, for a scatter plot.
     Dots,
+    /// Squares, triangles and diamonds: scatter marks told apart without colour.
+    Squares,
+    Triangles,
+    Diamonds,
+    /// Crosses (×) and pluses (+), stroked.
+    Crosses,
+    Pluses,
     /// A step line (the value holds until the next point), for counts.
     Steps,
 }
@@ -222,13 +229,14 @@ impl Chart {
                 ""
             };
             match s.mark {
-                Mark::Dots => {
+                Mark::Dots
+                | Mark::Squares
+                | Mark::Triangles
+                | Mark::Diamonds
+                | Mark::Crosses
+                | Mark::Pluses => {
                     for (x, y) in &pts {
-                        let _ = writeln!(
-                            out,
-                            r##"<circle cx="{x:.1}" cy="{y:.1}" r="3.5" fill="{}"/>"##,
-                            s.colour
-                        );
+                        marker(out, s.mark, *x, *y, s.colour);
                     }
                 }
                 Mark::Line | Mark::Steps => {
@@ -293,8 +301,14 @@ impl Chart {
                 escape(label)
             );
         }
-        // Legend, top right inside the frame.
-        for (i, s) in self.series.iter().enumerate() {
+        // Legend, top right inside the frame (series without a name have
+        // none: the caller draws its own).
+        for (i, s) in self
+            .series
+            .iter()
+            .filter(|s| !s.name.is_empty())
+            .enumerate()
+        {
             let y = top + 14.0 + 15.0 * i as f64;
             let x = right - 150.0;
             let dash = if s.dashed {
@@ -315,6 +329,62 @@ impl Chart {
         }
         out.push_str("</g>\n");
     }
+}
+
+/// One scatter mark centred at (x, y).
+pub fn marker(out: &mut String, mark: Mark, x: f64, y: f64, colour: &str) {
+    let r = 3.8;
+    let _ = match mark {
+        Mark::Squares => writeln!(
+            out,
+            r##"<rect x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="{colour}"/>"##,
+            x - r,
+            y - r,
+            2.0 * r,
+            2.0 * r
+        ),
+        Mark::Triangles => writeln!(
+            out,
+            r##"<polygon points="{x:.1},{:.1} {:.1},{:.1} {:.1},{:.1}" fill="{colour}"/>"##,
+            y - r * 1.2,
+            x - r * 1.1,
+            y + r * 0.8,
+            x + r * 1.1,
+            y + r * 0.8
+        ),
+        Mark::Diamonds => writeln!(
+            out,
+            r##"<polygon points="{x:.1},{:.1} {:.1},{y:.1} {x:.1},{:.1} {:.1},{y:.1}" fill="{colour}"/>"##,
+            y - r * 1.3,
+            x + r * 1.3,
+            y + r * 1.3,
+            x - r * 1.3
+        ),
+        Mark::Crosses => writeln!(
+            out,
+            r##"<path d="M{:.1},{:.1} L{:.1},{:.1} M{:.1},{:.1} L{:.1},{:.1}" stroke="{colour}" stroke-width="2" fill="none"/>"##,
+            x - r,
+            y - r,
+            x + r,
+            y + r,
+            x - r,
+            y + r,
+            x + r,
+            y - r
+        ),
+        Mark::Pluses => writeln!(
+            out,
+            r##"<path d="M{:.1},{y:.1} L{:.1},{y:.1} M{x:.1},{:.1} L{x:.1},{:.1}" stroke="{colour}" stroke-width="2" fill="none"/>"##,
+            x - r * 1.2,
+            x + r * 1.2,
+            y - r * 1.2,
+            y + r * 1.2
+        ),
+        _ => writeln!(
+            out,
+            r##"<circle cx="{x:.1}" cy="{y:.1}" r="3.5" fill="{colour}"/>"##
+        ),
+    };
 }
 
 /// Text escaped for SVG.

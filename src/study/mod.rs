@@ -4,6 +4,8 @@
 //! which configurations, [`run`] runs and measures one, [`pareto`] marks the
 //! front and says what the trade is. Renderers show the [`Study`].
 
+pub mod advise;
+pub mod exercised;
 pub mod grid;
 pub mod pareto;
 pub mod run;
@@ -157,6 +159,8 @@ pub struct SceneStudy {
     pub rows: Vec<Row>,
     /// One sentence: what the trade is in this scene.
     pub verdict: String,
+    /// For a quick study: how many rows of the full grid it did not run.
+    pub partial: Option<usize>,
 }
 
 /// The whole study.

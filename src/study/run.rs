@@ -38,6 +38,8 @@ pub struct Measured {
     /// Final position of each movable body.
     pub positions: Vec<Vector3<f64>>,
     pub failure: Option<String>,
+    /// Stopped early: the work (visits + steps) passed the cap it was given.
+    pub capped: bool,
 }
 
 /// The number of steps `seconds` takes at `dt`.
@@ -101,12 +103,39 @@ fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
 /// Runs `config` for `seconds` and measures it.
 pub fn measure(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
     match config.precision {
-        Precision::F64 => measure_in::<f64>(lesson, config, seconds),
-        Precision::F32 => measure_in::<f32>(lesson, config, seconds),
+        Precision::F64 => measure_in::<f64>(lesson, config, seconds, usize::MAX, &mut |_| {}),
+        Precision::F32 => measure_in::<f32>(lesson, config, seconds, usize::MAX, &mut |_| {}),
     }
 }
 
-fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
+/// As [`measure`], stopped as soon as the work (contact visits + steps)
+/// passes `cap`: then `capped` is set and the numbers are partial.
+pub fn measure_capped(lesson: &Lesson, config: &Config, seconds: f64, cap: usize) -> Measured {
+    match config.precision {
+        Precision::F64 => measure_in::<f64>(lesson, config, seconds, cap, &mut |_| {}),
+        Precision::F32 => measure_in::<f32>(lesson, config, seconds, cap, &mut |_| {}),
+    }
+}
+
+/// As [`measure`], in f64 whatever the configuration says, with
+/// `after_step` shown the simulation after every step (what a run
+/// exercised is read from it).
+pub fn measure_watched(
+    lesson: &Lesson,
+    config: &Config,
+    seconds: f64,
+    after_step: &mut dyn FnMut(&Simulation<f64>),
+) -> Measured {
+    measure_in::<f64>(lesson, config, seconds, usize::MAX, after_step)
+}
+
+fn measure_in<T: Real>(
+    lesson: &Lesson,
+    config: &Config,
+    seconds: f64,
+    cap: usize,
+    after_step: &mut dyn FnMut(&Simulation<T>),
+) -> Measured {
     let mut sim = simulation::<T>(lesson, config);
     let n = steps(seconds, config.params.dt);
     let g = sim.params.world.gravity.map(to_f64);
@@ -146,9 +175,15 @@ fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measur
         drift: 0.0,
         positions: Vec::new(),
         failure: None,
+        capped: false,
     };
     let mut visits = 0usize;
-    for _ in 0..n {
+    for step in 0..n {
+        if visits.saturating_add(step) > cap {
+            m.capped = true;
+            m.steps = step;
+            break;
+        }
         let report = match sim.advance() {
             Ok(r) => r,
             Err(e) => {
@@ -156,6 +191,7 @@ fn measure_in<T: Real>(lesson: &Lesson, config: &Config, seconds: f64) -> Measur
                 break;
             }
         };
+        after_step(&sim);
         visits += report.position_iterations + report.velocity_iterations;
         // A phase that used its whole budget (it may have just made it).
         let limit = config.budget.per_contact() * report.contacts;

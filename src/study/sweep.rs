@@ -50,8 +50,14 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
         done += 1;
         progress(done, &lesson.id);
         let mut rows = Vec::new();
-        for (knob, value, config) in grid::rows(&default, grid::features(lesson), o.quick, &o.grid)
-        {
+        let planned = grid::rows(&default, grid::features(lesson), o.quick, &o.grid);
+        let partial = (o.quick && o.grid.is_empty()).then(|| {
+            let full = grid::rows(&default, grid::features(lesson), false, &o.grid);
+            full.iter()
+                .filter(|(_, _, c)| !planned.iter().any(|(_, _, q)| q == c))
+                .count()
+        });
+        for (knob, value, config) in planned {
             let m = run::measure(lesson, &config, spec.seconds);
             let microseconds = if o.timed && m.failure.is_none() {
                 run::spread(&run::time(lesson, &config, spec.seconds, o.repeats.max(1)))
@@ -91,9 +97,9 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
             reference_config,
             rows,
             verdict: String::new(),
+            partial,
         };
-        let unit = if o.timed { "µs/step" } else { "visits/step" };
-        scene.verdict = pareto::verdict(&scene, unit);
+        scene.verdict = pareto::verdict(&scene);
         scenes.push(scene);
     }
     Study {

@@ -62,8 +62,9 @@ fn json_rows_carry_the_contract_and_mark_a_front() {
     for s in scenes {
         assert!(s["reference"].as_str().unwrap().contains("dt = 1/480"));
         let rows = s["rows"].as_array().unwrap();
-        // default, 2 solvers × 3 budgets less the default's own, f32, dt = 1/30.
-        assert_eq!(rows.len(), 8, "{}", s["scene"]);
+        // default, 3 solvers (sequential warm-started too) × 3 budgets less the
+        // default's own, f32, dt = 1/30.
+        assert_eq!(rows.len(), 11, "{}", s["scene"]);
         for r in rows {
             for key in [
                 "config",
@@ -102,7 +103,7 @@ fn json_rows_carry_the_contract_and_mark_a_front() {
 fn csv_has_one_line_per_row_and_the_same_columns() {
     let csv = quick("csv");
     let lines: Vec<&str> = csv.lines().collect();
-    assert_eq!(lines.len(), 1 + 16);
+    assert_eq!(lines.len(), 1 + 22);
     let columns = lines[0].split(',').count();
     assert!(lines[0].starts_with("scene,knob,value,budget,precision,friction_model,"));
     assert!(!lines[0].contains("microseconds"));

@@ -72,6 +72,7 @@ pub fn render(study: &Study) -> String {
                 "reference": s.reference,
                 "reference_config": config(&s.reference_config),
                 "verdict": s.verdict,
+                "partial": s.partial,
                 "rows": s.rows.iter().map(row).collect::<Vec<_>>(),
             })
         })

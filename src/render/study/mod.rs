@@ -3,6 +3,7 @@
 //! ([`json`], [`csv`]), a log–log plot of error against cost ([`svg`]) and a
 //! report an instructor can hand out ([`markdown`]).
 
+pub mod advise;
 pub mod csv;
 pub mod json;
 pub mod markdown;
@@ -85,7 +86,7 @@ pub fn headers(timed: bool) -> Vec<&'static str> {
 pub fn text(study: &Study, fmt: &Fmt) -> String {
     let mut out = String::new();
     out.push_str("Speed against accuracy: each scene under one knob at a time around its default, and the iteration budget of each solver.\n");
-    out.push_str("★ marks the Pareto front of cost against error (no other row is both cheaper and more accurate).\n");
+    out.push_str("★ marks the Pareto front of work (contact visits, deterministic) against error: no other row does less work and is more accurate; ties stay.\n");
     for m in MEASURES {
         out.push_str(&format!("   · {m}\n"));
     }

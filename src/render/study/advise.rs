@@ -1,0 +1,162 @@
+//! The advice shown: text and Markdown for a reader (the configuration as
+//! a snippet to paste, its cost and error, what each kept knob buys, what
+//! the scene does not need, what the run exercised, how the search went),
+//! JSON for scripts (the advise contract, docs/study.md).
+
+use serde_json::{json, Value};
+
+use crate::format::Fmt;
+use crate::study::advise::{settings_snippet, Advice};
+use crate::study::exercised::findings;
+
+fn num(fmt: &Fmt, x: f64) -> String {
+    super::num(fmt, x)
+}
+
+/// The parts both human formats show, as (heading, lines).
+fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
+    let c = &a.choice;
+    let mut out = Vec::new();
+    out.push((
+        "The cheapest configuration found".to_string(),
+        vec![
+            format!(
+                "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m",
+                num(fmt, c.cost),
+                num(fmt, c.error),
+                num(fmt, a.target)
+            ),
+            format!(
+                "the reference costs {} ({}× this)",
+                num(fmt, a.reference_cost),
+                num(fmt, a.reference_cost / c.cost)
+            ),
+            a.values
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+        ],
+    ));
+    out.push((
+        "What each knob kept buys (the error with that knob alone at its cheap setting)".into(),
+        if a.needed.is_empty() {
+            vec!["nothing: every knob is at its cheapest setting".into()]
+        } else {
+            a.needed
+                .iter()
+                .map(|n| {
+                    format!(
+                        "{} = {} (cheap: {}): error {} m without it",
+                        n.knob,
+                        n.value,
+                        n.cheap,
+                        num(fmt, n.error_without)
+                    )
+                })
+                .collect()
+        },
+    ));
+    out.push((
+        "What the scene does not need (at its cheapest setting within the target)".into(),
+        vec![a.not_needed.join(", ")],
+    ));
+    out.push((
+        "What the run exercised (the reference run)".into(),
+        findings(&a.exercised)
+            .iter()
+            .map(|f| {
+                format!(
+                    "{} {}: {} → {}",
+                    if f.present { "✓" } else { "·" },
+                    f.feature,
+                    f.evidence,
+                    f.calls_for
+                )
+            })
+            .collect(),
+    ));
+    let mut held: Vec<String> = a
+        .held
+        .iter()
+        .map(|h| format!("{}: {}", h.name, h.why))
+        .collect();
+    if held.is_empty() {
+        held.push("none".into());
+    }
+    out.push(("Knobs not searched".into(), held));
+    out.push((
+        "The search".into(),
+        vec![format!(
+            "coordinate descent from the reference ({}): each pass tries every value of one dimension with the others held and keeps the cheapest within the target; {} passes, {} configurations run, {} steps simulated ({} s each)",
+            a.reference,
+            a.passes,
+            a.runs,
+            a.steps,
+            num(fmt, a.seconds)
+        )],
+    ));
+    out
+}
+
+pub fn text(a: &Advice, fmt: &Fmt) -> String {
+    let mut out = format!(
+        "{}  ({}, {} s): the cheapest model within {} m of the reference\n\nPaste into the scene:\n\n",
+        a.title,
+        a.scene,
+        num(fmt, a.seconds),
+        num(fmt, a.target)
+    );
+    for l in settings_snippet(a).lines() {
+        out.push_str(&format!("    {l}\n"));
+    }
+    for (head, lines) in sections(a, fmt) {
+        out.push_str(&format!("\n{head}:\n"));
+        for l in lines {
+            out.push_str(&format!("  {l}\n"));
+        }
+    }
+    out
+}
+
+pub fn markdown(a: &Advice, fmt: &Fmt) -> String {
+    let mut out = format!(
+        "# {} (`{}`): the cheapest model within {} m\n\nPaste into the scene:\n\n```toml\n{}```\n",
+        a.title,
+        a.scene,
+        num(fmt, a.target),
+        settings_snippet(a)
+    );
+    for (head, lines) in sections(a, fmt) {
+        out.push_str(&format!("\n## {head}\n\n"));
+        for l in lines {
+            out.push_str(&format!("- {l}\n"));
+        }
+    }
+    out
+}
+
+pub fn json(a: &Advice) -> String {
+    let config = super::json::config(&a.choice.config);
+    let number = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
+    let v = json!({
+        "scene": a.scene,
+        "target": a.target,
+        "seconds": a.seconds,
+        "reference": a.reference,
+        "reference_cost": a.reference_cost,
+        "choice": { "config": config, "cost": a.choice.cost, "error": number(a.choice.error) },
+        "settings": settings_snippet(a),
+        "needed": a.needed.iter().map(|n| json!({
+            "knob": n.knob, "value": n.value, "cheap": n.cheap, "error_without": number(n.error_without),
+        })).collect::<Vec<_>>(),
+        "not_needed": a.not_needed,
+        "not_searched": a.held.iter().map(|h| json!({ "knob": h.name, "why": h.why })).collect::<Vec<_>>(),
+        "exercised": findings(&a.exercised).iter().map(|f| json!({
+            "feature": f.feature, "present": f.present, "evidence": f.evidence, "calls_for": f.calls_for,
+        })).collect::<Vec<_>>(),
+        "search": { "method": "coordinate descent from the reference", "passes": a.passes,
+                    "configurations": a.runs, "steps": a.steps },
+    });
+    serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
+}

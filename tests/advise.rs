@@ -1,0 +1,283 @@
+//! `advise`: the configuration it prints, pasted into the scene and run,
+//! meets the target; every knob it reports as not needed changes the error
+//! by less than the target at its cheap setting, every knob it keeps buys
+//! more than the target; the known findings (ramp-stick does not take the
+//! lecture's order, the cradle does not take sequential impulses); and the
+//! study's verdicts hold (twice the same, quick against full, the SVG).
+
+use contact_lab::lesson::{embedded, validate, Lesson};
+use contact_lab::physics::Solver;
+use contact_lab::study::advise::{advise, dimensions, settings_snippet, Advice};
+use contact_lab::study::{grid, run, sweep, Budget, Config, CONVERGED};
+
+fn lesson(id: &str) -> Lesson {
+    Lesson::load(id).unwrap()
+}
+
+/// The scene's file with the snippet's tables merged over its own (a key
+/// the snippet sets replaces the scene's, old spellings included).
+fn pasted(id: &str, snippet: &str) -> Lesson {
+    let mut file: toml::Table = embedded::find(id).unwrap().parse().unwrap();
+    let add: toml::Table = snippet.parse().expect("the snippet is TOML");
+    for (table, keys) in add {
+        let target = file
+            .entry(table.clone())
+            .or_insert_with(|| toml::Value::Table(Default::default()))
+            .as_table_mut()
+            .unwrap();
+        for (key, value) in keys.as_table().unwrap() {
+            let knob = contact_lab::physics::knobs::find(key);
+            for old in knob.map_or(&[][..], |k| k.old_names) {
+                target.remove(*old);
+            }
+            target.insert(key.clone(), value.clone());
+        }
+    }
+    validate::parse(id, &toml::to_string(&file).unwrap()).expect("the pasted scene loads")
+}
+
+/// The error of a configuration against the reference, run for `seconds`.
+fn error(l: &Lesson, c: &Config, reference: &Config, seconds: f64) -> f64 {
+    let r = run::measure(l, reference, seconds);
+    run::rms_distance(&run::measure(l, c, seconds).positions, &r.positions)
+}
+
+/// Advice on `id`, its snippet pasted and run; with `knobs`, every knob
+/// at its cheap setting run again as well (the slow part).
+fn check_advice(id: &str, seconds: f64, solver: Solver, target: f64, knobs: bool) -> Advice {
+    let l = lesson(id);
+    let a = advise(&l, seconds, solver, target).unwrap();
+    assert!(
+        a.choice.error <= target,
+        "{id}: {} > {target}",
+        a.choice.error
+    );
+    assert!(a.choice.cost <= a.reference_cost);
+    let reference = grid::reference(&grid::default_config(&l).unwrap(), solver);
+
+    // The snippet pasted into the scene and run meets the target.
+    let p = pasted(id, &settings_snippet(&a));
+    let mut c = grid::default_config(&p).unwrap();
+    c.precision = a.choice.config.precision;
+    assert_eq!(
+        (run::params(&c), c.budget, c.precision),
+        (
+            run::params(&a.choice.config),
+            a.choice.config.budget,
+            a.choice.config.precision
+        ),
+        "{id}: the pasted scene is the choice"
+    );
+    let e = error(&p, &c, &reference, seconds);
+    assert!(e <= target, "{id}: pasted, error {e} > {target}");
+
+    if !knobs {
+        return a;
+    }
+    // Each knob at its cheap setting: not needed moves the error by less
+    // than the target; needed goes over it.
+    let reference_positions = run::measure(&l, &reference, seconds).positions;
+    let (dims, _) = dimensions(
+        &grid::default_config(&l).unwrap(),
+        &reference,
+        grid::features(&l),
+    );
+    let cheap = |name: &str| -> (String, f64, f64) {
+        let dim = dims.iter().find(|d| d.name == name).unwrap();
+        let mut best: Option<(String, f64, f64)> = None;
+        for v in &dim.values {
+            let mut x = a.choice.config;
+            grid::set(&mut x, name, v).unwrap();
+            let m = run::measure(&l, &x, seconds);
+            let cost = contact_lab::study::advise::cost(&m, seconds);
+            let err = run::rms_distance(&m.positions, &reference_positions);
+            if best.as_ref().is_none_or(|b| cost < b.1 * (1.0 - 1e-9)) {
+                best = Some((v.clone(), cost, err));
+            }
+        }
+        best.unwrap()
+    };
+    for name in &a.not_needed {
+        let (v, _, e) = cheap(name);
+        assert!(
+            (e - a.choice.error).abs() < target,
+            "{id}: {name} = {v} moves the error to {e}"
+        );
+    }
+    for n in &a.needed {
+        let (v, _, e) = cheap(n.knob);
+        assert_eq!(v, n.cheap);
+        assert!(
+            e > target,
+            "{id}: {} = {v} stays within the target ({e})",
+            n.knob
+        );
+        assert_eq!(e, n.error_without);
+    }
+    a
+}
+
+#[test]
+fn ball_drop_advice_pasted_meets_the_target_and_each_knob_is_what_it_says() {
+    let a = check_advice("ball-drop", 0.5, Solver::SequentialImpulse, 0.01, true);
+    // A bouncing ball needs no more than one visit per contact.
+    assert_eq!(a.choice.config.budget, Budget::PerContact(1));
+    assert!(a.needed.iter().any(|n| n.knob == "dt"), "{:?}", a.needed);
+}
+
+#[test]
+fn resting_box_advice_pasted_meets_the_target() {
+    let a = check_advice("resting-box", 0.5, Solver::SequentialImpulse, 0.001, true);
+    let f = contact_lab::study::exercised::findings(&a.exercised);
+    let resting = f.iter().find(|f| f.feature == "resting contacts").unwrap();
+    assert!(
+        resting.present,
+        "a box on the floor rests: {}",
+        resting.evidence
+    );
+}
+
+#[test]
+fn ramp_stick_does_not_take_the_lectures_order() {
+    // The lecture's order creeps half a metre down the slope in 2 s.
+    let a = check_advice("ramp-stick", 2.0, Solver::SequentialImpulse, 1e-3, false);
+    assert_ne!(a.choice.config.solver(), Solver::DeepestFirst);
+    let s = a.needed.iter().find(|n| n.knob == "solver").unwrap();
+    assert!(s.error_without > 0.1, "{}", s.error_without);
+}
+
+#[test]
+fn the_cradle_does_not_take_sequential_impulses() {
+    // Sequential impulses move the balls together: 0.43 m off in 1 s.
+    let a = check_advice("cradle-over-time", 1.0, Solver::DeepestFirst, 1e-3, false);
+    assert_ne!(a.choice.config.solver(), Solver::SequentialImpulse);
+}
+
+#[test]
+fn a_budget_written_in_the_lesson_is_the_scenes_budget() {
+    let p = pasted("ball-drop", "[settings]\nvisits_per_contact = 1000\n");
+    assert_eq!(grid::default_config(&p).unwrap().budget, Budget::Converged);
+    let p = pasted("ball-drop", "[settings]\nvisits_per_contact = 3\n");
+    assert_eq!(
+        grid::default_config(&p).unwrap().budget,
+        Budget::PerContact(3)
+    );
+    assert_eq!(CONVERGED, 1000);
+}
+
+fn specs(ids: &[&str], seconds: f64) -> Vec<sweep::SceneSpec> {
+    ids.iter()
+        .map(|id| sweep::SceneSpec {
+            lesson: lesson(id),
+            seconds,
+            reference_solver: Solver::SequentialImpulse,
+        })
+        .collect()
+}
+
+#[test]
+fn the_same_timed_study_twice_gives_the_same_marks_and_sentences() {
+    let o = sweep::Options {
+        timed: true,
+        repeats: 3,
+        quick: true,
+        grid: Vec::new(),
+    };
+    let s = specs(&["resting-box", "ball-drop"], 0.5);
+    let a = sweep::study(&s, &o, &mut |_, _| {});
+    let b = sweep::study(&s, &o, &mut |_, _| {});
+    for (x, y) in a.scenes.iter().zip(&b.scenes) {
+        let marks = |s: &contact_lab::study::SceneStudy| {
+            s.rows
+                .iter()
+                .map(|r| (r.value.clone(), r.pareto))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(marks(x), marks(y), "{}", x.scene);
+        assert_eq!(x.verdict, y.verdict);
+    }
+}
+
+#[test]
+fn quick_agrees_with_full_on_the_solvers_or_says_it_is_partial() {
+    let run = |quick| {
+        let o = sweep::Options {
+            timed: false,
+            repeats: 1,
+            quick,
+            grid: Vec::new(),
+        };
+        sweep::study(&specs(&["stack-5"], 0.5), &o, &mut |_, _| {})
+    };
+    let (q, f) = (run(true), run(false));
+    let (q, f) = (&q.scenes[0], &f.scenes[0]);
+    let solvers = |v: &str| {
+        v.split("; at equal work")
+            .nth(1)
+            .map(|s| s.split('.').next().unwrap_or("").to_string())
+    };
+    assert!(solvers(&f.verdict).is_some(), "{}", f.verdict);
+    assert_eq!(solvers(&q.verdict), solvers(&f.verdict));
+    assert!(q.partial.is_some_and(|n| n > 0));
+    assert!(q.verdict.contains("partial"), "{}", q.verdict);
+    assert!(f.partial.is_none() && !f.verdict.contains("partial"));
+}
+
+#[test]
+fn the_study_svg_keeps_its_legend_inside_one_style_per_row_front_and_reference() {
+    let o = sweep::Options {
+        timed: false,
+        repeats: 1,
+        quick: false,
+        grid: Vec::new(),
+    };
+    let st = sweep::study(&specs(&["stack-5"], 0.25), &o, &mut |_, _| {});
+    let svg = contact_lab::render::study::svg::render(&st);
+    let width: f64 = svg
+        .split("width=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    // Every text ends inside the canvas (11–14 px type: at most 0.62 em a character).
+    for t in svg.split("<text ").skip(1) {
+        let x: f64 = t
+            .split("x=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        let body = t.split('>').nth(1).unwrap().split('<').next().unwrap();
+        let tag = t.split('>').next().unwrap();
+        let size: f64 = tag
+            .split("font-size=\"")
+            .nth(1)
+            .map_or(12.0, |v| v.split('"').next().unwrap().parse().unwrap());
+        let anchor_end = t.contains("text-anchor=\"end\"") || t.contains("text-anchor=\"middle\"");
+        let end = if anchor_end {
+            x
+        } else {
+            x + 0.62 * size * body.chars().count() as f64
+        };
+        assert!(end <= width, "text runs off the canvas at {end}: {body}");
+    }
+    let rows = st.scenes[0].rows.len();
+    let styles: std::collections::HashSet<_> = (0..rows)
+        .map(|k| {
+            let (colour, mark) = contact_lab::render::study::svg::style(k);
+            (colour, format!("{mark:?}"))
+        })
+        .collect();
+    assert_eq!(styles.len(), rows, "one colour and marker per row");
+    assert!(svg.contains("<polyline"), "the front is drawn");
+    assert!(svg.contains("reference: sequential impulses, warm-started"));
+    for r in &st.scenes[0].rows {
+        assert!(svg.contains(&contact_lab::render::study::svg::row_name(r).replace('&', "&amp;")));
+    }
+}
