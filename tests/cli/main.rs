@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod advise;
 mod exercise_figures;
 mod grading;
 mod instructor;
