@@ -41,7 +41,7 @@ pub fn tunnelled<T: Real>(
     let n = world.bodies.len();
     for i in 0..n {
         for j in (i + 1)..n {
-            if !(moves(i) || moves(j)) || in_contact(world, i, j) {
+            if !(moves(i) || moves(j)) {
                 continue;
             }
             if let Some(t) = pair(world, i, j, dt, &moves) {
@@ -91,7 +91,7 @@ fn pair<T: Real>(
     let reach =
         |m: &Motion<T>, r: T| (m.position + m.velocity * half, r + m.velocity.norm() * half);
     let ((ca, sa), (cb, sb)) = (reach(&ma, ra), reach(&mb, rb));
-    if (ca - cb).norm() > sa + sb {
+    if (ca - cb).norm() > sa + sb || in_contact(world, i, j) {
         return None;
     }
     let options = ToiOptions {
