@@ -239,6 +239,22 @@ impl RunTrace {
                     f.num(gained)
                 ),
             ),
+            Event::Tunnelled {
+                body1,
+                body2,
+                time,
+                point,
+            } => (
+                "tunnelled",
+                format!(
+                    "tunnelled: {} met at t = {} s near ({}, {}, {}) and were apart again at the step's end, with no contact (the poses at t and t + Δt miss it)",
+                    self.pair(body1, Some(body2)),
+                    f.num(time),
+                    f.num(point[0]),
+                    f.num(point[1]),
+                    f.num(point[2])
+                ),
+            ),
         }
     }
 }

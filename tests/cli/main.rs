@@ -15,3 +15,4 @@ mod io_simulate;
 mod output_files;
 mod resolve_cli;
 mod study;
+mod tunnelled;

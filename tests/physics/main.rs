@@ -25,4 +25,5 @@ mod scale_invariance;
 mod scenes;
 mod sequential;
 mod truth;
+mod tunnelling;
 mod world;

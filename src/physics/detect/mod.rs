@@ -13,7 +13,8 @@
 //! - [`query`]: GJK then EPA (or the margins) for one pair;
 //! - [`features`]: feature kinds and every identifier name;
 //! - [`sat`]: exact depth and normal for polyhedra (the tests' reference);
-//! - [`manifold`] (+ `support_face`): the clipped support faces of a resting pair.
+//! - [`manifold`] (+ `support_face`): the clipped support faces of a resting pair;
+//! - [`toi`]: time of collision over a step, by bisection and by conservative advancement.
 //!
 //! Conventions as in `collide`: the normal points from B (body 2) toward A
 //! (body 1); moving A along it by the depth separates the pair.
@@ -33,6 +34,7 @@ pub mod sat;
 pub mod simplex;
 pub mod support;
 mod support_face;
+pub mod toi;
 
 #[cfg(test)]
 mod tests;
@@ -47,3 +49,4 @@ pub use manifold::{manifold, ManifoldPoint};
 pub use query::{query, Penetration, PenetrationSource, Query, QueryOptions};
 pub use sat::{sat, Polyhedron, SatResult};
 pub use support::{plane_depth, Capsule, Convex, Support};
+pub use toi::{toi, Motion, Toi, ToiEnd, ToiMethod, ToiObserver, ToiOptions, ToiRecorder, ToiStep};

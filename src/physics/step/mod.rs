@@ -4,6 +4,7 @@
 //! bookkeeping, [`energy`] of the world.
 
 pub mod audit;
+pub mod ccd;
 pub mod energy;
 pub mod integrate;
 pub mod overlap;

@@ -74,6 +74,15 @@ pub enum Event {
     ProjectionLift {
         gained: f64,
     },
+    /// Two bodies met inside the step and were apart again at its end
+    /// without a contact (the tunnelling auditor, [`super::ccd`]): at `time`
+    /// (s, the run's clock), near `point`.
+    Tunnelled {
+        body1: BodyId,
+        body2: BodyId,
+        time: f64,
+        point: [f64; 3],
+    },
 }
 
 /// What one step did.

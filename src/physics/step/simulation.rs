@@ -12,7 +12,7 @@ use super::audit::Switches;
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
-use super::{audit, energy, overlap, replay, tolerance};
+use super::{audit, ccd, energy, overlap, replay, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
@@ -207,6 +207,11 @@ impl<T: Real> Simulation<T> {
             self.warm.store(&self.world, resolver);
         }
         resolver.write_back(&mut self.world);
+        // The tunnelling audit: each pair's swept motion over the step.
+        let moves =
+            |i: usize| self.world.bodies[i].movable && (self.sleep[i].awake || !p.sleep.enabled);
+        let mut crossed = Vec::new();
+        ccd::tunnelled(&self.world, p.dt, moves, &mut crossed);
         // 5. Positions of the awake bodies with the resolved velocities.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
@@ -220,6 +225,13 @@ impl<T: Real> Simulation<T> {
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
+        let start = self.time - to_f64(p.dt);
+        events.extend(crossed.iter().map(|t| Event::Tunnelled {
+            body1: t.body1,
+            body2: t.body2,
+            time: start + t.time,
+            point: t.point,
+        }));
         events.extend(lift_event);
         events.extend(gain_event);
         if position.limit_reached && !self.limits_hit[0] {

@@ -12,6 +12,7 @@ mod records;
 mod reference;
 mod robust;
 mod support;
+mod toi;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
