@@ -3,7 +3,7 @@
 //! iteration limit is raised so that every phase runs until nothing is above
 //! its epsilon; and what the default limit (8 × contacts) leaves.
 //!
-//! `cargo run --release --example row_iterations [N …]`
+//! `cargo run --release --features measure --example row_iterations [N …]`
 
 use std::time::Instant;
 

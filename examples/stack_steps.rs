@@ -1,5 +1,5 @@
 //! Runs the 5-box stack for N steps with sleep off (a profiling target):
-//! `cargo run --release --example stack_steps -- 20000 [si|si-warm|dl] [sleep]`
+//! `cargo run --release --features measure --example stack_steps -- 20000 [si|si-warm|dl] [sleep]`
 //! (`sleep`: the scene's own sleep settings, on).
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::step::Simulation;
