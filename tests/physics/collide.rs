@@ -178,6 +178,7 @@ fn edges_apart_give_nothing_though_every_face_axis_overlaps() {
     let options = contact_lab::physics::collide::Options {
         box_box: BoxBoxMode::Single,
         tolerance: 0.03,
+        ..Default::default()
     };
     contact_lab::physics::collide::collide_with((&CUBE, &a), (&CUBE, &b), &options, &mut near);
     assert_eq!(near.len(), 1);
@@ -350,7 +351,11 @@ fn generated_contacts_agree_with_the_lessons_written_ones() {
     let generate = |id: &str, box_box: BoxBoxMode, tolerance: f64| {
         let world = Lesson::load(id).unwrap().world::<f64>();
         let mut out = Vec::new();
-        let options = Options { box_box, tolerance };
+        let options = Options {
+            box_box,
+            tolerance,
+            ..Default::default()
+        };
         ContactGenerator::new().generate_world(&world.bodies, &options, &mut out);
         (world, out)
     };

@@ -31,9 +31,11 @@
 //! small face, a box hanging over a face's edge; 14 % of the face contacts
 //! between randomly placed overlapping boxes): there the deepest point of the clipped incident face is taken
 //! (feature `FaceFace`), with the axis overlap as penetration. A hollow sphere collides as a sphere.
-//! Every other pair (cylinder with a sphere, box or cylinder; two
-//! half-spaces) generates nothing yet. A half-space's `normal` is a world
-//! vector: its pose's rotation is ignored.
+//! Every other convex pair (cylinder with a sphere, box or cylinder) runs
+//! GJK/EPA and the clipped manifold ([`convex`]), as every convex pair does
+//! with [`NarrowPhase::Gjk`]; a half-space pair keeps its analytic routine
+//! (a half-space has no support mapping). Two half-spaces generate nothing.
+//! A half-space's `normal` is a world vector: its pose's rotation is ignored.
 //!
 //! The broad phase ([`broad`]) finds candidate pairs; [`scene::ContactGenerator`]
 //! runs both phases over a set of bodies.
@@ -42,6 +44,7 @@ mod box_box;
 mod box_sphere;
 pub mod broad;
 mod clip;
+mod convex;
 mod plane;
 pub mod scene;
 mod sphere;
@@ -57,6 +60,11 @@ use super::{c, Real, Shape};
 /// point–face or edge–edge contact as the reference engine; `Manifold`
 /// (default), the clipped faces, up to 4 points.
 pub use super::params::BoxBoxMode;
+
+/// Which routine a convex pair runs (`[world] narrow_phase`): `Analytic`
+/// (default) where one exists, GJK/EPA otherwise; `Gjk` for every pair but
+/// a half-space's.
+pub use super::params::NarrowPhase;
 
 /// Where a body is and how it is turned. `rotation` is the rotation matrix of
 /// the orientation quaternion `[w, x, y, z]`: its columns are the body's axes
@@ -173,6 +181,10 @@ pub enum Feature {
     /// the deepest such point when the reference engine's vertex lies beside
     /// the face (its penetration is then the overlap on the axis).
     FaceFace { reference: Side, axis: u8 },
+    /// A point of the GJK/EPA manifold: on the incident body, the reference
+    /// face being on side `reference`; `None` for EPA's (or the closest
+    /// points') single point, midway.
+    Convex { reference: Option<Side> },
 }
 
 impl Feature {
@@ -213,6 +225,9 @@ impl Feature {
                 reference: reference.other(),
                 axis,
             },
+            Feature::Convex { reference } => Feature::Convex {
+                reference: reference.map(Side::other),
+            },
         }
     }
 }
@@ -240,6 +255,9 @@ pub struct Options<T: Real> {
     /// touching or overlapping). A larger margin finds contacts a step
     /// earlier, at the price of more contacts to resolve.
     pub tolerance: T,
+    /// Analytic routines where they exist (default), or GJK/EPA for every
+    /// convex pair.
+    pub narrow_phase: NarrowPhase,
 }
 
 impl<T: Real> Default for Options<T> {
@@ -247,6 +265,7 @@ impl<T: Real> Default for Options<T> {
         Options {
             box_box: BoxBoxMode::default(),
             tolerance: T::zero(),
+            narrow_phase: NarrowPhase::default(),
         }
     }
 }
@@ -351,6 +370,10 @@ fn narrow<T: Real>(
     out: &mut Vec<ContactPoint<T>>,
 ) {
     let tol = options.tolerance;
+    let halfspace = |s: &Shape| matches!(s, Shape::HalfSpace { .. });
+    if options.narrow_phase == NarrowPhase::Gjk && !halfspace(sa) && !halfspace(sb) {
+        return convex::convex_pair((sa, pa), (sb, pb), tol, out);
+    }
     let plane_normal = |n: &[f64; 3]| Vector3::new(c::<T>(n[0]), c::<T>(n[1]), c::<T>(n[2]));
     match (*sa, *sb) {
         (Shape::Box { sides: s1 }, Shape::Box { sides: s2 }) => {
@@ -379,8 +402,10 @@ fn narrow<T: Real>(
             Shape::Sphere { radius } | Shape::HollowSphere { radius },
             Shape::HalfSpace { normal },
         ) => plane::sphere_plane(c(radius), pa, &plane_normal(&normal), pb, tol, out),
-        // Cylinder with box, sphere or cylinder; two half-spaces: not yet.
-        _ => {}
+        // Two half-spaces: nothing (neither has a support mapping).
+        (Shape::HalfSpace { .. }, Shape::HalfSpace { .. }) => {}
+        // Cylinder with box, sphere or cylinder: GJK/EPA and the manifold.
+        _ => convex::convex_pair((sa, pa), (sb, pb), tol, out),
     }
 }
 
