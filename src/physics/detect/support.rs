@@ -17,7 +17,7 @@ use std::sync::Arc;
 use nalgebra::Vector3;
 
 use super::hull::ConvexHull;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, to_f64, Real, Shape};
 
 /// A convex shape's support mapping in its body frame.
