@@ -13,7 +13,7 @@ use super::{ContactPoint, Feature, Pose, Side};
 use crate::physics::detect::{
     manifold, query, Convex, EpaOptions, GjkOptions, GjkVerdict, Penetration, QueryOptions,
 };
-use crate::physics::detect::{FeatureKind, FeaturePair, PenetrationSource};
+use crate::physics::detect::{FeatureKind, FeaturePair, ManifoldPoint, PenetrationSource};
 use crate::physics::{Real, Shape};
 
 /// Appends the contacts of two convex shapes (neither a half-space) to `out`.
@@ -59,7 +59,26 @@ pub(super) fn convex_pair<T: Real>(
         position: pa.position - pen.normal * gap,
         rotation: pa.rotation,
     };
-    for m in manifold(&a, &touching, &b, pb, &pen) {
+    let mut points = manifold(&a, &touching, &b, pb, &pen);
+    // A cylinder's cap is clipped as a polygon of `CAP_SIDES` sides, which
+    // can miss the rim's deepest point: then EPA's point joins the manifold,
+    // so that its deepest contact is the pair's depth.
+    let deepest = points
+        .iter()
+        .map(|m| m.penetration)
+        .fold(T::min_value().unwrap_or(-T::one()), T::max);
+    let size = crate::physics::c::<T>(1e-9 * (a.bounding_radius() + b.bounding_radius()));
+    if deepest < pen.depth - size {
+        // One normal per pair: the manifold's (the reference face's).
+        let normal = points.first().map_or(pen.normal, |m| m.normal);
+        points.push(ManifoldPoint {
+            point: pen.point,
+            normal,
+            penetration: pen.depth,
+            reference: None,
+        });
+    }
+    for m in points {
         // A point on A (B's face is the reference) moves back with A; a
         // point on B, or the midway point, moves back by half the gap.
         let back: Vector3<T> = match m.reference {

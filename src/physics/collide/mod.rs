@@ -251,6 +251,7 @@ pub fn collide_with<T: Real>(
 enum Kind {
     Cuboid,
     Cylinder,
+    Capsule,
     Sphere,
     HalfSpace,
 }
@@ -259,6 +260,7 @@ fn kind(shape: &Shape) -> Kind {
     match shape {
         Shape::Box { .. } => Kind::Cuboid,
         Shape::Cylinder { .. } => Kind::Cylinder,
+        Shape::Capsule { .. } => Kind::Capsule,
         Shape::Sphere { .. } | Shape::HollowSphere { .. } => Kind::Sphere,
         Shape::HalfSpace { .. } => Kind::HalfSpace,
     }
@@ -286,7 +288,9 @@ fn size_key(shape: &Shape) -> [f64; 3] {
     match *shape {
         Shape::Sphere { radius } | Shape::HollowSphere { radius } => [radius, 0.0, 0.0],
         Shape::Box { sides } => sides,
-        Shape::Cylinder { radius, height } => [radius, height, 0.0],
+        Shape::Cylinder { radius, height } | Shape::Capsule { radius, height } => {
+            [radius, height, 0.0]
+        }
         Shape::HalfSpace { normal } => normal,
     }
 }
@@ -331,9 +335,20 @@ fn narrow<T: Real>(
             Shape::Sphere { radius } | Shape::HollowSphere { radius },
             Shape::HalfSpace { normal },
         ) => plane::sphere_plane(c(radius), pa, &plane_normal(&normal), pb, tol, out),
+        // Capsule: its two end balls against the plane, as spheres.
+        (Shape::Capsule { radius, height }, Shape::HalfSpace { normal }) => {
+            for end in [-0.5, 0.5] {
+                let ball = Pose {
+                    position: pa.to_world(&Vector3::new(T::zero(), c(end * height), T::zero())),
+                    rotation: pa.rotation,
+                };
+                plane::sphere_plane(c(radius), &ball, &plane_normal(&normal), pb, tol, out);
+            }
+        }
         // Two half-spaces: nothing (neither has a support mapping).
         (Shape::HalfSpace { .. }, Shape::HalfSpace { .. }) => {}
-        // Cylinder with box, sphere or cylinder: GJK/EPA and the manifold.
+        // Cylinder with box, sphere or cylinder; a capsule with anything but
+        // a half-space: GJK/EPA and the manifold.
         _ => convex::convex_pair((sa, pa), (sb, pb), tol, out),
     }
 }

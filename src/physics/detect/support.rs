@@ -112,6 +112,7 @@ impl Convex {
                 radius,
                 half_height: height / 2.0,
             }),
+            Shape::Capsule { radius, height } => Some(Convex::Capsule(Capsule { radius, height })),
             Shape::HalfSpace { .. } => None,
         }
     }
