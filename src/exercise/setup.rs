@@ -360,6 +360,11 @@ fn shape(s: &Shape) -> String {
             num(*radius),
             num(*height)
         ),
+        Shape::Capsule { radius, height } => format!(
+            "{{ capsule = {{ radius = {}, height = {} }} }}",
+            num(*radius),
+            num(*height)
+        ),
         Shape::HalfSpace { .. } => "\"half_space\"".into(),
     }
 }

@@ -202,6 +202,7 @@ fn shape(s: &Option<Shape>) -> String {
         Some(Shape::Sphere { radius: r }) => format!("solid sphere, r = {r}"),
         Some(Shape::HollowSphere { radius: r }) => format!("hollow sphere, r = {r}"),
         Some(Shape::Cylinder { radius, height }) => format!("cylinder, r = {radius}, h = {height}"),
+        Some(Shape::Capsule { radius, height }) => format!("capsule, r = {radius}, h = {height}"),
         Some(Shape::HalfSpace { .. }) => "half-space".into(),
         None => "–".into(),
     }

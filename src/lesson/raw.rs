@@ -98,6 +98,10 @@ pub enum RawShape {
         radius: f64,
         height: f64,
     },
+    Capsule {
+        radius: f64,
+        height: f64,
+    },
     HalfSpace,
 }
 

@@ -11,6 +11,7 @@ impl From<RawShape> for Shape {
             RawShape::HollowSphere(radius) => Shape::HollowSphere { radius },
             RawShape::Box(sides) => Shape::Box { sides },
             RawShape::Cylinder { radius, height } => Shape::Cylinder { radius, height },
+            RawShape::Capsule { radius, height } => Shape::Capsule { radius, height },
             RawShape::HalfSpace => Shape::HalfSpace {
                 normal: [0.0, 1.0, 0.0],
             },
@@ -35,6 +36,11 @@ pub fn describe(shape: &Shape) -> String {
         ),
         Shape::Cylinder { radius, height } => format!(
             "cylinder r = {}, h = {} (I_yy = ½ m r², I_xx = m/12 (3r² + h²))",
+            e(radius),
+            e(height)
+        ),
+        Shape::Capsule { radius, height } => format!(
+            "capsule r = {}, h = {} (a cylinder and two half balls)",
             e(radius),
             e(height)
         ),

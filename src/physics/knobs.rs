@@ -9,7 +9,7 @@
 //! `lesson::knob_value`: physics only declares the rule.
 
 use super::exact::RestitutionLaw;
-use super::params::{BoxBoxMode, Settings};
+use super::params::{BoxBoxMode, NarrowPhase, Settings};
 use super::step::SleepMode;
 use super::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
 
@@ -333,6 +333,16 @@ const BOX_BOX: &[(&str, &str)] = &[
     (
         "single",
         "the reference engine's one point-face or edge-edge contact",
+    ),
+];
+const NARROW_PHASE: &[(&str, &str)] = &[
+    (
+        "analytic",
+        "the analytic routine where one exists, GJK/EPA for every other convex pair",
+    ),
+    (
+        "gjk",
+        "GJK/EPA and the clipped manifold for every pair but a half-space's",
     ),
 ];
 const SLEEP_MODES: &[(&str, &str)] = &[
@@ -745,6 +755,26 @@ pub static KNOBS: &[Knob] = &[
         set: |s, v| {
             if let Some(m) = BoxBoxMode::from_name(choice(v)) {
                 s.scene.box_box = m;
+            }
+        },
+    },
+    Knob {
+        name: "narrow_phase",
+        old_names: &[],
+        level: Level::World,
+        tables: &[Table::World],
+        doc: "Which routine finds a convex pair's contacts: trades the analytic routines (exact, cheap) for GJK/EPA and the clipped manifold on every pair (one general method, to compare cost and depth/normal error); pairs without an analytic routine (cylinder with a box, sphere or cylinder) run GJK/EPA either way, a half-space pair keeps its routine.",
+        default: "analytic",
+        kind: Kind::Choice { choices: NARROW_PHASE, aliases: &[] },
+        cli: Cli::Option,
+        edit: Offered::Yes,
+        study: Offered::Yes,
+        grid: &["analytic", "gjk"],
+        needs: Needs::Always,
+        get: |s| Value::Choice(s.scene.narrow_phase.name()),
+        set: |s, v| {
+            if let Some(m) = NarrowPhase::from_name(choice(v)) {
+                s.scene.narrow_phase = m;
             }
         },
     },

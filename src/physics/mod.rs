@@ -18,6 +18,7 @@ pub mod detect;
 pub mod exact;
 pub mod knobs;
 pub mod params;
+pub mod pose;
 pub mod resolver;
 pub mod scale;
 pub mod shape;

@@ -346,6 +346,32 @@ impl BoxBoxMode {
     }
 }
 
+/// Which routine a convex pair runs (`[world] narrow_phase`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum NarrowPhase {
+    /// The analytic routine where one exists (sphere, box and plane pairs),
+    /// GJK/EPA and the clipped manifold for every other convex pair (default).
+    #[default]
+    Analytic,
+    /// GJK/EPA and the clipped manifold for every pair but a half-space's.
+    Gjk,
+}
+
+impl NarrowPhase {
+    pub fn name(self) -> &'static str {
+        match self {
+            NarrowPhase::Analytic => "analytic",
+            NarrowPhase::Gjk => "gjk",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [NarrowPhase::Analytic, NarrowPhase::Gjk]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
 /// Restitution and friction coefficients: of a contact, a body, or
 /// `[world]`'s default. One rule wherever they are written: `friction` sets
 /// both μ_s and μ_d, and μ_d defaults to μ_s ([`Material::with`]).
@@ -424,6 +450,8 @@ pub struct SimParams<T: Real> {
     pub acceleration_compensation: bool,
     /// How a pair of boxes touches (default: manifold).
     pub box_box: BoxBoxMode,
+    /// Analytic routines or GJK/EPA for every convex pair (default: analytic).
+    pub narrow_phase: NarrowPhase,
     pub friction_model: FrictionModel,
     /// Contacts are generated for gaps up to this distance (m), with a
     /// negative penetration: a resting body whose contact the position phase
@@ -488,6 +516,7 @@ impl ContactSettings {
 pub struct SceneSettings {
     pub world: WorldParams<f64>,
     pub box_box: BoxBoxMode,
+    pub narrow_phase: NarrowPhase,
     /// `[world]`'s coefficients, the default of every body.
     pub material: Material,
     /// Each body's coefficients (the same indices as the lesson's bodies).
@@ -506,6 +535,7 @@ impl Default for SceneSettings {
         SceneSettings {
             world: WorldParams::default(),
             box_box: BoxBoxMode::default(),
+            narrow_phase: NarrowPhase::default(),
             material: Material::default(),
             materials: Vec::new(),
             acceleration_compensation: true,
@@ -552,6 +582,7 @@ impl Settings {
             scene: SceneSettings {
                 world: p.world,
                 box_box: p.box_box,
+                narrow_phase: p.narrow_phase,
                 acceleration_compensation: p.acceleration_compensation,
                 contact_margin: p.contact_margin,
                 dt: p.dt,
@@ -581,6 +612,7 @@ impl Settings {
             contact: self.contact.contact_params(),
             acceleration_compensation: scene.acceleration_compensation,
             box_box: scene.box_box,
+            narrow_phase: scene.narrow_phase,
             friction_model: self.contact.friction_model,
             contact_margin: c(scene.contact_margin),
         }

@@ -17,6 +17,10 @@ pub enum Shape {
     Box { sides: [f64; 3] },
     /// Solid cylinder, axis along body y.
     Cylinder { radius: f64, height: f64 },
+    /// Solid capsule: the points within `radius` of the segment of length
+    /// `height` along body y through the origin (`height` is between the two
+    /// hemispheres' centres).
+    Capsule { radius: f64, height: f64 },
     /// The plane through the body's position with unit world `normal`; the
     /// solid side is opposite the normal. Immovable bodies only.
     HalfSpace { normal: [f64; 3] },
@@ -52,6 +56,20 @@ impl Shape {
                 let side = m / 12.0 * (3.0 * radius * radius + height * height);
                 diag(side, 0.5 * m * radius * radius, side)
             }
+            // Solid capsule: a cylinder (mass m_c = m·πr²h/V) and two half
+            // balls (m_s = m·4/3πr³/V): I_yy = ½ m_c r² + 2/5 m_s r²,
+            // I_xx = m_c (h²/12 + r²/4) + m_s (2/5 r² + h²/4 + 3/8 h r).
+            Shape::Capsule {
+                radius: r,
+                height: h,
+            } => {
+                let (vc, vs) = (r * r * h, 4.0 / 3.0 * r * r * r);
+                let (mc, ms) = (m * vc / (vc + vs), m * vs / (vc + vs));
+                let axial = 0.5 * mc * r * r + 0.4 * ms * r * r;
+                let side = mc * (h * h / 12.0 + r * r / 4.0)
+                    + ms * (0.4 * r * r + h * h / 4.0 + 0.375 * h * r);
+                diag(side, axial, side)
+            }
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -61,7 +79,9 @@ impl Shape {
         match *self {
             Shape::Sphere { radius } | Shape::HollowSphere { radius } => vec![radius],
             Shape::Box { sides } => sides.to_vec(),
-            Shape::Cylinder { radius, height } => vec![radius, height],
+            Shape::Cylinder { radius, height } | Shape::Capsule { radius, height } => {
+                vec![radius, height]
+            }
             Shape::HalfSpace { .. } => vec![],
         }
     }
@@ -80,6 +100,7 @@ impl Shape {
                 Some(0.5 * (sides[0].powi(2) + sides[1].powi(2) + sides[2].powi(2)).sqrt())
             }
             Shape::Cylinder { radius, height } => Some(radius.hypot(height / 2.0)),
+            Shape::Capsule { radius, height } => Some(radius + height / 2.0),
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -119,6 +140,16 @@ impl Shape {
                 };
                 Some(Vector3::new(x, sign(direction.y) * height / 2.0, z))
             }
+            // The segment's end on the side of d, pushed out by r along d̂.
+            Shape::Capsule { radius, height } => {
+                let end = Vector3::new(0.0, sign(direction.y) * height / 2.0, 0.0);
+                let n = direction.norm();
+                Some(if n > 0.0 {
+                    end + direction * (radius / n)
+                } else {
+                    end + Vector3::new(radius, 0.0, 0.0)
+                })
+            }
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -142,6 +173,11 @@ impl Shape {
             Shape::Cylinder { radius, height } => {
                 let radial = local.x.hypot(local.z) - radius;
                 boxed(&[radial, local.y.abs() - height / 2.0])
+            }
+            // Distance to the segment, less the radius.
+            Shape::Capsule { radius, height } => {
+                let y = local.y.clamp(-height / 2.0, height / 2.0);
+                (local - Vector3::new(0.0, y, 0.0)).norm() - radius
             }
             Shape::HalfSpace { normal } => local.dot(&Vector3::from(normal)),
         }
@@ -200,6 +236,29 @@ mod tests {
                 assert!(s.dot(&d) >= -1e-12);
             }
         }
+    }
+
+    #[test]
+    fn capsule_inertia_meets_the_sphere_and_the_cylinder_limits() {
+        // h = 0: a solid ball, 2/5 m r² about every axis.
+        let ball = Shape::Capsule {
+            radius: 2.0,
+            height: 0.0,
+        };
+        let i = ball.inertia(5.0).unwrap();
+        assert!((i[(0, 0)] - 8.0).abs() < 1e-12 && (i[(1, 1)] - 8.0).abs() < 1e-12);
+        // r = 1, h = 2, m = 10: m_c = 10·2/(2 + 4/3) = 6, m_s = 4;
+        // I_yy = 3 + 1.6, I_xx = 6·(4/12 + 1/4) + 4·(0.4 + 1 + 0.75).
+        let pill = Shape::Capsule {
+            radius: 1.0,
+            height: 2.0,
+        };
+        let i = pill.inertia(10.0).unwrap();
+        assert!((i[(1, 1)] - 4.6).abs() < 1e-12, "{i}");
+        assert!((i[(0, 0)] - (3.5 + 8.6)).abs() < 1e-12, "{i}");
+        let s = pill.support(&Vector3::new(1.0, 1.0, 0.0)).unwrap();
+        assert!(pill.surface_distance(&s).abs() < 1e-12);
+        assert!((pill.bounding_radius().unwrap() - 2.0).abs() < 1e-12);
     }
 
     #[test]

@@ -83,6 +83,7 @@ fn cast<T: Real>(p: &SimParams<f64>) -> SimParams<T> {
         },
         acceleration_compensation: p.acceleration_compensation,
         box_box: p.box_box,
+        narrow_phase: p.narrow_phase,
         friction_model: p.friction_model,
         contact_margin: c(p.contact_margin),
     }
@@ -164,6 +165,7 @@ fn measure_in<T: Real>(
     let options = Options {
         box_box: sim.params.box_box,
         tolerance: T::zero(),
+        narrow_phase: sim.params.narrow_phase,
     };
     let mut m = Measured {
         steps: n,

@@ -51,6 +51,7 @@ fn thickness(s: &Shape) -> f64 {
         Shape::Sphere { radius } | Shape::HollowSphere { radius } => 2.0 * radius,
         Shape::Box { sides } => sides.iter().copied().fold(f64::INFINITY, f64::min),
         Shape::Cylinder { radius, height } => (2.0 * radius).min(height),
+        Shape::Capsule { radius, .. } => 2.0 * radius,
         Shape::HalfSpace { .. } => f64::INFINITY,
     }
 }

@@ -12,6 +12,7 @@ mod exact_support;
 
 mod collide;
 mod collide_properties;
+mod convex_pairs;
 mod exact_impact;
 mod floors;
 mod invariants;

@@ -40,6 +40,10 @@ impl<T: Real> Aabb<T> {
                 a.abs() * c::<T>(height / 2.0)
                     + c::<T>(radius) * (T::one() - a * a).max(T::zero()).sqrt()
             }),
+            // Axis a = body y: |a_k| h/2 + radius (the end balls).
+            Shape::Capsule { radius, height } => {
+                Vector3::from_fn(|k, _| r[(k, 1)].abs() * c::<T>(height / 2.0) + c::<T>(radius))
+            }
             Shape::HalfSpace { .. } => return None,
         };
         Some(Aabb::around(&pose.position, &half.add_scalar(margin)))

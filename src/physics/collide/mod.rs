@@ -31,9 +31,11 @@
 //! small face, a box hanging over a face's edge; 14 % of the face contacts
 //! between randomly placed overlapping boxes): there the deepest point of the clipped incident face is taken
 //! (feature `FaceFace`), with the axis overlap as penetration. A hollow sphere collides as a sphere.
-//! Every other pair (cylinder with a sphere, box or cylinder; two
-//! half-spaces) generates nothing yet. A half-space's `normal` is a world
-//! vector: its pose's rotation is ignored.
+//! Every other convex pair (cylinder with a sphere, box or cylinder) runs
+//! GJK/EPA and the clipped manifold ([`convex`]), as every convex pair does
+//! with [`NarrowPhase::Gjk`]; a half-space pair keeps its analytic routine
+//! (a half-space has no support mapping). Two half-spaces generate nothing.
+//! A half-space's `normal` is a world vector: its pose's rotation is ignored.
 //!
 //! The broad phase ([`broad`]) finds candidate pairs; [`scene::ContactGenerator`]
 //! runs both phases over a set of bodies.
@@ -42,6 +44,7 @@ mod box_box;
 mod box_sphere;
 pub mod broad;
 mod clip;
+mod convex;
 mod plane;
 pub mod scene;
 mod sphere;
@@ -49,88 +52,22 @@ mod sphere;
 pub use broad::{all_pairs, candidate_pairs, Aabb, BroadPhase};
 pub use scene::{BodyContact, ContactGenerator};
 
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use nalgebra::Vector3;
 
 use super::{c, Real, Shape};
+
+/// A body's pose and which of a pair it is (in `physics::pose`, shared with `detect`).
+pub use super::pose::{Pose, Side};
 
 /// How many points a box–box pair generates (`[world] box_box`): `Single`, one
 /// point–face or edge–edge contact as the reference engine; `Manifold`
 /// (default), the clipped faces, up to 4 points.
 pub use super::params::BoxBoxMode;
 
-/// Where a body is and how it is turned. `rotation` is the rotation matrix of
-/// the orientation quaternion `[w, x, y, z]`: its columns are the body's axes
-/// in world coordinates, so `world = position + rotation · local`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pose<T: Real> {
-    pub position: Vector3<T>,
-    pub rotation: Matrix3<T>,
-}
-
-impl<T: Real> Pose<T> {
-    /// Pose from a position and an orientation quaternion (normalised here).
-    pub fn new(position: Vector3<T>, orientation: &Quaternion<T>) -> Self {
-        Self::from_unit(position, &UnitQuaternion::new_normalize(*orientation))
-    }
-
-    /// Pose from a position and a unit quaternion.
-    pub fn from_unit(position: Vector3<T>, orientation: &UnitQuaternion<T>) -> Self {
-        Pose {
-            position,
-            rotation: orientation.to_rotation_matrix().into_inner(),
-        }
-    }
-
-    /// Unrotated pose at `position`.
-    pub fn at(position: Vector3<T>) -> Self {
-        Pose {
-            position,
-            rotation: Matrix3::identity(),
-        }
-    }
-
-    /// Body axis `i` (0 = x, 1 = y, 2 = z) in world coordinates.
-    pub fn axis(&self, i: usize) -> Vector3<T> {
-        self.rotation.column(i).into_owned()
-    }
-
-    /// World point → body frame: `Rᵀ (p - x)`.
-    pub fn to_local(&self, world: &Vector3<T>) -> Vector3<T> {
-        self.rotation.tr_mul(&(world - self.position))
-    }
-
-    /// Body-frame point → world: `x + R p`.
-    pub fn to_world(&self, local: &Vector3<T>) -> Vector3<T> {
-        self.position + self.rotation * local
-    }
-
-    /// A world point in the frame `Shape::surface_distance` expects for
-    /// `shape`: the body frame, or for a half-space (whose normal is a world
-    /// vector) the offset from the plane's point.
-    pub fn shape_frame(&self, shape: &Shape, world: &Vector3<T>) -> Vector3<T> {
-        match shape {
-            Shape::HalfSpace { .. } => world - self.position,
-            _ => self.to_local(world),
-        }
-    }
-}
-
-/// Which of the two bodies of [`collide`]: A is body 1, B is body 2.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Side {
-    A,
-    B,
-}
-
-impl Side {
-    /// The other body.
-    pub fn other(self) -> Side {
-        match self {
-            Side::A => Side::B,
-            Side::B => Side::A,
-        }
-    }
-}
+/// Which routine a convex pair runs (`[world] narrow_phase`): `Analytic`
+/// (default) where one exists, GJK/EPA otherwise; `Gjk` for every pair but
+/// a half-space's.
+pub use super::params::NarrowPhase;
 
 /// Which part of a box holds the point closest to a sphere's centre.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -173,6 +110,10 @@ pub enum Feature {
     /// the deepest such point when the reference engine's vertex lies beside
     /// the face (its penetration is then the overlap on the axis).
     FaceFace { reference: Side, axis: u8 },
+    /// A point of the GJK/EPA manifold: on the incident body, the reference
+    /// face being on side `reference`; `None` for EPA's (or the closest
+    /// points') single point, midway.
+    Convex { reference: Option<Side> },
 }
 
 impl Feature {
@@ -213,6 +154,9 @@ impl Feature {
                 reference: reference.other(),
                 axis,
             },
+            Feature::Convex { reference } => Feature::Convex {
+                reference: reference.map(Side::other),
+            },
         }
     }
 }
@@ -240,6 +184,9 @@ pub struct Options<T: Real> {
     /// touching or overlapping). A larger margin finds contacts a step
     /// earlier, at the price of more contacts to resolve.
     pub tolerance: T,
+    /// Analytic routines where they exist (default), or GJK/EPA for every
+    /// convex pair.
+    pub narrow_phase: NarrowPhase,
 }
 
 impl<T: Real> Default for Options<T> {
@@ -247,6 +194,7 @@ impl<T: Real> Default for Options<T> {
         Options {
             box_box: BoxBoxMode::default(),
             tolerance: T::zero(),
+            narrow_phase: NarrowPhase::default(),
         }
     }
 }
@@ -303,6 +251,7 @@ pub fn collide_with<T: Real>(
 enum Kind {
     Cuboid,
     Cylinder,
+    Capsule,
     Sphere,
     HalfSpace,
 }
@@ -311,6 +260,7 @@ fn kind(shape: &Shape) -> Kind {
     match shape {
         Shape::Box { .. } => Kind::Cuboid,
         Shape::Cylinder { .. } => Kind::Cylinder,
+        Shape::Capsule { .. } => Kind::Capsule,
         Shape::Sphere { .. } | Shape::HollowSphere { .. } => Kind::Sphere,
         Shape::HalfSpace { .. } => Kind::HalfSpace,
     }
@@ -338,7 +288,9 @@ fn size_key(shape: &Shape) -> [f64; 3] {
     match *shape {
         Shape::Sphere { radius } | Shape::HollowSphere { radius } => [radius, 0.0, 0.0],
         Shape::Box { sides } => sides,
-        Shape::Cylinder { radius, height } => [radius, height, 0.0],
+        Shape::Cylinder { radius, height } | Shape::Capsule { radius, height } => {
+            [radius, height, 0.0]
+        }
         Shape::HalfSpace { normal } => normal,
     }
 }
@@ -351,6 +303,10 @@ fn narrow<T: Real>(
     out: &mut Vec<ContactPoint<T>>,
 ) {
     let tol = options.tolerance;
+    let halfspace = |s: &Shape| matches!(s, Shape::HalfSpace { .. });
+    if options.narrow_phase == NarrowPhase::Gjk && !halfspace(sa) && !halfspace(sb) {
+        return convex::convex_pair((sa, pa), (sb, pb), tol, out);
+    }
     let plane_normal = |n: &[f64; 3]| Vector3::new(c::<T>(n[0]), c::<T>(n[1]), c::<T>(n[2]));
     match (*sa, *sb) {
         (Shape::Box { sides: s1 }, Shape::Box { sides: s2 }) => {
@@ -379,8 +335,21 @@ fn narrow<T: Real>(
             Shape::Sphere { radius } | Shape::HollowSphere { radius },
             Shape::HalfSpace { normal },
         ) => plane::sphere_plane(c(radius), pa, &plane_normal(&normal), pb, tol, out),
-        // Cylinder with box, sphere or cylinder; two half-spaces: not yet.
-        _ => {}
+        // Capsule: its two end balls against the plane, as spheres.
+        (Shape::Capsule { radius, height }, Shape::HalfSpace { normal }) => {
+            for end in [-0.5, 0.5] {
+                let ball = Pose {
+                    position: pa.to_world(&Vector3::new(T::zero(), c(end * height), T::zero())),
+                    rotation: pa.rotation,
+                };
+                plane::sphere_plane(c(radius), &ball, &plane_normal(&normal), pb, tol, out);
+            }
+        }
+        // Two half-spaces: nothing (neither has a support mapping).
+        (Shape::HalfSpace { .. }, Shape::HalfSpace { .. }) => {}
+        // Cylinder with box, sphere or cylinder; a capsule with anything but
+        // a half-space: GJK/EPA and the manifold.
+        _ => convex::convex_pair((sa, pa), (sb, pb), tol, out),
     }
 }
 

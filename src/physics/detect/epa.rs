@@ -20,7 +20,7 @@ use super::features::{feature_pair, FeaturePair};
 use super::gjk::Pair;
 use super::simplex::{Simplex, Vertex};
 use super::support::Support;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, Real};
 
 /// Tolerance and cap of an EPA run.

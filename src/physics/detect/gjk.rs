@@ -19,7 +19,7 @@ use nalgebra::Vector3;
 
 use super::simplex::{project, Simplex, Vertex};
 use super::support::Support;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, Real};
 
 /// Tolerances and caps of a GJK run.

@@ -16,7 +16,7 @@ use super::query::Penetration;
 use super::support::Convex;
 pub use super::support_face::CAP_SIDES;
 use super::support_face::{support_face, SupportFace};
-use crate::physics::collide::{Pose, Side};
+use crate::physics::pose::{Pose, Side};
 use crate::physics::{c, Real};
 
 /// One manifold contact: the point on the incident body (`penetration` deep

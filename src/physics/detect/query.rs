@@ -12,7 +12,7 @@ use super::epa::{self, epa, EpaEnd, EpaObserver, EpaOptions, EpaResult};
 use super::features::{feature_of, FeaturePair};
 use super::gjk::{gjk, GjkObserver, GjkOptions, GjkResult, GjkVerdict, Pair};
 use super::support::Support;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, Real};
 
 /// Options of a query.

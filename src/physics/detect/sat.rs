@@ -7,7 +7,7 @@
 use nalgebra::Vector3;
 
 use super::support::Convex;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 
 /// A polyhedron in world coordinates: vertices, unit face normals, unit edge directions.
 #[derive(Debug, Clone, PartialEq)]

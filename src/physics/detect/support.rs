@@ -17,7 +17,7 @@ use std::sync::Arc;
 use nalgebra::Vector3;
 
 use super::hull::ConvexHull;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, to_f64, Real, Shape};
 
 /// A convex shape's support mapping in its body frame.
@@ -112,6 +112,7 @@ impl Convex {
                 radius,
                 half_height: height / 2.0,
             }),
+            Shape::Capsule { radius, height } => Some(Convex::Capsule(Capsule { radius, height })),
             Shape::HalfSpace { .. } => None,
         }
     }

@@ -8,7 +8,7 @@
 use nalgebra::Vector3;
 
 use super::support::{Convex, Support};
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, to_f64, Real};
 
 /// Sides of the polygon standing for a cylinder's cap.

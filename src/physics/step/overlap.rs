@@ -31,6 +31,7 @@ fn thinnest<T: Real>(world: &World<T>, id: BodyId) -> f64 {
         Some(Shape::Sphere { radius }) | Some(Shape::HollowSphere { radius }) => 2.0 * radius,
         Some(Shape::Box { sides }) => sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)),
         Some(Shape::Cylinder { radius, height }) => (2.0 * radius).min(height),
+        Some(Shape::Capsule { radius, .. }) => 2.0 * radius,
         Some(Shape::HalfSpace { .. }) | None => f64::INFINITY,
     }
 }

@@ -364,6 +364,7 @@ impl<T: Real> Simulation<T> {
         let options = Options {
             box_box: self.params.box_box,
             tolerance: self.params.contact_margin,
+            narrow_phase: self.params.narrow_phase,
         };
         self.generator
             .generate_world(&self.world.bodies, &options, &mut self.generated);

@@ -29,6 +29,7 @@ pub fn smallest_size<T: Real>(world: &World<T>) -> Option<f64> {
             Shape::Sphere { radius } | Shape::HollowSphere { radius } => Some(radius),
             Shape::Box { sides } => Some(sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)) / 2.0),
             Shape::Cylinder { radius, height } => Some(radius.min(height / 2.0)),
+            Shape::Capsule { radius, .. } => Some(radius),
             Shape::HalfSpace { .. } => None,
         })
         .filter(|s| s.is_finite() && *s > 0.0)

@@ -123,6 +123,29 @@ pub fn outline(
                 Silhouette::Polygon(hull(around.map(|(i, y)| rim(i, 16, y)).collect()));
             Some(Outline { silhouette, edges })
         }
+        Shape::Capsule { radius, height } => {
+            // The two end circles facing the viewer, the lines joining them,
+            // and the axis; the silhouette is the hull of the two circles.
+            let ends = [
+                at(Vector3::new(0.0, height / 2.0, 0.0)),
+                at(Vector3::new(0.0, -height / 2.0, 0.0)),
+            ];
+            let circle = |e: P, i: usize| {
+                let a = std::f64::consts::TAU * i as f64 / 48.0;
+                [e[0] + radius * a.cos(), e[1] + radius * a.sin()]
+            };
+            let mut edges: Vec<[P; 2]> = ends
+                .iter()
+                .flat_map(|&e| (0..48).map(move |i| [circle(e, i), circle(e, i + 1)]))
+                .collect();
+            edges.push([ends[0], ends[1]]);
+            let silhouette = Silhouette::Polygon(hull(
+                ends.iter()
+                    .flat_map(|&e| (0..48).map(move |i| circle(e, i)))
+                    .collect(),
+            ));
+            Some(Outline { silhouette, edges })
+        }
         Shape::HalfSpace { .. } => None,
     }
 }
@@ -151,6 +174,7 @@ pub fn spin_arc_radius(shape: &Shape) -> Option<f64> {
         Shape::Sphere { radius } | Shape::HollowSphere { radius } => Some(0.5 * radius),
         Shape::Box { sides } => Some(0.3 * sides.iter().copied().fold(f64::INFINITY, f64::min)),
         Shape::Cylinder { radius, height } => Some(0.5 * radius.min(height / 2.0)),
+        Shape::Capsule { radius, .. } => Some(0.5 * radius),
         Shape::HalfSpace { .. } => None,
     }
 }

@@ -122,6 +122,18 @@ fn sphere_and_cylinder_outlines() {
     let mut b = Bounds::default();
     o.silhouette.points().into_iter().for_each(|p| b.add(p));
     assert_eq!((b.lo, b.hi), ([-1.0, -2.0], [1.0, 2.0]));
+    // A capsule: two end circles (48 pieces each) and the axis; the
+    // silhouette reaches a radius beyond each end.
+    let pill = Shape::Capsule {
+        radius: 1.0,
+        height: 4.0,
+    };
+    let o = outline(&pill, [0.0; 3], ID, Plane::Xy).unwrap();
+    assert_eq!(o.edges.len(), 2 * 48 + 1);
+    let mut b = Bounds::default();
+    o.silhouette.points().into_iter().for_each(|p| b.add(p));
+    assert!((b.lo[1] + 3.0).abs() < 1e-12 && (b.hi[1] - 3.0).abs() < 1e-12);
+    assert!((b.hi[0] - 1.0).abs() < 1e-12);
     let floor = Shape::HalfSpace {
         normal: [0.0, 1.0, 0.0],
     };

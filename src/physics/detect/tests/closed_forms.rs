@@ -6,8 +6,8 @@ use nalgebra::Vector3;
 
 use super::reference::closest_segments;
 use super::{relative, Rng};
-use crate::physics::collide::Pose;
 use crate::physics::detect::{gjk, Capsule, Convex, GjkOptions, GjkVerdict};
+use crate::physics::pose::Pose;
 use crate::physics::Shape;
 
 fn distance(

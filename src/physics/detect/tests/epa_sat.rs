@@ -2,8 +2,8 @@
 //! for polyhedra: depth to 1e-9 relative, normal to 1e-9.
 
 use super::{relative, Rng};
-use crate::physics::collide::Pose;
 use crate::physics::detect::{query, sat, Convex, EpaEnd, Polyhedron, QueryOptions};
+use crate::physics::pose::Pose;
 
 fn polyhedron(rng: &mut Rng, k: u64) -> Convex {
     if k.is_multiple_of(2) {

@@ -2,8 +2,8 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use crate::physics::collide::{Pose, Side};
 use crate::physics::detect::{manifold, query, Convex, ConvexHull, ManifoldPoint, QueryOptions};
+use crate::physics::pose::{Pose, Side};
 
 fn contacts(a: &Convex, pa: &Pose<f64>, b: &Convex, pb: &Pose<f64>) -> Vec<ManifoldPoint<f64>> {
     let q = query(a, pa, b, pb, &QueryOptions::default(), &mut (), &mut ());

@@ -17,7 +17,7 @@ mod toi;
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::{Capsule, Convex, ConvexHull};
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 
 /// SplitMix64: a seeded, deterministic generator.
 pub(super) struct Rng(u64);

@@ -14,8 +14,8 @@ use parry3d_f64::query;
 use parry3d_f64::shape::{Ball, Capsule, ConvexPolyhedron, Cuboid, Cylinder, Shape as PShape};
 
 use super::Rng;
-use crate::physics::collide::Pose;
 use crate::physics::detect::{query as detect, Convex, EpaEnd, PenetrationSource, QueryOptions};
+use crate::physics::pose::Pose;
 
 fn vec(v: &Vector3<f64>) -> PVec {
     PVec::new(v.x, v.y, v.z)

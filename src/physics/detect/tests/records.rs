@@ -3,10 +3,10 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use crate::physics::collide::Pose;
 use crate::physics::detect::{
     gjk, query, Convex, EpaRecorder, GjkEnd, GjkOptions, GjkRecorder, QueryOptions,
 };
+use crate::physics::pose::Pose;
 use crate::physics::Shape;
 
 fn boxes() -> (Convex, Pose<f64>, Convex, Pose<f64>) {

@@ -5,8 +5,8 @@
 
 use nalgebra::Vector3;
 
-use crate::physics::collide::Pose;
 use crate::physics::detect::Convex;
+use crate::physics::pose::Pose;
 
 type V = Vector3<f64>;
 

@@ -5,10 +5,10 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::{relative, Rng};
-use crate::physics::collide::Pose;
 use crate::physics::detect::{
     gjk, query, sat, Convex, EpaEnd, FeatureKind, GjkOptions, GjkVerdict, Polyhedron, QueryOptions,
 };
+use crate::physics::pose::Pose;
 
 fn cube(h: f64) -> Convex {
     Convex::Cuboid { half: [h; 3] }

@@ -5,8 +5,8 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::Rng;
-use crate::physics::collide::Pose;
 use crate::physics::detect::{plane_depth, Capsule, Convex, Support};
+use crate::physics::pose::Pose;
 use crate::physics::Shape;
 
 #[test]
