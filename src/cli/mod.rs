@@ -98,7 +98,7 @@ pub enum Format {
     Latex,
 }
 
-/// A contact's knobs (`--friction-model`, `--relaxation`, …), from the knob table.
+/// A contact's knobs (`--friction-model`, …), from the knob table.
 pub type ModelArgs = KnobArgs<ContactLevel>;
 
 #[derive(Debug, Clone, Args)]

@@ -325,7 +325,14 @@ mod tests {
         assert!(e.contains("finite"), "{e}");
         let e = put(&mut l, "cube: velocity", "1, 2").unwrap_err();
         assert!(e.contains("three numbers"), "{e}");
-        let e = put(&mut l, "relaxation", "0").unwrap_err();
+        // A share knob (in (0, 1]) refuses 0.
+        let share = crate::physics::knobs::KNOBS
+            .iter()
+            .find(|k| {
+                k.kind == crate::physics::knobs::Kind::Number(crate::physics::knobs::Range::Share)
+            })
+            .unwrap();
+        let e = put(&mut l, share.name, "0").unwrap_err();
         assert!(e.contains("(0, 1]"), "{e}");
         assert_eq!(l.contacts, before.contacts);
         assert_eq!(l.bodies, before.bodies);

@@ -183,7 +183,7 @@ impl Overrides {
         self.0.is_empty()
     }
 
-    /// Overrides from knob names and values as text (`("relaxation", "0.5")`),
+    /// Overrides from knob names and values as text (`("dt", "0.01")`),
     /// each checked by its rule.
     pub fn from_pairs(pairs: &[(&str, &str)]) -> Result<Overrides, String> {
         let mut o = Overrides::default();

@@ -51,7 +51,7 @@ pub fn too_small(x: f64) -> String {
 }
 
 /// The refusal of a magnitude below [`MIN_MAGNITUDE`] for a value that
-/// must be positive (a relaxation, a duration, a damping): 0 is no way out.
+/// must be positive (a share, a duration, a damping): 0 is no way out.
 pub fn too_small_positive(x: f64) -> String {
     format!(
         "{} is below contact-lab's smallest magnitude, 1e-60 (smaller inputs could underflow a stage)",

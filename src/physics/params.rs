@@ -497,6 +497,24 @@ impl Default for ContactSettings {
 }
 
 impl ContactSettings {
+    /// The settings a contact's parameters, its frame's duration and its
+    /// friction model stand for.
+    pub fn of_contact(
+        p: &ContactParams<f64>,
+        duration: f64,
+        friction_model: FrictionModel,
+    ) -> Self {
+        ContactSettings {
+            velocity_limit: p.velocity_limit,
+            angular_limit: p.angular_limit,
+            relaxation: p.relaxation,
+            duration,
+            projection: p.projection,
+            exact: p.exact,
+            friction_model,
+        }
+    }
+
     /// The contact's share of the settings, in float type `T`.
     pub fn contact_params<T: Real>(&self) -> ContactParams<T> {
         ContactParams {

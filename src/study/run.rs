@@ -23,7 +23,7 @@ use super::{Config, Precision};
 use crate::lesson::Lesson;
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::step::{energy, SimParams, Simulation};
-use crate::physics::{c, to_f64, ContactParams, Real, SleepParams, WorldParams};
+use crate::physics::{to_f64, Real};
 
 /// What the measuring run found.
 #[derive(Debug, Clone, PartialEq)]
@@ -59,34 +59,8 @@ pub fn params(config: &Config) -> SimParams<f64> {
 
 /// The same parameters in another float type.
 fn cast<T: Real>(p: &SimParams<f64>) -> SimParams<T> {
-    let v = |x: &Vector3<f64>| x.map(c::<T>);
-    SimParams {
-        dt: c(p.dt),
-        world: WorldParams {
-            gravity: v(&p.world.gravity),
-            linear_damping: c(p.world.linear_damping),
-            angular_damping: c(p.world.angular_damping),
-        },
-        sleep: SleepParams {
-            enabled: p.sleep.enabled,
-            epsilon: c(p.sleep.epsilon),
-            mode: p.sleep.mode,
-            island_time: c(p.sleep.island_time),
-        },
-        resolver: p.resolver,
-        contact: ContactParams {
-            velocity_limit: c(p.contact.velocity_limit),
-            angular_limit: c(p.contact.angular_limit),
-            relaxation: c(p.contact.relaxation),
-            projection: p.contact.projection,
-            exact: p.contact.exact,
-        },
-        acceleration_compensation: p.acceleration_compensation,
-        box_box: p.box_box,
-        narrow_phase: p.narrow_phase,
-        friction_model: p.friction_model,
-        contact_margin: c(p.contact_margin),
-    }
+    // Through the knobs: every knob of the run, in float type `T`.
+    crate::physics::Settings::of_run(p).sim_params()
 }
 
 fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {

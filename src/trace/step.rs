@@ -201,15 +201,11 @@ impl StepTrace {
                         restitution: i.restitution,
                         static_friction: i.static_friction,
                         dynamic_friction: i.dynamic_friction,
-                        settings: Settings {
-                            friction_model: i.friction_model,
-                            velocity_limit: i.settings.velocity_limit,
-                            angular_limit: i.settings.angular_limit,
-                            relaxation: i.settings.relaxation,
-                            duration: c.duration.unwrap_or(duration),
-                            projection: i.settings.projection,
-                            exact: i.settings.exact,
-                        },
+                        settings: Settings::of_contact(
+                            &i.settings,
+                            c.duration.unwrap_or(duration),
+                            i.friction_model,
+                        ),
                     }
                 })
                 .collect();

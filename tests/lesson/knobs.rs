@@ -366,3 +366,33 @@ fn old_spellings_stay_accepted() {
             .unwrap_or_else(|e| panic!("{key} = {value}: {e:?}"));
     }
 }
+
+#[test]
+fn relaxation_is_named_only_by_its_declaration_physics_trace_and_renderer() {
+    // The example: outside physics/ (the table and what computes
+    // with it), trace/ (its stage) and render/ (its docs page) no file names
+    // the knob at all, not even in a comment.
+    let mut named = Vec::new();
+    for entry in walk(concat!(env!("CARGO_MANIFEST_DIR"), "/src")) {
+        let rel = entry
+            .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+            .unwrap()
+            .to_string_lossy()
+            .to_string();
+        let text = std::fs::read_to_string(&entry).unwrap();
+        let word = text
+            .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .any(|w| w == "relaxation");
+        if word {
+            named.push(rel);
+        }
+    }
+    for rel in &named {
+        assert!(
+            ["src/physics/", "src/trace/", "src/render/"]
+                .iter()
+                .any(|p| rel.starts_with(p)),
+            "{rel} names relaxation: {named:#?}"
+        );
+    }
+}
