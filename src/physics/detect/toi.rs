@@ -23,7 +23,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 
 use super::gjk::{gjk, GjkOptions, GjkVerdict};
 use super::support::Support;
-use crate::physics::collide::Pose;
+use crate::physics::pose::Pose;
 use crate::physics::{c, Real};
 
 /// A body's motion over the step, from its pose at the step's start.
