@@ -12,5 +12,6 @@ mod io_cli;
 mod io_exercise;
 mod io_simulate;
 mod output_files;
+mod readme;
 mod resolve_cli;
 mod study;
