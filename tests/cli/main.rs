@@ -14,4 +14,5 @@ mod io_simulate;
 mod output_files;
 mod readme;
 mod resolve_cli;
+mod round_off;
 mod study;
