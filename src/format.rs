@@ -1,5 +1,37 @@
 //! The one number formatter: significant digits, trailing zeros trimmed,
-//! `-0` shown as `0`, scientific notation outside [1e-4, 10^digits).
+//! `-0` shown as `0`, scientific notation outside [1e-4, 10^digits), and a
+//! value that is zero up to round-off against the scale of its quantity
+//! (|x| ≤ ROUND_OFF · scale) shown as `0`.
+
+/// Relative size under which a value is round-off of the quantity it was
+/// computed from: 64 units in the last place of its scale (f64 sums of a
+/// few terms of size s err by a few 1e-16 s). Kept this tight so that the
+/// extreme lessons' real small values (1e-13 of a position 80 m from the
+/// origin, 1e-12 of a mass ratio) still show.
+pub const ROUND_OFF: f64 = 64.0 * f64::EPSILON;
+
+/// The largest finite |x| of `xs` (0 when there is none).
+pub fn scale_of<'a>(xs: impl IntoIterator<Item = &'a f64>) -> f64 {
+    xs.into_iter()
+        .filter(|x| x.is_finite())
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+/// `x`, or 0 when it is zero up to round-off against `scale`.
+pub fn snap_zero(x: f64, scale: f64) -> f64 {
+    if x.is_finite() && scale.is_finite() && x.abs() <= ROUND_OFF * scale.abs() {
+        0.0
+    } else {
+        x
+    }
+}
+
+/// The components of a vector (or the entries of a list of one quantity),
+/// each snapped to 0 against the largest finite one.
+pub fn snap_zeros(xs: &[f64]) -> Vec<f64> {
+    let scale = scale_of(xs);
+    xs.iter().map(|x| snap_zero(*x, scale)).collect()
+}
 
 /// Human number formatting (JSON carries full f64 and does not use this).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,9 +93,38 @@ impl Fmt {
         }
     }
 
+    /// `x` as `num` does, but `0` when it is zero up to round-off against
+    /// `scale`, the size of the quantity it belongs to (a penetration
+    /// 0.0467 → -6.9e-18 is 0.0467 → 0).
+    pub fn num_at(&self, x: f64, scale: f64) -> String {
+        self.num(snap_zero(x, scale))
+    }
+
+    /// A change `from → to` of one quantity: both at the larger one's scale.
+    pub fn change(&self, from: f64, to: f64) -> String {
+        let scale = if from.is_finite() && to.is_finite() {
+            from.abs().max(to.abs())
+        } else {
+            0.0
+        };
+        format!("{} → {}", self.num_at(from, scale), self.num_at(to, scale))
+    }
+
+    /// A vector's components, a component that is round-off against the
+    /// largest shown as `0` (`(0.5, -6.9e-18, 0)` is `(0.5, 0, 0)`).
     pub fn list(&self, xs: &[f64]) -> String {
-        xs.iter()
+        snap_zeros(xs)
+            .iter()
             .map(|x| self.num(*x))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// `list` in LaTeX.
+    pub fn list_latex(&self, xs: &[f64]) -> String {
+        snap_zeros(xs)
+            .iter()
+            .map(|x| self.num_latex(*x))
             .collect::<Vec<_>>()
             .join(", ")
     }
@@ -126,6 +187,22 @@ fn trim(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::Fmt;
+
+    #[test]
+    fn round_off_against_the_scale_is_zero() {
+        let f = Fmt::new(3);
+        // Issue 28: `resolve box-stack --digits 3` printed 0.0467 → -6.94e-18.
+        assert_eq!(f.change(0.0467, -6.938893903907228e-18), "0.0467 → 0");
+        assert_eq!(f.change(-6.938893903907228e-18, 0.017), "0 → 0.017");
+        assert_eq!(f.list(&[0.5, -6.9e-18, 1e-3]), "0.5, 0, 0.001");
+        // Small but real, or small on its own: kept.
+        assert_eq!(f.list(&[1.0, 1e-9, 0.0]), "1, 1e-9, 0");
+        assert_eq!(f.list(&[80.0, 8.81e-12]), "80, 8.81e-12");
+        assert_eq!(f.list(&[-6.9e-18, 0.0, 0.0]), "-6.9e-18, 0, 0");
+        assert_eq!(f.num(-6.9e-18), "-6.9e-18");
+        assert_eq!(f.change(f64::INFINITY, 1e-20), "inf → 1e-20");
+        assert_eq!(f.list_latex(&[2.0, 1e-17]), "2, 0");
+    }
 
     #[test]
     fn significant_digits_trimmed() {

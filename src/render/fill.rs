@@ -41,13 +41,23 @@ impl Fill for Fmt {
             Value::Scalar(x) => self.num(*x),
             Value::Vector(a) => format!("({})", self.list(a)),
             Value::Quaternion(q) => format!("[{}]", self.list(q)),
-            Value::Matrix(m) => format!(
-                "[{}]",
-                m.iter()
-                    .map(|r| format!("[{}]", self.list(r)))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
+            // Round-off against the whole matrix, not a row.
+            Value::Matrix(m) => {
+                let scale = crate::format::scale_of(m.iter().flatten());
+                format!(
+                    "[{}]",
+                    m.iter()
+                        .map(|r| format!(
+                            "[{}]",
+                            r.iter()
+                                .map(|x| self.num_at(*x, scale))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            }
             Value::Text(s) => s.clone(),
             Value::List(items) => items.join("; "),
         }
@@ -55,27 +65,25 @@ impl Fill for Fmt {
 
     /// LaTeX form of a value.
     fn value_latex(&self, v: &Value) -> String {
-        let list = |xs: &[f64]| {
-            xs.iter()
-                .map(|x| self.num_latex(*x))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
+        let list = |xs: &[f64]| self.list_latex(xs);
         match v {
             Value::Scalar(x) => self.num_latex(*x),
             Value::Vector(a) => format!("({})", list(a)),
             Value::Quaternion(q) => format!("[{}]", list(q)),
-            Value::Matrix(m) => format!(
-                "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
-                m.iter()
-                    .map(|r| r
-                        .iter()
-                        .map(|x| self.num_latex(*x))
+            Value::Matrix(m) => {
+                let scale = crate::format::scale_of(m.iter().flatten());
+                format!(
+                    "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
+                    m.iter()
+                        .map(|r| r
+                            .iter()
+                            .map(|x| self.num_latex(crate::format::snap_zero(*x, scale)))
+                            .collect::<Vec<_>>()
+                            .join(" & "))
                         .collect::<Vec<_>>()
-                        .join(" & "))
-                    .collect::<Vec<_>>()
-                    .join(" \\\\ ")
-            ),
+                        .join(" \\\\ ")
+                )
+            }
             Value::Text(s) => format!("\\text{{{}}}", super::tex::escape_text(s)),
             Value::List(items) => {
                 format!("\\text{{{}}}", super::tex::escape_text(&items.join("; ")))

@@ -4,6 +4,7 @@
 
 use std::fmt::Write;
 
+use crate::physics::StageId;
 use crate::render::tex::{prose, to_latex};
 use crate::trace::glossary::{Symbol, GLOSSARY};
 
@@ -17,8 +18,13 @@ fn unit_text(s: &Symbol) -> &'static str {
 
 /// Plain text: one symbol a line, aligned.
 pub fn text() -> String {
-    let mut out = String::from(
-        "Symbols of the worked solution (subscript ᵢ: body 1 or 2; stages: 1 contact frame … 9 checks)\n\n",
+    let (first, last) = (StageId::ALL[0], StageId::ALL[StageId::ALL.len() - 1]);
+    let mut out = format!(
+        "Symbols of the worked solution (subscript ᵢ: body 1 or 2; stages: {} {} … {} {})\n\n",
+        first.number(),
+        first.label_in_text(),
+        last.number(),
+        last.label_in_text()
     );
     // Combining accents (d̂, q̇) take no column.
     let cols = |t: &str| {
@@ -47,7 +53,7 @@ pub fn text() -> String {
 
 /// A Markdown table with the symbols as inline maths.
 pub fn markdown() -> String {
-    let mut out = String::from("# Glossary\n\nSubscript $i$: body 1 or 2. Stages: 1 contact frame, 2 unit impulse, 3 desired Δv, 4 impulse, 5 friction, 6 applying the impulse, 7 projection, 8 orientation, 9 checks.\n\n| symbol | meaning | unit | stages | in the lectures |\n|---|---|---|---|---|\n");
+    let mut out = format!("# Glossary\n\nSubscript $i$: body 1 or 2. Stages: {}.\n\n| symbol | meaning | unit | stages | in the lectures |\n|---|---|---|---|---|\n", StageId::numbered_list(|l| l.to_string()));
     for s in GLOSSARY {
         let _ = writeln!(
             out,
@@ -65,7 +71,10 @@ pub fn markdown() -> String {
 /// A standalone LaTeX document with one `longtable`-free tabular per page
 /// (only `amsmath`/`amssymb`, as the worked solutions need).
 pub fn latex() -> String {
-    let mut body = String::from("\\section*{Glossary}\nSubscript $i$: body 1 or 2. Stages: 1 contact frame, 2 unit impulse, 3 desired $\\Delta v$, 4 impulse, 5 friction, 6 applying the impulse, 7 projection, 8 orientation, 9 checks.\n\n");
+    let mut body = format!(
+        "\\section*{{Glossary}}\nSubscript $i$: body 1 or 2. Stages: {}.\n\n",
+        StageId::numbered_list(|l| prose(l))
+    );
     for chunk in GLOSSARY.chunks(25) {
         body.push_str("\\begin{tabular}{l p{7.5cm} l l}\n\\hline\nsymbol & meaning & unit & stages \\\\\n\\hline\n");
         for s in chunk {

@@ -5,6 +5,33 @@
 use crate::physics::StageId;
 
 impl StageId {
+    /// The stage's number as the worked solution, the TUI legend and the
+    /// glossary show it (1 contact frame … 10 checks), from `StageId::ALL`.
+    pub fn number(self) -> usize {
+        StageId::ALL.iter().position(|x| *x == self).unwrap_or(0) + 1
+    }
+
+    /// The short label in running text: its first letter lowered and
+    /// nothing else ("Desired Δv" → "desired Δv", never "desired δv").
+    pub fn label_in_text(self) -> String {
+        let label = self.label();
+        let mut chars = label.chars();
+        match chars.next() {
+            Some(first) => first.to_lowercase().chain(chars).collect(),
+            None => String::new(),
+        }
+    }
+
+    /// Every stage numbered, for legends: "1 contact frame, 2 unit impulse, …
+    /// 10 checks" (`label` maps a stage's text, e.g. to LaTeX).
+    pub fn numbered_list(label: impl Fn(&str) -> String) -> String {
+        StageId::ALL
+            .iter()
+            .map(|s| format!("{} {}", s.number(), label(&s.label_in_text())))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
     /// The heading of the stage in worked solutions.
     pub fn title(self) -> &'static str {
         match self {

@@ -13,6 +13,8 @@ mod io_cli;
 mod io_exercise;
 mod io_simulate;
 mod output_files;
+mod readme;
 mod resolve_cli;
+mod round_off;
 mod study;
 mod tunnelled;

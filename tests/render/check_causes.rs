@@ -119,7 +119,7 @@ fn kinetic_direction_misses_the_restitution_target_and_says_why() {
         let t = contact_lab::worked_solution(&l, k);
         assert_eq!(verdict(&t, "separating velocity"), Some(false));
         assert!(
-            notes(&t).contains("MISSED TARGET: the kinetic-direction model (seeds 002/003) takes the normal impulse from the closed form g_closed (the companion lectures' j)"),
+            notes(&t).contains("MISSED TARGET: the kinetic-direction model (the collisions lectures: Lecture IV Collisions; Pronost) takes the normal impulse from the closed form g_closed (the companion lectures' j)"),
             "contact {k}: {}",
             notes(&t)
         );

@@ -107,7 +107,7 @@ fn every_symbol_a_formula_defines_is_in_the_glossary_with_the_unit_it_prints() {
 fn the_companion_lectures_names_are_said_once() {
     let companion: Vec<&str> = GLOSSARY
         .iter()
-        .filter(|s| s.elsewhere.contains("002/003"))
+        .filter(|s| s.elsewhere.contains("the collisions lectures"))
         .map(|s| s.symbol)
         .collect();
     for s in ["g_closed", "d̂", "v_s", "μ_d"] {
@@ -115,6 +115,11 @@ fn the_companion_lectures_names_are_said_once() {
             companion.contains(&s),
             "{s} does not say its companion name"
         );
+    }
+    // Issue 28: lectures are named as a reader knows them, never by file number.
+    for s in GLOSSARY {
+        assert!(!s.elsewhere.contains("lecture 0"), "{}", s.elsewhere);
+        assert!(!s.elsewhere.contains("lectures 0"), "{}", s.elsewhere);
     }
 }
 
@@ -135,4 +140,64 @@ fn the_glossary_command_prints_every_symbol_in_each_format() {
             }
         }
     }
+}
+
+/// Issue 28, item 1: the glossary numbers the stages as the worked solution
+/// and the TUI legend do (exact impact 9, checks 10), in every format, and
+/// an entry's stage numbers are the ones its stage ids have.
+#[test]
+fn the_glossary_numbers_the_stages_as_the_worked_solution_does() {
+    use contact_lab::physics::StageId;
+    assert_eq!(StageId::ExactImpact.number(), 9);
+    assert_eq!(StageId::Checks.number(), 10);
+    let text = contact_lab::render::glossary::text();
+    assert!(
+        text.contains("stages: 1 contact frame … 10 checks"),
+        "{text}"
+    );
+    assert!(!text.contains("9 checks"), "{text}");
+    let md = contact_lab::render::glossary::markdown();
+    assert!(md.contains("3 desired Δv,"), "{md}");
+    assert!(md.contains("9 integration, 10 checks."), "{md}");
+    let tex = contact_lab::render::glossary::latex();
+    assert!(tex.contains("9 integration, 10 checks."), "{tex}");
+    assert!(!tex.contains("9 checks"), "{tex}");
+    let pen = GLOSSARY
+        .iter()
+        .find(|s| s.stages.contains(&StageId::Checks))
+        .unwrap();
+    assert!(pen.stage_numbers().split(", ").any(|n| n == "10"));
+}
+
+/// Issue 28, item 1: a label in running text lowers its first letter only
+/// (the TUI breadcrumb showed "desired δv").
+#[test]
+fn a_label_in_text_keeps_its_greek_capitals() {
+    use contact_lab::physics::StageId;
+    assert_eq!(StageId::DesiredDeltaVelocity.label_in_text(), "desired Δv");
+    assert_eq!(StageId::ContactFrame.label_in_text(), "contact frame");
+}
+
+/// Issue 28, item 1: no worked solution, under any friction model, names a
+/// lecture by its internal file number ("seed 004's model", "seeds 002/003").
+#[test]
+fn worked_solutions_name_the_lectures_by_title() {
+    let fmt = contact_lab::format::Fmt::default();
+    let mut said = 0;
+    for t in traces() {
+        let text = contact_lab::render::contact::text::render(&t, &fmt);
+        for stale in [
+            "seed 0",
+            "Seed 0",
+            "seeds 0",
+            "Seeds 0",
+            "(002/003)",
+            "lectures 00",
+        ] {
+            assert!(!text.contains(stale), "«{stale}» in\n{text}");
+        }
+        said +=
+            usize::from(text.contains("PSE Friction") || text.contains("Lecture IV Collisions"));
+    }
+    assert!(said > 0, "no worked solution names a companion lecture");
 }

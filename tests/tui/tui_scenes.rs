@@ -74,6 +74,10 @@ fn from_a_frame_to_a_contacts_stage_and_back_up() {
             "{crumb}"
         );
         snapshot(&format!("tui_scene_contact_{w}x{h}"), &t);
+        // Issue 28: the stage keeps its capital Δ in the breadcrumb.
+        key(&mut a, KeyCode::Left);
+        let crumb = contact_lab::tui::screens::breadcrumb(&a);
+        assert!(crumb.ends_with(" › desired Δv"), "{crumb}");
         // Up: the same iteration, then the same frame.
         key(&mut a, KeyCode::Esc);
         assert_eq!(a.screen, Screen::Resolver);

@@ -46,7 +46,7 @@ pub enum Cause<T: Real> {
     /// reference engine does: the slip left is what one frame of that
     /// acceleration adds back.
     PlanarAcceleration { planar: T },
-    /// Velocity-scaling model (seed 004): it scales the planar velocity
+    /// Velocity-scaling model (the friction lecture: PSE Friction): it scales the planar velocity
     /// rather than bounding the impulse, so it may leave the cone.
     VelocityScalingModel,
     /// None of the above: a real defect of the arithmetic or of the code.

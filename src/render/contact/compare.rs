@@ -20,9 +20,9 @@ pub struct Compared {
 
 const HOW_THEY_DIFFER: &str = "\
 How they differ: millington solves for the impulse that stops all sliding and, if that needs more than μ_s g_n,
-slides with μ_d g_n along it while keeping the normal velocity target; kinetic-direction (seeds 002/003) always
+slides with μ_d g_n along it while keeping the normal velocity target; kinetic-direction (the collisions lectures: Lecture IV Collisions; Pronost) always
 applies μ_k j against the slip, however slow, so it can reverse the slip and, when friction turns the body, miss
-the normal target; velocity-scaling (seed 004) sets a velocity target (remove, or scale by μ_d) instead of bounding
+the normal target; velocity-scaling (the friction lecture: PSE Friction) sets a velocity target (remove, or scale by μ_d) instead of bounding
 the impulse, so its impulse can leave the Coulomb cone.";
 
 /// ✓, ✗ or · for a check the solution ran, – for one it did not.

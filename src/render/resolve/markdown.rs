@@ -11,15 +11,8 @@ use crate::trace::resolver::{ContactRow, PhaseTrace, ResolverTrace};
 fn table(out: &mut String, rows: &[ContactRow], fmt: &Fmt) {
     let _ = writeln!(out, "| contact | penetration | v_s | desired Δv |");
     let _ = writeln!(out, "|---|---|---|---|");
-    for r in rows {
-        let _ = writeln!(
-            out,
-            "| {} | {} | {} | {} |",
-            cell(&r.label),
-            fmt.num(r.penetration),
-            fmt.num(r.separating),
-            fmt.num(r.desired)
-        );
+    for (r, [p, v, d]) in rows.iter().zip(super::row_numbers(rows, fmt)) {
+        let _ = writeln!(out, "| {} | {p} | {v} | {d} |", cell(&r.label));
     }
 }
 
@@ -34,11 +27,10 @@ fn phase(out: &mut String, p: &PhaseTrace, fmt: &Fmt) {
         for it in &p.log {
             let _ = writeln!(
                 out,
-                "| {} | {} | {} → {} | {} | {} |",
+                "| {} | {} | {} | {} | {} |",
                 it.iteration,
                 it.contact,
-                fmt.num(it.value),
-                fmt.num(it.own_after),
+                fmt.change(it.value, it.own_after),
                 cell(&action(it, fmt)),
                 cell(&updates(it, fmt))
             );

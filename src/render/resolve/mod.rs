@@ -9,7 +9,7 @@ pub mod text;
 use crate::format::Fmt;
 use crate::physics::resolver::Phase;
 use crate::physics::{RestitutionFrom, Solver};
-use crate::trace::resolver::{Iteration, PhaseTrace, ResolverTrace};
+use crate::trace::resolver::{ContactRow, Iteration, PhaseTrace, ResolverTrace};
 
 /// Wall-clock seconds of each part of a resolve (the fastest of `--repeat` runs).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -120,16 +120,38 @@ pub fn phase_notes(p: &PhaseTrace, fmt: &Fmt) -> Vec<String> {
     out
 }
 
+/// A contacts table's numbers (penetration, v_s, desired Δv) as text, each
+/// column one quantity: a value that is round-off against its column's
+/// largest prints as 0.
+pub fn row_numbers(rows: &[ContactRow], fmt: &Fmt) -> Vec<[String; 3]> {
+    let scale = |f: fn(&ContactRow) -> f64| {
+        crate::format::scale_of(rows.iter().map(f).collect::<Vec<_>>().iter())
+    };
+    let s = [
+        scale(|r| r.penetration),
+        scale(|r| r.separating),
+        scale(|r| r.desired),
+    ];
+    rows.iter()
+        .map(|r| {
+            [
+                fmt.num_at(r.penetration, s[0]),
+                fmt.num_at(r.separating, s[1]),
+                fmt.num_at(r.desired, s[2]),
+            ]
+        })
+        .collect()
+}
+
 /// `2: 0.03 → 0.041 (worse)`, the others an iteration changed.
 pub fn updates(it: &Iteration, fmt: &Fmt) -> String {
     it.updated
         .iter()
         .map(|u| {
             format!(
-                "{}: {} → {}{}",
+                "{}: {}{}",
                 u.contact,
-                fmt.num(u.from),
-                fmt.num(u.to),
+                fmt.change(u.from, u.to),
                 if u.worse() { " (worse)" } else { "" }
             )
         })

@@ -11,14 +11,8 @@ use crate::trace::resolver::{ContactRow, PhaseTrace, ResolverTrace};
 fn table(out: &mut String, rows: &[ContactRow], fmt: &Fmt) {
     let cells: Vec<[String; 4]> = rows
         .iter()
-        .map(|r| {
-            [
-                r.label.clone(),
-                fmt.num(r.penetration),
-                fmt.num(r.separating),
-                fmt.num(r.desired),
-            ]
-        })
+        .zip(super::row_numbers(rows, fmt))
+        .map(|(r, [p, v, d])| [r.label.clone(), p, v, d])
         .collect();
     let head = ["contact", "penetration", "v_s", "desired Δv"];
     let width = |i: usize| {
@@ -62,11 +56,10 @@ fn phase(out: &mut String, p: &PhaseTrace, fmt: &Fmt) {
         };
         let _ = writeln!(
             out,
-            "   {tag}{:<4} contact {}: {value} {} → {}; {}{others}",
+            "   {tag}{:<4} contact {}: {value} {}; {}{others}",
             it.iteration,
             it.contact,
-            fmt.num(it.value),
-            fmt.num(it.own_after),
+            fmt.change(it.value, it.own_after),
             action(it, fmt)
         );
     }

@@ -76,7 +76,7 @@ pub fn describe(kind: CheckKind, cause: &Cause<f64>, has_friction: bool) -> Opti
             condition,
             allowance,
         )),
-        (CheckKind::Restitution, Cause::KineticDirectionNormal) => plain("MISSED TARGET: the kinetic-direction model (seeds 002/003) takes the normal impulse from the closed form g_closed (the companion lectures' j), which knows neither the acceleration compensation nor the normal velocity that its own tangential impulse μ_d g_closed f̂ causes through M₀₁ and M₀₂; so v_s′ is not v_s + Δv. The model does not aim at this target: a defect of the model, not of the arithmetic."),
+        (CheckKind::Restitution, Cause::KineticDirectionNormal) => plain("MISSED TARGET: the kinetic-direction model (the collisions lectures: Lecture IV Collisions; Pronost) takes the normal impulse from the closed form g_closed (the companion lectures' j), which knows neither the acceleration compensation nor the normal velocity that its own tangential impulse μ_d g_closed f̂ causes through M₀₁ and M₀₂; so v_s′ is not v_s + Δv. The model does not aim at this target: a defect of the model, not of the arithmetic."),
         (CheckKind::Restitution, _) => plain("MISSED TARGET: the separating velocity after the impulse is not v_s + Δv, and neither the friction model nor round-off explains it: this should not happen."),
 
         (CheckKind::Slip, Cause::NoFrictionWhileNotSliding) => plain("SLIDE STARTED: nothing slid before the impulse, so the kinetic-direction model has no direction f̂ and applies no friction at all; the normal impulse alone drives the contact point sideways (M₀₁, M₀₂ ≠ 0) and starts a slide of {slip_speed_after}. Static friction would have resisted it: the model cannot hold a contact, a defect of the model."),
@@ -93,7 +93,7 @@ pub fn describe(kind: CheckKind, cause: &Cause<f64>, has_friction: bool) -> Opti
         )),
 
         (CheckKind::FrictionCone, Cause::KineticDirectionNormal) => plain("OUTSIDE THE CONE: the kinetic-direction model takes its normal impulse from the closed form g_closed = -(1 + c) v_s / (…) (the companion lectures' j), which knows nothing of the acceleration compensation; here the contact points do not close (v_s ≥ 0) while the compensation still asks for an impulse, so g_closed < 0 pulls the bodies together. A defect of the model."),
-        (CheckKind::FrictionCone, Cause::VelocityScalingModel) => plain("OUTSIDE THE CONE: seed 004's velocity-scaling model sets the planar velocity (μ_d v_planar) rather than bounding the impulse, so the impulse it needs can exceed μ g_n. This is the model's rule, not Coulomb's law: a defect of the model."),
+        (CheckKind::FrictionCone, Cause::VelocityScalingModel) => plain("OUTSIDE THE CONE: the friction lecture's (PSE Friction) velocity-scaling model sets the planar velocity (μ_d v_planar) rather than bounding the impulse, so the impulse it needs can exceed μ g_n. This is the model's rule, not Coulomb's law: a defect of the model."),
         (CheckKind::FrictionCone, Cause::RoundOff { condition, allowance }) => Some(round_off(
             "cone",
             "the step outside the cone",

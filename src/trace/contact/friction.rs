@@ -116,7 +116,7 @@ pub fn friction(c: &SolvedContact) -> Step {
             );
             b.f("v_max", "-μ_s v_s", Some("-{mu_s} · ({vx})"), Some("limit"));
             if f.regime == FrictionRegime::Static {
-                b.note("Seed 004's model: |v_planar| ≤ v_max = -μ_s v_s, so all planar velocity is removed (the sticking impulse). Here planar and limit are velocities, not impulses.");
+                b.note("The friction lecture's model (PSE Friction): |v_planar| ≤ v_max = -μ_s v_s, so all planar velocity is removed (the sticking impulse). Here planar and limit are velocities, not impulses.");
             } else {
                 b.input("matrix", c.solution.unit.matrix.unwrap_or_default());
                 b.f(
@@ -125,7 +125,7 @@ pub fn friction(c: &SolvedContact) -> Step {
                     Some("{matrix}⁻¹ ({desired}, -{mu_d} · ({vy}), -{mu_d} · ({vz}))"),
                     Some("impulse_contact"),
                 );
-                b.note("Seed 004's model: |v_planar| > v_max = -μ_s v_s, so the planar velocity is reduced by μ_d·v_planar rather than removed. This is not Coulomb's law: the impulse may leave the friction cone.");
+                b.note("The friction lecture's model (PSE Friction): |v_planar| > v_max = -μ_s v_s, so the planar velocity is reduced by μ_d·v_planar rather than removed. This is not Coulomb's law: the impulse may leave the friction cone.");
             }
         }
         FrictionModel::KineticDirection => {
@@ -147,9 +147,9 @@ pub fn friction(c: &SolvedContact) -> Step {
                 Some("impulse_contact"),
             );
             if f.issue == Some(FrictionIssue::UndefinedDirection) {
-                b.note("Seeds 002/003's model (they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): the slip direction is undefined because nothing slides (the relative velocity is along d̂); the model applies no friction impulse.");
+                b.note("The collisions lectures' model (Lecture IV Collisions; Pronost; they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): the slip direction is undefined because nothing slides (the relative velocity is along d̂); the model applies no friction impulse.");
             } else {
-                b.note("Seeds 002/003's model (they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): friction μ_d g_closed acts along f̂, against the sliding direction, whatever the sliding speed, so it may reverse the slip. The seeds write t along the sliding velocity; friction must oppose it, so f̂ = -t.");
+                b.note("The collisions lectures' model (Lecture IV Collisions; Pronost; they write j (n + μ_k t): j is g_closed of stage 4, n is d̂, μ_k is μ_d): friction μ_d g_closed acts along f̂, against the sliding direction, whatever the sliding speed, so it may reverse the slip. These lectures write t along the sliding velocity; friction must oppose it, so f̂ = -t.");
             }
         }
     }

@@ -90,7 +90,7 @@ pub fn impulse(c: &SolvedContact) -> Step {
         )),
         Some("closed_form_j"),
     );
-    b.note("The companion lectures (002/003) write this closed form as j = -(1 + C_R)(v_rel · n) / (…): their j is g here, n is d̂, v_rel · n is v_s and C_R is c. Each (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂) equals Δq̇_dᵢ of stage 2.");
+    b.note("The collisions lectures (Lecture IV Collisions; Pronost) write this closed form as j = -(1 + C_R)(v_rel · n) / (…): their j is g here, n is d̂, v_rel · n is v_s and C_R is c. Each (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂) equals Δq̇_dᵢ of stage 2.");
     if g.solve.is_some() {
         b.note("For comparison, without friction the closed form gives g_closed = {closed_form_j} along the normal.");
     } else if c.solution.desired.velocity_from_acceleration == 0.0 {

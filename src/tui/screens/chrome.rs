@@ -37,7 +37,7 @@ pub fn breadcrumb(app: &App) -> String {
     if app.screen == Screen::Contact {
         parts.push(format!("contact {}", app.contact));
         parts.push(match app.stage() {
-            Some(s) => app.trace.stages[s].id.label().to_lowercase(),
+            Some(s) => app.trace.stages[s].id.label_in_text(),
             None => "overview".into(),
         });
     }

@@ -212,11 +212,10 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     if let Some(prev) = stop.iteration.checked_sub(1).and_then(|i| phase.log.get(i)) {
         let worse = prev.updated.iter().filter(|u| u.worse()).count();
         lines.push(Line::raw(format!(
-            "Last: {name} iteration {} took contact {}: {what} {} → {}; it changed {} other contact(s), {worse} for the worse.",
+            "Last: {name} iteration {} took contact {}: {what} {}; it changed {} other contact(s), {worse} for the worse.",
             prev.iteration,
             prev.contact,
-            f.num(prev.value),
-            f.num(prev.own_after),
+            f.change(prev.value, prev.own_after),
             prev.updated.len()
         )));
     }

@@ -3,7 +3,7 @@
 //! Millington (lecture procedure, reference engine): if `|g_planar| ≤ μ_s g_n`
 //! the contact sticks; otherwise it slides, the tangential impulse becomes
 //! `μ_d g_n` along the sticking impulse's direction and `g_n` is recomputed so
-//! the normal velocity target still holds. The seeds' other models live here too.
+//! the normal velocity target still holds. The companion lectures' other models live here too.
 
 use nalgebra::Vector3;
 

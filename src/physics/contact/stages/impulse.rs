@@ -158,7 +158,7 @@ impl<T: Real> FactoredMatrix<T> {
     }
 }
 
-/// The closed form of the companion lectures (seeds 002/003), evaluated with
+/// The closed form of the companion lectures (the collisions lectures: Lecture IV Collisions; Pronost), evaluated with
 /// `(r×n)ᵀ I⁻¹ (r×n)` rather than the lecture's `((I⁻¹(r×n))×r)·n`.
 pub fn closed_form_j<T: Real>(
     problem: &Problem<T>,
