@@ -73,7 +73,7 @@ pub fn markdown() -> String {
 pub fn latex() -> String {
     let mut body = format!(
         "\\section*{{Glossary}}\nSubscript $i$: body 1 or 2. Stages: {}.\n\n",
-        StageId::numbered_list(|l| prose(l))
+        StageId::numbered_list(prose)
     );
     for chunk in GLOSSARY.chunks(25) {
         body.push_str("\\begin{tabular}{l p{7.5cm} l l}\n\\hline\nsymbol & meaning & unit & stages \\\\\n\\hline\n");

@@ -29,8 +29,10 @@ fn expected_bisections(tol: f64) -> usize {
     (DT / tol).log2().ceil() as usize
 }
 
-/// (the ball, its motion, the target, its motion, the closed-form time)
-fn cases() -> Vec<(Convex, Motion<f64>, Convex, Motion<f64>, f64)> {
+/// The ball, its motion, the target, its motion, the closed-form time.
+type Case = (Convex, Motion<f64>, Convex, Motion<f64>, f64);
+
+fn cases() -> Vec<Case> {
     let ball = Convex::Sphere { radius: 0.05 };
     let mut out = Vec::new();
     // Sphere at a sphere of radius 0.5 at the origin: gap = x − 0.55.
