@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod dd;
+pub mod json;
 pub mod random;
 pub mod svg;
 pub mod tui;
