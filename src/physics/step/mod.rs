@@ -5,6 +5,7 @@
 
 pub mod audit;
 pub mod ccd;
+pub mod contact_events;
 pub mod energy;
 pub mod integrate;
 pub mod overlap;
