@@ -72,7 +72,7 @@ pub fn flag(knob: &Knob) -> &'static str {
 
 fn value_name(knob: &Knob) -> &'static str {
     match knob.kind {
-        Kind::Number(_) => "X",
+        Kind::Number { .. } => "X",
         Kind::Count { .. } => "N",
         Kind::Flag => "BOOL",
         Kind::Choice { .. } => "CHOICE",

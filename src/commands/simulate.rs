@@ -198,7 +198,7 @@ pub fn simulation(
         // `--damping` sets both dampings, checked by their rule.
         for knob in KNOBS
             .iter()
-            .filter(|k| k.kind == Kind::Number(Range::Damping))
+            .filter(|k| k.kind.range() == Some(Range::Damping))
         {
             knob_value::check(knob, Value::Number(d))
                 .map_err(|e| AppError::Usage(format!("--damping: {e}")))?;

@@ -4,8 +4,9 @@
 
 use nalgebra::Vector3;
 
+use super::knob_value::{self, echo};
 use super::validate::rules;
-use super::{knob_value, Lesson};
+use super::Lesson;
 use crate::format::exact;
 use crate::physics::knobs::{self, Kind as KnobKind, Knob, Level, Offered, Value};
 
@@ -164,15 +165,6 @@ fn number(text: &str) -> Result<f64, String> {
         .map_err(|_| format!("'{}' is not a number", echo(text.trim())))
 }
 
-/// What the user typed, quoted back in a refusal: at most 40 characters, so
-/// a pasted page does not fill the form.
-fn echo(text: &str) -> String {
-    match text.char_indices().nth(40) {
-        Some((i, _)) => format!("{}…", &text[..i]),
-        None => text.to_string(),
-    }
-}
-
 fn vector(text: &str) -> Result<Vector3<f64>, String> {
     let parts: Vec<&str> = text
         .trim()
@@ -328,9 +320,7 @@ mod tests {
         // A share knob (in (0, 1]) refuses 0.
         let share = crate::physics::knobs::KNOBS
             .iter()
-            .find(|k| {
-                k.kind == crate::physics::knobs::Kind::Number(crate::physics::knobs::Range::Share)
-            })
+            .find(|k| k.kind.range() == Some(crate::physics::knobs::Range::Share))
             .unwrap();
         let e = put(&mut l, share.name, "0").unwrap_err();
         assert!(e.contains("(0, 1]"), "{e}");

@@ -10,8 +10,8 @@ use crate::physics::knobs::{Kind, Knob, Range, Value, MAX_DT};
 pub fn check(knob: &Knob, value: Value) -> Result<(), String> {
     let name = knob.name;
     match (knob.kind, value) {
-        (Kind::Number(range), Value::Number(x)) => number(name, range, x),
-        (Kind::Number(_), Value::Unset) if optional(knob) => Ok(()),
+        (Kind::Number { range, .. }, Value::Number(x)) => number(name, range, x),
+        (Kind::Number { optional: true, .. }, Value::Unset) => Ok(()),
         (Kind::Count { max, .. }, Value::Count(n)) if n > max => Err(format!(
             "{name} must be a whole number from 0 to {}, got {n}",
             count_text(max)
@@ -30,11 +30,6 @@ pub fn check(knob: &Knob, value: Value) -> Result<(), String> {
         }
         _ => Err(format!("{name} must be {}", expected(knob))),
     }
-}
-
-/// A knob whose unset value means "follow another rule" (`slip_speed`).
-fn optional(knob: &Knob) -> bool {
-    (knob.get)(&Default::default()) == Value::Unset
 }
 
 fn count_text(n: u64) -> String {
@@ -85,10 +80,22 @@ fn number(name: &str, range: Range, x: f64) -> Result<(), String> {
 /// What the knob takes, in words: `a number in (0, 1]`, `one of "a", "b"`.
 pub fn expected(knob: &Knob) -> String {
     match knob.kind {
-        Kind::Number(Range::NonNegative) => "a finite number ≥ 0".into(),
-        Kind::Number(Range::NonNegativeOrInf) => "a number ≥ 0 (inf = no limit)".into(),
-        Kind::Number(Range::Share | Range::Damping) => "a number in (0, 1]".into(),
-        Kind::Number(Range::Duration) => {
+        Kind::Number {
+            range: Range::NonNegative,
+            ..
+        } => "a finite number ≥ 0".into(),
+        Kind::Number {
+            range: Range::NonNegativeOrInf,
+            ..
+        } => "a number ≥ 0 (inf = no limit)".into(),
+        Kind::Number {
+            range: Range::Share | Range::Damping,
+            ..
+        } => "a number in (0, 1]".into(),
+        Kind::Number {
+            range: Range::Duration,
+            ..
+        } => {
             format!("a number of seconds > 0, at most {}", exact(MAX_DT))
         }
         Kind::Count { max, .. } => format!("a whole number from 0 to {}", count_text(max)),
@@ -108,8 +115,8 @@ pub fn expected(knob: &Knob) -> String {
 /// The value a TOML entry gives `knob`, checked.
 pub fn from_toml(knob: &Knob, value: &toml::Value) -> Result<Value, String> {
     let v = match (knob.kind, value) {
-        (Kind::Number(_), toml::Value::Float(x)) => Value::Number(*x),
-        (Kind::Number(_), toml::Value::Integer(n)) => Value::Number(*n as f64),
+        (Kind::Number { .. }, toml::Value::Float(x)) => Value::Number(*x),
+        (Kind::Number { .. }, toml::Value::Integer(n)) => Value::Number(*n as f64),
         (Kind::Count { .. }, toml::Value::Integer(n)) if *n < 0 => {
             return Err(format!("{} must be {}, got {n}", knob.name, expected(knob)))
         }
@@ -182,7 +189,7 @@ pub fn from_text(knob: &Knob, text: &str) -> Result<Value, String> {
     };
     let v = match knob.kind {
         _ if matches!(t, "default" | "auto") && optional_kind(knob) => Value::Unset,
-        Kind::Number(_) => match parse_number(t) {
+        Kind::Number { .. } => match parse_number(t) {
             Some(x) => Value::Number(x),
             None => return refuse(),
         },
@@ -224,7 +231,10 @@ pub fn from_text(knob: &Knob, text: &str) -> Result<Value, String> {
 }
 
 fn optional_kind(knob: &Knob) -> bool {
-    matches!(knob.kind, Kind::Count { optional: true, .. }) || optional(knob)
+    matches!(
+        knob.kind,
+        Kind::Count { optional: true, .. } | Kind::Number { optional: true, .. }
+    )
 }
 
 /// A number as typed: `inf`, `∞`, or a fraction `1/60`.
@@ -237,7 +247,9 @@ pub fn parse_number(t: &str) -> Option<f64> {
     }
 }
 
-/// What the user typed, quoted back in a refusal: at most 40 characters.
+/// What the user typed, quoted back in a refusal (a knob's value, an edit
+/// form's field): control characters escaped, at most 40 characters, so a
+/// pasted page does not fill the form.
 pub fn echo(text: &str) -> String {
     let escaped: String = text.escape_debug().collect();
     match escaped.char_indices().nth(40) {

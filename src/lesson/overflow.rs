@@ -72,10 +72,7 @@ fn first_in_debug(text: &str) -> Option<(String, f64)> {
             // A knob whose `inf` means "no limit" is a setting, not an overflow.
             let setting = x == f64::INFINITY
                 && crate::physics::knobs::find(&field).is_some_and(|k| {
-                    k.kind
-                        == crate::physics::knobs::Kind::Number(
-                            crate::physics::knobs::Range::NonNegativeOrInf,
-                        )
+                    k.kind.range() == Some(crate::physics::knobs::Range::NonNegativeOrInf)
                 });
             if !setting && too_large(&x) {
                 return Some((field, x));

@@ -115,7 +115,12 @@ pub const MAX_STEPS: u64 = 10_000_000;
 /// How a knob's value is written.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Kind {
-    Number(Range),
+    /// A number under its range rule; `optional` when it may be left unset
+    /// (unset follows another rule, which the knob's doc names).
+    Number {
+        range: Range,
+        optional: bool,
+    },
     /// A whole number from 0 to `max`; `optional` when it may be left unset.
     Count {
         max: u64,
@@ -129,6 +134,16 @@ pub enum Kind {
         aliases: &'static [(&'static str, &'static str)],
     },
     Vector,
+}
+
+impl Kind {
+    /// A number's range rule; `None` for every other kind.
+    pub fn range(&self) -> Option<Range> {
+        match self {
+            Kind::Number { range, .. } => Some(*range),
+            _ => None,
+        }
+    }
 }
 
 /// How a knob is set on the command line.
@@ -386,7 +401,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::Settings, Table::ContactSettings, Table::World],
         doc: "Restitution is 0 below this closing speed (m/s): trades bounce fidelity at low speed for resting contacts that do not vibrate.",
         default: "0 (the lecture); 0.25 in a scene (the reference engine)",
-        kind: Kind::Number(Range::NonNegative),
+        kind: Kind::Number { range: Range::NonNegative, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -402,7 +417,7 @@ pub static KNOBS: &[Knob] = &[
         tables: CONTACT_TABLES,
         doc: "Largest angular move in projection, as a multiple of |r⊥|: trades believable rotation for robustness against over-rotation (inf = no limit).",
         default: "0.2",
-        kind: Kind::Number(Range::NonNegativeOrInf),
+        kind: Kind::Number { range: Range::NonNegativeOrInf, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -418,7 +433,7 @@ pub static KNOBS: &[Knob] = &[
         tables: CONTACT_TABLES,
         doc: "Share of the penetration resolved in one projection, (0, 1]: trades speed of separation for stability when many contacts touch one body.",
         default: "1",
-        kind: Kind::Number(Range::Share),
+        kind: Kind::Number { range: Range::Share, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -434,7 +449,7 @@ pub static KNOBS: &[Knob] = &[
         tables: CONTACT_TABLES,
         doc: "Last frame's duration (s), for acceleration compensation: the velocity a·duration that one frame of acceleration builds up is not bounced back.",
         default: "0.01",
-        kind: Kind::Number(Range::Duration),
+        kind: Kind::Number { range: Range::Duration, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::No("in a run every contact lasts the time step: vary dt"),
@@ -574,7 +589,7 @@ pub static KNOBS: &[Knob] = &[
         tables: RESOLVER_TABLES,
         doc: "Penetrations at or below this (m) are left alone: trades resting jitter for penetration left.",
         default: "0.01",
-        kind: Kind::Number(Range::NonNegative),
+        kind: Kind::Number { range: Range::NonNegative, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -590,7 +605,7 @@ pub static KNOBS: &[Knob] = &[
         tables: RESOLVER_TABLES,
         doc: "A desired Δv at or below this (m/s) is left alone: trades time for closing velocity left.",
         default: "0.01",
-        kind: Kind::Number(Range::NonNegative),
+        kind: Kind::Number { range: Range::NonNegative, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -606,7 +621,7 @@ pub static KNOBS: &[Knob] = &[
         tables: RESOLVER_TABLES,
         doc: "Sequential impulses: a contact whose slip (before this step's accelerations) is at or below this speed (m/s) sticks under μ_s, above it slides under μ_d: trades sticking that holds for slides that start late.",
         default: "velocity_epsilon",
-        kind: Kind::Number(Range::NonNegative),
+        kind: Kind::Number { range: Range::NonNegative, optional: true },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -648,7 +663,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::Step],
         doc: "The time step (s): trades cost per simulated second for accuracy (penetration, energy, tunnelling).",
         default: "1/60",
-        kind: Kind::Number(Range::Duration),
+        kind: Kind::Number { range: Range::Duration, optional: false },
         cli: Cli::Option,
         edit: Offered::No("a run's time step is its frames: change it with simulate --dt"),
         study: Offered::Yes,
@@ -697,7 +712,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::World],
         doc: "Fraction of linear velocity kept per second, (0, 1]: trades energy lost for stability (1 = no damping).",
         default: "0.99",
-        kind: Kind::Number(Range::Damping),
+        kind: Kind::Number { range: Range::Damping, optional: false },
         cli: Cli::Option,
         edit: Offered::No(RUN_ONLY),
         study: Offered::Yes,
@@ -713,7 +728,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::World],
         doc: "Fraction of angular velocity kept per second, (0, 1] (1 = no damping).",
         default: "0.99",
-        kind: Kind::Number(Range::Damping),
+        kind: Kind::Number { range: Range::Damping, optional: false },
         cli: Cli::Option,
         edit: Offered::No(RUN_ONLY),
         study: Offered::Yes,
@@ -785,7 +800,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::World],
         doc: "Contacts are generated for gaps up to this distance (m), with a negative penetration: a resting body keeps its contact after the position phase resolved it, instead of falling freely for a step; too large and bodies stop short of touching.",
         default: "0.005",
-        kind: Kind::Number(Range::NonNegative),
+        kind: Kind::Number { range: Range::NonNegative, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -818,7 +833,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::Sleep],
         doc: "Motion (recency-weighted v·v + ω·ω, m²/s²) below which a body sleeps (the reference engine's 0.3).",
         default: "0.3",
-        kind: Kind::Number(Range::NonNegative),
+        kind: Kind::Number { range: Range::NonNegative, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
@@ -854,7 +869,7 @@ pub static KNOBS: &[Knob] = &[
         tables: &[Table::Sleep],
         doc: "Island sleep: how long (s) every body of an island must have been slow before it sleeps.",
         default: "0.5",
-        kind: Kind::Number(Range::Duration),
+        kind: Kind::Number { range: Range::Duration, optional: false },
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,

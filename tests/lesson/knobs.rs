@@ -12,11 +12,17 @@ use contact_lab::study::{self, grid};
 fn sample(knob: &Knob) -> Value {
     let default = (knob.get)(&Default::default());
     let candidates = match knob.kind {
-        Kind::Number(Range::Share | Range::Damping) => {
+        Kind::Number {
+            range: Range::Share | Range::Damping,
+            ..
+        } => {
             vec![Value::Number(0.5), Value::Number(0.25)]
         }
-        Kind::Number(Range::Duration) => vec![Value::Number(0.02), Value::Number(0.03)],
-        Kind::Number(_) => vec![Value::Number(0.125), Value::Number(0.375)],
+        Kind::Number {
+            range: Range::Duration,
+            ..
+        } => vec![Value::Number(0.02), Value::Number(0.03)],
+        Kind::Number { .. } => vec![Value::Number(0.125), Value::Number(0.375)],
         Kind::Count { .. } => vec![Value::Count(3), Value::Count(5)],
         Kind::Flag => vec![Value::Flag(true), Value::Flag(false)],
         Kind::Choice { choices, .. } => choices.iter().map(|(c, _)| Value::Choice(c)).collect(),
