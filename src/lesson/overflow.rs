@@ -9,6 +9,8 @@
 //! `resolve` applies the stages repeatedly: [`check_resolve`] guards it.
 
 use super::Lesson;
+use crate::physics::contact::numbers::Numbers;
+use crate::physics::knobs::{self, Range};
 use crate::physics::FrictionModel;
 
 /// The largest magnitude a stage's result may have.
@@ -17,70 +19,34 @@ pub const LIMIT: f64 = 1e300;
 /// The first result of contact `k` that is not finite or beyond ±[`LIMIT`]:
 /// the field that holds it, and the number. `None` when all are fine.
 ///
-/// The stage records are walked through their `Debug` text, which names
-/// every field and prints every number, so no record can be forgotten as
-/// the stages change; the checks' measurements by the names the trace gives
-/// them (`energy_after`), then their causes. A knob set to `inf` for "no
-/// limit" (the angular limit) is a setting, not an overflow.
+/// Every number of every stage record is visited through its typed fields
+/// (`physics::contact::numbers`: a field added to a stage and forgotten
+/// there does not compile); the checks' measurements by the names the
+/// checks give them (`energy_after`), then their causes. A knob set to
+/// `inf` for "no limit" (the angular limit) is a setting, not an overflow.
 pub fn first_overflow(lesson: &Lesson, k: usize) -> Option<(String, f64)> {
     first_overflow_of(&lesson.problem::<f64>(k))
 }
 
 fn first_overflow_of(problem: &crate::physics::Problem<f64>) -> Option<(String, f64)> {
-    let mut solution = crate::physics::solve(problem);
-    let checks = std::mem::take(&mut solution.checks.items);
-    if let Some(found) = first_in_debug(&format!("{solution:?}")) {
-        return Some(found);
-    }
-    for item in &checks {
-        let named = item.named_values();
-        if let Some(found) = named.into_iter().find(|(_, x)| too_large(x)) {
-            return Some(found);
+    let solution = crate::physics::solve(problem);
+    let mut found = None;
+    solution.numbers("solution", &mut |field, x| {
+        if found.is_none() && too_large(&x) && !no_limit(field, x) {
+            found = Some((field.to_string(), x));
         }
-        if let Some(found) = item.cause.and_then(|c| first_in_debug(&format!("{c:?}"))) {
-            return Some(found);
-        }
-    }
-    None
+    });
+    found
 }
 
 fn too_large(x: &f64) -> bool {
     x.is_nan() || x.abs() > LIMIT
 }
 
-/// The first number of a `Debug` text that is too large, with its field.
-fn first_in_debug(text: &str) -> Option<(String, f64)> {
-    let mut field = String::new();
-    let mut token = String::new();
-    let mut chars = text.chars().peekable();
-    while let Some(c) = chars.next() {
-        // Named values, `("energy_before", 1.5)`: the name is the field.
-        if c == '"' {
-            field = chars.by_ref().take_while(|c| *c != '"').collect();
-            token.clear();
-            continue;
-        }
-        if c.is_alphanumeric() || matches!(c, '_' | '.' | '-' | '+') {
-            token.push(c);
-            continue;
-        }
-        if c == ':' && chars.peek() == Some(&' ') {
-            field = std::mem::take(&mut token);
-            continue;
-        }
-        if let Ok(x) = token.parse::<f64>() {
-            // A knob whose `inf` means "no limit" is a setting, not an overflow.
-            let setting = x == f64::INFINITY
-                && crate::physics::knobs::find(&field).is_some_and(|k| {
-                    k.kind.range() == Some(crate::physics::knobs::Range::NonNegativeOrInf)
-                });
-            if !setting && too_large(&x) {
-                return Some((field, x));
-            }
-        }
-        token.clear();
-    }
-    None
+/// A knob whose `inf` means "no limit" (the angular limit) is a setting.
+fn no_limit(field: &str, x: f64) -> bool {
+    x == f64::INFINITY
+        && knobs::find(field).is_some_and(|k| k.kind.range() == Some(Range::NonNegativeOrInf))
 }
 
 /// The refusal for contact `k`, or `Ok` when its solution is finite under

@@ -10,6 +10,7 @@
 pub mod causes;
 pub mod checks;
 pub mod frame;
+pub mod numbers;
 pub mod problem;
 pub mod solve;
 pub mod stage_id;
