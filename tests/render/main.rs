@@ -17,6 +17,7 @@ mod figure_strokes;
 mod glossary;
 mod instructor_snapshots;
 mod one_minus_sign;
+mod readme_layout;
 mod resolve_snapshots;
 mod scene_snapshots;
 mod solve_snapshots;
