@@ -3,6 +3,7 @@
 //! pair: O(pairs), in the order of first appearance.
 
 use std::collections::hash_map::{Entry, HashMap};
+use std::collections::HashSet;
 use std::hash::{BuildHasherDefault, Hasher};
 
 use super::report::Event;
@@ -100,13 +101,16 @@ pub fn report<T: Real>(
     *touching = pairs;
 }
 
+/// A set of body pairs (the pairs wholly inside one another).
+pub type PairSet = HashSet<(BodyId, Option<BodyId>), BuildHasherDefault<PairHasher>>;
+
 /// A map keyed by body pair, for the contact events.
-type PairMap<V> = HashMap<(BodyId, Option<BodyId>), V, BuildHasherDefault<PairHasher>>;
+pub type PairMap<V> = HashMap<(BodyId, Option<BodyId>), V, BuildHasherDefault<PairHasher>>;
 
 /// A multiply-rotate hash of a few small integers (body indices): keys are
 /// ours, not an attacker's, and SipHash cost a seventh of a 1,000-sphere step.
 #[derive(Default)]
-struct PairHasher(u64);
+pub struct PairHasher(u64);
 
 impl Hasher for PairHasher {
     fn write(&mut self, bytes: &[u8]) {

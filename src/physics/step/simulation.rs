@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 
 use super::audit::Switches;
-use super::contact_events::{self, Touching};
+use super::contact_events::{self, PairSet, Touching};
 use super::integrate::{integrate_position, integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
@@ -56,8 +56,8 @@ pub struct Simulation<T: Real> {
     scaled_for: Option<SimParams<T>>,
     scaled: SimParams<T>,
     /// Pairs wholly inside one another this step and the last.
-    inside: Vec<(BodyId, Option<BodyId>)>,
-    inside_before: Vec<(BodyId, Option<BodyId>)>,
+    inside: PairSet,
+    inside_before: PairSet,
 }
 
 impl<T: Real> Simulation<T> {
@@ -83,8 +83,8 @@ impl<T: Real> Simulation<T> {
             size: None,
             scaled_for: None,
             scaled: SimParams::default(),
-            inside: Vec::new(),
-            inside_before: Vec::new(),
+            inside: PairSet::default(),
+            inside_before: PairSet::default(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -313,6 +313,7 @@ impl<T: Real> Simulation<T> {
     fn overlap_events(&mut self, events: &mut Vec<Event>) {
         std::mem::swap(&mut self.inside, &mut self.inside_before);
         self.inside.clear();
+        let mut pushed = PairSet::default();
         for k in &self.world.contacts {
             if let Some(width) = overlap::wholly_inside(&self.world, k) {
                 let pair = (k.body1, k.body2);
@@ -324,12 +325,12 @@ impl<T: Real> Simulation<T> {
                         width,
                     });
                 }
-                self.inside.push(pair);
+                self.inside.insert(pair);
             }
             if let Some((body, through)) = overlap::pushed_through(&self.world, k, self.params.dt) {
-                let event = Event::PushedThrough { body, through };
-                if !events.contains(&event) {
-                    events.push(event);
+                // Once per pair of bodies (a manifold has several points).
+                if pushed.insert((body, Some(through))) {
+                    events.push(Event::PushedThrough { body, through });
                 }
             }
         }
