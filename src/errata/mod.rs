@@ -45,6 +45,9 @@ pub struct Item {
     pub contact: usize,
     pub stage: String,
     pub value: String,
+    /// What the worked solution calls the value (`Δv` for `desired`), the
+    /// key itself when nothing names it.
+    pub label: String,
     pub component: Option<usize>,
     pub location: String,
     pub printed: PrintedShape,
@@ -73,6 +76,10 @@ fn computed(trace: Option<&Trace>, p: &Printed) -> Option<Value> {
 /// Compares one printed entry with the traces of its lesson (one per contact).
 pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
     let computed = computed(traces.get(p.contact), p);
+    let label = traces
+        .get(p.contact)
+        .and_then(|t| t.symbol(&p.stage, &p.value))
+        .unwrap_or_else(|| p.value.clone());
     let agrees = computed
         .as_ref()
         .is_some_and(|c| agrees(&p.printed.numbers(), &c.numbers()));
@@ -88,6 +95,7 @@ pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
         contact: p.contact,
         stage: p.stage.clone(),
         value: p.value.clone(),
+        label,
         component: p.component,
         location: p.location.clone(),
         printed: p.printed.clone(),
