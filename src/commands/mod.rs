@@ -58,6 +58,19 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
     }
 }
 
+/// The width plain text is folded to: `--width` when given (0: never),
+/// else the terminal's, else [`DEFAULT_WIDTH`](crate::render::wrap::DEFAULT_WIDTH).
+pub(crate) fn text_width(asked: Option<usize>) -> usize {
+    use std::io::IsTerminal;
+    asked.unwrap_or_else(|| {
+        let terminal = std::io::stdout()
+            .is_terminal()
+            .then(|| crossterm::terminal::size().ok())
+            .flatten();
+        terminal.map_or(crate::render::wrap::DEFAULT_WIDTH, |(w, _)| usize::from(w))
+    })
+}
+
 /// Both stdin and stdout are a terminal, so the TUI can run.
 fn interactive() -> bool {
     use std::io::IsTerminal;

@@ -52,11 +52,17 @@ pub fn simulate(
     let mut trace = RunTrace::new(&lesson.id, &lesson.title, names, &sim);
     let kind = match args.format {
         RunFormat::Svg => return film(&lesson, args, sim, steps, trace, out),
-        RunFormat::Text => Streamed::Text(Fmt::new(args.digits as usize)),
+        RunFormat::Text if args.table => Streamed::Text(Fmt::new(args.digits as usize)),
+        RunFormat::Text => Streamed::Summary(Fmt::new(args.digits as usize), Box::default()),
         RunFormat::Json => Streamed::Json,
     };
     // Written as computed: memory stays flat in the number of steps.
-    let buffered = std::io::BufWriter::with_capacity(1 << 16, out);
+    let width = match args.format {
+        RunFormat::Text => super::text_width(args.width),
+        _ => 0,
+    };
+    let folded = crate::render::wrap::WrapWriter::new(out, width);
+    let buffered = std::io::BufWriter::with_capacity(1 << 16, folded);
     let mut w = RunWriter::begin(buffered, kind, &trace).map_err(io)?;
     w.frame(&mut trace, &RunTrace::initial(&sim)).map_err(io)?;
     for n in 1..=steps {
@@ -165,7 +171,10 @@ fn trace_step(
                 fmt.num(step.time),
                 step.world.contacts.len()
             );
-            head + &crate::render::resolve::text::render(&step.resolver, &fmt)
+            crate::render::wrap::wrap(
+                &(head + &crate::render::resolve::text::render(&step.resolver, &fmt)),
+                super::text_width(args.width),
+            )
         }
         RunFormat::Json => crate::render::resolve::json::render(
             &step.resolver,

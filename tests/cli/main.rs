@@ -17,5 +17,6 @@ mod output_files;
 mod readme;
 mod resolve_cli;
 mod round_off;
+mod slide_ready;
 mod study;
 mod tunnelled;

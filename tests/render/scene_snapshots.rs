@@ -1,4 +1,4 @@
-//! `simulate` of every scene as text (a row every half second, the events
+//! `simulate --table` of every scene as text (a row every half second, the events
 //! between) and as JSON (every second), held as snapshots.
 
 use crate::common;
@@ -52,7 +52,7 @@ fn simulate_text_and_json_of_every_scene() {
             let second = ((1.0 / scene.dt).round() as u64).max(1).to_string();
             insta::assert_snapshot!(
                 "simulate_text",
-                simulate(path, &["--every", &half_second, "--digits", "5"])
+                simulate(path, &["--table", "--every", &half_second, "--digits", "5"])
             );
             insta::assert_snapshot!(
                 "simulate_json",
