@@ -7,6 +7,7 @@ mod common;
 
 mod advise;
 mod check_rows;
+mod exercise_asks;
 mod exercise_figures;
 mod grading;
 mod instructor;
