@@ -42,7 +42,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::Simulate(args)) => simulate::simulate(&args, out, err),
         Some(Command::Study(args)) => study::study(&args, out, err),
         Some(Command::Advise(args)) => advise::advise(&args, out, err),
-        Some(Command::Errata(args)) => errata::errata(&args, out),
+        Some(Command::Errata(args)) => errata::errata(&args, out, err),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
         Some(Command::Glossary(args)) => {
             use crate::cli::Format;
@@ -137,6 +137,10 @@ pub(crate) fn overrides<L: Levels>(args: &KnobArgs<L>) -> Result<Overrides, AppE
 /// Lesson warnings go to stderr, once each.
 pub(crate) fn warn(lesson: &Lesson, err: &mut dyn Write) {
     for w in &lesson.warnings {
+        let _ = writeln!(err, "warning: {w}");
+    }
+    let zeros = crate::errata::zero_warnings(lesson, |k| crate::worked_solution(lesson, k));
+    for w in zeros {
         let _ = writeln!(err, "warning: {w}");
     }
 }

@@ -11,3 +11,4 @@ mod finite_outputs;
 mod invalid_lessons;
 mod knobs;
 mod lecture_numbers;
+mod load_warnings;
