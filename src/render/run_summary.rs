@@ -139,12 +139,12 @@ impl Summary {
             }
             let _ = writeln!(
                 out,
-                "   {}: position {} m, orientation {}, velocity {} m/s, angular velocity {} rad/s, {}",
+                "   {}: position ({}) m, orientation [{}], velocity ({}) m/s, angular velocity ({}) rad/s, {}",
                 run.names.get(i).map_or("?", String::as_str),
-                format!("({})", fmt.list(&b.position)),
-                format!("[{}]", fmt.list(&b.orientation)),
-                format!("({})", fmt.list(&b.velocity)),
-                format!("({})", fmt.list(&b.angular_velocity)),
+                fmt.list(&b.position),
+                fmt.list(&b.orientation),
+                fmt.list(&b.velocity),
+                fmt.list(&b.angular_velocity),
                 if b.awake { "awake" } else { "asleep" }
             );
         }
