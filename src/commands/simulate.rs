@@ -56,6 +56,12 @@ pub fn simulate(
         RunFormat::Text => Streamed::Summary(Fmt::new(args.digits as usize), Box::default()),
         RunFormat::Json => Streamed::Json,
     };
+    // The summary folds in every step (its extremes are the run's, not a
+    // sample's); `--every` thins the table and the JSON.
+    let every = match kind {
+        Streamed::Summary(..) => 1,
+        _ => args.every,
+    };
     // Written as computed: memory stays flat in the number of steps.
     let width = match args.format {
         RunFormat::Text => super::text_width(args.width),
@@ -69,7 +75,7 @@ pub fn simulate(
         match sim.advance() {
             Ok(report) => {
                 trace.add_events(&report);
-                if n % args.every == 0 || n == steps {
+                if n % every == 0 || n == steps {
                     w.frame(&mut trace, &RunTrace::frame(&sim, &report))
                         .map_err(io)?;
                 }

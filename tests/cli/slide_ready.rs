@@ -71,6 +71,8 @@ fn simulate_prints_a_summary_and_the_table_on_request() {
         assert!(summary.contains(part), "no {part:?} in:\n{summary}");
     }
     assert!(widest(&summary) <= 100);
+    // The summary reads every step: `--every` thins the table only.
+    assert_eq!(summary, stdout(&["simulate", "stack-5", "--every", "100"]));
     let table = stdout(&["simulate", "stack-5", "--table"]);
     let rows = table
         .lines()
