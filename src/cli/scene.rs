@@ -70,6 +70,11 @@ pub struct ResolveArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Text: fold lines to N columns (0: never). Default: the terminal's
+    /// width, or 100 when stdout is not a terminal. Markdown and JSON are
+    /// never folded.
+    #[arg(long, value_name = "N")]
+    pub width: Option<usize>,
     /// A contact's and the resolver's knobs, each over the lesson's.
     #[command(flatten)]
     pub knobs: KnobArgs<ResolveLevel>,
@@ -100,6 +105,16 @@ pub struct SimulateArgs {
     /// Significant digits of the text table.
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Text: the full table, one row per recorded step (thinned by
+    /// `--every`), with the events between the rows. Without it the text
+    /// is a summary: energy, penetration, iterations, events, final state.
+    #[arg(long)]
+    pub table: bool,
+    /// Text: fold lines to N columns (0: never). Default: the terminal's
+    /// width, or 100 when stdout is not a terminal. Markdown and JSON are
+    /// never folded.
+    #[arg(long, value_name = "N")]
+    pub width: Option<usize>,
     /// The plane of the film strip (svg).
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,

@@ -11,7 +11,7 @@ use crate::format::Fmt;
 use crate::lesson::{embedded, Lesson};
 use crate::render;
 
-pub fn errata(args: &ErrataArgs, out: &mut dyn Write) -> Result<(), AppError> {
+pub fn errata(args: &ErrataArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     let names: Vec<std::ffi::OsString> = if args.lessons.is_empty() {
         embedded::ids().into_iter().map(Into::into).collect()
     } else {
@@ -21,6 +21,7 @@ pub fn errata(args: &ErrataArgs, out: &mut dyn Write) -> Result<(), AppError> {
     let mut items = Vec::new();
     for name in &names {
         let lesson = Lesson::load(name)?;
+        super::warn(&lesson, err);
         let traces: Vec<_> = (0..lesson.contacts.len())
             .map(|k| crate::worked_solution(&lesson, k))
             .collect();

@@ -42,7 +42,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::Simulate(args)) => simulate::simulate(&args, out, err),
         Some(Command::Study(args)) => study::study(&args, out, err),
         Some(Command::Advise(args)) => advise::advise(&args, out, err),
-        Some(Command::Errata(args)) => errata::errata(&args, out),
+        Some(Command::Errata(args)) => errata::errata(&args, out, err),
         Some(Command::Exercise(args)) => exercise::exercise(&args, out),
         Some(Command::Glossary(args)) => {
             use crate::cli::Format;
@@ -56,6 +56,19 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
             out.write_all(text.as_bytes()).map_err(io)
         }
     }
+}
+
+/// The width plain text is folded to: `--width` when given (0: never),
+/// else the terminal's, else [`DEFAULT_WIDTH`](crate::render::wrap::DEFAULT_WIDTH).
+pub(crate) fn text_width(asked: Option<usize>) -> usize {
+    use std::io::IsTerminal;
+    asked.unwrap_or_else(|| {
+        let terminal = std::io::stdout()
+            .is_terminal()
+            .then(|| crossterm::terminal::size().ok())
+            .flatten();
+        terminal.map_or(crate::render::wrap::DEFAULT_WIDTH, |(w, _)| usize::from(w))
+    })
 }
 
 /// Both stdin and stdout are a terminal, so the TUI can run.
@@ -124,6 +137,10 @@ pub(crate) fn overrides<L: Levels>(args: &KnobArgs<L>) -> Result<Overrides, AppE
 /// Lesson warnings go to stderr, once each.
 pub(crate) fn warn(lesson: &Lesson, err: &mut dyn Write) {
     for w in &lesson.warnings {
+        let _ = writeln!(err, "warning: {w}");
+    }
+    let zeros = crate::errata::zero_warnings(lesson, |k| crate::worked_solution(lesson, k));
+    for w in zeros {
         let _ = writeln!(err, "warning: {w}");
     }
 }

@@ -109,7 +109,10 @@ pub fn resolve(
         }
         ResolveFormat::Text => {
             let trace = crate::trace::resolver::describe(&lesson, &params, implementation, true);
-            resolve::text::render(&trace, &fmt)
+            crate::render::wrap::wrap(
+                &resolve::text::render(&trace, &fmt),
+                super::text_width(args.width),
+            )
         }
         ResolveFormat::Md => {
             let trace = crate::trace::resolver::describe(&lesson, &params, implementation, true);

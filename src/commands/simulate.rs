@@ -52,18 +52,30 @@ pub fn simulate(
     let mut trace = RunTrace::new(&lesson.id, &lesson.title, names, &sim);
     let kind = match args.format {
         RunFormat::Svg => return film(&lesson, args, sim, steps, trace, out),
-        RunFormat::Text => Streamed::Text(Fmt::new(args.digits as usize)),
+        RunFormat::Text if args.table => Streamed::Text(Fmt::new(args.digits as usize)),
+        RunFormat::Text => Streamed::Summary(Fmt::new(args.digits as usize), Box::default()),
         RunFormat::Json => Streamed::Json,
     };
+    // The summary folds in every step (its extremes are the run's, not a
+    // sample's); `--every` thins the table and the JSON.
+    let every = match kind {
+        Streamed::Summary(..) => 1,
+        _ => args.every,
+    };
     // Written as computed: memory stays flat in the number of steps.
-    let buffered = std::io::BufWriter::with_capacity(1 << 16, out);
+    let width = match args.format {
+        RunFormat::Text => super::text_width(args.width),
+        _ => 0,
+    };
+    let folded = crate::render::wrap::WrapWriter::new(out, width);
+    let buffered = std::io::BufWriter::with_capacity(1 << 16, folded);
     let mut w = RunWriter::begin(buffered, kind, &trace).map_err(io)?;
     w.frame(&mut trace, &RunTrace::initial(&sim)).map_err(io)?;
     for n in 1..=steps {
         match sim.advance() {
             Ok(report) => {
                 trace.add_events(&report);
-                if n % args.every == 0 || n == steps {
+                if n % every == 0 || n == steps {
                     w.frame(&mut trace, &RunTrace::frame(&sim, &report))
                         .map_err(io)?;
                 }
@@ -165,7 +177,10 @@ fn trace_step(
                 fmt.num(step.time),
                 step.world.contacts.len()
             );
-            head + &crate::render::resolve::text::render(&step.resolver, &fmt)
+            crate::render::wrap::wrap(
+                &(head + &crate::render::resolve::text::render(&step.resolver, &fmt)),
+                super::text_width(args.width),
+            )
         }
         RunFormat::Json => crate::render::resolve::json::render(
             &step.resolver,

@@ -45,6 +45,9 @@ pub struct Item {
     pub contact: usize,
     pub stage: String,
     pub value: String,
+    /// What the worked solution calls the value (`Δv` for `desired`), the
+    /// key itself when nothing names it.
+    pub label: String,
     pub component: Option<usize>,
     pub location: String,
     pub printed: PrintedShape,
@@ -73,6 +76,10 @@ fn computed(trace: Option<&Trace>, p: &Printed) -> Option<Value> {
 /// Compares one printed entry with the traces of its lesson (one per contact).
 pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
     let computed = computed(traces.get(p.contact), p);
+    let label = traces
+        .get(p.contact)
+        .and_then(|t| t.symbol(&p.stage, &p.value))
+        .unwrap_or_else(|| p.value.clone());
     let agrees = computed
         .as_ref()
         .is_some_and(|c| agrees(&p.printed.numbers(), &c.numbers()));
@@ -88,6 +95,7 @@ pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
         contact: p.contact,
         stage: p.stage.clone(),
         value: p.value.clone(),
+        label,
         component: p.component,
         location: p.location.clone(),
         printed: p.printed.clone(),
@@ -105,6 +113,44 @@ pub fn lesson(lesson: &Lesson, traces: &[Trace]) -> Vec<Item> {
         .iter()
         .map(|p| item(lesson, traces, p))
         .collect()
+}
+
+/// The load warnings of printed values that are all zeros where the
+/// computed value is not (a printed `0` agrees with anything below 2, so
+/// the comparison proves little): `path:line:column: …`, one per entry
+/// not marked `deliberate = ["printed-zero"]`. `trace` gives contact k's
+/// worked solution, asked only for the contacts such entries name.
+pub fn zero_warnings(lesson: &Lesson, mut trace: impl FnMut(usize) -> Trace) -> Vec<String> {
+    let mut traces: Vec<(usize, Trace)> = Vec::new();
+    let mut out = Vec::new();
+    for p in &lesson.printed {
+        let Some((line, column)) = p.zero_at else {
+            continue;
+        };
+        if !traces.iter().any(|(k, _)| *k == p.contact) {
+            traces.push((p.contact, trace(p.contact)));
+        }
+        let t = traces.iter().find(|(k, _)| *k == p.contact).map(|(_, t)| t);
+        let Some(c) = computed(t, p) else {
+            continue;
+        };
+        if c.numbers().iter().any(|x| x.abs() > 1e-9) {
+            let f = crate::format::Fmt::default();
+            let shown = match &c {
+                Value::Scalar(x) => f.num(*x),
+                other => format!("({})", f.list(&other.numbers())),
+            };
+            let printed = match &p.printed {
+                PrintedShape::Scalar(_) => "0".to_string(),
+                other => format!("({})", vec!["0"; other.numbers().len()].join(", ")),
+            };
+            out.push(format!(
+                "{}:{line}:{column}: printed {printed} for {}.{} ({}) is compared with the computed {shown}, which is not zero: a printed zero agrees with any small value, so the check proves little. Print the decimals the lecture shows, or mark the entry `deliberate = [\"printed-zero\"]`",
+                lesson.origin, p.stage, p.value, p.location
+            ));
+        }
+    }
+    out
 }
 
 /// Counts of each status, in the order of [`Status`].

@@ -4,6 +4,7 @@
 //! and every check of the solution passes.
 
 pub mod answer;
+pub mod asked;
 pub mod grade;
 pub mod rng;
 pub mod setup;

@@ -9,12 +9,12 @@ pub use figure::{figure_svg, MdFigures};
 
 use std::fmt::Write;
 
-use super::{Exercise, Kind};
+use super::Exercise;
 use crate::format::Fmt;
 use crate::lesson::{BodyDef, Lesson, Shape};
 use crate::render::contact::{latex, markdown};
 use crate::render::tex::prose;
-use crate::trace::{Trace, Value};
+use crate::trace::Value;
 
 const INTRO: &str = "Resolve each contact as in the lecture (Millington's impulse-based method). The normal d̂ points from body 2 toward body 1; body 1 receives the impulse g and body 2 receives -g. Inertia tensors are in body coordinates; orientations are quaternions [w, x, y, z]. Work to four decimals.";
 
@@ -26,138 +26,13 @@ pub struct Request {
 }
 
 fn questions(e: &Exercise) -> Vec<&'static str> {
-    let closing = e.solution.closing();
-    match e.kind {
-        Kind::Frictionless => vec![
-            "Find the contact velocity v_c, the separating velocity v_s and the desired change in velocity Δv.",
-            "Find the velocity change per unit impulse along the normal, Δq̇_t.",
-            "Find the impulse g, in contact and in world coordinates.",
-            "Find each movable body's velocity v′ and angular velocity ω′ after the impulse.",
-        ],
-        Kind::StaticFriction | Kind::DynamicFriction => vec![
-            "Find the contact velocity v_c, the separating velocity v_s and the desired change in velocity Δv.",
-            "Build the matrix M of velocity change per unit impulse in contact coordinates (M₀₀ = Δq̇_t).",
-            "Find the impulse that stops all sliding, and decide whether static friction can supply it: does the contact stick or slide?",
-            "Find the impulse in world coordinates and each movable body's v′ and ω′ after it.",
-        ],
-        Kind::Penetration => {
-            let mut q = vec![
-                "Find each movable body's linear and angular inertia along the normal, and the total inertia I_t.",
-                "Share the penetration d_pen: find each body's linear move Δ_l and angular move Δ_a.",
-                "Find the new positions, the rotation Δθ of each body, and the updated, normalised orientation quaternions.",
-            ];
-            if closing {
-                q.push("The bodies are also closing: find the impulse g and the velocities v′ and ω′ after it.");
-            }
-            q
-        }
-    }
-}
-
-/// One short answer: the key a student's answer file uses, the label on the
-/// sheet, and where the trace has it.
-pub struct ShortAnswer<'a> {
-    pub key: &'static str,
-    pub label: &'static str,
-    pub step: &'a crate::trace::Step,
-    pub name: &'static str,
-    pub value: &'a Value,
-}
-
-/// The short answers of an exercise, where the trace has them.
-pub fn short_answers(kind: Kind, t: &Trace) -> Vec<ShortAnswer<'_>> {
-    type Want = (&'static str, &'static str, &'static str, &'static str);
-    let mut wanted: Vec<Want> = Vec::new();
-    let velocities: [Want; 4] = [
-        ("v1", "v₁′", "apply_impulse", "v1"),
-        ("w1", "ω₁′", "apply_impulse", "w1"),
-        ("v2", "v₂′", "apply_impulse", "v2"),
-        ("w2", "ω₂′", "apply_impulse", "w2"),
-    ];
-    let impulse: [Want; 3] = [
-        (
-            "v_s",
-            "v_s",
-            "desired_delta_velocity",
-            "separating_velocity",
-        ),
-        ("dv", "Δv", "desired_delta_velocity", "desired"),
-        ("dq_t", "Δq̇_t", "unit_impulse", "total"),
-    ];
-    match kind {
-        Kind::Frictionless => {
-            wanted.extend(impulse);
-            wanted.push(("g_world", "g_world", "impulse", "impulse_world"));
-            wanted.extend(velocities);
-        }
-        Kind::StaticFriction | Kind::DynamicFriction => {
-            wanted.extend(impulse);
-            wanted.extend([
-                (
-                    "g_sticking",
-                    "sticking impulse g_contact",
-                    "impulse",
-                    "impulse_contact",
-                ),
-                ("g_planar", "|g_planar|", "friction_clamp", "planar"),
-                ("g_max", "g_max = μ_s g_x", "friction_clamp", "limit"),
-                (
-                    "regime",
-                    "regime (static or dynamic)",
-                    "friction_clamp",
-                    "regime",
-                ),
-                ("g_world", "g_world", "friction_clamp", "impulse_world"),
-            ]);
-            wanted.extend(velocities);
-        }
-        Kind::Penetration => {
-            let p = "nonlinear_projection";
-            wanted.extend([
-                ("I_l1", "I_l₁", p, "linear_inertia1"),
-                ("I_a1", "I_a₁", p, "angular_inertia1"),
-                ("I_l2", "I_l₂", p, "linear_inertia2"),
-                ("I_a2", "I_a₂", p, "angular_inertia2"),
-                ("I_t", "I_t", p, "total_inertia"),
-                ("move_l1", "Δ_l₁", p, "linear_move1"),
-                ("move_a1", "Δ_a₁", p, "angular_move1"),
-                ("move_l2", "Δ_l₂", p, "linear_move2"),
-                ("move_a2", "Δ_a₂", p, "angular_move2"),
-                ("p1", "p₁′", p, "position1"),
-                ("p2", "p₂′", p, "position2"),
-                ("turn1", "Δθ₁", p, "angular_change1"),
-                ("turn2", "Δθ₂", p, "angular_change2"),
-                (
-                    "theta1",
-                    "θ₁′ / |θ₁′|",
-                    "orientation_update",
-                    "orientation1",
-                ),
-                (
-                    "theta2",
-                    "θ₂′ / |θ₂′|",
-                    "orientation_update",
-                    "orientation2",
-                ),
-                ("g_world", "g_world", "impulse", "impulse_world"),
-            ]);
-            wanted.extend(velocities);
-        }
-    }
-    wanted
-        .into_iter()
-        .filter_map(|(key, label, stage, name)| {
-            let step = t.stage(stage).filter(|s| s.skipped.is_none())?;
-            Some(ShortAnswer {
-                key,
-                label,
-                step,
-                name,
-                value: step.value(name)?,
-            })
-        })
+    super::asked::questions(e.kind, &e.trace)
+        .iter()
+        .map(|q| q.text)
         .collect()
 }
+
+pub use super::asked::{short_answers, ShortAnswer};
 
 /// The sheet asks for four decimals: the answer key gives exactly that.
 pub const DECIMALS: u32 = 4;

@@ -50,6 +50,10 @@ pub struct Printed {
     pub printed: PrintedShape,
     pub location: String,
     pub erratum: Option<String>,
+    /// Where (line, column) a printed value that is all zeros stands, unless
+    /// the entry marks it `deliberate = ["printed-zero"]`: `check` and the
+    /// commands warn when the computed value there is not zero.
+    pub zero_at: Option<(usize, usize)>,
 }
 
 /// Decimals a number was written with (`1.25` → 2, `1.5e-3` → 4).
@@ -141,6 +145,7 @@ impl Printed {
                 .erratum
                 .as_ref()
                 .map(|e| super::ascii_minus(e.get_ref())),
+            zero_at: None,
         })
     }
 }

@@ -122,6 +122,9 @@ pub struct RawContact {
     /// A knob of the contact's own (`physics::knobs`, table `[[contact]]`).
     pub friction_model: Option<S<toml::Value>>,
     pub settings: Option<KnobTable>,
+    /// Load warnings the lesson means (`"normal-into-body"`,
+    /// `"point-inside-body"`): not shown.
+    pub deliberate: Option<S<Vec<S<String>>>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -136,6 +139,8 @@ pub struct RawPrinted {
     #[serde(rename = "where")]
     pub location: S<String>,
     pub erratum: Option<S<String>>,
+    /// Load warnings the lesson means (`"printed-zero"`): not shown.
+    pub deliberate: Option<S<Vec<S<String>>>>,
 }
 
 /// A printed number keeps its text where given as a string (`"0.10"`), so its

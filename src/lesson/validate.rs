@@ -4,6 +4,7 @@
 mod body;
 mod figure;
 mod knobs;
+mod plausible;
 mod printed;
 mod simulation;
 
@@ -96,6 +97,9 @@ pub fn parse(origin: &str, text: &str) -> Result<Lesson, LessonError> {
     if v.errors.is_empty() {
         let mut lesson = lesson;
         lesson.warnings = LessonDiagnostic::resolve(origin, text, v.warnings);
+        for (i, span) in v.printed_zero {
+            lesson.printed[i].zero_at = Some(super::source::line_column(text, span.start));
+        }
         Ok(lesson)
     } else {
         Err(invalid(origin, text, v.errors))
@@ -108,6 +112,9 @@ struct Validator {
     warnings: Vec<Note>,
     /// Where each contact's `bodies` is, for errors about a whole contact.
     contact_spans: Vec<std::ops::Range<usize>>,
+    /// Printed values that are all zeros, by index into the lesson's
+    /// printed entries: where they stand.
+    printed_zero: Vec<(usize, std::ops::Range<usize>)>,
 }
 
 fn v3(a: [f64; 3]) -> Vector3<f64> {
@@ -217,13 +224,21 @@ impl Validator {
         let contacts = raw
             .contacts
             .iter()
-            .map(|c| self.contact(c, (&index, &raw.bodies), &bodies, defaults))
+            .map(|c| {
+                let def = self.contact(c, (&index, &raw.bodies), &bodies, defaults);
+                self.plausible_contact(c, &def, &bodies);
+                def
+            })
             .collect();
-        let printed = raw
-            .printed
-            .iter()
-            .filter_map(|p| self.printed(p, raw.contacts.len()))
-            .collect();
+        let mut printed = Vec::new();
+        for p in &raw.printed {
+            if let Some(entry) = self.printed(p, raw.contacts.len()) {
+                if let Some(span) = self.printed_zero(p) {
+                    self.printed_zero.push((printed.len(), span));
+                }
+                printed.push(entry);
+            }
+        }
         let figure = raw.figure.as_ref().map(|f| self.figure(f, &index));
         Lesson {
             id: raw.id.into_inner(),

@@ -9,6 +9,7 @@ use serde_json::{json, Value as J};
 use crate::errata::{Item, Status, Tally};
 use crate::format::Fmt;
 use crate::lesson::printed::{PrintedNum, PrintedShape};
+use crate::trace::symbols::stage_words;
 use crate::trace::Value;
 
 /// The printed numbers as printed (their decimals kept), bracketed like the
@@ -50,13 +51,22 @@ fn mark(s: Status) -> &'static str {
     }
 }
 
+/// The row's name as the lecture writes it, with its stage: `Δv (stage 3,
+/// desired Δv)`, `g_contact[0] (stage 4, impulse, contact 1)`. The internal
+/// key (`desired_delta_velocity.desired`) stays in the JSON.
 fn name(i: &Item) -> String {
-    let mut s = format!("{}.{}", i.stage, i.value);
+    let mut s = i.label.clone();
     if let Some(c) = i.component {
         let _ = write!(s, "[{c}]");
     }
-    if i.contact > 0 {
-        let _ = write!(s, " (contact {})", i.contact);
+    let stage = stage_words(&i.stage).unwrap_or_else(|| i.stage.clone());
+    match i.contact {
+        0 => {
+            let _ = write!(s, " ({stage})");
+        }
+        k => {
+            let _ = write!(s, " ({stage}, contact {k})");
+        }
     }
     s
 }
@@ -163,6 +173,7 @@ pub fn json(items: &[Item]) -> String {
                 "contact": i.contact,
                 "stage": i.stage,
                 "value": i.value,
+                "label": i.label,
                 "component": i.component,
                 "where": i.location,
                 "printed": printed_json(&i.printed),

@@ -10,6 +10,8 @@ pub mod knobs;
 pub mod resolve;
 pub mod run;
 pub mod run_stream;
+pub mod run_summary;
 pub mod study;
 pub mod svg;
 pub mod tex;
+pub mod wrap;

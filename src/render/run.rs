@@ -145,6 +145,7 @@ pub fn svg(run: &RunTrace, plane: Plane) -> String {
         run.frames.last().map_or(0, |f| f.step)
     );
     film_strip(&mut out, run, plane);
+    film_legend(&mut out);
     let t = |f: &Frame| f.time;
     let series = |name: &str, i: usize, get: &dyn Fn(&Frame) -> f64, mark: Mark| Series {
         name: name.into(),
@@ -213,6 +214,38 @@ pub fn film_picks(frames: usize) -> Vec<usize> {
             }
         })
         .collect()
+}
+
+/// What the film strip's outlines mean, on the title's line at the right:
+/// a filled box per kind of body (awake, asleep with a dashed outline,
+/// immovable) and the contact point's dot.
+fn film_legend(out: &mut String) {
+    let entries = [
+        ("#DCE9F5", "", "awake"),
+        ("#EEEEEE", r#" stroke-dasharray="4 3""#, "asleep (dashed)"),
+        ("#DDDDDD", "", "immovable"),
+    ];
+    let y = 50.0;
+    let mut x = WIDTH - 560.0;
+    let _ = writeln!(out, r#"<g class="legend" font-size="13">"#);
+    for (fill, dash, label) in entries {
+        let _ = writeln!(
+            out,
+            r##"<rect x="{x:.1}" y="{y:.1}" width="18" height="14" fill="{fill}" stroke="#222222"{dash}/><text x="{:.1}" y="{:.1}">{label}</text>"##,
+            x + 24.0,
+            y + 12.0
+        );
+        x += 24.0 + 8.0 * label.len() as f64 + 20.0;
+    }
+    let _ = writeln!(
+        out,
+        r##"<circle cx="{:.1}" cy="{:.1}" r="4" fill="#D55E00"/><text x="{:.1}" y="{:.1}">contact point</text>"##,
+        x + 6.0,
+        y + 7.0,
+        x + 16.0,
+        y + 12.0
+    );
+    out.push_str("</g>\n");
 }
 
 /// Six panels of the scene, the same scale in each.

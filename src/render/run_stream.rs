@@ -10,14 +10,19 @@ use std::io::{self, Write};
 use serde_json::Value as J;
 
 use super::run::{event_line, frame_json, frame_row, text_header};
+use super::run_summary::Summary;
 use crate::format::Fmt;
 use crate::trace::run::{Frame, RunTrace};
 
 /// How the run is written.
 #[derive(Debug, Clone)]
 pub enum Streamed {
+    /// The full table (`--table`).
     Text(Fmt),
     Json,
+    /// The summary (`simulate`'s default text): nothing is written until
+    /// the end; the frames are folded in as they come.
+    Summary(Fmt, Box<Summary>),
 }
 
 /// Writes a run to `out` as its frames come.
@@ -38,6 +43,7 @@ impl<W: Write> RunWriter<W> {
         };
         match &w.kind {
             Streamed::Text(fmt) => w.out.write_all(text_header(run, fmt).as_bytes())?,
+            Streamed::Summary(..) => {}
             Streamed::Json => write!(
                 w.out,
                 "{{\n  \"lesson\": {},\n  \"dt\": {},\n  \"steps\": [",
@@ -51,7 +57,8 @@ impl<W: Write> RunWriter<W> {
     /// Writes frame `f`; in text, the events up to it first (and drops
     /// them from `run`: nothing else needs them).
     pub fn frame(&mut self, run: &mut RunTrace, f: &Frame) -> io::Result<()> {
-        match &self.kind {
+        match &mut self.kind {
+            Streamed::Summary(_, summary) => summary.add(f),
             Streamed::Text(fmt) => {
                 let upto = run.events.partition_point(|e| e.step <= f.step);
                 for e in run.events.drain(..upto) {
@@ -73,6 +80,10 @@ impl<W: Write> RunWriter<W> {
     /// Ends the output: the events left and why the run stopped.
     pub fn end(mut self, run: &RunTrace) -> io::Result<W> {
         match &self.kind {
+            Streamed::Summary(fmt, summary) => {
+                self.out
+                    .write_all(summary.text(run, &run.events, fmt).as_bytes())?;
+            }
             Streamed::Text(fmt) => {
                 for e in &run.events {
                     self.out.write_all(event_line(e, fmt).as_bytes())?;

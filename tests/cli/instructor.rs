@@ -1,5 +1,5 @@
-//! Instructor tools: LaTeX that is well formed (and compiles where a TeX
-//! engine is installed), SVG that parses, `check` exit codes, and exercises
+//! Instructor tools: LaTeX that is well formed (that it compiles:
+//! tests/render/latex_compiles.rs), SVG that parses, `check` exit codes, and exercises
 //! that are deterministic, valid lessons, and practise what they say.
 
 use crate::common;
@@ -151,39 +151,6 @@ fn latex_fragment_is_the_body_only() {
     assert!(!text.contains("\\documentclass") && !text.contains("\\begin{document}"));
     assert!(text.contains("\\begin{align*}"));
     latex_structure(&text).unwrap();
-}
-
-fn tex_engine() -> Option<std::path::PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    std::env::split_paths(&path)
-        .map(|dir| dir.join("pdflatex"))
-        .find(|p| p.is_file())
-}
-
-/// Compiles the worked solutions and an exercise sheet with pdflatex, when it
-/// is installed (`apt-get install texlive-latex-base`); otherwise says so and passes.
-#[test]
-fn latex_compiles_with_pdflatex_when_installed() {
-    let Some(pdflatex) = tex_engine() else {
-        println!(
-            "skipping: no pdflatex on PATH (apt-get install texlive-latex-base to run this test)"
-        );
-        return;
-    };
-    let dir = common::scratch("latex");
-    for (i, (name, doc)) in latex_documents().into_iter().enumerate() {
-        let file = format!("doc{i}.tex");
-        std::fs::write(dir.join(&file), &doc).unwrap();
-        let out = std::process::Command::new(&pdflatex)
-            .args(["-interaction=nonstopmode", "-halt-on-error", &file])
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let log = String::from_utf8_lossy(&out.stdout);
-        assert!(out.status.success(), "{name} does not compile:\n{log}");
-        assert!(!log.contains("\n! "), "{name}: TeX error:\n{log}");
-        assert!(dir.join(format!("doc{i}.pdf")).is_file(), "{name}: no PDF");
-    }
 }
 
 fn svg_ok(svg: &str, what: &str) {

@@ -6,6 +6,8 @@
 mod common;
 
 mod advise;
+mod check_rows;
+mod exercise_asks;
 mod exercise_figures;
 mod grading;
 mod instructor;
@@ -16,5 +18,6 @@ mod output_files;
 mod readme;
 mod resolve_cli;
 mod round_off;
+mod slide_ready;
 mod study;
 mod tunnelled;

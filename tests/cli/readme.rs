@@ -137,7 +137,7 @@ fn flat_one(v: &serde_json::Value) -> Vec<f64> {
 /// numbers `simulate` prints (it is not flat: the integrator loses energy).
 #[test]
 fn ball_drop_states_its_energy_loss_in_flight() {
-    let out = stdout(&["simulate", "ball-drop", "--seconds", "0.4"]);
+    let out = stdout(&["simulate", "ball-drop", "--seconds", "0.4", "--table"]);
     let energy = |line: &str| line.split_whitespace().nth(7).unwrap().to_string();
     let first = out
         .lines()

@@ -11,4 +11,5 @@ mod finite_outputs;
 mod invalid_lessons;
 mod knobs;
 mod lecture_numbers;
+mod load_warnings;
 mod overflow_fields;

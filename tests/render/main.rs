@@ -16,6 +16,7 @@ mod figure_stages;
 mod figure_strokes;
 mod glossary;
 mod instructor_snapshots;
+mod latex_compiles;
 mod one_minus_sign;
 mod readme_layout;
 mod resolve_snapshots;

@@ -1,7 +1,7 @@
 //! `simulate` of every scene as rounded JSON (every second; every value,
 //! `common::json`), and of the ball drop (the closed-form bounce) also as
-//! the text a reader sees (a row every half second, the events between),
-//! held as snapshots.
+//! the full table a reader sees (`--table`: a row every half second, the
+//! events between), held as snapshots.
 
 use crate::common;
 
@@ -34,7 +34,7 @@ fn simulate_json_of_every_scene_and_text_of_the_ball_drop() {
             if path.file_stem().is_some_and(|s| s == "ball-drop") {
                 insta::assert_snapshot!(
                     "simulate_text",
-                    simulate(path, &["--every", &half_second, "--digits", "5"])
+                    simulate(path, &["--table", "--every", &half_second, "--digits", "5"])
                 );
             }
             insta::assert_snapshot!(

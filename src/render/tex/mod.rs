@@ -51,12 +51,25 @@ pub fn to_latex(s: &str) -> String {
                 j += 1;
             }
             let word: String = chars[i + 1..j].iter().collect();
-            let (run, end) = script_run(&chars, j, subscript);
             let word = if word.chars().count() > 1 {
                 format!("\\mathrm{{{word}}}")
             } else {
                 word
             };
+            // An arrow between two indices is one subscript: M_C→W is
+            // M_{C\to W}, not M_C\to W.
+            let (word, j) = match (chars.get(j), chars.get(j + 1)) {
+                (Some('→'), Some(c)) if !word.is_empty() && c.is_ascii_alphanumeric() => {
+                    let mut k = j + 1;
+                    while k < chars.len() && chars[k].is_ascii_alphanumeric() {
+                        k += 1;
+                    }
+                    let to: String = chars[j + 1..k].iter().collect();
+                    (format!("{word}\\to {to}"), k)
+                }
+                _ => (word, j),
+            };
+            let (run, end) = script_run(&chars, j, subscript);
             let group = match (word.is_empty(), run.is_empty()) {
                 (false, true) => word,
                 (true, false) => run,

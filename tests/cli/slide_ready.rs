@@ -1,0 +1,110 @@
+//! Slide-ready text (issue 28, item 2): plain text folds to a width (100
+//! columns when stdout is not a terminal, `--width N`, `--width 0` never),
+//! Markdown tables are never folded, `simulate` prints a summary unless
+//! asked for `--table`, and the film strip explains its outlines.
+
+use assert_cmd::Command;
+
+fn stdout(args: &[&str]) -> String {
+    let out = Command::cargo_bin("contact-lab")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "contact-lab {args:?}");
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn widest(text: &str) -> usize {
+    text.lines().map(|l| l.chars().count()).max().unwrap_or(0)
+}
+
+#[test]
+fn resolve_text_folds_to_100_columns_when_piped_and_to_width() {
+    let folded = stdout(&["resolve", "box-stack"]);
+    assert!(widest(&folded) <= 100, "{} columns", widest(&folded));
+    let narrow = stdout(&["resolve", "box-stack", "--width", "60"]);
+    assert!(widest(&narrow) <= 60, "{} columns", widest(&narrow));
+    let whole = stdout(&["resolve", "box-stack", "--width", "0"]);
+    assert!(widest(&whole) > 500, "{} columns", widest(&whole));
+    // Folding moves line breaks only.
+    let words = |t: &str| t.split_whitespace().map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(words(&folded), words(&whole));
+    assert_eq!(words(&narrow), words(&whole));
+    // A continuation hangs under the iteration's text, not at the margin.
+    let p0 = folded
+        .lines()
+        .position(|l| l.starts_with("   p0 "))
+        .unwrap();
+    let next = folded.lines().nth(p0 + 1).unwrap();
+    assert!(
+        next.starts_with("         ") && !next.starts_with("          "),
+        "{next:?}"
+    );
+}
+
+#[test]
+fn markdown_tables_are_never_folded() {
+    let md = stdout(&["resolve", "box-stack", "--format", "md"]);
+    assert_eq!(
+        md,
+        stdout(&["resolve", "box-stack", "--format", "md", "--width", "40"])
+    );
+    assert!(md
+        .lines()
+        .any(|l| l.starts_with('|') && l.chars().count() > 40));
+}
+
+#[test]
+fn simulate_prints_a_summary_and_the_table_on_request() {
+    let summary = stdout(&["simulate", "stack-5"]);
+    assert!(summary.lines().count() < 80, "{summary}");
+    for part in [
+        "600 steps of dt = 0.0166667 s (10 s), 6 bodies (5 movable)",
+        "energy (J)           122.625 at t = 0 s → ",
+        "deepest penetration  ",
+        "events: ",
+        "final state (t = 10 s):",
+        "   box5: position (",
+        "--table",
+    ] {
+        assert!(summary.contains(part), "no {part:?} in:\n{summary}");
+    }
+    assert!(widest(&summary) <= 100);
+    // The summary reads every step: `--every` thins the table only.
+    assert_eq!(summary, stdout(&["simulate", "stack-5", "--every", "100"]));
+    let table = stdout(&["simulate", "stack-5", "--table"]);
+    let rows = table
+        .lines()
+        .filter(|l| {
+            l.split_whitespace()
+                .next()
+                .is_some_and(|w| w.parse::<u64>().is_ok())
+        })
+        .count();
+    assert_eq!(rows, 601, "a row for step 0 and each of 600 steps");
+    let json = |extra: &[&str]| {
+        let mut args = vec![
+            "simulate",
+            "ball-drop",
+            "--format",
+            "json",
+            "--every",
+            "500",
+        ];
+        args.extend_from_slice(extra);
+        stdout(&args)
+    };
+    assert_eq!(json(&[]), json(&["--table", "--width", "20"]));
+}
+
+#[test]
+fn the_film_strip_has_a_legend_for_its_dashed_boxes() {
+    let svg = stdout(&["simulate", "stack-5", "--format", "svg"]);
+    let legend = svg.split(r#"<g class="legend""#).nth(1).expect("a legend");
+    let legend = legend.split("</g>").next().unwrap();
+    for label in ["awake", "asleep (dashed)", "immovable", "contact point"] {
+        assert!(legend.contains(label), "no {label:?} in the legend");
+    }
+    assert!(legend.contains(r#"stroke-dasharray="4 3""#));
+}
