@@ -412,7 +412,7 @@ impl App {
             Symbols => self.symbols = !self.symbols,
             Write => {
                 self.mode = Mode::Write {
-                    input: write::default_name(&self.trace),
+                    input: write::Context::of(self).file_name(),
                     error: None,
                 }
             }

@@ -17,6 +17,7 @@ pub mod theme;
 pub mod ui;
 pub mod wrap;
 pub mod write;
+mod write_context;
 
 use std::ffi::OsStr;
 

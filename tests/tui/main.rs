@@ -11,3 +11,4 @@ mod tui;
 mod tui_scenes;
 mod tui_teaching;
 mod tui_terminal;
+mod tui_write_context;
