@@ -234,6 +234,7 @@ impl App {
     }
 
     pub(super) fn goto_lesson(&mut self, i: usize) {
+        self.cancel_recording();
         self.lesson = i;
         self.score = Score::default();
         self.contact = 0;

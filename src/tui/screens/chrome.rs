@@ -129,6 +129,17 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         .render(area, buf);
         return;
     }
+    if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
+        if run.recording.is_some() {
+            let text = super::nav::recording(run);
+            Paragraph::new(Line::styled(
+                truncate(&format!(" {text}"), area.width as usize),
+                t.info(),
+            ))
+            .render(area, buf);
+            return;
+        }
+    }
     let keys: &[(&str, &str)] = match (app.mode == Mode::Help, app.screen) {
         (true, _) => &[
             ("?", "glossary"),
