@@ -6,6 +6,7 @@
 mod common;
 
 mod advise;
+mod advise_per_step;
 mod exercise_figures;
 mod grading;
 mod instructor;
