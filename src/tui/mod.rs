@@ -10,6 +10,7 @@ pub mod form;
 pub mod keys;
 mod lists;
 mod overlay;
+pub mod picker;
 pub mod scene;
 pub mod screens;
 mod stage;

@@ -41,6 +41,11 @@ fn w_from_stack_5_step_90_velocity_iteration_0_names_the_place_and_the_command_r
     };
     key(&mut a, KeyCode::Enter);
     assert_eq!(a.contact, 13);
+    // Issue 28 item 5: a narrow header keeps the scene's name (the middle
+    // levels give way), not just "…".
+    let crumb = contact_lab::tui::screens::breadcrumb_fit(&a, 50);
+    assert!(crumb.starts_with("stack-5 › … › "), "{crumb}");
+    assert!(crumb.ends_with("contact 13 › overview"), "{crumb}");
     key(&mut a, KeyCode::Char('w'));
     let Mode::Write { input, .. } = &a.mode else {
         panic!("w asks for a file name")

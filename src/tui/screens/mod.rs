@@ -134,6 +134,10 @@ pub enum Key {
     Plane,
     NextLesson,
     PrevLesson,
+    /// `/`: the lesson picker.
+    PickLesson,
+    NextGroup,
+    PrevGroup,
     LineDown,
     LineUp,
     Help,
@@ -168,11 +172,14 @@ macro_rules! tail_rows {
                 ],
             },
             Binding {
-                label: "] / [",
-                help: "next / previous lesson",
+                label: "] [ } { /",
+                help: "next / previous lesson, group; / finds a lesson",
                 keys: &[
                     (C::Char(']'), Key::NextLesson),
                     (C::Char('['), Key::PrevLesson),
+                    (C::Char('}'), Key::NextGroup),
+                    (C::Char('{'), Key::PrevGroup),
+                    (C::Char('/'), Key::PickLesson),
                 ],
             },
             Binding {

@@ -186,6 +186,9 @@ impl App {
                 let n = self.lessons.len();
                 self.goto_lesson((self.lesson + n - 1) % n)
             }
+            Key::PickLesson => self.open_picker(),
+            Key::NextGroup => self.jump_group(true),
+            Key::PrevGroup => self.jump_group(false),
             Key::LineDown => self.wheel(false),
             Key::LineUp => self.wheel(true),
             _ if self.screen == Screen::Run => self.run_key(action),

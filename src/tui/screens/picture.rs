@@ -68,6 +68,46 @@ fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
     if b[0] > b[1] {
         return [-1.0, 1.0, -1.0, 1.0];
     }
+    // A half-space in view too (a ball dropped from high above its floor,
+    // up to 10 times the bodies' extent away):
+    // the point of its line nearest the bodies, and a little of its solid
+    // side for the hatching.
+    let c = [(b[0] + b[1]) / 2.0, (b[2] + b[3]) / 2.0];
+    let size = (b[1] - b[0]).max(b[3] - b[2]).max(1e-9);
+    for v in bodies {
+        let Some(Shape::HalfSpace { normal }) = v.shape else {
+            continue;
+        };
+        let n = flat(plane, normal);
+        let len = n[0].hypot(n[1]);
+        if !(len > 1e-9) {
+            continue;
+        }
+        let n = [n[0] / len, n[1] / len];
+        let q = flat(plane, v.position);
+        let d = (c[0] - q[0]) * n[0] + (c[1] - q[1]) * n[1];
+        // Not one so far away that the bodies would shrink to dots.
+        if !(d.abs() <= 10.0 * size) {
+            continue;
+        }
+        let p = [c[0] - d * n[0], c[1] - d * n[1]];
+        // Already in view (a stack standing on its floor): nothing to add.
+        let tol = 1e-6 * size;
+        if p[0] >= b[0] - tol && p[0] <= b[1] + tol && p[1] >= b[2] - tol && p[1] <= b[3] + tol {
+            continue;
+        }
+        let below = [p[0] - 0.05 * size * n[0], p[1] - 0.05 * size * n[1]];
+        for p in [p, below] {
+            if p[0].is_finite() && p[1].is_finite() {
+                b = [
+                    b[0].min(p[0]),
+                    b[1].max(p[0]),
+                    b[2].min(p[1]),
+                    b[3].max(p[1]),
+                ];
+            }
+        }
+    }
     b
 }
 
