@@ -80,14 +80,14 @@ fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
         };
         let n = flat(plane, normal);
         let len = n[0].hypot(n[1]);
-        if !(len > 1e-9) {
+        if len.is_nan() || len <= 1e-9 {
             continue;
         }
         let n = [n[0] / len, n[1] / len];
         let q = flat(plane, v.position);
         let d = (c[0] - q[0]) * n[0] + (c[1] - q[1]) * n[1];
         // Not one so far away that the bodies would shrink to dots.
-        if !(d.abs() <= 10.0 * size) {
+        if d.is_nan() || d.abs() > 10.0 * size {
             continue;
         }
         let p = [c[0] - d * n[0], c[1] - d * n[1]];
