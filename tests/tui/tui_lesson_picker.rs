@@ -3,7 +3,7 @@
 //! (lessons, robustness, scenes), Enter opens; `{` `}` jump between groups;
 //! the help lists the keys; and the run picture keeps the floor in view.
 
-use crate::common::tui::{app, draw, key, term, text, type_text};
+use crate::common::tui::{app, draw, key, keys, term, text, type_text};
 use contact_lab::tui::app::Mode;
 use contact_lab::tui::event::KEYS;
 use contact_lab::tui::keys;
@@ -121,4 +121,33 @@ fn ball_drop_at_step_0_shows_the_floor() {
         .filter(|l| l.chars().filter(|c| *c == '⠤').count() > 30)
         .count();
     assert!(floor_row >= 1, "{screen}");
+}
+
+/// Issue 28 item 5: on the resolver screen of stack-5 (contacts numbered at
+/// the boxes' corners, beside the boxes' names) no label is drawn over
+/// another: every body name is whole ("box" and its number), at both sizes.
+#[test]
+fn resolver_labels_do_not_overlap() {
+    for (w, h) in [(100, 30), (80, 24)] {
+        let mut a = app("stack-5", false);
+        keys(&mut a, KeyCode::Right, 90);
+        key(&mut a, KeyCode::Enter);
+        assert_eq!(a.screen, Screen::Resolver);
+        let mut t = term(w, h);
+        draw(&mut t, &a);
+        let screen = text(t.backend().buffer());
+        // The picture is the left half; the table's rows name boxes too.
+        for line in screen.lines() {
+            let picture: String = line.chars().take(usize::from(w) / 2).collect();
+            for (i, _) in picture.match_indices('b') {
+                // "box4" cut by a contact number reads "b14" or "bo12".
+                let rest: Vec<char> = picture[i..].chars().collect();
+                let digit = |k: usize| rest.get(k).is_some_and(|c| c.is_ascii_digit());
+                assert!(
+                    !(digit(1) || (rest.get(1) == Some(&'o') && digit(2))),
+                    "{w}×{h}: a name cut by another label: {line}"
+                );
+            }
+        }
+    }
 }
