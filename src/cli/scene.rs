@@ -187,14 +187,28 @@ pub enum AdviseFormat {
     Json,
 }
 
+/// `advise --per`: what the error target bounds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PerArg {
+    /// The run's final positions (the study's error).
+    Run,
+    /// Every step: the largest, over the steps, of the distance to the
+    /// reference at the same time.
+    Step,
+}
+
 #[derive(Debug, Clone, Args)]
 pub struct AdviseArgs {
     /// A scene id or a lesson file with [world] or [step].
     pub scene: std::ffi::OsString,
     /// The largest error allowed against the scene's reference, m (RMS over
-    /// the movable bodies of the distance between final positions).
+    /// the movable bodies of the distance to the reference's positions: at
+    /// the end with `--per run`, at every step with `--per step`).
     #[arg(long)]
     pub error: f64,
+    /// What the error bounds: the run's final positions, or every step's.
+    #[arg(long, value_enum, default_value_t = PerArg::Run)]
+    pub per: PerArg,
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = AdviseFormat::Text)]
     pub format: AdviseFormat,

@@ -4,12 +4,13 @@
 use std::io::Write;
 
 use super::{io, warn};
-use crate::cli::{AdviseArgs, AdviseFormat};
+use crate::cli::{AdviseArgs, AdviseFormat, PerArg};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Lesson;
 use crate::physics::Solver;
 use crate::render::study::advise as render;
+use crate::study::advise::Per;
 use crate::study::grid::SCENES;
 
 pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
@@ -40,7 +41,12 @@ pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         .seconds
         .unwrap_or_else(|| known.map_or((scene.steps as f64 * scene.dt).min(2.0), |k| k.1));
     let solver = known.map_or(Solver::SequentialImpulse, |k| k.2);
-    let Some(advice) = crate::study::advise::advise(&lesson, seconds, solver, args.error) else {
+    let per = match args.per {
+        PerArg::Run => Per::Run,
+        PerArg::Step => Per::Step,
+    };
+    let Some(advice) = crate::study::advise::advise(&lesson, seconds, solver, args.error, per)
+    else {
         return Err(AppError::Runtime(format!("{} cannot be run", lesson.id)));
     };
     let fmt = Fmt::new(args.digits as usize);

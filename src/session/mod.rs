@@ -12,6 +12,7 @@ use crate::physics::step::{BlowUp, Simulation, StepReport};
 use crate::trace::resolver::Names;
 use crate::trace::run::RunTrace;
 use crate::trace::step::{record_next, StepTrace};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// Steps between two kept copies of the simulation.
@@ -198,6 +199,73 @@ impl Player {
             sim.advance().ok()?;
         }
         Some(sim)
+    }
+
+    /// Whether recording a step's resolution goes to another thread (a large
+    /// scene: [`Player::record_later`]).
+    pub fn records_later(&self) -> bool {
+        self.heavy()
+    }
+
+    /// [`Player::record`] on another thread: the UI keeps drawing and may
+    /// cancel (the steps from the nearest copy stop at the next step; a step
+    /// under way finishes and its result is dropped). `None` for step 0 or a
+    /// step not computed yet.
+    pub fn record_later(&self, step: u64) -> Option<Recording> {
+        if step == 0 || step > self.computed() {
+            return None;
+        }
+        let (_, from) = self.checkpoints.iter().rev().find(|(s, _)| *s < step)?;
+        let mut sim = from.clone();
+        let names = self.names.clone();
+        let slot: RecordSlot = Arc::new(Mutex::new(None));
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (out, stop) = (Arc::clone(&slot), Arc::clone(&cancel));
+        std::thread::spawn(move || {
+            let mut trace = None;
+            let mut ok = true;
+            while ok && sim.step < step - 1 && !stop.load(Ordering::Relaxed) {
+                ok = sim.advance().is_ok();
+            }
+            if ok && !stop.load(Ordering::Relaxed) {
+                trace = record_next(&mut sim, &names).ok();
+            }
+            if let Ok(mut s) = out.lock() {
+                *s = Some(trace);
+            }
+        });
+        Some(Recording { step, slot, cancel })
+    }
+}
+
+/// A recorded resolution when its thread is done (`None` inside: it could not be recorded).
+type RecordSlot = Arc<Mutex<Option<Option<StepTrace>>>>;
+
+/// A step's resolution being recorded on another thread ([`Player::record_later`]).
+#[derive(Clone)]
+pub struct Recording {
+    /// The step whose resolution is recorded.
+    pub step: u64,
+    slot: RecordSlot,
+    cancel: Arc<AtomicBool>,
+}
+
+impl std::fmt::Debug for Recording {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Recording {{ step: {} }}", self.step)
+    }
+}
+
+impl Recording {
+    /// The outcome once the thread is done (taken: later calls give `None`);
+    /// `Some(None)` when the step could not be recorded (it blew up).
+    pub fn poll(&self) -> Option<Option<StepTrace>> {
+        self.slot.lock().ok()?.take()
+    }
+
+    /// Asks the thread to stop; its result, if any, is dropped.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
     }
 }
 

@@ -39,13 +39,40 @@ pub struct Held {
     pub why: String,
 }
 
+/// What the error target bounds (`advise --per`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Per {
+    /// The run's error: RMS distance of the final positions to the reference's.
+    Run,
+    /// Every step's: the largest, over the run's steps, of the RMS distance
+    /// to the reference at the same time (interpolated between its steps).
+    Step,
+}
+
+impl Per {
+    pub fn name(self) -> &'static str {
+        match self {
+            Per::Run => "run",
+            Per::Step => "step",
+        }
+    }
+
+    /// The error measured, in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Per::Run => "the run's error: RMS over the movable bodies of the distance between final positions",
+            Per::Step => "the per-step error: the largest, over the steps, of the RMS distance to the reference at the same time",
+        }
+    }
+}
+
 /// A configuration measured.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Eval {
     pub config: Config,
     /// Work per simulated second (see the module's head).
     pub cost: f64,
-    /// RMS distance to the reference's final positions, m (NaN: blew up).
+    /// The error against the reference, m (NaN: blew up): [`Per`] says which.
     pub error: f64,
 }
 
@@ -65,6 +92,8 @@ pub struct Advice {
     pub title: String,
     pub seconds: f64,
     pub target: f64,
+    /// What the target bounds.
+    pub per: Per,
     pub reference: String,
     pub reference_cost: f64,
     pub choice: Eval,
@@ -182,6 +211,8 @@ struct Evaluator<'a> {
     lesson: &'a Lesson,
     seconds: f64,
     reference: Vec<nalgebra::Vector3<f64>>,
+    /// The reference's positions at every step, for [`Per::Step`].
+    trajectory: Option<run::Trajectory>,
     /// Each configuration's evaluation, and the cap it was stopped at.
     cache: Vec<(Eval, Option<f64>)>,
     steps: usize,
@@ -203,7 +234,13 @@ impl Evaluator<'_> {
         } else {
             usize::MAX
         };
-        let m = run::measure_capped(self.lesson, config, self.seconds, limit);
+        let m = run::measure_against(
+            self.lesson,
+            config,
+            self.seconds,
+            limit,
+            self.trajectory.as_ref(),
+        );
         self.runs += 1;
         self.steps += m.steps;
         let e = if m.capped {
@@ -218,6 +255,8 @@ impl Evaluator<'_> {
                 cost: cost(&m, self.seconds),
                 error: if m.failure.is_some() {
                     f64::NAN
+                } else if self.trajectory.is_some() {
+                    m.step_error
                 } else {
                     run::rms_distance(&m.positions, &self.reference)
                 },
@@ -272,25 +311,31 @@ fn best_of(
 }
 
 /// Searches `lesson` for the cheapest configuration whose error against
-/// the reference stays at or below `target` (m).
+/// the reference stays at or below `target` (m), the error measured `per`
+/// run or per step.
 pub fn advise(
     lesson: &Lesson,
     seconds: f64,
     reference_solver: crate::physics::Solver,
     target: f64,
+    per: Per,
 ) -> Option<Advice> {
     let default = grid::default_config(lesson)?;
     let reference_config = grid::reference(&default, reference_solver);
     let features = grid::features(lesson);
     let (dims, held) = dimensions(&default, &reference_config, features);
     let (reference_run, exercised) = super::exercised::measure(lesson, &reference_config, seconds);
+    // Per step: the reference run again, its positions kept at every step.
+    let trajectory =
+        (per == Per::Step).then(|| run::trajectory(lesson, &reference_config, seconds));
     let mut ev = Evaluator {
         lesson,
         seconds,
         reference: reference_run.positions.clone(),
+        trajectory,
         cache: Vec::new(),
-        steps: reference_run.steps,
-        runs: 1,
+        steps: reference_run.steps * if per == Per::Step { 2 } else { 1 },
+        runs: if per == Per::Step { 2 } else { 1 },
     };
     let reference_eval = Eval {
         config: reference_config,
@@ -343,6 +388,7 @@ pub fn advise(
         title: lesson.title.clone(),
         seconds,
         target,
+        per,
         reference: grid::describe_reference(&reference_config),
         reference_cost: reference_eval.cost,
         choice,

@@ -13,7 +13,10 @@
 //!   last in file order on ties) has moved across gravity by the end (with no
 //!   gravity: how far it moved);
 //! - the final positions, for the error against the reference (RMS over the
-//!   movable bodies of the distance to the reference's final positions, m).
+//!   movable bodies of the distance to the reference's final positions, m);
+//! - given the reference's [`Trajectory`], the per-step error: the largest,
+//!   over the run's steps, of the RMS distance to the reference at the same
+//!   time (the reference linearly interpolated between its steps).
 
 use std::time::Instant;
 
@@ -40,6 +43,66 @@ pub struct Measured {
     pub failure: Option<String>,
     /// Stopped early: the work (visits + steps) passed the cap it was given.
     pub capped: bool,
+    /// Max over steps of the RMS distance to the reference's trajectory at
+    /// the same time, m (0 when no trajectory was given).
+    pub step_error: f64,
+}
+
+/// A run's movable bodies' positions after every step (index 0: the start),
+/// for the per-step error against it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trajectory {
+    pub dt: f64,
+    pub positions: Vec<Vec<Vector3<f64>>>,
+}
+
+impl Trajectory {
+    /// The positions at time `t`: linear between the two steps around it
+    /// (the last step's beyond the end).
+    pub fn at(&self, t: f64) -> Vec<Vector3<f64>> {
+        let last = self.positions.len().saturating_sub(1);
+        let x = (t / self.dt).max(0.0);
+        let i = (x.floor() as usize).min(last);
+        let j = (i + 1).min(last);
+        let s = (x - i as f64).clamp(0.0, 1.0);
+        // A time within round-off of a step takes that step.
+        if s < 1e-9 || i == j {
+            return self.positions[i].clone();
+        }
+        if s > 1.0 - 1e-9 {
+            return self.positions[j].clone();
+        }
+        self.positions[i]
+            .iter()
+            .zip(&self.positions[j])
+            .map(|(a, b)| a + (b - a) * s)
+            .collect()
+    }
+}
+
+/// The trajectory of `config` over `seconds` (f64).
+pub fn trajectory(lesson: &Lesson, config: &Config, seconds: f64) -> Trajectory {
+    let mut sim = simulation::<f64>(lesson, config);
+    let movable: Vec<usize> = (0..sim.world.bodies.len())
+        .filter(|&i| sim.world.bodies[i].movable)
+        .collect();
+    let at = |sim: &Simulation<f64>| -> Vec<Vector3<f64>> {
+        movable
+            .iter()
+            .map(|&i| sim.world.bodies[i].state.position)
+            .collect()
+    };
+    let mut positions = vec![at(&sim)];
+    for _ in 0..steps(seconds, config.params.dt) {
+        if sim.advance().is_err() {
+            break;
+        }
+        positions.push(at(&sim));
+    }
+    Trajectory {
+        dt: config.params.dt,
+        positions,
+    }
 }
 
 /// The number of steps `seconds` takes at `dt`.
@@ -78,17 +141,28 @@ fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
 /// Runs `config` for `seconds` and measures it.
 pub fn measure(lesson: &Lesson, config: &Config, seconds: f64) -> Measured {
     match config.precision {
-        Precision::F64 => measure_in::<f64>(lesson, config, seconds, usize::MAX, &mut |_| {}),
-        Precision::F32 => measure_in::<f32>(lesson, config, seconds, usize::MAX, &mut |_| {}),
+        Precision::F64 => measure_in::<f64>(lesson, config, seconds, usize::MAX, None, &mut |_| {}),
+        Precision::F32 => measure_in::<f32>(lesson, config, seconds, usize::MAX, None, &mut |_| {}),
     }
 }
 
 /// As [`measure`], stopped as soon as the work (contact visits + steps)
 /// passes `cap`: then `capped` is set and the numbers are partial.
 pub fn measure_capped(lesson: &Lesson, config: &Config, seconds: f64, cap: usize) -> Measured {
+    measure_against(lesson, config, seconds, cap, None)
+}
+
+/// As [`measure_capped`], with the per-step error against `reference` when given.
+pub fn measure_against(
+    lesson: &Lesson,
+    config: &Config,
+    seconds: f64,
+    cap: usize,
+    reference: Option<&Trajectory>,
+) -> Measured {
     match config.precision {
-        Precision::F64 => measure_in::<f64>(lesson, config, seconds, cap, &mut |_| {}),
-        Precision::F32 => measure_in::<f32>(lesson, config, seconds, cap, &mut |_| {}),
+        Precision::F64 => measure_in::<f64>(lesson, config, seconds, cap, reference, &mut |_| {}),
+        Precision::F32 => measure_in::<f32>(lesson, config, seconds, cap, reference, &mut |_| {}),
     }
 }
 
@@ -101,7 +175,7 @@ pub fn measure_watched(
     seconds: f64,
     after_step: &mut dyn FnMut(&Simulation<f64>),
 ) -> Measured {
-    measure_in::<f64>(lesson, config, seconds, usize::MAX, after_step)
+    measure_in::<f64>(lesson, config, seconds, usize::MAX, None, after_step)
 }
 
 fn measure_in<T: Real>(
@@ -109,6 +183,7 @@ fn measure_in<T: Real>(
     config: &Config,
     seconds: f64,
     cap: usize,
+    reference: Option<&Trajectory>,
     after_step: &mut dyn FnMut(&Simulation<T>),
 ) -> Measured {
     let mut sim = simulation::<T>(lesson, config);
@@ -152,6 +227,7 @@ fn measure_in<T: Real>(
         positions: Vec::new(),
         failure: None,
         capped: false,
+        step_error: 0.0,
     };
     let mut visits = 0usize;
     for step in 0..n {
@@ -192,6 +268,12 @@ fn measure_in<T: Real>(
         }
         let e = to_f64(energy::total(&sim.world, &sim.params.world.gravity));
         m.energy_gain = m.energy_gain.max(e - energy0);
+        if let Some(r) = reference {
+            // The step's time as the reference counts it: (step + 1) × dt.
+            let here: Vec<Vector3<f64>> = movable.iter().map(|&i| position(&sim, i)).collect();
+            let there = r.at((step + 1) as f64 * config.params.dt);
+            m.step_error = m.step_error.max(rms_distance(&here, &there));
+        }
     }
     m.visits_per_step = visits as f64 / n as f64;
     let moved = position(&sim, top) - start;
@@ -201,6 +283,7 @@ fn measure_in<T: Real>(
         m.failure
             .get_or_insert_with(|| "a position is not finite".into());
         for x in [
+            &mut m.step_error,
             &mut m.max_penetration,
             &mut m.max_closing_velocity,
             &mut m.energy_gain,

@@ -137,15 +137,13 @@ impl App {
             } else {
                 diff
             };
-            let mark = if g.correct {
-                "✓ right"
-            } else {
-                "✗ outside the tolerance"
-            };
+            // The verdict, the answer and the difference first: the status
+            // line is one row, and what is cut at its end matters least.
+            let mark = if g.correct { "✓ right" } else { "✗ off" };
             format!(
-                "{mark}: {right}; yours {}, difference {}",
-                input.trim(),
-                glossary::with_unit(&diff, unit)
+                "{mark}: {right}, difference {}; yours {}",
+                glossary::with_unit(&diff, unit),
+                input.trim()
             )
         };
         self.score.record(&g);

@@ -48,6 +48,8 @@ pub enum Mode {
     },
     /// The file exists: overwrite it?
     Confirm(PathBuf),
+    /// The lesson picker (`/`): a filter and the lesson under the cursor.
+    Pick(super::picker::Picker),
 }
 
 /// A one-line message in the key bar until the next key.
@@ -234,6 +236,7 @@ impl App {
     }
 
     pub(super) fn goto_lesson(&mut self, i: usize) {
+        self.cancel_recording();
         self.lesson = i;
         self.score = Score::default();
         self.contact = 0;
@@ -323,6 +326,7 @@ impl App {
             Mode::Answer { input, error } => self.answer_key(input, error, key),
             Mode::Edit(form) => self.edit_key(form, key),
             Mode::Write { input, error } => self.write_key(input, error, key),
+            Mode::Pick(p) => self.picker_key(p, key),
             Mode::Confirm(path) => match key.code {
                 KeyCode::Char('y') | KeyCode::Char('Y') => self.write_to(path, true),
                 _ => {
@@ -412,7 +416,7 @@ impl App {
             Symbols => self.symbols = !self.symbols,
             Write => {
                 self.mode = Mode::Write {
-                    input: write::default_name(&self.trace),
+                    input: write::Context::of(self).file_name(),
                     error: None,
                 }
             }
@@ -420,6 +424,9 @@ impl App {
                 self.help_scroll = 0;
                 self.mode = Mode::Help;
             }
+            PickLesson => self.open_picker(),
+            NextGroup => self.jump_group(true),
+            PrevGroup => self.jump_group(false),
             Quit => self.quit = true,
         }
     }

@@ -33,6 +33,11 @@ pub enum Action {
     Zoom,
     Symbols,
     Write,
+    /// `/`: the lesson picker (type to filter, Tab between groups).
+    PickLesson,
+    /// `}` / `{`: the next / previous group's first lesson.
+    NextGroup,
+    PrevGroup,
     Help,
     Quit,
 }
@@ -70,9 +75,15 @@ pub const KEYS: &[Binding<Action>] = &[
         keys: &[(KeyCode::Tab, NextContact), (KeyCode::BackTab, PrevContact)],
     },
     Binding {
-        label: "] / [",
-        help: "next / previous lesson",
-        keys: &[(KeyCode::Char(']'), NextLesson), (KeyCode::Char('['), PrevLesson)],
+        label: "] [ } { /",
+        help: "next / previous lesson, group; / finds a lesson",
+        keys: &[
+            (KeyCode::Char(']'), NextLesson),
+            (KeyCode::Char('['), PrevLesson),
+            (KeyCode::Char('}'), NextGroup),
+            (KeyCode::Char('{'), PrevGroup),
+            (KeyCode::Char('/'), PickLesson),
+        ],
     },
     Binding {
         label: "↓ j / ↑ k",

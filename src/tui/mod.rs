@@ -10,6 +10,7 @@ pub mod form;
 pub mod keys;
 mod lists;
 mod overlay;
+pub mod picker;
 pub mod scene;
 pub mod screens;
 mod stage;
@@ -17,6 +18,7 @@ pub mod theme;
 pub mod ui;
 pub mod wrap;
 pub mod write;
+mod write_context;
 
 use std::ffi::OsStr;
 

@@ -298,6 +298,16 @@ mod tests {
     }
 
     #[test]
+    fn a_spin_arc_grows_with_the_rate() {
+        use super::picture::spin_size;
+        // ω₁ = 0.0136 against ω₁′ = 0.17 rad/s: visibly different arcs.
+        let (slow, fast) = (spin_size(0.0136, 0.17), spin_size(-0.17, 0.17));
+        assert_eq!(fast, 1.0);
+        assert!(slow < 0.36, "{slow}");
+        assert!(spin_size(0.05, 0.17) > slow && spin_size(0.05, 0.17) < fast);
+    }
+
+    #[test]
     fn a_dashed_segment_has_gaps_and_keeps_its_ends() {
         let d = dashes([0.0, 0.0], [10.0, 0.0], 1.0);
         assert_eq!(d.len(), 5);

@@ -76,6 +76,7 @@ impl Widget for &App {
                 overlay::write_prompt(self, input, error.as_deref(), area, buf)
             }
             Mode::Confirm(path) => overlay::confirm(self, path, area, buf),
+            Mode::Pick(p) => super::picker::render(self, p, area, buf),
         }
     }
 }
@@ -166,6 +167,13 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
         Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
+        Mode::Pick(_) => &[
+            ("letters", "filter"),
+            ("↑↓", "move"),
+            ("⇥", "next group"),
+            ("Enter", "open"),
+            ("Esc", "close"),
+        ],
         Mode::Help => &[
             ("?", "glossary"),
             ("j k", "scroll"),
@@ -200,6 +208,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
             ("v", "plane"),
             ("z", "zoom"),
             ("r", "reset"),
+            ("/", "find"),
             ("?", "help"),
             ("q", "quit"),
         ],

@@ -8,19 +8,15 @@ use crate::format::Fmt;
 use crate::render::contact::markdown;
 use crate::trace::Trace;
 
-/// A file name for the trace: `lecture-2-contact-0.md`.
-pub fn default_name(trace: &Trace) -> String {
-    format!(
-        "{}-contact-{}.md",
-        crate::output_file::file_stem(&trace.lesson),
-        trace.contact
-    )
-}
+pub use super::write_context::Context;
 
-/// The Markdown document of `render::contact::markdown` for one contact, with the
-/// edits made in the TUI listed after the lesson's preamble.
-pub fn markdown(trace: &Trace, edits: &[String], fmt: &Fmt) -> String {
+/// The Markdown document of `render::contact::markdown` for one contact:
+/// the lesson's preamble, where in the TUI it was written from (`context`:
+/// scene, time, step, phase, iteration, and the command that reproduces
+/// it), the edits made in the TUI, then the stages.
+pub fn markdown(trace: &Trace, context: &Context, edits: &[String], fmt: &Fmt) -> String {
     let mut out = markdown::preamble(trace, 1);
+    out.push_str(&context.header());
     if !edits.is_empty() {
         out.push_str("Edited in contact-lab (these differ from the lesson file):\n\n");
         for e in edits {
@@ -98,7 +94,12 @@ impl super::app::App {
     }
 
     pub(super) fn write_to(&mut self, path: PathBuf, overwrite: bool) {
-        let text = markdown(&self.trace, &self.entry().edits, &self.fmt);
+        let text = markdown(
+            &self.trace,
+            &Context::of(self),
+            &self.entry().edits,
+            &self.fmt,
+        );
         match write_atomic(&path, &text, overwrite) {
             Ok(()) => self.say(format!("wrote {}", path.display()), false),
             Err(WriteError::Exists(p)) => self.mode = Mode::Confirm(p),

@@ -7,7 +7,7 @@
 
 use contact_lab::lesson::{embedded, validate, Lesson};
 use contact_lab::physics::Solver;
-use contact_lab::study::advise::{advise, dimensions, settings_snippet, Advice};
+use contact_lab::study::advise::{advise, dimensions, settings_snippet, Advice, Per};
 use contact_lab::study::{grid, run, sweep, Budget, Config, CONVERGED};
 
 fn lesson(id: &str) -> Lesson {
@@ -46,7 +46,7 @@ fn error(l: &Lesson, c: &Config, reference: &Config, seconds: f64) -> f64 {
 /// at its cheap setting run again as well (the slow part).
 fn check_advice(id: &str, seconds: f64, solver: Solver, target: f64, knobs: bool) -> Advice {
     let l = lesson(id);
-    let a = advise(&l, seconds, solver, target).unwrap();
+    let a = advise(&l, seconds, solver, target, Per::Run).unwrap();
     assert!(
         a.choice.error <= target,
         "{id}: {} > {target}",

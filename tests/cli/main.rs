@@ -6,6 +6,7 @@
 mod common;
 
 mod advise;
+mod advise_per_step;
 mod check_rows;
 mod exercise_asks;
 mod exercise_figures;

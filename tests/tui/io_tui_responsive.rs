@@ -5,6 +5,7 @@
 
 use std::time::{Duration, Instant};
 
+use contact_lab::tui::screens::Screen;
 use contact_lab::tui::{self, App, Theme};
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -20,6 +21,24 @@ fn pile(n: usize) -> std::path::PathBuf {
     for i in 0..n {
         s.push_str(&format!(
             "\n[[body]]\nname = \"s{i}\"\nmass = 1.0\nshape = {{ sphere = 0.5 }}\nposition = [0, 0.5, 0]\n"
+        ));
+    }
+    std::fs::write(&path, s).unwrap();
+    path
+}
+
+/// A scene of `n` spheres in a row, each resting 1 cm into a floor: large
+/// enough (100 movable bodies) to record off the UI thread, quick to record.
+fn row_of_spheres(n: usize) -> std::path::PathBuf {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let path = dir.join(format!("io-row-{n}.toml"));
+    let mut s = format!(
+        "id = \"row-{n}\"\ntitle = \"{n} spheres in a row\"\nsource = \"test\"\nsummary = \"test\"\n\n[world]\ngravity = [0, -9.81, 0]\n\n[step]\ndt = 0.016666666666666666\nsteps = 10\n\n[sleep]\nenabled = false\n\n[[body]]\nname = \"floor\"\nmass = inf\nshape = \"half_space\"\nnormal = [0, 1, 0]\nposition = [0, 0, 0]\n"
+    );
+    for i in 0..n {
+        s.push_str(&format!(
+            "\n[[body]]\nname = \"s{i}\"\nmass = 1.0\nshape = {{ sphere = 0.5 }}\nposition = [{}, 0.49, 0]\n",
+            2 * i
         ));
     }
     std::fs::write(&path, s).unwrap();
@@ -86,4 +105,84 @@ fn a_small_scene_still_steps_at_once() {
     let run = app.run.as_ref().unwrap();
     assert_eq!(run.frame, 5);
     assert_eq!(run.player.computing(), None);
+}
+
+/// Ticks `app` (drawing each frame) until `done` or `limit` passes; how many ticks.
+fn tick_until(
+    app: &mut App,
+    t: &mut Terminal<TestBackend>,
+    limit: Duration,
+    done: impl Fn(&App) -> bool,
+) -> usize {
+    let start = Instant::now();
+    let mut ticks = 0;
+    while !done(app) && start.elapsed() < limit {
+        let took = timed(app, |a| a.tick(1.0 / 60.0));
+        assert!(took < ANSWER, "a tick took {took:?}");
+        t.draw(|f| f.render_widget(&*app, f.area())).unwrap();
+        ticks += 1;
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    ticks
+}
+
+/// Issue 23: Enter on a large pile records the step's resolution off the UI
+/// thread: Enter returns at once, the run screen keeps drawing with a
+/// "working" line, and the resolver opens when the recording is done.
+#[test]
+fn enter_on_a_large_pile_records_the_step_off_the_ui_thread() {
+    let path = row_of_spheres(100);
+    let mut app = tui::open(Some(path.as_os_str()), None).expect("opens");
+    app.theme = Theme { color: false };
+    let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    key(&mut app, KeyCode::Right);
+    tick_until(&mut app, &mut t, Duration::from_secs(120), |a| {
+        a.run.as_ref().unwrap().frame == 1
+    });
+    assert_eq!(app.run.as_ref().unwrap().frame, 1, "step 1 computed");
+    let took = timed(&mut app, |a| key(a, KeyCode::Enter));
+    assert!(took < ANSWER, "Enter took {took:?}");
+    assert_eq!(app.screen, Screen::Run, "the run stays on show meanwhile");
+    assert!(app.playing(), "the loop keeps ticking");
+    let recording = &app.run.as_ref().unwrap().recording;
+    assert_eq!(recording.as_ref().map(|(r, _)| r.step), Some(1));
+    t.draw(|f| f.render_widget(&app, f.area())).unwrap();
+    let screen = crate::common::tui::text(t.backend().buffer());
+    assert!(
+        screen.contains("working: recording step 1's resolver iterations"),
+        "{screen}"
+    );
+    let ticks = tick_until(&mut app, &mut t, Duration::from_secs(120), |a| {
+        a.screen == Screen::Resolver
+    });
+    assert!(ticks > 0, "the UI drew while the step was recorded");
+    assert_eq!(app.screen, Screen::Resolver);
+    let r = app.resolver.as_ref().unwrap();
+    assert_eq!(r.trace.step, 1);
+    assert!(!r.trace.world.contacts.is_empty());
+    assert!(app.run.as_ref().unwrap().recording.is_none());
+}
+
+/// Esc while a large pile's step is recorded cancels it: the run stays, and
+/// no resolver opens later.
+#[test]
+fn esc_cancels_a_recording_under_way() {
+    let path = row_of_spheres(100);
+    let mut app = tui::open(Some(path.as_os_str()), None).expect("opens");
+    let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    key(&mut app, KeyCode::Right);
+    tick_until(&mut app, &mut t, Duration::from_secs(120), |a| {
+        a.run.as_ref().unwrap().frame == 1
+    });
+    key(&mut app, KeyCode::Enter);
+    assert!(app.run.as_ref().unwrap().recording.is_some());
+    let took = timed(&mut app, |a| key(a, KeyCode::Esc));
+    assert!(took < ANSWER, "Esc took {took:?}");
+    assert!(!app.quit, "Esc cancels the recording, it does not quit");
+    let said = app.status.clone().expect("said").text;
+    assert!(said.contains("cancelled: step 1"), "{said}");
+    assert!(app.run.as_ref().unwrap().recording.is_none());
+    assert!(!app.playing(), "nothing left to tick for");
+    app.tick(1.0);
+    assert_eq!(app.screen, Screen::Run);
 }

@@ -8,6 +8,8 @@ mod common;
 mod io_tui_edits;
 mod io_tui_responsive;
 mod tui;
+mod tui_lesson_picker;
 mod tui_scenes;
 mod tui_teaching;
 mod tui_terminal;
+mod tui_write_context;

@@ -127,7 +127,8 @@ fn predict_answers_are_graded_and_scored() {
     assert_eq!(a.revealed[3], 1, "the graded result is revealed");
     let said = a.status.clone().expect("a verdict").text;
     assert!(said.starts_with("✓ right: 18.7337 N·s"), "{said}");
-    assert!(said.contains("yours 18.73, difference 0.0037"), "{said}");
+    assert!(said.contains("18.7337 N·s, difference 0.0037"), "{said}");
+    assert!(said.contains("; yours 18.73 · score"), "{said}");
     let rows = screen(&a, 100, 30);
     assert!(rows[0].contains("[predict 1/1]"), "{}", rows[0]);
     // g_contact = (18.7337, 0, 0): a wrong vector is graded wrong, with the difference.
@@ -136,11 +137,22 @@ fn predict_answers_are_graded_and_scored() {
     assert_eq!((a.score.correct, a.score.graded), (1, 2));
     let s = a.status.clone().unwrap();
     assert!(s.error, "a wrong answer is shown as one");
-    assert!(s.text.contains("(18.7337, 0, 0) N·s"), "{}", s.text);
+    assert!(
+        s.text.starts_with("✗ off: (18.7337, 0, 0) N·s"),
+        "{}",
+        s.text
+    );
     assert!(
         s.text.contains("difference (0.0337046, -1, 0) N·s"),
         "{}",
         s.text
+    );
+    // At 80 columns the status row keeps the verdict and the difference.
+    let rows = screen(&a, 80, 24);
+    assert!(
+        rows[23].contains("✗ off: (18.7337, 0, 0) N·s, difference (0.0337046, -1, 0)"),
+        "{}",
+        rows[23]
     );
     // An answer that cannot be compared is refused, not scored, and stays open.
     type_text(&mut a, "1 2");

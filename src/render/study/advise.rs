@@ -21,10 +21,12 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
         "The cheapest configuration found".to_string(),
         vec![
             format!(
-                "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m",
+                "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m (per {}: {})",
                 num(fmt, c.cost),
                 num(fmt, c.error),
-                num(fmt, a.target)
+                num(fmt, a.target),
+                a.per.name(),
+                a.per.describe()
             ),
             format!(
                 "the reference costs {} ({}× this)",
@@ -101,11 +103,12 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
 
 pub fn text(a: &Advice, fmt: &Fmt) -> String {
     let mut out = format!(
-        "{}  ({}, {} s): the cheapest model within {} m of the reference\n\nPaste into the scene:\n\n",
+        "{}  ({}, {} s): the cheapest model within {} m of the reference, per {}\n\nPaste into the scene:\n\n",
         a.title,
         a.scene,
         num(fmt, a.seconds),
-        num(fmt, a.target)
+        num(fmt, a.target),
+        a.per.name()
     );
     for l in settings_snippet(a).lines() {
         out.push_str(&format!("    {l}\n"));
@@ -121,10 +124,11 @@ pub fn text(a: &Advice, fmt: &Fmt) -> String {
 
 pub fn markdown(a: &Advice, fmt: &Fmt) -> String {
     let mut out = format!(
-        "# {} (`{}`): the cheapest model within {} m\n\nPaste into the scene:\n\n```toml\n{}```\n",
+        "# {} (`{}`): the cheapest model within {} m, per {}\n\nPaste into the scene:\n\n```toml\n{}```\n",
         a.title,
         a.scene,
         num(fmt, a.target),
+        a.per.name(),
         settings_snippet(a)
     );
     for (head, lines) in sections(a, fmt) {
@@ -142,6 +146,7 @@ pub fn json(a: &Advice) -> String {
     let v = json!({
         "scene": a.scene,
         "target": a.target,
+        "per": a.per.name(),
         "seconds": a.seconds,
         "reference": a.reference,
         "reference_cost": a.reference_cost,

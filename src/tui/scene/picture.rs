@@ -86,6 +86,16 @@ fn scale(a: P, s: f64) -> P {
     [a[0] * s, a[1] * s]
 }
 
+/// An arc's size as a share of the body's arc radius: from 0.3 (no spin)
+/// to 1 (the fastest spin of the figure), in proportion to |ω| (|ω|/ω_max).
+pub(super) fn spin_size(rate: f64, wmax: f64) -> f64 {
+    if wmax > 0.0 && rate.is_finite() {
+        0.3 + 0.7 * (rate.abs() / wmax).min(1.0)
+    } else {
+        1.0
+    }
+}
+
 /// What to show, given which results predict mode still hides.
 pub(super) struct Show {
     /// The stage works on the motion before the impulse.
@@ -213,11 +223,21 @@ pub(super) fn picture(fig: &Figure, show: &Show) -> (Picture, [f64; 4]) {
         }
     }
     // Spin about the axis out of the picture: an arc, counter-clockwise
-    // for a positive rate.
+    // for a positive rate, its size growing with |ω| against the fastest
+    // spin of the figure (before and after alike, so revealing one does not
+    // resize the other).
+    let wmax = fig
+        .spins
+        .iter()
+        .map(|s| s.rate.abs())
+        .filter(|w| w.is_finite())
+        .fold(0.0, f64::max);
     for s in fig.spins.iter().filter(|s| show.after_velocity || !s.after) {
-        let r = fig.bodies[s.body].spin_arc_radius.unwrap_or(0.06 * extent);
+        let r =
+            fig.bodies[s.body].spin_arc_radius.unwrap_or(0.06 * extent) * spin_size(s.rate, wmax);
+        // The spin after a little inside the one before: equal rates stay apart.
         let (radius, ink) = if s.after {
-            (0.65 * r, Ink::VelocityAfter)
+            (0.85 * r, Ink::VelocityAfter)
         } else {
             (r, Ink::VelocityBefore)
         };

@@ -44,14 +44,21 @@ pub fn breadcrumb(app: &App) -> String {
     parts.join(" › ")
 }
 
-/// The breadcrumb in `room` columns: the first levels give way ("… ›") so
-/// the deepest, where the user is, stays in view.
+/// The breadcrumb in `room` columns: the middle levels give way ("… ›") so
+/// the lesson's name and the deepest level, where the user is, stay in
+/// view; then the lesson's name too.
 pub fn breadcrumb_fit(app: &App, room: usize) -> String {
     let full = breadcrumb(app);
     if width(&full) <= room {
         return full;
     }
     let parts: Vec<&str> = full.split(" › ").collect();
+    for skip in 2..parts.len() {
+        let text = format!("{} › … › {}", parts[0], parts[skip..].join(" › "));
+        if width(&text) <= room {
+            return text;
+        }
+    }
     for skip in 1..parts.len() {
         let text = format!("… › {}", parts[skip..].join(" › "));
         if width(&text) <= room {
@@ -84,6 +91,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if let Mode::Glossary(scroll) = app.mode {
         crate::tui::overlay::glossary(app, scroll, area, buf);
+    }
+    if let Mode::Pick(p) = &app.mode {
+        crate::tui::picker::render(app, p, area, buf);
     }
 }
 
@@ -129,11 +139,29 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         .render(area, buf);
         return;
     }
+    if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
+        if run.recording.is_some() {
+            let text = super::nav::recording(run);
+            Paragraph::new(Line::styled(
+                truncate(&format!(" {text}"), area.width as usize),
+                t.info(),
+            ))
+            .render(area, buf);
+            return;
+        }
+    }
     let keys: &[(&str, &str)] = match (app.mode == Mode::Help, app.screen) {
         (true, _) => &[
             ("?", "glossary"),
             ("j k", "scroll"),
             ("any other key", "closes"),
+        ],
+        _ if matches!(app.mode, Mode::Pick(_)) => &[
+            ("letters", "filter"),
+            ("↑↓", "move"),
+            ("⇥", "next group"),
+            ("Enter", "open"),
+            ("Esc", "close"),
         ],
         _ if matches!(app.mode, Mode::Glossary(_)) => {
             &[("j k ↑↓ PgDn PgUp", "scroll"), ("any other key", "closes")]
@@ -146,6 +174,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
             ("+-", "speed"),
             ("g", "restart"),
             ("cosb", "show"),
+            ("/", "find"),
             ("?", "help"),
             ("q", "quit"),
         ],

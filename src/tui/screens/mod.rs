@@ -16,7 +16,7 @@ use std::cell::Cell;
 
 use ratatui::layout::Rect;
 
-use crate::session::Player;
+use crate::session::{Player, Recording};
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
 
@@ -70,6 +70,9 @@ pub struct RunView {
     pub event_kind: usize,
     /// Lines the events list is scrolled up from the current event.
     pub events_scroll: usize,
+    /// Enter on a large scene: the step's resolution being recorded on
+    /// another thread, and since when (the key bar shows it; Esc cancels).
+    pub recording: Option<(Recording, std::time::Instant)>,
 }
 
 /// One resolution on the resolver screen.
@@ -131,6 +134,10 @@ pub enum Key {
     Plane,
     NextLesson,
     PrevLesson,
+    /// `/`: the lesson picker.
+    PickLesson,
+    NextGroup,
+    PrevGroup,
     LineDown,
     LineUp,
     Help,
@@ -165,11 +172,14 @@ macro_rules! tail_rows {
                 ],
             },
             Binding {
-                label: "] / [",
-                help: "next / previous lesson",
+                label: "] [ } { /",
+                help: "next / previous lesson, group; / finds a lesson",
                 keys: &[
                     (C::Char(']'), Key::NextLesson),
                     (C::Char('['), Key::PrevLesson),
+                    (C::Char('}'), Key::NextGroup),
+                    (C::Char('{'), Key::PrevGroup),
+                    (C::Char('/'), Key::PickLesson),
                 ],
             },
             Binding {

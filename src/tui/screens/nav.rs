@@ -35,6 +35,7 @@ impl App {
                 toggles: Toggles::default(),
                 event_kind: 0,
                 events_scroll: 0,
+                recording: None,
             }));
             self.screen = Screen::Run;
         } else if several && lesson.contacts.len() > 1 {
@@ -58,7 +59,9 @@ impl App {
     /// thread (the terminal loop then ticks).
     pub fn playing(&self) -> bool {
         self.run.as_ref().is_some_and(|r| {
-            (self.screen == Screen::Run && r.playing) || r.player.computing().is_some()
+            (self.screen == Screen::Run && r.playing)
+                || r.player.computing().is_some()
+                || r.recording.is_some()
         })
     }
 
@@ -68,6 +71,7 @@ impl App {
         if !self.playing() {
             return;
         }
+        self.collect_recording();
         let on_run = self.screen == Screen::Run;
         let Some(run) = self.run.as_deref_mut() else {
             return;
@@ -106,6 +110,35 @@ impl App {
         }
     }
 
+    /// A step's resolution recorded on another thread (Enter on a large
+    /// scene): shown when it is done, if the run screen is still on show.
+    fn collect_recording(&mut self) {
+        let Some(run) = self.run.as_deref_mut() else {
+            return;
+        };
+        let Some(done) = run.recording.as_ref().and_then(|(r, _)| r.poll()) else {
+            return;
+        };
+        let step = run.recording.take().map_or(0, |(r, _)| r.step);
+        match done {
+            Some(trace) if self.screen == Screen::Run && self.mode == Mode::Normal => {
+                self.show_resolver(trace)
+            }
+            Some(_) => {}
+            None => self.say(
+                format!("step {step}'s resolution could not be recorded: the run blew up"),
+                true,
+            ),
+        }
+    }
+
+    /// Cancels a recording under way (its thread stops at the next step).
+    pub(crate) fn cancel_recording(&mut self) -> Option<u64> {
+        let (r, _) = self.run.as_deref_mut()?.recording.take()?;
+        r.cancel();
+        Some(r.step)
+    }
+
     /// Esc or Backspace on the stepper: up a level when there is one.
     pub(crate) fn up_key(&mut self, key: KeyEvent) -> bool {
         if !matches!(key.code, KeyCode::Esc | KeyCode::Backspace) || self.resolver.is_none() {
@@ -124,6 +157,14 @@ impl App {
                 self.quit = true;
             }
             return;
+        }
+        if self.screen == Screen::Run && key.code == KeyCode::Esc {
+            if let Some(step) = self.cancel_recording() {
+                return self.say(
+                    format!("cancelled: step {step}'s resolver iterations are not recorded"),
+                    false,
+                );
+            }
         }
         let table = if self.screen == Screen::Run {
             RUN_KEYS
@@ -145,6 +186,9 @@ impl App {
                 let n = self.lessons.len();
                 self.goto_lesson((self.lesson + n - 1) % n)
             }
+            Key::PickLesson => self.open_picker(),
+            Key::NextGroup => self.jump_group(true),
+            Key::PrevGroup => self.jump_group(false),
             Key::LineDown => self.wheel(false),
             Key::LineUp => self.wheel(true),
             _ if self.screen == Screen::Run => self.run_key(action),
@@ -196,6 +240,16 @@ impl App {
             Key::Toggle(Toggle::Names) => run.toggles.names = !run.toggles.names,
             Key::PageUp => run.events_scroll += 5,
             Key::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
+            Key::Open if run.recording.is_some() => {
+                said = Some(recording(run));
+            }
+            Key::Open if run.player.records_later() && run.frame > 0 => {
+                // A large scene: recorded on another thread (the key bar says
+                // so; Esc cancels), shown by `tick` when done.
+                run.playing = false;
+                let at = std::time::Instant::now();
+                run.recording = run.player.record_later(run.frame as u64).map(|r| (r, at));
+            }
             Key::Open => {
                 run.playing = false;
                 let frame = run.frame as u64;
@@ -412,6 +466,21 @@ fn computing(run: &RunView) -> String {
     format!(
         "computing step {} (a large scene: the keys still answer; q quits)",
         run.player.computing().unwrap_or(0)
+    )
+}
+
+/// What the key bar says while a step's resolution is recorded.
+pub(crate) fn recording(run: &RunView) -> String {
+    let Some((r, since)) = &run.recording else {
+        return String::new();
+    };
+    let spin = ["⠋", "⠙", "⠹", "⠸", "⠼", "⠴", "⠦", "⠧", "⠇", "⠏"];
+    let elapsed = since.elapsed();
+    format!(
+        "{} working: recording step {}'s resolver iterations ({:.0} s; a large scene) · Esc cancels · q quits",
+        spin[(elapsed.as_millis() / 100) as usize % spin.len()],
+        r.step,
+        elapsed.as_secs_f64().floor()
     )
 }
 

@@ -68,6 +68,46 @@ fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
     if b[0] > b[1] {
         return [-1.0, 1.0, -1.0, 1.0];
     }
+    // A half-space in view too (a ball dropped from high above its floor,
+    // up to 10 times the bodies' extent away):
+    // the point of its line nearest the bodies, and a little of its solid
+    // side for the hatching.
+    let c = [(b[0] + b[1]) / 2.0, (b[2] + b[3]) / 2.0];
+    let size = (b[1] - b[0]).max(b[3] - b[2]).max(1e-9);
+    for v in bodies {
+        let Some(Shape::HalfSpace { normal }) = v.shape else {
+            continue;
+        };
+        let n = flat(plane, normal);
+        let len = n[0].hypot(n[1]);
+        if len.is_nan() || len <= 1e-9 {
+            continue;
+        }
+        let n = [n[0] / len, n[1] / len];
+        let q = flat(plane, v.position);
+        let d = (c[0] - q[0]) * n[0] + (c[1] - q[1]) * n[1];
+        // Not one so far away that the bodies would shrink to dots.
+        if d.is_nan() || d.abs() > 10.0 * size {
+            continue;
+        }
+        let p = [c[0] - d * n[0], c[1] - d * n[1]];
+        // Already in view (a stack standing on its floor): nothing to add.
+        let tol = 1e-6 * size;
+        if p[0] >= b[0] - tol && p[0] <= b[1] + tol && p[1] >= b[2] - tol && p[1] <= b[3] + tol {
+            continue;
+        }
+        let below = [p[0] - 0.05 * size * n[0], p[1] - 0.05 * size * n[1]];
+        for p in [p, below] {
+            if p[0].is_finite() && p[1].is_finite() {
+                b = [
+                    b[0].min(p[0]),
+                    b[1].max(p[0]),
+                    b[2].min(p[1]),
+                    b[3].max(p[1]),
+                ];
+            }
+        }
+    }
     b
 }
 
@@ -114,7 +154,8 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
         }
     };
     let mut segs: Vec<(P, P, Color)> = vec![];
-    let mut labels: Vec<(P, String, Style)> = vec![];
+    // Labels with a rank: lower is placed first when they compete for cells.
+    let mut labels: Vec<(P, String, Style, u8)> = vec![];
     let mut points = app.targets.points.borrow_mut();
     for (i, v) in scene.bodies.iter().enumerate() {
         match v.shape {
@@ -161,7 +202,7 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
                     } else {
                         v.name.clone()
                     };
-                    labels.push((c, name, Style::new().fg(body_ink(i))));
+                    labels.push((c, name, Style::new().fg(body_ink(i)), 2));
                 }
             }
             None => {}
@@ -187,7 +228,7 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
                     q[1] + g[1] / len * 0.15 * extent,
                 ];
                 segs.push((q, tip, t.ink(Ink::Impulse)));
-                labels.push((tip, "g".into(), t.ink_style(Ink::Impulse)));
+                labels.push((tip, "g".into(), t.ink_style(Ink::Impulse), 1));
             }
         }
         if scene.toggles.contacts || chosen || next {
@@ -203,10 +244,12 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
             } else {
                 "•".to_string()
             };
-            labels.push((q, text, style));
+            let rank = if next || chosen { 0 } else { 3 };
+            labels.push((q, text, style, rank));
         }
     }
     drop(points);
+    let labels = place(labels, b, inner.width, inner.height);
     Canvas::default()
         .marker(Marker::Braille)
         .background_color(Color::Reset)
@@ -218,10 +261,73 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
             }
             ctx.layer();
             for (p, text, style) in &labels {
-                if (b[0]..=b[1]).contains(&p[0]) && (b[2]..=b[3]).contains(&p[1]) {
-                    ctx.print(p[0], p[1], Span::styled(text.clone(), *style));
-                }
+                ctx.print(p[0], p[1], Span::styled(text.clone(), *style));
             }
         })
         .render(inner, buf);
+}
+
+/// Labels put in free cells, by rank: each at its point's cell or beside it
+/// (right, left, the rows above and below), left out when none is free, so
+/// that no label is drawn over another (issue 28 item 5). A contact that is
+/// neither selected nor next (rank 3) keeps to its own cell, with a free
+/// cell after it: a number moved off its point would misplace it, and
+/// coincident contacts in this view are one mark.
+fn place(
+    mut labels: Vec<(P, String, Style, u8)>,
+    b: [f64; 4],
+    cols: u16,
+    rows: u16,
+) -> Vec<(P, String, Style)> {
+    let (w, h) = (i32::from(cols), i32::from(rows));
+    let (xr, yr) = (b[1] - b[0], b[3] - b[2]);
+    if w < 2 || h < 2 || !(xr > 0.0 && yr > 0.0) {
+        return vec![];
+    }
+    labels.sort_by_key(|l| l.3);
+    let mut taken = vec![false; (w * h) as usize];
+    let mut out = vec![];
+    for (p, text, style, rank) in labels {
+        if !((b[0]..=b[1]).contains(&p[0]) && (b[2]..=b[3]).contains(&p[1])) {
+            continue;
+        }
+        // The cell the canvas prints a label at (it truncates).
+        let c = ((p[0] - b[0]) * f64::from(w - 1) / xr) as i32;
+        let r = ((b[3] - p[1]) * f64::from(h - 1) / yr) as i32;
+        let n = crate::tui::wrap::width(&text) as i32;
+        let free = |c: i32, r: i32| {
+            (0..h).contains(&r)
+                && c >= 0
+                && c + n <= w
+                && (c..c + n).all(|x| !taken[(r * w + x) as usize])
+        };
+        let tries = [
+            (0, 0),
+            (1, 0),
+            (-n, 0),
+            (0, -1),
+            (0, 1),
+            (1, -1),
+            (1, 1),
+            (-n, -1),
+            (-n, 1),
+        ];
+        let tries = if rank >= 3 { &tries[..1] } else { &tries[..] };
+        let gap = i32::from(rank >= 3);
+        let Some((c, r)) = tries
+            .iter()
+            .map(|(dc, dr)| (c + dc, r + dr))
+            .find(|&(c, r)| free(c, r))
+        else {
+            continue;
+        };
+        for x in c..(c + n + gap).min(w) {
+            taken[(r * w + x) as usize] = true;
+        }
+        // The point the canvas prints in cell (c, r).
+        let x = (b[0] + (f64::from(c) + 0.01) * xr / f64::from(w - 1)).min(b[1]);
+        let y = (b[3] - (f64::from(r) + 0.01) * yr / f64::from(h - 1)).max(b[2]);
+        out.push(([x, y], text, style));
+    }
+    out
 }
