@@ -49,6 +49,7 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/sphere-row-20.toml",
     "scenes/mass-ratio-stack.toml",
     "scenes/overlap-recovery.toml",
+    "scenes/hull-stack.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

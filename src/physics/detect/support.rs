@@ -113,6 +113,7 @@ impl Convex {
                 half_height: height / 2.0,
             }),
             Shape::Capsule { radius, height } => Some(Convex::Capsule(Capsule { radius, height })),
+            Shape::Hull(ref hull) => Some(Convex::Hull(Arc::clone(hull))),
             Shape::HalfSpace { .. } => None,
         }
     }
