@@ -6,6 +6,7 @@
 mod common;
 
 mod advise;
+mod detect_cli;
 mod exercise_figures;
 mod grading;
 mod instructor;

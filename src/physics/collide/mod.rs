@@ -46,6 +46,7 @@ pub mod broad;
 mod clip;
 mod convex;
 mod plane;
+pub mod record;
 pub mod scene;
 mod sphere;
 
