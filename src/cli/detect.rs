@@ -22,7 +22,7 @@ pub struct DetectArgs {
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
     /// Also write an SVG figure of the (first) pair: both shapes, the
-    /// Minkowski difference A − B, the simplex or EPA's face, the normal.
+    /// Minkowski difference A - B, the simplex or EPA's face, the normal.
     #[arg(long, value_name = "F.svg")]
     pub figure: Option<std::path::PathBuf>,
     /// The plane the figure shows.

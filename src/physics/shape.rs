@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::physics::detect::ConvexHull;
+use crate::physics::hull::ConvexHull;
 
 /// The shape of a body, in the body frame.
 #[derive(Debug, Clone, PartialEq)]

@@ -40,7 +40,7 @@ pub struct Dropped {
 pub struct GjkStep {
     /// d_k.
     pub direction: V3,
-    /// w_k = s_A(d_k) − s_B(−d_k), and the two shape points.
+    /// w_k = s_A(d_k) - s_B(-d_k), and the two shape points.
     pub support: V3,
     pub support_a: V3,
     pub support_b: V3,
@@ -49,7 +49,7 @@ pub struct GjkStep {
     pub kept: Vec<usize>,
     /// v_k.
     pub closest: V3,
-    /// |v_{k−1}|² − v_{k−1}·w_k and its limit ε|v_{k−1}|².
+    /// |v_{k-1}|² - v_{k-1}·w_k and its limit ε|v_{k-1}|².
     pub bound: f64,
     pub bound_limit: f64,
 }
@@ -77,7 +77,7 @@ pub struct EpaStep {
     pub support: V3,
     pub support_a: V3,
     pub support_b: V3,
-    /// n_k·w_k − δ_k = |v_k − w_k| along n_k.
+    /// n_k·w_k - δ_k = |v_k - w_k| along n_k.
     pub gap: f64,
     pub removed: usize,
     pub added: usize,
@@ -123,7 +123,7 @@ pub struct PairTrace {
     pub epa: Option<EpaTrace>,
     pub contacts: Vec<ContactLine>,
     pub analytic: Option<Vec<ContactLine>>,
-    /// The Minkowski difference A − B's outline in the figure's plane
+    /// The Minkowski difference A - B's outline in the figure's plane
     /// (world coordinates), for the SVG.
     pub minkowski: Vec<V3>,
     pub notes: Vec<String>,
@@ -241,7 +241,7 @@ pub fn reason(why: RuledOut) -> String {
 /// Why GJK ended, in words.
 pub fn gjk_end_words(end: GjkEnd) -> &'static str {
     match end {
-        GjkEnd::Converged => "the bounds met: |v|² − v·w ≤ ε|v|², v is the closest point",
+        GjkEnd::Converged => "the bounds met: |v|² - v·w ≤ ε|v|², v is the closest point",
         GjkEnd::NoProgress => "no progress: w was already in the simplex or v did not shrink",
         GjkEnd::OriginInside => "the origin is inside the tetrahedron: the shapes intersect",
         GjkEnd::Touching => "|v| within the touching tolerance: the origin is on the simplex",

@@ -258,7 +258,7 @@ fn markdown_latex_and_the_figure() {
     assert!(figure.starts_with("<svg") && figure.trim_end().ends_with("</svg>"));
     // Both shapes, the Minkowski difference, the origin, the normal.
     assert!(figure.contains(">upper<") && figure.contains(">lower<"));
-    assert!(figure.contains("A − B: intersecting") && figure.contains(">O<"));
+    assert!(figure.contains("A - B: intersecting") && figure.contains(">O<"));
     let md = String::from_utf8(run(&["epa-edge-edge", "--format", "md"]).stdout).unwrap();
     assert!(md.contains("### EPA") && md.contains("| k | closest face |"));
 }

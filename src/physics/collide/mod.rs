@@ -356,7 +356,7 @@ fn narrow<T: Real>(
                 plane::sphere_plane(c(radius), &ball, &plane_normal(&normal), pb, tol, out);
             }
         }
-        (&Shape::Hull(ref hull), &Shape::HalfSpace { normal }) => {
+        (Shape::Hull(hull), &Shape::HalfSpace { normal }) => {
             plane::hull_plane(hull, pa, &plane_normal(&normal), pb, tol, out)
         }
         // Two half-spaces: nothing (neither has a support mapping).

@@ -16,7 +16,7 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 
-use super::hull::ConvexHull;
+use crate::physics::hull::ConvexHull;
 use crate::physics::pose::Pose;
 use crate::physics::{c, to_f64, Real, Shape};
 

@@ -171,7 +171,7 @@ fn gjk(out: &mut Vec<Block>, g: &GjkTrace, f: &Fmt, scale: f64) {
                 (k + 1).to_string(),
                 v(f, &it.direction),
                 format!(
-                    "{} = {} − {}",
+                    "{} = {} - {}",
                     v(f, &it.support),
                     v(f, &it.support_a),
                     v(f, &it.support_b)
@@ -186,10 +186,10 @@ fn gjk(out: &mut Vec<Block>, g: &GjkTrace, f: &Fmt, scale: f64) {
         head: [
             "k",
             "d_k",
-            "w_k = s_A(d_k) − s_B(−d_k)",
+            "w_k = s_A(d_k) - s_B(-d_k)",
             "simplex (✗ dropped)",
             "v_k",
-            "|v|² − v·w",
+            "|v|² - v·w",
         ]
         .map(String::from)
         .to_vec(),
@@ -249,13 +249,13 @@ fn epa(out: &mut Vec<Block>, e: &EpaTrace, f: &Fmt, scale: f64) {
                     if it.removed + it.added == 0 {
                         "none (ended)".to_string()
                     } else {
-                        format!("−{} +{}", it.removed, it.added)
+                        format!("-{} +{}", it.removed, it.added)
                     },
                 ]
             })
             .collect();
         out.push(Block::Table {
-            head: ["k", "closest face", "δ_k", "w_k", "|v_k − w_k|", "faces"]
+            head: ["k", "closest face", "δ_k", "w_k", "|v_k - w_k|", "faces"]
                 .map(String::from)
                 .to_vec(),
             rows,

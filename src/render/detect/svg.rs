@@ -1,6 +1,6 @@
 //! One pair's detection as an SVG figure, the lectures' picture: on the
 //! left the two shapes (outlines in the view plane) with the contact normal
-//! at the contact point; on the right the Minkowski difference A − B seen in
+//! at the contact point; on the right the Minkowski difference A - B seen in
 //! the same plane, the origin, GJK's last simplex (or EPA's closest face)
 //! and the normal from the origin.
 
@@ -109,7 +109,7 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
     let right = Fit::new(&right_pts, 20.0 + PANEL + 20.0);
     let _ = writeln!(
         out,
-        r##"  <text x="{:.1}" y="30" font-size="18">A − B: {}</text>"##,
+        r##"  <text x="{:.1}" y="30" font-size="18">A - B: {}</text>"##,
         40.0 + PANEL,
         result(p)
     );
@@ -162,14 +162,14 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
     );
     if let Some(e) = &p.epa {
         let n = flat(&e.normal);
-        // −depth·n: the penetration vector from the origin to the boundary.
+        // -depth·n: the penetration vector from the origin to the boundary.
         arrow(
             &mut out,
             &right,
             [0.0, 0.0],
             [-n[0] * e.depth, -n[1] * e.depth],
             "#2ca02c",
-            "−δn",
+            "-δn",
         );
     } else if let Some(g) = p.gjk.as_ref().and_then(|g| g.iterations.last()) {
         arrow(
