@@ -2,8 +2,10 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod detect;
 mod knobs;
 mod scene;
+pub use detect::*;
 pub use knobs::*;
 pub use scene::*;
 
@@ -23,6 +25,7 @@ Examples:
   contact-lab resolve sphere-row --format json --log --repeat 5
   contact-lab resolve box-four-corners --show position:2   the worked solution of that iteration's contact
   contact-lab figure lecture-2 -o lecture-2.svg     the contact as a slide-ready picture
+  contact-lab detect hull-stack --pair hexagon,octagon   GJK and EPA iteration by iteration
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab study stack-5 ramp-stick              speed against accuracy: tables with the Pareto front
   contact-lab study --format svg > study.svg        error against µs per step, log–log
@@ -52,6 +55,8 @@ pub enum Command {
     Figure(FigureArgs),
     /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
     Simulate(SimulateArgs),
+    /// How a scene's contacts are found: broad phase, GJK and EPA step by step, the contacts.
+    Detect(DetectArgs),
     /// Speed against accuracy: run scenes under a grid of knobs, cost and error against a reference.
     Study(StudyArgs),
     /// The cheapest configuration whose error against the scene's reference stays below a target.

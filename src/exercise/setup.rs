@@ -365,6 +365,14 @@ fn shape(s: &Shape) -> String {
             num(*radius),
             num(*height)
         ),
+        Shape::Hull(hull) => format!(
+            "{{ convex = [{}] }}",
+            hull.vertices()
+                .iter()
+                .map(|v| list(v.as_slice()))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
         Shape::HalfSpace { .. } => "\"half_space\"".into(),
     }
 }

@@ -78,6 +78,7 @@ fn shape(s: &Option<Shape>) -> String {
         Some(Shape::HollowSphere { radius: r }) => format!("hollow sphere, r = {r}"),
         Some(Shape::Cylinder { radius, height }) => format!("cylinder, r = {radius}, h = {height}"),
         Some(Shape::Capsule { radius, height }) => format!("capsule, r = {radius}, h = {height}"),
+        Some(Shape::Hull(hull)) => format!("convex hull of {} vertices", hull.vertices().len()),
         Some(Shape::HalfSpace { .. }) => "half-space".into(),
         None => "–".into(),
     }

@@ -49,6 +49,11 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/sphere-row-20.toml",
     "scenes/mass-ratio-stack.toml",
     "scenes/overlap-recovery.toml",
+    "scenes/hull-stack.toml",
+    "scenes/gjk-separated.toml",
+    "scenes/gjk-touching.toml",
+    "scenes/epa-edge-edge.toml",
+    "scenes/cylinder-on-box.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

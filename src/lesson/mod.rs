@@ -333,7 +333,7 @@ impl BodyDef {
         let position = self.position.map(c);
         let orientation = Quaternion::from(self.orientation.coords.map(c));
         if !self.movable() {
-            return Body::immovable(position, orientation, self.shape);
+            return Body::immovable(position, orientation, self.shape.clone());
         }
         let inertia = self.inertia.unwrap_or_else(Matrix3::identity);
         // Validated tensors invert (`ranges::inertia`); scaled first so a
@@ -352,7 +352,7 @@ impl BodyDef {
                 angular_velocity: self.angular_velocity.map(c),
                 acceleration: self.acceleration.map(c),
             },
-            shape: self.shape,
+            shape: self.shape.clone(),
             movable: true,
         }
     }

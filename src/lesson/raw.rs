@@ -86,8 +86,10 @@ pub struct RawBody {
 }
 
 /// `shape = { box = [x, y, z] }`, `{ sphere = r }`, `{ hollow_sphere = r }`,
-/// `{ cylinder = { radius = r, height = h } }` (axis along body y), `"half_space"`.
-#[derive(Debug, Clone, Copy, Deserialize, PartialEq)]
+/// `{ cylinder = { radius = r, height = h } }` (axis along body y),
+/// `{ capsule = { radius = r, height = h } }`, `{ convex = [[x, y, z], …] }`
+/// (the hull of the points, body frame), `"half_space"`.
+#[derive(Debug, Clone, Deserialize, PartialEq)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum RawShape {
     Sphere(f64),
@@ -102,6 +104,8 @@ pub enum RawShape {
         radius: f64,
         height: f64,
     },
+    #[serde(deserialize_with = "exact::array")]
+    Convex(Vec<[f64; 3]>),
     HalfSpace,
 }
 
@@ -184,6 +188,17 @@ mod exact {
         type List = Vec<f64>;
         fn exact(list: Vec<f64>) -> Result<Self, String> {
             length(list)
+        }
+    }
+
+    /// A list of points, each of exactly 3 numbers (a convex hull's).
+    impl Exact for Vec<[f64; 3]> {
+        type List = Vec<Vec<f64>>;
+        fn exact(rows: Vec<Vec<f64>>) -> Result<Self, String> {
+            rows.into_iter()
+                .enumerate()
+                .map(|(i, p)| length(p).map_err(|e| format!("point {i}: {e}")))
+                .collect()
         }
     }
 

@@ -1,22 +1,64 @@
 //! The lesson file's shape table converted into the physics [`Shape`], and
 //! its one-line description for warnings and the trace.
+//!
+//! A convex hull (`shape = { convex = [[x, y, z], …] }`) is re-centred: its
+//! points are given in the body frame, the hull is built, and its points are
+//! moved by −c (c, the solid's centroid) so that the body's origin is its
+//! centre of mass. The body's `position` moves by R·c, so the hull stays
+//! exactly where the file puts it (see docs/lesson-format.md).
+
+use nalgebra::Vector3;
 
 use super::raw::RawShape;
+use crate::physics::detect::{ConvexHull, HullError};
 use crate::physics::Shape;
 
-impl From<RawShape> for Shape {
-    fn from(raw: RawShape) -> Shape {
-        match raw {
-            RawShape::Sphere(radius) => Shape::Sphere { radius },
-            RawShape::HollowSphere(radius) => Shape::HollowSphere { radius },
-            RawShape::Box(sides) => Shape::Box { sides },
-            RawShape::Cylinder { radius, height } => Shape::Cylinder { radius, height },
-            RawShape::Capsule { radius, height } => Shape::Capsule { radius, height },
-            RawShape::HalfSpace => Shape::HalfSpace {
-                normal: [0.0, 1.0, 0.0],
-            },
+/// The physics shape of a lesson's shape table, and the offset of the
+/// body's centre of mass from the frame the file gives (a hull's centroid;
+/// zero for every other shape). A degenerate hull is an error.
+pub fn from_raw(raw: &RawShape) -> Result<(Shape, Vector3<f64>), HullError> {
+    let shape = match raw {
+        RawShape::Sphere(radius) => Shape::Sphere { radius: *radius },
+        RawShape::HollowSphere(radius) => Shape::HollowSphere { radius: *radius },
+        RawShape::Box(sides) => Shape::Box { sides: *sides },
+        RawShape::Cylinder { radius, height } => Shape::Cylinder {
+            radius: *radius,
+            height: *height,
+        },
+        RawShape::Capsule { radius, height } => Shape::Capsule {
+            radius: *radius,
+            height: *height,
+        },
+        RawShape::Convex(points) => {
+            let (hull, centroid) = centred_hull(points)?;
+            return Ok((Shape::Hull(std::sync::Arc::new(hull)), centroid));
+        }
+        RawShape::HalfSpace => Shape::HalfSpace {
+            normal: [0.0, 1.0, 0.0],
+        },
+    };
+    Ok((shape, Vector3::zeros()))
+}
+
+/// The hull of `points` moved so that its centroid is at the origin, and
+/// that centroid in the given frame. Refuses repeated points (the same
+/// point twice is a typo in a lesson, not a shape).
+pub fn centred_hull(points: &[[f64; 3]]) -> Result<(ConvexHull, Vector3<f64>), HullError> {
+    for (j, q) in points.iter().enumerate().filter(|_| points.len() >= 4) {
+        if let Some(i) = points[..j].iter().position(|p| p == q) {
+            return Err(HullError::Duplicate {
+                first: i,
+                second: j,
+            });
         }
     }
+    let hull = ConvexHull::new(points)?;
+    let centroid = hull.mass_properties().centroid;
+    let moved: Vec<[f64; 3]> = points
+        .iter()
+        .map(|p| (Vector3::from(*p) - centroid).into())
+        .collect();
+    Ok((ConvexHull::new(&moved)?, centroid))
 }
 
 /// The shape and its inertia formula, in words (numbers through
@@ -43,6 +85,12 @@ pub fn describe(shape: &Shape) -> String {
             "capsule r = {}, h = {} (a cylinder and two half balls)",
             e(radius),
             e(height)
+        ),
+        Shape::Hull(ref hull) => format!(
+            "convex hull of {} vertices, {} faces, volume {} (I from the polyhedron's integrals)",
+            hull.vertices().len(),
+            hull.faces().len(),
+            e(hull.mass_properties().volume)
         ),
         Shape::HalfSpace { .. } => "half-space".to_string(),
     }

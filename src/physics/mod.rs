@@ -16,6 +16,8 @@ pub mod collide;
 pub mod contact;
 pub mod detect;
 pub mod exact;
+pub mod hull;
+mod hull_faces;
 pub mod knobs;
 pub mod params;
 pub mod pose;

@@ -4,10 +4,14 @@
 //! matters for the state that changes. A half-space is the solid side of the
 //! plane through the body's position, opposite its world `normal`.
 
+use std::sync::Arc;
+
 use nalgebra::{Matrix3, Vector3};
 
+use crate::physics::hull::ConvexHull;
+
 /// The shape of a body, in the body frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
     /// Solid sphere.
     Sphere { radius: f64 },
@@ -21,6 +25,9 @@ pub enum Shape {
     /// `height` along body y through the origin (`height` is between the two
     /// hemispheres' centres).
     Capsule { radius: f64, height: f64 },
+    /// The convex hull of points given in the body frame, re-centred on the
+    /// hull's centroid (the body's centre of mass) when the lesson is loaded.
+    Hull(Arc<ConvexHull>),
     /// The plane through the body's position with unit world `normal`; the
     /// solid side is opposite the normal. Immovable bodies only.
     HalfSpace { normal: [f64; 3] },
@@ -70,6 +77,8 @@ impl Shape {
                     + ms * (0.4 * r * r + h * h / 4.0 + 0.375 * h * r);
                 diag(side, axial, side)
             }
+            // Convex hull: the polyhedron's integrals, about its centroid.
+            Shape::Hull(ref hull) => Some(hull.inertia(m)),
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -82,6 +91,7 @@ impl Shape {
             Shape::Cylinder { radius, height } | Shape::Capsule { radius, height } => {
                 vec![radius, height]
             }
+            Shape::Hull(ref hull) => vec![hull.mass_properties().volume],
             Shape::HalfSpace { .. } => vec![],
         }
     }
@@ -101,6 +111,9 @@ impl Shape {
             }
             Shape::Cylinder { radius, height } => Some(radius.hypot(height / 2.0)),
             Shape::Capsule { radius, height } => Some(radius + height / 2.0),
+            Shape::Hull(ref hull) => {
+                Some(hull.vertices().iter().map(|v| v.norm()).fold(0.0, f64::max))
+            }
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -150,6 +163,7 @@ impl Shape {
                     end + Vector3::new(radius, 0.0, 0.0)
                 })
             }
+            Shape::Hull(ref hull) => Some(hull.vertices()[hull.support_index(direction)]),
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -179,6 +193,13 @@ impl Shape {
                 let y = local.y.clamp(-height / 2.0, height / 2.0);
                 (local - Vector3::new(0.0, y, 0.0)).norm() - radius
             }
+            // Convex hull: the largest signed distance to a face plane
+            // (exact inside and over a face; a lower bound near edges).
+            Shape::Hull(ref hull) => hull
+                .faces()
+                .iter()
+                .map(|f| f.normal.dot(local) - f.offset)
+                .fold(f64::NEG_INFINITY, f64::max),
             Shape::HalfSpace { normal } => local.dot(&Vector3::from(normal)),
         }
     }

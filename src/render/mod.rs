@@ -2,6 +2,7 @@
 
 pub mod chart;
 pub mod contact;
+pub mod detect;
 pub mod errata;
 pub mod figure;
 pub mod fill;

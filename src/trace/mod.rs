@@ -12,6 +12,7 @@
 
 mod acceleration;
 pub mod contact;
+pub mod detect;
 pub mod glossary;
 
 mod names;

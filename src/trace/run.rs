@@ -64,7 +64,7 @@ impl RunTrace {
             title: title.to_string(),
             dt: sim.params.dt,
             names,
-            shapes: sim.world.bodies.iter().map(|b| b.shape).collect(),
+            shapes: sim.world.bodies.iter().map(|b| b.shape.clone()).collect(),
             movable: sim.world.bodies.iter().map(|b| b.movable).collect(),
             frames: Vec::new(),
             events: Vec::new(),

@@ -93,7 +93,7 @@ pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Scen
                 name: b.name.clone(),
                 movable: b.movable(),
                 slot: slot.map_or(0, |s| s + 1),
-                shape: b.shape,
+                shape: b.shape.clone(),
                 position: arr(b.position),
                 orientation: quat(b.orientation),
                 position_after: after.as_ref().map_or(arr(b.position), |a| arr(a.position)),
@@ -136,8 +136,8 @@ fn correct(bodies: &mut [BodyView], figure: &FigureDef) {
         let Some(b) = bodies.get_mut(d.body) else {
             continue;
         };
-        if let Some(shape) = d.shape {
-            b.shape = Some(shape);
+        if let Some(shape) = &d.shape {
+            b.shape = Some(shape.clone());
         }
         if let Some(q) = d.orientation {
             if b.orientation_after != b.orientation {

@@ -120,7 +120,7 @@ impl StepTrace {
                     name: self.names.bodies.get(i).cloned().unwrap_or_default(),
                     movable: b.movable,
                     slot: 0,
-                    shape: b.shape,
+                    shape: b.shape.clone(),
                     position,
                     orientation,
                     position_after: position,

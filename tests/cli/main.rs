@@ -8,6 +8,7 @@ mod common;
 mod advise;
 mod advise_per_step;
 mod check_rows;
+mod detect_cli;
 mod exercise_asks;
 mod exercise_figures;
 mod grading;

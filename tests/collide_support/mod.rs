@@ -52,6 +52,7 @@ fn thickness(s: &Shape) -> f64 {
         Shape::Box { sides } => sides.iter().copied().fold(f64::INFINITY, f64::min),
         Shape::Cylinder { radius, height } => (2.0 * radius).min(height),
         Shape::Capsule { radius, .. } => 2.0 * radius,
+        Shape::Hull(ref hull) => 2.0 * hull.inner_radius(),
         Shape::HalfSpace { .. } => f64::INFINITY,
     }
 }

@@ -8,6 +8,7 @@ mod common;
 mod damaged_lessons;
 mod extremes;
 mod finite_outputs;
+mod hulls;
 mod invalid_lessons;
 mod knobs;
 mod lecture_numbers;

@@ -253,7 +253,7 @@ fn cylinders_meet_every_convex_shape() {
     );
     let inside = pose([0.0, 0.5, 0.0], UnitQuaternion::identity());
     // No analytic routine: GJK/EPA and the manifold (no longer nothing).
-    for other in [CUBE, Shape::Sphere { radius: 1.0 }, can] {
+    for other in [CUBE, Shape::Sphere { radius: 1.0 }, can.clone()] {
         let out = collide_all((&can, &upright), (&other, &inside), BoxBoxMode::Manifold);
         assert!(!out.is_empty(), "cylinder–{other:?}");
         assert!(out.iter().all(|c| c.penetration > 0.0), "{out:?}");

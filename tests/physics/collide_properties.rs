@@ -274,7 +274,13 @@ fn generator_skips_immovable_pairs_and_shapeless_bodies() {
     };
     // 0 floor (immovable), 1 ball resting on it, 2 no shape, 3 and 4 two
     // immovable boxes sunk into the floor and into each other.
-    let shapes = [Some(floor), Some(ball), None, Some(wall), Some(wall)];
+    let shapes = [
+        Some(floor),
+        Some(ball),
+        None,
+        Some(wall.clone()),
+        Some(wall),
+    ];
     let poses = [
         [0.0, 0.0, 0.0],
         [0.0, 0.49, 0.0],

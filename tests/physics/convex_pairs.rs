@@ -97,9 +97,9 @@ fn gjk_agrees_with_the_analytic_routines_on_depth() {
     let ball = Shape::Sphere { radius: 0.5 };
     let cube = Shape::Box { sides: [1.0; 3] };
     let pairs = [
-        (ball, Vector3::new(0.3, 0.7, 0.1), ball),
-        (ball, Vector3::new(0.2, 0.9, -0.1), cube),
-        (cube, Vector3::new(0.1, 0.97, 0.2), cube),
+        (ball.clone(), Vector3::new(0.3, 0.7, 0.1), ball.clone()),
+        (ball, Vector3::new(0.2, 0.9, -0.1), cube.clone()),
+        (cube.clone(), Vector3::new(0.1, 0.97, 0.2), cube),
     ];
     for (sa, at, sb) in pairs {
         let (pa, pb) = (Pose::at(at), Pose::at(Vector3::zeros()));
@@ -223,7 +223,7 @@ fn a_capsule_collides_with_every_shape() {
     let found = contacts((&pill, &on_box), (&BOX, &ground), NarrowPhase::Analytic);
     assert_eq!(found.len(), 2, "{found:?}");
     assert!(found.iter().all(|p| (p - 0.03).abs() < 1e-9), "{found:?}");
-    for other in [CAN, Shape::Sphere { radius: 0.3 }, pill] {
+    for other in [CAN, Shape::Sphere { radius: 0.3 }, pill.clone()] {
         let near = Pose::at(Vector3::new(0.3, 0.35, 0.1));
         assert!(!contacts((&pill, &lying), (&other, &near), NarrowPhase::Analytic).is_empty());
         // The conventions every pair keeps (finite, unit normal, points

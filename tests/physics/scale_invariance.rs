@@ -251,7 +251,7 @@ fn a_half_space_normal_of_any_length_is_normalised() {
         contact_lab::lesson::validate::parse("scene.toml", &text)
             .unwrap_or_else(|e| panic!("{normal}: {e}"))
     };
-    let floor = |l: &Lesson| match l.bodies[1].shape {
+    let floor = |l: &Lesson| match l.bodies[1].shape.clone() {
         Some(contact_lab::physics::Shape::HalfSpace { normal }) => normal,
         other => panic!("{other:?}"),
     };

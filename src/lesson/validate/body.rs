@@ -13,9 +13,9 @@ impl Validator {
         let mass = self.rule(&format!("body '{name}'"), &raw.mass, super::rules::mass);
         let movable = mass.is_finite() && rules::mass(mass).is_ok();
         let errors_before = self.errors.len();
-        let mut shape: Option<Shape> = raw.shape.as_ref().map(|s| Shape::from(*s.get_ref()));
+        let (mut shape, centre_of_mass) = self.shape(&format!("body '{name}'"), &raw.shape);
         self.half_space_normal(&name, raw, &mut shape);
-        if let (Some(s), Some(span)) = (shape, raw.shape.as_ref().map(|s| s.span())) {
+        if let (Some(s), Some(span)) = (&shape, raw.shape.as_ref().map(|s| s.span())) {
             if s.dimensions()
                 .iter()
                 .any(|x| !rules::in_range(*x) || !rules::in_range(1.0 / x) || *x <= 0.0)
@@ -33,7 +33,10 @@ impl Validator {
                 );
             }
         }
-        let shape_inertia = shape.filter(|_| movable).and_then(|s| s.inertia(mass));
+        let shape_inertia = shape
+            .as_ref()
+            .filter(|_| movable)
+            .and_then(|s| s.inertia(mass));
         let explicit = raw
             .inertia
             .as_ref()
@@ -64,7 +67,11 @@ impl Validator {
             (Some((t, _)), None) => Some(*t),
             (None, Some(s)) => Some(s),
             (None, None) => {
-                if movable && shape.is_none_or(|s| s.is_finite()) {
+                if movable
+                    && shape
+                        .as_ref()
+                        .map_or(raw.shape.is_none(), |s| s.is_finite())
+                {
                     self.err(
                         raw.name.span(),
                         format!("body '{name}' needs an `inertia` tensor or a `shape`"),
@@ -138,6 +145,13 @@ impl Validator {
                 }
             }
         };
+        // A hull's centre of mass is its centroid: the body's position moves
+        // there (x + R c) and the hull's points were moved by −c.
+        let position = if centre_of_mass == Vector3::zeros() {
+            position
+        } else {
+            position + nalgebra::UnitQuaternion::from_quaternion(orientation) * centre_of_mass
+        };
         let velocity = self.opt_vec(&format!("body '{name}' velocity"), &raw.velocity);
         let angular_velocity = self.opt_vec(
             &format!("body '{name}' angular_velocity"),
@@ -179,6 +193,29 @@ impl Validator {
             velocity,
             angular_velocity,
             acceleration,
+        }
+    }
+
+    /// A shape table as a physics shape and the centre of mass's offset
+    /// from the file's frame (a hull's centroid); a degenerate hull is an
+    /// error at the shape's span.
+    pub(super) fn shape(
+        &mut self,
+        what: &str,
+        raw: &Option<S<raw::RawShape>>,
+    ) -> (Option<Shape>, Vector3<f64>) {
+        let Some(raw) = raw else {
+            return (None, Vector3::zeros());
+        };
+        match crate::lesson::shape::from_raw(raw.get_ref()) {
+            Ok((shape, offset)) => (Some(shape), offset),
+            Err(e) => {
+                self.err(
+                    raw.span(),
+                    format!("{what}: the convex hull is degenerate: {e}"),
+                );
+                (None, Vector3::zeros())
+            }
         }
     }
 

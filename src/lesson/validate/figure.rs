@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use super::rules;
 use super::Validator;
 use crate::lesson::raw::RawFigure;
-use crate::lesson::{DrawnBody, FigureDef, Shape};
+use crate::lesson::{DrawnBody, FigureDef};
 
 impl Validator {
     pub(super) fn figure(&mut self, raw: &RawFigure, index: &HashMap<&str, usize>) -> FigureDef {
@@ -24,8 +24,8 @@ impl Validator {
                 );
                 continue;
             };
-            let shape = b.shape.as_ref().map(|s| Shape::from(*s.get_ref()));
-            if let (Some(s), Some(raw)) = (shape, &b.shape) {
+            let (shape, _) = self.shape(&format!("[[figure.body]] '{name}'"), &b.shape);
+            if let (Some(s), Some(raw)) = (&shape, &b.shape) {
                 let sizes_ok = s
                     .dimensions()
                     .iter()

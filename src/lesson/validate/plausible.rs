@@ -23,7 +23,7 @@ pub const PRINTED_MARKS: [&str; 1] = ["printed-zero"];
 /// body's size; `None` for a shape this test does not measure.
 fn depth(body: &BodyDef, q: &Vector3<f64>) -> Option<(f64, f64)> {
     let local = body.orientation_local(q);
-    Some(match body.shape? {
+    Some(match *body.shape.as_ref()? {
         // Sphere: r − |q − p|.
         Shape::Sphere { radius } | Shape::HollowSphere { radius } => {
             (radius - local.norm(), radius)

@@ -44,6 +44,11 @@ impl<T: Real> Aabb<T> {
             Shape::Capsule { radius, height } => {
                 Vector3::from_fn(|k, _| r[(k, 1)].abs() * c::<T>(height / 2.0) + c::<T>(radius))
             }
+            // Hull: half extent along world axis k = max over vertices of |(R v)_k|.
+            Shape::Hull(ref hull) => hull.vertices().iter().fold(Vector3::zeros(), |m, v| {
+                let w = r * v.map(c::<T>);
+                m.sup(&w.abs())
+            }),
             Shape::HalfSpace { .. } => return None,
         };
         Some(Aabb::around(&pose.position, &half.add_scalar(margin)))

@@ -46,6 +46,7 @@ pub mod broad;
 mod clip;
 mod convex;
 mod plane;
+pub mod record;
 pub mod scene;
 mod sphere;
 
@@ -252,6 +253,7 @@ enum Kind {
     Cuboid,
     Cylinder,
     Capsule,
+    Hull,
     Sphere,
     HalfSpace,
 }
@@ -261,6 +263,7 @@ fn kind(shape: &Shape) -> Kind {
         Shape::Box { .. } => Kind::Cuboid,
         Shape::Cylinder { .. } => Kind::Cylinder,
         Shape::Capsule { .. } => Kind::Capsule,
+        Shape::Hull(_) => Kind::Hull,
         Shape::Sphere { .. } | Shape::HollowSphere { .. } => Kind::Sphere,
         Shape::HalfSpace { .. } => Kind::HalfSpace,
     }
@@ -291,6 +294,12 @@ fn size_key(shape: &Shape) -> [f64; 3] {
         Shape::Cylinder { radius, height } | Shape::Capsule { radius, height } => {
             [radius, height, 0.0]
         }
+        // Hulls of one kind at one pose: by volume, then vertex count.
+        Shape::Hull(ref hull) => [
+            hull.mass_properties().volume,
+            hull.vertices().len() as f64,
+            0.0,
+        ],
         Shape::HalfSpace { normal } => normal,
     }
 }
@@ -308,35 +317,37 @@ fn narrow<T: Real>(
         return convex::convex_pair((sa, pa), (sb, pb), tol, out);
     }
     let plane_normal = |n: &[f64; 3]| Vector3::new(c::<T>(n[0]), c::<T>(n[1]), c::<T>(n[2]));
-    match (*sa, *sb) {
-        (Shape::Box { sides: s1 }, Shape::Box { sides: s2 }) => {
+    match (sa, sb) {
+        (&Shape::Box { sides: s1 }, &Shape::Box { sides: s2 }) => {
             box_box::box_box(&half(&s1), pa, &half(&s2), pb, options.box_box, tol, out)
         }
-        (Shape::Box { sides }, Shape::Sphere { radius } | Shape::HollowSphere { radius }) => {
+        (&Shape::Box { sides }, &Shape::Sphere { radius } | &Shape::HollowSphere { radius }) => {
             box_sphere::box_sphere(&half(&sides), pa, c(radius), pb, tol, out)
         }
-        (Shape::Box { sides }, Shape::HalfSpace { normal }) => {
+        (&Shape::Box { sides }, &Shape::HalfSpace { normal }) => {
             plane::box_plane(&half(&sides), pa, &plane_normal(&normal), pb, tol, out)
         }
-        (Shape::Cylinder { radius, height }, Shape::HalfSpace { normal }) => plane::cylinder_plane(
-            c(radius),
-            c(height / 2.0),
-            pa,
-            &plane_normal(&normal),
-            pb,
-            tol,
-            out,
-        ),
+        (&Shape::Cylinder { radius, height }, &Shape::HalfSpace { normal }) => {
+            plane::cylinder_plane(
+                c(radius),
+                c(height / 2.0),
+                pa,
+                &plane_normal(&normal),
+                pb,
+                tol,
+                out,
+            )
+        }
         (
-            Shape::Sphere { radius: r1 } | Shape::HollowSphere { radius: r1 },
-            Shape::Sphere { radius: r2 } | Shape::HollowSphere { radius: r2 },
+            &Shape::Sphere { radius: r1 } | &Shape::HollowSphere { radius: r1 },
+            &Shape::Sphere { radius: r2 } | &Shape::HollowSphere { radius: r2 },
         ) => sphere::sphere_sphere(c(r1), pa, c(r2), pb, tol, out),
         (
-            Shape::Sphere { radius } | Shape::HollowSphere { radius },
-            Shape::HalfSpace { normal },
+            &Shape::Sphere { radius } | &Shape::HollowSphere { radius },
+            &Shape::HalfSpace { normal },
         ) => plane::sphere_plane(c(radius), pa, &plane_normal(&normal), pb, tol, out),
         // Capsule: its two end balls against the plane, as spheres.
-        (Shape::Capsule { radius, height }, Shape::HalfSpace { normal }) => {
+        (&Shape::Capsule { radius, height }, &Shape::HalfSpace { normal }) => {
             for end in [-0.5, 0.5] {
                 let ball = Pose {
                     position: pa.to_world(&Vector3::new(T::zero(), c(end * height), T::zero())),
@@ -345,8 +356,11 @@ fn narrow<T: Real>(
                 plane::sphere_plane(c(radius), &ball, &plane_normal(&normal), pb, tol, out);
             }
         }
+        (Shape::Hull(hull), &Shape::HalfSpace { normal }) => {
+            plane::hull_plane(hull, pa, &plane_normal(&normal), pb, tol, out)
+        }
         // Two half-spaces: nothing (neither has a support mapping).
-        (Shape::HalfSpace { .. }, Shape::HalfSpace { .. }) => {}
+        (&Shape::HalfSpace { .. }, &Shape::HalfSpace { .. }) => {}
         // Cylinder with box, sphere or cylinder; a capsule with anything but
         // a half-space: GJK/EPA and the manifold.
         _ => convex::convex_pair((sa, pa), (sb, pb), tol, out),

@@ -6,6 +6,7 @@
 use nalgebra::Vector3;
 
 use super::{c, vertex, ContactPoint, Feature, Pose, Real, Side};
+use crate::physics::detect::ConvexHull;
 
 /// Sphere of radius `r` against the half-space through `plane.position` with
 /// unit world normal `n`: penetration `r - (x - x₀)·n` (the centre may even
@@ -61,6 +62,33 @@ pub(super) fn box_plane<T: Real>(
             Feature::VertexPlane {
                 cuboid: Side::A,
                 vertex: index,
+            },
+            out,
+        );
+    }
+}
+
+/// Convex hull against a half-space: every vertex at or below the plane
+/// (exact for a polyhedron: its deepest points are vertices), as the box's
+/// corners are. The plane is the reference face (side B).
+pub(super) fn hull_plane<T: Real>(
+    hull: &ConvexHull,
+    body: &Pose<T>,
+    n: &Vector3<T>,
+    plane: &Pose<T>,
+    tol: T,
+    out: &mut Vec<ContactPoint<T>>,
+) {
+    let centre_height = (body.position - plane.position).dot(n);
+    for v in hull.vertices() {
+        let offset = body.rotation * v.map(c::<T>);
+        push_below(
+            body.position + offset,
+            centre_height + offset.dot(n),
+            n,
+            tol,
+            Feature::Convex {
+                reference: Some(Side::B),
             },
             out,
         );

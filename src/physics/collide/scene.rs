@@ -132,7 +132,7 @@ impl<T: Real> ContactGenerator<T> {
         poses.clear();
         movable.clear();
         for body in bodies {
-            shapes.push(body.shape);
+            shapes.push(body.shape.clone());
             poses.push(Pose::new(body.state.position, &body.state.orientation));
             movable.push(body.movable);
         }

@@ -8,7 +8,8 @@
 //! triangle. Boxes, hulls and cylinder caps (see [`CAP_SIDES`]) are polygons;
 //! a cylinder's or capsule's side is a segment, clipped the same way. Where
 //! neither face is a polygon (spheres, capsule ends, two sides), the single
-//! point of the penetration is the manifold.
+//! point of the penetration is the manifold; so it is where no polygon face
+//! lies within 1° of the normal (two edges crossing).
 
 use nalgebra::Vector3;
 
@@ -48,6 +49,14 @@ pub fn manifold<T: Real>(
     let fa = support_face(a, pose_a, &-n);
     let fb = support_face(b, pose_b, &n);
     let (align_a, align_b) = (fa.normal.dot(&-n), fb.normal.dot(&n));
+    // No face lies across the normal (two boxes crossed edge to edge: each
+    // support face is 45° off it): a face clipped anyway would give its own
+    // tilted normal, so the penetration's point is the contact. A reference
+    // face must be within 1° of the normal (cos 1° = 0.99985).
+    let polygon = |f: &SupportFace<T>, align: T| f.points.len() >= 3 && align >= c(0.99985);
+    if !polygon(&fa, align_a) && !polygon(&fb, align_b) {
+        return single;
+    }
     let (reference, incident, side) = match (fa.points.len() >= 3, fb.points.len() >= 3) {
         (true, true) if align_a > align_b + c(1e-9) => (fa, fb, Side::A),
         (_, true) => (fb, fa, Side::B),

@@ -7,7 +7,8 @@
 //!
 //! - [`support`]: the [`Support`] trait, [`Convex`] (every convex [`Shape`]
 //!   variant, a [`Capsule`], a [`ConvexHull`]), the plane's deepest point;
-//! - [`hull`] (+ `hull_faces`): the hull of a point cloud, its faces, its mass;
+//! - [`hull`] (in `physics/hull.rs`, as a [`Shape`] holds one): the hull of a
+//!   point cloud, its faces, its mass;
 //! - [`simplex`]: the signed-volumes sub-algorithm; [`gjk`]; [`epa`]
 //!   (+ `epa_start`, growing GJK's simplex to a tetrahedron, `epa_observer`);
 //! - [`query`]: GJK then EPA (or the margins) for one pair;
@@ -26,8 +27,8 @@ mod epa_observer;
 mod epa_start;
 pub mod features;
 pub mod gjk;
-pub mod hull;
-mod hull_faces;
+/// The hull lives in `physics` (a body's shape holds one); re-exported here.
+pub use crate::physics::hull;
 pub mod manifold;
 pub mod query;
 pub mod sat;

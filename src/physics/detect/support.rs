@@ -16,7 +16,7 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 
-use super::hull::ConvexHull;
+use crate::physics::hull::ConvexHull;
 use crate::physics::pose::Pose;
 use crate::physics::{c, to_f64, Real, Shape};
 
@@ -113,6 +113,7 @@ impl Convex {
                 half_height: height / 2.0,
             }),
             Shape::Capsule { radius, height } => Some(Convex::Capsule(Capsule { radius, height })),
+            Shape::Hull(ref hull) => Some(Convex::Hull(Arc::clone(hull))),
             Shape::HalfSpace { .. } => None,
         }
     }

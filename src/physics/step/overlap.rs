@@ -14,7 +14,7 @@ use crate::physics::{to_f64, BodyId, Contact, Real, Shape, World};
 /// or a body without a shape, unbounded).
 pub fn width_along<T: Real>(world: &World<T>, id: BodyId, n: &Vector3<f64>) -> Option<f64> {
     let body = world.body(id);
-    let shape = body.shape.filter(|s| s.is_finite())?;
+    let shape = body.shape.as_ref().filter(|s| s.is_finite())?;
     let r = body.state.rotation();
     let r = r.map(to_f64);
     let local = r.transpose() * n;
@@ -32,6 +32,7 @@ fn thinnest<T: Real>(world: &World<T>, id: BodyId) -> f64 {
         Some(Shape::Box { sides }) => sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)),
         Some(Shape::Cylinder { radius, height }) => (2.0 * radius).min(height),
         Some(Shape::Capsule { radius, .. }) => 2.0 * radius,
+        Some(Shape::Hull(ref hull)) => 2.0 * hull.inner_radius(),
         Some(Shape::HalfSpace { .. }) | None => f64::INFINITY,
     }
 }

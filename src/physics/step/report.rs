@@ -155,7 +155,11 @@ pub fn surge_bound<T: Real>(world: &World<T>, gravity: f64, dt: f64) -> f64 {
         .filter(|b| b.movable)
         .map(|b| {
             let s = &b.state;
-            let reach = b.shape.and_then(|sh| sh.bounding_radius()).unwrap_or(0.0);
+            let reach = b
+                .shape
+                .as_ref()
+                .and_then(|sh| sh.bounding_radius())
+                .unwrap_or(0.0);
             let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
             let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
             let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);

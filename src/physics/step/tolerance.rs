@@ -25,11 +25,12 @@ pub fn smallest_size<T: Real>(world: &World<T>) -> Option<f64> {
         .bodies
         .iter()
         .filter(|b| b.movable)
-        .filter_map(|b| match b.shape? {
+        .filter_map(|b| match *b.shape.as_ref()? {
             Shape::Sphere { radius } | Shape::HollowSphere { radius } => Some(radius),
             Shape::Box { sides } => Some(sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)) / 2.0),
             Shape::Cylinder { radius, height } => Some(radius.min(height / 2.0)),
             Shape::Capsule { radius, .. } => Some(radius),
+            Shape::Hull(ref hull) => Some(hull.inner_radius()),
             Shape::HalfSpace { .. } => None,
         })
         .filter(|s| s.is_finite() && *s > 0.0)

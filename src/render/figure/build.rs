@@ -65,7 +65,7 @@ pub(super) fn build(bodies: &[&BodyView], contacts: &[ContactView], plane: Plane
     }
     motion_marks(&mut fig, bodies);
     for (i, b) in fig.bodies.iter().enumerate() {
-        if b.movable || b.shape.is_none_or(|s| s.is_finite()) {
+        if b.movable || b.shape.as_ref().is_none_or(|s| s.is_finite()) {
             let kind = PointKind::Centre { body: i };
             let label = format!("p{}", b.tag);
             fig.points.push(Point {
@@ -143,7 +143,7 @@ fn body_marks(b: &BodyView, i: usize, contacts: &[ContactView], plane: Plane) ->
         movable: b.movable,
         slot,
         tag: SUB[slot.min(2)],
-        shape: b.shape,
+        shape: b.shape.clone(),
         centre: view(plane, b.position),
         centre_after: view(plane, b.position_after),
         outline: at(b.position, b.orientation),
@@ -154,7 +154,11 @@ fn body_marks(b: &BodyView, i: usize, contacts: &[ContactView], plane: Plane) ->
         },
         pose_change,
         travel: norm(minus(b.position_after, b.position)),
-        bounding_radius: b.shape.and_then(|s| s.bounding_radius()).unwrap_or(0.0),
+        bounding_radius: b
+            .shape
+            .as_ref()
+            .and_then(|s| s.bounding_radius())
+            .unwrap_or(0.0),
         spin_arc_radius: b.shape.as_ref().and_then(spin_arc_radius),
         speed: norm(b.velocity),
         speed_after: norm(b.velocity_after),
@@ -184,7 +188,9 @@ fn contact_marks(fig: &mut Figure, k: usize, c: &ContactView, bodies: &[&BodyVie
     // Half-spaces (solid on body 1's side, +d̂, or body 2's, -d̂), each
     // drawn as its own plane, then the world (through q, across d̂).
     for (i, b) in bodies.iter().enumerate() {
-        if let Some(Shape::HalfSpace { normal }) = b.shape.filter(|_| c.bodies.contains(&Some(i))) {
+        if let Some(&Shape::HalfSpace { normal }) =
+            b.shape.as_ref().filter(|_| c.bodies.contains(&Some(i)))
+        {
             let solid = if c.bodies[0] == Some(i) { 1.0 } else { -1.0 };
             let outward = rotation(b.orientation) * Vector3::from(normal);
             let outward = [outward.x, outward.y, outward.z];

@@ -146,6 +146,20 @@ pub fn outline(
             ));
             Some(Outline { silhouette, edges })
         }
+        Shape::Hull(ref hull) => {
+            // Every edge of the polygon faces; the silhouette is the 2-D
+            // hull of the projected vertices.
+            let corners: Vec<P> = hull.vertices().iter().map(|v| at(*v)).collect();
+            let edges = hull
+                .edges()
+                .iter()
+                .map(|&[i, j]| [corners[i], corners[j]])
+                .collect();
+            Some(Outline {
+                silhouette: Silhouette::Polygon(self::hull(corners)),
+                edges,
+            })
+        }
         Shape::HalfSpace { .. } => None,
     }
 }
@@ -175,6 +189,7 @@ pub fn spin_arc_radius(shape: &Shape) -> Option<f64> {
         Shape::Box { sides } => Some(0.3 * sides.iter().copied().fold(f64::INFINITY, f64::min)),
         Shape::Cylinder { radius, height } => Some(0.5 * radius.min(height / 2.0)),
         Shape::Capsule { radius, .. } => Some(0.5 * radius),
+        Shape::Hull(ref hull) => Some(0.5 * hull.inner_radius()),
         Shape::HalfSpace { .. } => None,
     }
 }

@@ -419,3 +419,24 @@ fn a_figure_of_five_bodies_and_eight_contacts() {
         .count();
     assert_eq!(points, 8);
 }
+
+#[test]
+fn a_hull_outline_has_every_edge_and_the_silhouette_of_its_vertices() {
+    // A square pyramid: 5 vertices, 8 edges; seen along z, its silhouette is
+    // the triangle of the apex and the base's two x extremes.
+    let pts = [
+        [-1.0, 0.0, -1.0],
+        [1.0, 0.0, -1.0],
+        [1.0, 0.0, 1.0],
+        [-1.0, 0.0, 1.0],
+        [0.0, 2.0, 0.0],
+    ];
+    let hull = crate::physics::detect::ConvexHull::new(&pts).unwrap();
+    let shape = Shape::Hull(std::sync::Arc::new(hull));
+    let o = outline(&shape, [0.0; 3], ID, Plane::Xy).unwrap();
+    assert_eq!(o.edges.len(), 8);
+    let mut b = Bounds::default();
+    o.silhouette.points().into_iter().for_each(|p| b.add(p));
+    assert_eq!((b.lo, b.hi), ([-1.0, 0.0], [1.0, 2.0]));
+    assert_eq!(o.silhouette.points().len(), 3);
+}

@@ -26,7 +26,7 @@ pub fn body_views(run: &RunTrace, frame: &Frame) -> Vec<BodyView> {
             name: run.names.get(i).cloned().unwrap_or_default(),
             movable: run.movable.get(i).copied().unwrap_or(false),
             slot: 0,
-            shape: run.shapes.get(i).copied().flatten(),
+            shape: run.shapes.get(i).cloned().flatten(),
             position: b.position,
             orientation: b.orientation,
             position_after: b.position,

@@ -16,6 +16,8 @@ use nalgebra::{Matrix3, Vector3};
 pub enum HullError {
     #[error("a convex hull needs at least 4 points, got {count}")]
     TooFewPoints { count: usize },
+    #[error("points {first} and {second} are the same point")]
+    Duplicate { first: usize, second: usize },
     #[error("point {index} is not finite")]
     NotFinite { index: usize },
     #[error("all points coincide: the hull has no size")]
@@ -154,6 +156,16 @@ impl ConvexHull {
     /// Inertia tensor about the centroid for a body of mass `m`: m/V · I₁.
     pub fn inertia(&self, m: f64) -> Matrix3<f64> {
         self.mass.unit_inertia * (m / self.mass.volume)
+    }
+
+    /// The radius of the largest ball about the body origin inside the
+    /// hull: min over faces of the plane offset (negative when the origin
+    /// is outside). Twice it bounds the hull's width along any direction.
+    pub fn inner_radius(&self) -> f64 {
+        self.faces
+            .iter()
+            .map(|f| f.offset)
+            .fold(f64::INFINITY, f64::min)
     }
 
     /// Index of the vertex with the largest d·v (the first on ties).

@@ -1,0 +1,34 @@
+//! `contact-lab detect`'s arguments.
+
+use clap::Args;
+
+use super::{Format, KnobArgs, PlaneArg, RunLevel};
+
+#[derive(Debug, Clone, Args)]
+pub struct DetectArgs {
+    /// Embedded lesson or scene id, or path to a lesson file.
+    pub lesson: std::ffi::OsString,
+    /// Only the pair of bodies A and B (by name), run even where the broad
+    /// phase rules it out.
+    #[arg(long, value_name = "A,B")]
+    pub pair: Option<String>,
+    /// Detect after N steps of the scene (0: at the poses the file gives).
+    #[arg(long, visible_alias = "at", value_name = "N", default_value_t = 0)]
+    pub step: u64,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Significant digits of human formats (JSON always carries full f64).
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+    /// Also write an SVG figure of the (first) pair: both shapes, the
+    /// Minkowski difference A - B, the simplex or EPA's face, the normal.
+    #[arg(long, value_name = "F.svg")]
+    pub figure: Option<std::path::PathBuf>,
+    /// The plane the figure shows.
+    #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
+    pub plane: PlaneArg,
+    /// Every knob over the lesson's (`--narrow-phase gjk` forces GJK/EPA).
+    #[command(flatten)]
+    pub knobs: KnobArgs<RunLevel>,
+}

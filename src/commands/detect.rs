@@ -1,0 +1,103 @@
+//! `contact-lab detect`: how a scene's contacts are found (docs/detect.md).
+
+use std::io::Write;
+
+use super::{io, load, overrides, warn, write_atomic};
+use crate::cli::{DetectArgs, Format};
+use crate::error::AppError;
+use crate::format::Fmt;
+use crate::lesson::Lesson;
+use crate::physics::collide::record::detect as record;
+use crate::physics::collide::Options;
+use crate::physics::step::{SimParams, Simulation};
+use crate::render::detect as show;
+use crate::trace::detect::{build, Context};
+
+pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
+    let lesson = load(&args.lesson, &overrides(&args.knobs)?, None)?;
+    warn(&lesson, err);
+    let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
+    let only = args.pair.as_deref().map(|p| pair(p, &names)).transpose()?;
+    let sim = advanced(&lesson, args.step)?;
+    let p = &sim.params;
+    let options = Options {
+        box_box: p.box_box,
+        tolerance: p.contact_margin,
+        narrow_phase: p.narrow_phase,
+    };
+    let found = record(&sim.world.bodies, &options, p.dt, only);
+    let cx = Context {
+        lesson: &lesson.id,
+        title: &lesson.title,
+        step: args.step,
+        time: args.step as f64 * p.dt,
+        narrow_phase: p.narrow_phase,
+        plane: super::figure::plane(args.plane),
+        names: &names,
+        bodies: &sim.world.bodies,
+    };
+    let trace = build(&cx, &found);
+    if let Some(path) = &args.figure {
+        let svg = show::svg(&trace, 0).ok_or_else(|| {
+            AppError::Usage("--figure: no pair reaches the narrow phase, so there is nothing to draw (name one with --pair A,B)".into())
+        })?;
+        write_atomic(path, svg.as_bytes())?;
+    }
+    let f = Fmt::new(args.digits as usize);
+    let text = match args.format {
+        Format::Text => show::text(&trace, &f),
+        Format::Md => show::markdown(&trace, &f),
+        Format::Latex => show::latex(&trace, &f),
+        Format::Json => show::json(&trace),
+    };
+    out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// `A,B` as two body indices.
+fn pair(text: &str, names: &[String]) -> Result<(usize, usize), AppError> {
+    let find = |n: &str| {
+        names.iter().position(|m| m == n.trim()).ok_or_else(|| {
+            AppError::Usage(format!(
+                "--pair: no body named '{}'; the bodies are {}",
+                n.trim(),
+                names.join(", ")
+            ))
+        })
+    };
+    match text.split_once(',') {
+        Some((a, b)) if a.trim() != b.trim() => Ok((find(a)?, find(b)?)),
+        Some(_) => Err(AppError::Usage("--pair names two different bodies".into())),
+        None => Err(AppError::Usage(format!(
+            "--pair takes two body names, A,B; got '{text}'"
+        ))),
+    }
+}
+
+/// The lesson's bodies after `steps` steps of its scene (a lesson without
+/// [world], [step] or [sleep] has only its loaded poses: step 0).
+fn advanced(lesson: &Lesson, steps: u64) -> Result<Simulation<f64>, AppError> {
+    let params = match lesson.sim_params() {
+        Some(p) => p,
+        None if steps == 0 => SimParams::default(),
+        None => {
+            return Err(AppError::Usage(format!(
+            "{} is not a scene (no [world], [step] or [sleep]): only --step 0, its loaded poses",
+            lesson.id
+        )))
+        }
+    };
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let materials = lesson
+        .simulation
+        .as_ref()
+        .map(|s| s.materials.clone())
+        .unwrap_or_else(|| vec![Default::default(); world.bodies.len()]);
+    let mut sim = Simulation::new(world, params, materials);
+    for k in 0..steps {
+        sim.advance().map_err(|e| {
+            AppError::Runtime(format!("{}: step {} blew up: {e:?}", lesson.id, k + 1))
+        })?;
+    }
+    Ok(sim)
+}

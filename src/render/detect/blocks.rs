@@ -1,0 +1,301 @@
+//! The detection as a page of headings, paragraphs and tables, numbers
+//! through the one formatter; `text`, `markdown` and `latex` each lay the
+//! same page out.
+
+use crate::format::Fmt;
+use crate::trace::detect::{ContactLine, DetectTrace, EpaTrace, GjkTrace, PairTrace, V3};
+
+/// One piece of the page.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Block {
+    /// Level 1 (the scene), 2 (a phase or a pair), 3 (a pair's part).
+    Heading(u8, String),
+    Para(String),
+    Table {
+        head: Vec<String>,
+        rows: Vec<Vec<String>>,
+    },
+}
+
+/// The page of a detection.
+pub fn page(t: &DetectTrace, f: &Fmt) -> Vec<Block> {
+    let mut out = vec![Block::Heading(
+        1,
+        format!("Detection — {} ({})", t.title, t.lesson),
+    )];
+    out.push(Block::Para(format!(
+        "Step {}, t = {} s; narrow phase: {}.",
+        t.step,
+        f.num(t.time),
+        if t.narrow_phase == "gjk" {
+            "GJK/EPA for every pair but a half-space's"
+        } else {
+            "the analytic routine where one exists, GJK/EPA for every other convex pair"
+        }
+    )));
+    broad(&mut out, t, f);
+    for p in &t.pairs {
+        pair(&mut out, p, f);
+    }
+    if t.pairs.is_empty() {
+        out.push(Block::Para(
+            "No pair reaches the narrow phase: nothing touches.".into(),
+        ));
+    }
+    out
+}
+
+fn v(f: &Fmt, x: &V3) -> String {
+    format!("({})", f.list(x))
+}
+
+/// A vector whose components are round-off against `scale` (the pair's
+/// size) shown as 0: a touching pair's v_k = (1e-16, 0, 1e-17) is (0, 0, 0).
+fn v_at(f: &Fmt, x: &V3, scale: f64) -> String {
+    let parts: Vec<String> = x.iter().map(|c| f.num_at(*c, scale)).collect();
+    format!("({})", parts.join(", "))
+}
+
+fn broad(out: &mut Vec<Block>, t: &DetectTrace, f: &Fmt) {
+    out.push(Block::Heading(2, "Broad phase: bounding boxes".into()));
+    let rows = t
+        .bodies
+        .iter()
+        .map(|b| {
+            let or = |x: &Option<[V3; 2]>, k: usize| {
+                x.as_ref().map_or("unbounded".to_string(), |a| v(f, &a[k]))
+            };
+            vec![
+                b.name.clone(),
+                or(&b.aabb, 0),
+                or(&b.aabb, 1),
+                b.radius.map_or("–".into(), |r| f.num(r)),
+                or(&b.swept, 0),
+                or(&b.swept, 1),
+            ]
+        })
+        .collect();
+    out.push(Block::Table {
+        head: [
+            "body",
+            "box min",
+            "box max",
+            "sphere r",
+            "swept min",
+            "swept max",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+    out.push(Block::Para(format!(
+        "{}, {} kept, {} ruled out.",
+        count(t.bodies.len(), "body", "bodies"),
+        count(t.candidate_pairs, "pair", "pairs"),
+        t.dropped.len()
+    )));
+    if !t.dropped.is_empty() {
+        out.push(Block::Table {
+            head: ["pair", "ruled out because"].map(String::from).to_vec(),
+            rows: t
+                .dropped
+                .iter()
+                .map(|d| vec![format!("{} – {}", d.a, d.b), d.reason.clone()])
+                .collect(),
+        });
+    }
+}
+
+fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
+    let scale = p.spheres.map_or(1.0, |s| s.1);
+    out.push(Block::Heading(
+        2,
+        format!("Pair {} – {} ({})", p.a, p.b, p.method),
+    ));
+    if let Some(why) = &p.forced {
+        out.push(Block::Para(why.clone()));
+    }
+    let mut mid = vec![];
+    if let Some((d, r)) = p.spheres {
+        mid.push(format!(
+            "bounding spheres: centres {} apart, radii sum {}: {}",
+            f.num(d),
+            f.num(r),
+            if d <= r { "they overlap" } else { "apart" }
+        ));
+    }
+    if let Some(o) = p.swept_overlap {
+        mid.push(format!(
+            "boxes swept over the step: {}",
+            if o { "overlap" } else { "apart" }
+        ));
+    }
+    if !mid.is_empty() {
+        out.push(Block::Para(format!("Mid phase — {}.", mid.join("; "))));
+    }
+    for n in &p.notes {
+        out.push(Block::Para(format!("Note: {n}.")));
+    }
+    if let Some(g) = &p.gjk {
+        gjk(out, g, f, scale);
+    }
+    if let Some(e) = &p.epa {
+        epa(out, e, f, scale);
+    }
+    out.push(Block::Heading(3, "Contacts to the resolver".into()));
+    contacts(out, &p.contacts, f, scale);
+    if let Some(a) = &p.analytic {
+        out.push(Block::Heading(3, "The analytic routine gives".into()));
+        contacts(out, a, f, scale);
+    }
+}
+
+fn gjk(out: &mut Vec<Block>, g: &GjkTrace, f: &Fmt, scale: f64) {
+    let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
+    out.push(Block::Heading(3, "GJK".into()));
+    let rows = g
+        .iterations
+        .iter()
+        .enumerate()
+        .map(|(k, it)| {
+            let simplex: Vec<String> = it
+                .simplex
+                .iter()
+                .enumerate()
+                .map(|(i, w)| {
+                    let mark = if it.kept.contains(&i) { "" } else { "✗" };
+                    format!("{}{mark}", v(f, w))
+                })
+                .collect();
+            vec![
+                (k + 1).to_string(),
+                v(f, &it.direction),
+                format!(
+                    "{} = {} - {}",
+                    v(f, &it.support),
+                    v(f, &it.support_a),
+                    v(f, &it.support_b)
+                ),
+                simplex.join(" "),
+                v(f, &it.closest),
+                format!("{} (ε {})", f.num(it.bound), f.num(it.bound_limit)),
+            ]
+        })
+        .collect();
+    out.push(Block::Table {
+        head: [
+            "k",
+            "d_k",
+            "w_k = s_A(d_k) - s_B(-d_k)",
+            "simplex (✗ dropped)",
+            "v_k",
+            "|v|² - v·w",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+    let verdict = match &g.closest {
+        Some([a, b]) => format!(
+            "separated at distance {}; closest points {} on A, {} on B",
+            f.num_at(g.distance, scale),
+            v(f, a),
+            v(f, b)
+        ),
+        None => "intersecting".into(),
+    };
+    out.push(Block::Para(format!(
+        "Ended ({}): {}. Result: {}.",
+        g.end, g.end_words, verdict
+    )));
+}
+
+fn epa(out: &mut Vec<Block>, e: &EpaTrace, f: &Fmt, scale: f64) {
+    let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
+    if e.source == "margins" {
+        out.push(Block::Heading(3, "Depth from the radii".into()));
+        out.push(Block::Para(format!(
+            "No EPA: the cores are apart, so the depth is the radii less the cores' distance (exact): {} along normal {} (from B toward A), contact point {} (A's deepest {}, B's {}); features {}.",
+            f.num_at(e.depth, scale),
+            v(f, &e.normal),
+            v(f, &e.point),
+            v(f, &e.point_a),
+            v(f, &e.point_b),
+            e.feature
+        )));
+        return;
+    }
+    out.push(Block::Heading(3, "EPA".into()));
+    if e.iterations.is_empty() {
+        out.push(Block::Para(
+            "No EPA iterations: GJK's simplex could not be grown into a solid.".into(),
+        ));
+    } else {
+        let rows = e
+            .iterations
+            .iter()
+            .enumerate()
+            .map(|(k, it)| {
+                vec![
+                    (k + 1).to_string(),
+                    it.face
+                        .iter()
+                        .map(|p| v(f, p))
+                        .collect::<Vec<_>>()
+                        .join(" "),
+                    f.num_at(it.distance, scale),
+                    v(f, &it.support),
+                    f.num_at(it.gap, scale),
+                    if it.removed + it.added == 0 {
+                        "none (ended)".to_string()
+                    } else {
+                        format!("-{} +{}", it.removed, it.added)
+                    },
+                ]
+            })
+            .collect();
+        out.push(Block::Table {
+            head: ["k", "closest face", "δ_k", "w_k", "|v_k - w_k|", "faces"]
+                .map(String::from)
+                .to_vec(),
+            rows,
+        });
+    }
+    out.push(Block::Para(format!(
+        "Ended ({}): depth {} along normal {} (from B toward A), contact point {} (A's deepest {}, B's {}); features {}.",
+        e.end,
+        f.num_at(e.depth, scale),
+        v(f, &e.normal),
+        v(f, &e.point),
+        v(f, &e.point_a),
+        v(f, &e.point_b),
+        e.feature
+    )));
+}
+
+fn contacts(out: &mut Vec<Block>, c: &[ContactLine], f: &Fmt, scale: f64) {
+    let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
+    if c.is_empty() {
+        out.push(Block::Para("none".into()));
+        return;
+    }
+    out.push(Block::Table {
+        head: ["point", "normal", "penetration"]
+            .map(String::from)
+            .to_vec(),
+        rows: c
+            .iter()
+            .map(|c| {
+                vec![
+                    v(f, &c.point),
+                    v(f, &c.normal),
+                    f.num_at(c.penetration, scale),
+                ]
+            })
+            .collect(),
+    });
+}
+
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}

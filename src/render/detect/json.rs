@@ -1,0 +1,104 @@
+//! The detection as JSON (docs/detect.md): the shape scripts rely on, full
+//! f64 numbers.
+
+use serde_json::{json as j, Value};
+
+use crate::trace::detect::{ContactLine, DetectTrace, EpaTrace, GjkTrace, PairTrace};
+
+/// The JSON text of a detection.
+pub fn json(t: &DetectTrace) -> String {
+    let v = j!({
+        "lesson": t.lesson,
+        "step": t.step,
+        "time": t.time,
+        "narrow_phase": t.narrow_phase,
+        "broad_phase": {
+            "bodies": t.bodies.len(),
+            "candidate_pairs": t.candidate_pairs,
+            "pairs_ruled_out": t.dropped.len(),
+            "boxes": t.bodies.iter().map(|b| j!({
+                "body": b.name,
+                "min": b.aabb.map(|a| a[0]),
+                "max": b.aabb.map(|a| a[1]),
+                "swept_min": b.swept.map(|a| a[0]),
+                "swept_max": b.swept.map(|a| a[1]),
+                "radius": b.radius,
+            })).collect::<Vec<_>>(),
+            "ruled_out": t.dropped.iter().map(|d| j!({
+                "a": d.a, "b": d.b, "reason": d.reason,
+            })).collect::<Vec<_>>(),
+        },
+        "pairs": t.pairs.iter().map(pair).collect::<Vec<_>>(),
+    });
+    serde_json::to_string_pretty(&v).expect("finite JSON") + "\n"
+}
+
+fn pair(p: &PairTrace) -> Value {
+    j!({
+        "a": p.a,
+        "b": p.b,
+        "method": p.method,
+        "ruled_out": p.forced,
+        "mid_phase": {
+            "centre_distance": p.spheres.map(|s| s.0),
+            "radius_sum": p.spheres.map(|s| s.1),
+            "swept_overlap": p.swept_overlap,
+        },
+        "gjk": p.gjk.as_ref().map(gjk),
+        "epa": p.epa.as_ref().map(epa),
+        "contacts": contacts(&p.contacts),
+        "analytic": p.analytic.as_deref().map(contacts),
+    })
+}
+
+fn gjk(g: &GjkTrace) -> Value {
+    j!({
+        "result": g.result,
+        "end": g.end,
+        "distance": g.distance,
+        "closest": g.closest,
+        "iterations": g.iterations.iter().map(|it| j!({
+            "direction": it.direction,
+            "support": it.support,
+            "support_a": it.support_a,
+            "support_b": it.support_b,
+            "simplex": it.simplex,
+            "kept": it.kept,
+            "closest": it.closest,
+            "bound": it.bound,
+            "bound_limit": it.bound_limit,
+        })).collect::<Vec<_>>(),
+    })
+}
+
+fn epa(e: &EpaTrace) -> Value {
+    j!({
+        "depth": e.depth,
+        "normal": e.normal,
+        "point": e.point,
+        "point_a": e.point_a,
+        "point_b": e.point_b,
+        "feature": e.feature,
+        "end": e.end,
+        "source": e.source,
+        "gap": e.gap,
+        "tolerance": e.tolerance,
+        "iterations": e.iterations.iter().map(|it| j!({
+            "face": it.face,
+            "normal": it.normal,
+            "distance": it.distance,
+            "support": it.support,
+            "support_a": it.support_a,
+            "support_b": it.support_b,
+            "gap": it.gap,
+            "removed": it.removed,
+            "added": it.added,
+        })).collect::<Vec<_>>(),
+    })
+}
+
+fn contacts(c: &[ContactLine]) -> Value {
+    c.iter()
+        .map(|c| j!({ "point": c.point, "normal": c.normal, "penetration": c.penetration }))
+        .collect()
+}

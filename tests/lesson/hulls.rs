@@ -1,0 +1,93 @@
+//! Convex hulls in lesson files: `shape = { convex = [[x, y, z], …] }`. The
+//! points are in the file's body frame; the hull is re-centred on its
+//! centroid and the body's position moves to that centroid (x + R c), so the
+//! hull stays where the file puts it and the body's origin is its centre of
+//! mass. Degenerate hulls are refused through the binary in
+//! `invalid_lessons.rs` (tests/invalid_lessons/hull-*.toml).
+
+use contact_lab::lesson::validate::parse;
+use contact_lab::physics::Shape;
+use nalgebra::{UnitQuaternion, Vector3};
+
+/// A corner tetrahedron (centroid (1/4, 1/4, 1/4)) at `position`, turned
+/// by `orientation` ([w, x, y, z]).
+fn tetra_lesson(position: [f64; 3], orientation: [f64; 4]) -> String {
+    format!(
+        r#"id = "tetra"
+title = "A hull"
+[world]
+gravity = [0, -9.81, 0]
+[[body]]
+name = "tetra"
+mass = 6.0
+shape = {{ convex = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]] }}
+position = {position:?}
+orientation = {orientation:?}
+[[body]]
+name = "floor"
+mass = inf
+shape = "half_space"
+position = [0, 0, 0]
+"#
+    )
+}
+
+#[test]
+fn a_hull_is_recentred_on_its_centroid_and_stays_where_the_file_puts_it() {
+    let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.3);
+    let q = turn.into_inner();
+    let lesson = parse(
+        "tetra.toml",
+        &tetra_lesson([1.0, 2.0, 3.0], [q.w, q.i, q.j, q.k]),
+    )
+    .unwrap();
+    let body = &lesson.bodies[0];
+    let Some(Shape::Hull(hull)) = &body.shape else {
+        panic!("{:?}", body.shape)
+    };
+    // The hull's centroid is the body's origin.
+    assert!(hull.mass_properties().centroid.norm() < 1e-12);
+    // Volume 1/6; the body sits at x + R c with c = (1/4, 1/4, 1/4).
+    assert!((hull.mass_properties().volume - 1.0 / 6.0).abs() < 1e-12);
+    let c = Vector3::repeat(0.25);
+    let expected = Vector3::new(1.0, 2.0, 3.0) + turn * c;
+    assert!(
+        (body.position - expected).norm() < 1e-12,
+        "{}",
+        body.position
+    );
+    // Every file point is a hull vertex at the same world place.
+    for p in [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ] {
+        let world = Vector3::new(1.0, 2.0, 3.0) + turn * Vector3::from(p);
+        assert!(
+            hull.vertices()
+                .iter()
+                .any(|v| (body.position + turn * v - world).norm() < 1e-12),
+            "{p:?}"
+        );
+    }
+    // Inertia from the hull, symmetric; for the unit corner tetrahedron
+    // ⟨x²⟩ = 1/10, ⟨xy⟩ = 1/20 over the solid and c = 1/4 on each axis:
+    // I_xx = m (⟨y²⟩ + ⟨z²⟩ − c_y² − c_z²), I_xy = −m (⟨xy⟩ − c_x c_y).
+    let i = body.shape_inertia.unwrap();
+    assert!((i - i.transpose()).norm() < 1e-12);
+    assert!((i - hull.inertia(6.0)).norm() < 1e-12);
+    let ixx = 6.0 * (0.2 - 0.125);
+    assert!((i[(0, 0)] - ixx).abs() < 1e-12, "{i}");
+    assert!((i[(0, 1)] + 6.0 * (0.05 - 0.0625)).abs() < 1e-12, "{i}");
+}
+
+#[test]
+fn a_hull_at_its_centroid_keeps_its_position() {
+    let text = tetra_lesson([0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0]).replace(
+        "[[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]",
+        "[[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]]",
+    );
+    let lesson = parse("tetra.toml", &text).unwrap();
+    assert_eq!(lesson.bodies[0].position, Vector3::new(0.0, 1.0, 0.0));
+}
