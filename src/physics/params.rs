@@ -12,6 +12,7 @@
 use nalgebra::Vector3;
 
 use super::exact::RestitutionLaw;
+use super::step::ccd_mode::{Ccd, Rollback};
 use super::step::SleepMode;
 use super::{c, Real};
 
@@ -458,6 +459,10 @@ pub struct SimParams<T: Real> {
     /// just resolved keeps it, instead of losing it for a step and falling
     /// freely (default: 0.005).
     pub contact_margin: T,
+    /// Continuous detection in the step (default: none).
+    pub ccd: Ccd,
+    /// Projection or rolling back time for interpenetrating pairs (default: projection).
+    pub rollback: Rollback,
 }
 
 impl<T: Real> Default for SimParams<T> {
@@ -546,6 +551,8 @@ pub struct SceneSettings {
     pub dt: f64,
     pub steps: u64,
     pub sleep: SleepParams<f64>,
+    pub ccd: Ccd,
+    pub rollback: Rollback,
 }
 
 impl Default for SceneSettings {
@@ -561,6 +568,8 @@ impl Default for SceneSettings {
             dt: 1.0 / 60.0,
             steps: 600,
             sleep: SleepParams::default(),
+            ccd: Ccd::None,
+            rollback: Rollback::Projection,
         }
     }
 }
@@ -605,6 +614,8 @@ impl Settings {
                 contact_margin: p.contact_margin,
                 dt: p.dt,
                 sleep: p.sleep,
+                ccd: p.ccd,
+                rollback: p.rollback,
                 ..SceneSettings::default()
             },
         }
@@ -633,6 +644,8 @@ impl Settings {
             narrow_phase: scene.narrow_phase,
             friction_model: self.contact.friction_model,
             contact_margin: c(scene.contact_margin),
+            ccd: scene.ccd,
+            rollback: scene.rollback,
         }
     }
 }

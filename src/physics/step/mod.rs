@@ -5,6 +5,7 @@
 
 pub mod audit;
 pub mod ccd;
+pub mod ccd_mode;
 pub mod energy;
 pub mod integrate;
 pub mod overlap;
@@ -12,6 +13,8 @@ pub mod replay;
 pub mod report;
 pub mod simulation;
 pub mod sleep;
+pub mod substep;
+pub mod swept;
 pub mod tolerance;
 
 pub use integrate::{integrate, Loads};

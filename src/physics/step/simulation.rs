@@ -9,10 +9,11 @@ use std::hash::{BuildHasherDefault, Hasher};
 use nalgebra::Vector3;
 
 use super::audit::Switches;
-use super::integrate::{integrate_position, integrate_velocity, Loads};
-pub use super::report::{BlowUp, Event, StepReport};
+use super::integrate::{integrate_velocity, Loads};
+pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
-use super::{audit, ccd, energy, overlap, replay, tolerance};
+use super::substep::{Spent, Substeps};
+use super::{audit, energy, overlap, replay, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
@@ -60,6 +61,8 @@ pub struct Simulation<T: Real> {
     /// Pairs wholly inside one another this step and the last.
     inside: Vec<(BodyId, Option<BodyId>)>,
     inside_before: Vec<(BodyId, Option<BodyId>)>,
+    /// Continuous detection's scratch.
+    substeps: Substeps<T>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -87,6 +90,7 @@ impl<T: Real> Simulation<T> {
             scaled: SimParams::default(),
             inside: Vec::new(),
             inside_before: Vec::new(),
+            substeps: Substeps::default(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -207,17 +211,17 @@ impl<T: Real> Simulation<T> {
             self.warm.store(&self.world, resolver);
         }
         resolver.write_back(&mut self.world);
-        // The tunnelling audit: each pair's swept motion over the step.
-        let moves =
-            |i: usize| self.world.bodies[i].movable && (self.sleep[i].awake || !p.sleep.enabled);
-        let mut crossed = Vec::new();
-        ccd::tunnelled(&self.world, p.dt, moves, &mut crossed);
-        // 5. Positions of the awake bodies with the resolved velocities.
-        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
-            if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate_position(&mut body.state, p.dt);
-            }
-        }
+        // 5. Positions of the awake bodies with the resolved velocities,
+        // through the step's collisions with continuous detection on, and
+        // the tunnelling audit of each pair's swept motion (substep.rs).
+        let mut spent = Spent::default();
+        self.substeps.moving.clear();
+        self.substeps.moving.extend(
+            (self.world.bodies.iter().zip(&self.sleep))
+                .map(|(b, s)| b.movable && (s.awake || !p.sleep.enabled)),
+        );
+        self.substeps
+            .spend(&mut self.world, &p, &self.materials, &mut spent);
         // 6. Sleep.
         if p.sleep.enabled {
             self.update_sleep(&mut events);
@@ -226,7 +230,13 @@ impl<T: Real> Simulation<T> {
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
         let start = self.time - to_f64(p.dt);
-        events.extend(crossed.iter().map(|t| Event::Tunnelled {
+        events.extend(spent.hits.iter().map(|h| {
+            Event::Toi(ToiEvent {
+                time: start + h.time,
+                ..ToiEvent::from(*h)
+            })
+        }));
+        events.extend(spent.crossed.iter().map(|t| Event::Tunnelled {
             body1: t.body1,
             body2: t.body2,
             time: start + t.time,
