@@ -52,6 +52,8 @@ pub enum Command {
     Figure(FigureArgs),
     /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
     Simulate(SimulateArgs),
+    /// How a scene's collisions are found over a step: --toi, each pair's time of collision.
+    Detect(DetectArgs),
     /// Speed against accuracy: run scenes under a grid of knobs, cost and error against a reference.
     Study(StudyArgs),
     /// The cheapest configuration whose error against the scene's reference stays below a target.

@@ -190,3 +190,44 @@ pub struct AdviseArgs {
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
 }
+
+/// The search `detect --toi` runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ToiMethodArg {
+    /// The lecture's: [t₀, t₁] halved (after a scan of the step).
+    Bisection,
+    /// Conservative advancement: distance / bound on the closing speed.
+    Conservative,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DetectFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct DetectArgs {
+    /// Embedded scene id or path to a lesson file with [world] or [step].
+    pub lesson: std::ffi::OsString,
+    /// The time of collision of each pair over a step, iteration by iteration
+    /// (the only mode of this command so far).
+    #[arg(long, required = true)]
+    pub toi: bool,
+    /// Only this pair (two body names, comma-separated), searched even if its
+    /// movement bounds do not meet.
+    #[arg(long, value_name = "A,B")]
+    pub pair: Option<String>,
+    /// The step searched (1 = the first), from the run up to it.
+    #[arg(long, alias = "at", value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    pub step: u64,
+    /// The search: bisection (the lecture's) or conservative advancement.
+    #[arg(long, alias = "ccd", value_enum, default_value_t = ToiMethodArg::Bisection)]
+    pub method: ToiMethodArg,
+    /// Output format.
+    #[arg(long, short, value_enum, default_value_t = DetectFormat::Text)]
+    pub format: DetectFormat,
+    /// Significant digits of the text.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
+}

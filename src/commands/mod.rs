@@ -1,6 +1,7 @@
 //! What each subcommand does: load, solve, render, write.
 
 mod advise;
+mod detect_toi;
 mod errata;
 mod exercise;
 mod figure;
@@ -40,6 +41,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
         Some(Command::Resolve(args)) => resolve::resolve(&args, out, err),
         Some(Command::Figure(args)) => figure::figure(&args, out, err),
         Some(Command::Simulate(args)) => simulate::simulate(&args, out, err),
+        Some(Command::Detect(args)) => detect_toi::detect_toi(&args, out, err),
         Some(Command::Study(args)) => study::study(&args, out, err),
         Some(Command::Advise(args)) => advise::advise(&args, out, err),
         Some(Command::Errata(args)) => errata::errata(&args, out),

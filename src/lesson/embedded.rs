@@ -49,6 +49,9 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/sphere-row-20.toml",
     "scenes/mass-ratio-stack.toml",
     "scenes/overlap-recovery.toml",
+    "scenes/bullet-wall.toml",
+    "scenes/spinning-edge.toml",
+    "scenes/plate-drop.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

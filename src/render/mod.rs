@@ -13,3 +13,4 @@ pub mod run_stream;
 pub mod study;
 pub mod svg;
 pub mod tex;
+pub mod toi;

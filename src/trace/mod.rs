@@ -22,6 +22,7 @@ pub mod run;
 mod scene;
 mod stage_names;
 pub mod step;
+pub mod toi;
 mod worked;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};

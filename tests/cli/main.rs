@@ -6,6 +6,8 @@
 mod common;
 
 mod advise;
+mod ccd_simulate;
+mod detect_toi;
 mod exercise_figures;
 mod grading;
 mod instructor;

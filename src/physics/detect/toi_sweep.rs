@@ -108,7 +108,9 @@ where
         let (pa, pb) = (rebased(ma, start), rebased(mb, start));
         let end = gjk(a, &pa.pose_at(h), b, &pb.pose_at(h), &options.gjk, &mut ());
         tests += 1;
-        if end.verdict != GjkVerdict::Intersecting {
+        let hit = end.verdict == GjkVerdict::Intersecting;
+        observer.scan(start, start + h, hit);
+        if !hit {
             continue;
         }
         let mut shifted = Shifted {

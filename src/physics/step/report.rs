@@ -105,6 +105,9 @@ pub struct ToiEvent {
     /// Normal speeds before and after (m/s): closing > 0 approaches, separating > 0 leaves.
     pub closing: f64,
     pub separating: f64,
+    /// The world's kinetic energy before and after the resolution (J).
+    pub kinetic_before: f64,
+    pub kinetic_after: f64,
 }
 
 impl From<ToiHit> for ToiEvent {
@@ -120,6 +123,8 @@ impl From<ToiHit> for ToiEvent {
             normal: h.normal,
             closing: h.closing,
             separating: h.separating,
+            kinetic_before: h.kinetic_before,
+            kinetic_after: h.kinetic_after,
         }
     }
 }

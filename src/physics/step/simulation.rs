@@ -9,11 +9,12 @@ use std::hash::{BuildHasherDefault, Hasher};
 use nalgebra::Vector3;
 
 use super::audit::Switches;
+use super::ccd_mode::Rollback;
 use super::integrate::{integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use super::substep::{Spent, Substeps};
-use super::{audit, energy, overlap, replay, tolerance};
+use super::{audit, energy, overlap, replay, rollback, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
@@ -295,6 +296,16 @@ impl<T: Real> Simulation<T> {
         let p = self.params;
         // 1. Contacts from the shapes where the bodies are now.
         self.generate_contacts();
+        if p.rollback == Rollback::Rollback {
+            // Back to the time of collision instead of projection (rollback.rs).
+            let (sleep, enabled) = (&self.sleep, p.sleep.enabled);
+            let eps = c::<T>(p.resolver.position_epsilon);
+            let moving = |i: usize| sleep[i].awake || !enabled;
+            let back = &mut self.substeps.back;
+            if rollback::roll_back(&mut self.world, moving, eps, p.dt, back) > 0 {
+                self.generate_contacts();
+            }
+        }
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
@@ -362,6 +373,25 @@ impl<T: Real> Simulation<T> {
             scale: sim.energy_scale,
         }
         .replay(off)
+    }
+
+    /// The next step up to where it moves the bodies (contacts resolved,
+    /// positions not yet updated: what continuous detection sweeps), and
+    /// which bodies move, leaving this simulation as it is. Warm starting
+    /// is left out.
+    pub fn resolved_next(&self) -> (World<T>, Vec<bool>) {
+        let mut sim = self.clone();
+        sim.params = tolerance::scaled(&self.params, self.size).0;
+        sim.begin_step(&mut Vec::new());
+        let mut resolver = Resolver::prepare(&sim.world, &sim.params.resolver);
+        resolver.position_phase(Implementation::Indexed, &mut Silent);
+        resolver.velocity_phase(Implementation::Indexed, &mut Silent);
+        resolver.write_back(&mut sim.world);
+        let enabled = sim.params.sleep.enabled;
+        let moving = (sim.world.bodies.iter().zip(&sim.sleep))
+            .map(|(b, s)| b.movable && (s.awake || !enabled))
+            .collect();
+        (sim.world, moving)
     }
 
     /// The scene's energy scale (J): what gains and blow-ups are measured against.

@@ -17,6 +17,7 @@
 use nalgebra::Vector3;
 
 use super::ccd::{self, Tunnelled};
+use super::energy;
 use super::integrate::integrate_position;
 use super::swept::{motion_of, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
@@ -48,6 +49,9 @@ pub struct ToiHit {
     /// closing > 0 approaches, separating > 0 leaves.
     pub closing: f64,
     pub separating: f64,
+    /// The world's kinetic energy before and after the resolution (J).
+    pub kinetic_before: f64,
+    pub kinetic_after: f64,
 }
 
 /// What one step's continuous detection did.
@@ -65,6 +69,8 @@ pub struct Substeps<T: Real> {
     pub moving: Vec<bool>,
     swept: SweptPairs<T>,
     done: Vec<(usize, usize)>,
+    /// Rolling back: each body's time to go back (rollback.rs).
+    pub back: Vec<T>,
 }
 
 impl<T: Real> Default for Substeps<T> {
@@ -73,6 +79,7 @@ impl<T: Real> Default for Substeps<T> {
             moving: Vec::new(),
             swept: SweptPairs::default(),
             done: Vec::new(),
+            back: Vec::new(),
         }
     }
 }
@@ -195,7 +202,8 @@ fn advance<T: Real>(world: &mut World<T>, moving: &[bool], dt: T) {
 
 /// The contact of bodies `i` and `j` where they are now (GJK's closest
 /// points, or EPA's normal if the pair overlaps), resolved alone by the
-/// velocity phase. Body 1 is a movable one.
+/// velocity phase. Body 1 is a movable one. `None` when the pair is not
+/// closing there.
 fn resolve_at<T: Real>(
     world: &mut World<T>,
     p: &SimParams<T>,
@@ -264,6 +272,11 @@ fn resolve_at<T: Real>(
         to_f64((v(i) - v(j)).dot(&normal))
     };
     let closing = -normal_speed(world);
+    if closing <= 0.0 {
+        // Met but not closing (a grazing or turning-away pair): nothing to resolve.
+        return None;
+    }
+    let kinetic_before = to_f64(energy::kinetic(world));
     let kept = std::mem::replace(&mut world.contacts, vec![contact]);
     let mut resolver = Resolver::prepare(world, &p.resolver);
     resolver.velocity_phase(Implementation::Indexed, &mut Silent);
@@ -279,5 +292,7 @@ fn resolve_at<T: Real>(
         normal: to3(&normal),
         closing,
         separating: normal_speed(world),
+        kinetic_before,
+        kinetic_after: to_f64(energy::kinetic(world)),
     })
 }
