@@ -134,7 +134,7 @@ pub enum StudyFormat {
 
 #[derive(Debug, Clone, Args)]
 pub struct StudyArgs {
-    /// Scene ids or lesson files with [world] or [step] (default: the study's eight scenes).
+    /// Scene ids or lesson files with [world] or [step] (default: the study's nine scenes).
     pub scenes: Vec<std::ffi::OsString>,
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = StudyFormat::Text)]

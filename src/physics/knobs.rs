@@ -695,7 +695,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &[],
+        grid: &["none", "bisection", "conservative"],
         needs: Needs::Always,
         get: |s| Value::Choice(s.scene.ccd.name()),
         set: |s, v| {
