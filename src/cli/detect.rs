@@ -2,7 +2,7 @@
 
 use clap::Args;
 
-use super::{Format, KnobArgs, PlaneArg, RunLevel};
+use super::{Format, KnobArgs, PlaneArg, RunLevel, ToiMethodArg};
 
 #[derive(Debug, Clone, Args)]
 pub struct DetectArgs {
@@ -12,10 +12,19 @@ pub struct DetectArgs {
     /// phase rules it out.
     #[arg(long, value_name = "A,B")]
     pub pair: Option<String>,
-    /// Detect after N steps of the scene (0: at the poses the file gives).
-    #[arg(long, visible_alias = "at", value_name = "N", default_value_t = 0)]
+    /// Detect after N steps of the scene (0: at the poses the file gives);
+    /// with --toi, the step searched (1 = the first; 0 is taken as 1).
+    #[arg(long, visible_alias = "at", value_name = "N", default_value_t = 0,
+          value_parser = clap::value_parser!(u64).range(0..=1_000_000))]
     pub step: u64,
-    /// Output format.
+    /// Each pair's time of collision over the step instead, test by test
+    /// (docs/ccd.md): the pairs whose movement bounds meet, or --pair.
+    #[arg(long)]
+    pub toi: bool,
+    /// With --toi, the search: bisection (the lecture's) or conservative advancement.
+    #[arg(long, value_enum, default_value_t = ToiMethodArg::Bisection)]
+    pub method: ToiMethodArg,
+    /// Output format (--toi: text or JSON).
     #[arg(long, short, value_enum, default_value_t = Format::Text)]
     pub format: Format,
     /// Significant digits of human formats (JSON always carries full f64).

@@ -55,7 +55,7 @@ pub enum Command {
     Figure(FigureArgs),
     /// Advance a scene in time: integrate, generate contacts, resolve them, sleep.
     Simulate(SimulateArgs),
-    /// How a scene's contacts are found: broad phase, GJK and EPA step by step, the contacts.
+    /// How a scene's contacts are found: broad phase, GJK and EPA step by step, the contacts; --toi: each pair's time of collision over a step.
     Detect(DetectArgs),
     /// Speed against accuracy: run scenes under a grid of knobs, cost and error against a reference.
     Study(StudyArgs),

@@ -149,7 +149,7 @@ pub enum StudyFormat {
 
 #[derive(Debug, Clone, Args)]
 pub struct StudyArgs {
-    /// Scene ids or lesson files with [world] or [step] (default: the study's eight scenes).
+    /// Scene ids or lesson files with [world] or [step] (default: the study's nine scenes).
     pub scenes: Vec<std::ffi::OsString>,
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = StudyFormat::Text)]
@@ -218,4 +218,13 @@ pub struct AdviseArgs {
     /// Significant digits of text and Markdown (JSON carries full f64).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+}
+
+/// The search `detect --toi` runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ToiMethodArg {
+    /// The lecture's: [t₀, t₁] halved (after a scan of the step).
+    Bisection,
+    /// Conservative advancement: distance / bound on the closing speed.
+    Conservative,
 }

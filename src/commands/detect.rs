@@ -16,6 +16,9 @@ use crate::trace::detect::{build, Context};
 pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     let lesson = load(&args.lesson, &overrides(&args.knobs)?, None)?;
     warn(&lesson, err);
+    if args.toi {
+        return super::detect_toi::detect_toi(args, &lesson, out);
+    }
     let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let only = args.pair.as_deref().map(|p| pair(p, &names)).transpose()?;
     let sim = advanced(&lesson, args.step)?;

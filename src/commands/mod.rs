@@ -2,6 +2,7 @@
 
 mod advise;
 mod detect;
+mod detect_toi;
 mod errata;
 mod exercise;
 mod figure;

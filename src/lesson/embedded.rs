@@ -54,6 +54,9 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/gjk-touching.toml",
     "scenes/epa-edge-edge.toml",
     "scenes/cylinder-on-box.toml",
+    "scenes/bullet-wall.toml",
+    "scenes/spinning-edge.toml",
+    "scenes/plate-drop.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

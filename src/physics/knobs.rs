@@ -10,6 +10,7 @@
 
 use super::exact::RestitutionLaw;
 use super::params::{BoxBoxMode, NarrowPhase, Settings};
+use super::step::ccd_mode::{Ccd, Rollback};
 use super::step::SleepMode;
 use super::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
 
@@ -368,6 +369,16 @@ const SLEEP_MODES: &[(&str, &str)] = &[
     ),
 ];
 
+const CCD_MODES: &[(&str, &str)] = &[
+    ("none", "detect at the step's poses only: a body that crosses another inside one step is missed (tunnelling)"),
+    ("bisection", "the lecture's: the step sampled, then [t₀, t₁] halved until it is shorter than the tolerance"),
+    ("conservative", "conservative advancement: advance by GJK distance / bound on the closing speed"),
+];
+const ROLLBACK_MODES: &[(&str, &str)] = &[
+    ("projection", "the lecture's: the position phase projects the pair apart"),
+    ("rollback", "the pair is moved back along its motion to its time of collision, the rest of the world is not"),
+];
+
 const RUN_ONLY: &str = "a run's setting: change it on the run (simulate), not on one contact";
 
 /// Every knob. A new knob is one entry here (and its physics); everything
@@ -687,6 +698,46 @@ pub static KNOBS: &[Knob] = &[
         needs: Needs::Always,
         get: |s| Value::Count(s.scene.steps),
         set: |s, v| s.scene.steps = count(v).unwrap_or(0) as u64,
+    },
+    Knob {
+        name: "ccd",
+        old_names: &[],
+        level: Level::Step,
+        tables: &[Table::Step],
+        doc: "Continuous detection: pairs whose swept bounds meet get their time of collision; the step advances to the earliest, resolves it there (velocity phase) and spends the rest of the step (at most 8 sub-steps; docs/ccd.md): trades a GJK search per close pair for collisions a fast small body would otherwise tunnel through.",
+        default: "none",
+        kind: Kind::Choice { choices: CCD_MODES, aliases: &[] },
+        cli: Cli::Option,
+        edit: Offered::Yes,
+        study: Offered::Yes,
+        grid: &["none", "bisection", "conservative"],
+        needs: Needs::Always,
+        get: |s| Value::Choice(s.scene.ccd.name()),
+        set: |s, v| {
+            if let Some(m) = Ccd::from_name(choice(v)) {
+                s.scene.ccd = m;
+            }
+        },
+    },
+    Knob {
+        name: "rollback",
+        old_names: &[],
+        level: Level::Step,
+        tables: &[Table::Step],
+        doc: "What is done with a pair found interpenetrating deeper than position_epsilon and closing: project it apart (the lecture) or roll its bodies back along their motion to the time of collision, τ = penetration / closing speed (the lecture's question): trades projection's energy and rotation errors for the time the pair loses (and potential energy when it rolls back up). A choice, not a flag: docs/ccd.md says why.",
+        default: "projection",
+        kind: Kind::Choice { choices: ROLLBACK_MODES, aliases: &[] },
+        cli: Cli::Option,
+        edit: Offered::Yes,
+        study: Offered::Yes,
+        grid: &[],
+        needs: Needs::Always,
+        get: |s| Value::Choice(s.scene.rollback.name()),
+        set: |s, v| {
+            if let Some(m) = Rollback::from_name(choice(v)) {
+                s.scene.rollback = m;
+            }
+        },
     },
     // ---- the world ---------------------------------------------------
     Knob {

@@ -15,4 +15,5 @@ pub mod run_summary;
 pub mod study;
 pub mod svg;
 pub mod tex;
+pub mod toi;
 pub mod wrap;

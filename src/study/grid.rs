@@ -12,7 +12,7 @@ use crate::physics::{SimParams, Solver};
 /// The default scenes, how long each runs (s), and which solver the
 /// reference uses (the lecture's order for the cradle, whose real answer is
 /// a sequence of collisions; sequential impulses elsewhere).
-pub const SCENES: [(&str, f64, Solver); 8] = [
+pub const SCENES: [(&str, f64, Solver); 9] = [
     ("sphere-row-20", 0.5, Solver::SequentialImpulse),
     ("resting-box", 2.0, Solver::SequentialImpulse),
     ("stack-5", 2.0, Solver::SequentialImpulse),
@@ -21,6 +21,7 @@ pub const SCENES: [(&str, f64, Solver); 8] = [
     ("ball-drop", 2.0, Solver::SequentialImpulse),
     ("cradle-over-time", 1.0, Solver::DeepestFirst),
     ("overlap-recovery", 1.0, Solver::SequentialImpulse),
+    ("bullet-wall", 0.5, Solver::SequentialImpulse),
 ];
 
 /// The reference's time step and epsilon.
@@ -68,7 +69,8 @@ pub fn default_config(lesson: &Lesson) -> Option<Config> {
 }
 
 /// The most accurate configuration: `solver` (warm-started if sequential),
-/// converged, epsilons 1e-4, f64, dt = 1/480 s, no sleep.
+/// converged, epsilons 1e-4, f64, dt = 1/480 s, no sleep, continuous
+/// detection by conservative advancement (no collision missed).
 pub fn reference(default: &Config, solver: Solver) -> Config {
     let mut c = *default;
     c.params.resolver.solver = solver;
@@ -77,6 +79,7 @@ pub fn reference(default: &Config, solver: Solver) -> Config {
     c.params.resolver.velocity_epsilon = REFERENCE_EPSILON;
     c.params.sleep.enabled = false;
     c.params.dt = REFERENCE_DT;
+    c.params.ccd = crate::physics::step::ccd_mode::Ccd::Conservative;
     c.budget = Budget::Converged;
     c.precision = Precision::F64;
     c
@@ -85,7 +88,7 @@ pub fn reference(default: &Config, solver: Solver) -> Config {
 /// The reference in words.
 pub fn describe_reference(c: &Config) -> String {
     format!(
-        "{}, {} visits per contact (to convergence), epsilon {}, f64, dt = {} s, no sleep, the scene's other settings",
+        "{}, {} visits per contact (to convergence), epsilon {}, f64, dt = {} s, no sleep, continuous detection (conservative advancement), the scene's other settings",
         match c.solver() {
             Solver::DeepestFirst => "the lecture's deepest-first order",
             Solver::SequentialImpulse => "sequential impulses, warm-started",

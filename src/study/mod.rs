@@ -133,6 +133,8 @@ pub struct Row {
     pub max_closing_velocity: f64,
     pub energy_gain: f64,
     pub drift: f64,
+    /// Tunnelled events over the run (missed collisions).
+    pub missed_collisions: usize,
     pub error_vs_reference: f64,
     /// On the Pareto front of (cost, error) among this scene's rows.
     pub pareto: bool,

@@ -12,6 +12,8 @@
 //! - drift: how far the top body (highest against gravity at the start, the
 //!   last in file order on ties) has moved across gravity by the end (with no
 //!   gravity: how far it moved);
+//! - missed collisions: the run's `tunnelled` events (pairs that crossed
+//!   inside a step without a contact);
 //! - the final positions, for the error against the reference (RMS over the
 //!   movable bodies of the distance to the reference's final positions, m);
 //! - given the reference's [`Trajectory`], the per-step error: the largest,
@@ -38,6 +40,8 @@ pub struct Measured {
     pub max_closing_velocity: f64,
     pub energy_gain: f64,
     pub drift: f64,
+    /// Tunnelled events: pairs that crossed inside a step without a contact.
+    pub missed_collisions: usize,
     /// Final position of each movable body.
     pub positions: Vec<Vector3<f64>>,
     pub failure: Option<String>,
@@ -224,6 +228,7 @@ fn measure_in<T: Real>(
         max_closing_velocity: 0.0,
         energy_gain: 0.0,
         drift: 0.0,
+        missed_collisions: 0,
         positions: Vec::new(),
         failure: None,
         capped: false,
@@ -244,6 +249,11 @@ fn measure_in<T: Real>(
             }
         };
         after_step(&sim);
+        m.missed_collisions += report
+            .events
+            .iter()
+            .filter(|e| matches!(e, crate::physics::step::Event::Tunnelled { .. }))
+            .count();
         visits += report.position_iterations + report.velocity_iterations;
         // A phase that used its whole budget (it may have just made it).
         let limit = config.budget.per_contact() * report.contacts;

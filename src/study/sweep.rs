@@ -81,6 +81,7 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
                 max_closing_velocity: m.max_closing_velocity,
                 energy_gain: m.energy_gain,
                 drift: m.drift,
+                missed_collisions: m.missed_collisions,
                 error_vs_reference: error,
                 pareto: false,
                 failure: m.failure,

@@ -24,6 +24,7 @@ mod scene;
 mod stage_names;
 pub mod step;
 pub mod symbols;
+pub mod toi;
 mod worked;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};

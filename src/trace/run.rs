@@ -255,6 +255,21 @@ impl RunTrace {
                     f.num(point[2])
                 ),
             ),
+            Event::Toi(h) => (
+                "toi",
+                format!(
+                    "time of collision ({}, {} tests): {} met at t = {} s near ({}, {}, {}); resolved there, closing at {} m/s and separating at {} m/s, then the rest of the step",
+                    h.method.json_name(),
+                    h.tests,
+                    self.pair(h.body1, Some(h.body2)),
+                    f.num(h.time),
+                    f.num(h.point[0]),
+                    f.num(h.point[1]),
+                    f.num(h.point[2]),
+                    f.num(h.closing),
+                    f.num(h.separating)
+                ),
+            ),
         }
     }
 }

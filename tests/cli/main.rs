@@ -7,8 +7,10 @@ mod common;
 
 mod advise;
 mod advise_per_step;
+mod ccd_simulate;
 mod check_rows;
 mod detect_cli;
+mod detect_toi;
 mod exercise_asks;
 mod exercise_figures;
 mod grading;

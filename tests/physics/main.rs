@@ -10,6 +10,7 @@ mod common;
 #[path = "../exact_support/mod.rs"]
 mod exact_support;
 
+mod ccd_step;
 mod collide;
 mod collide_properties;
 mod convex_pairs;
@@ -23,6 +24,7 @@ mod resolver_alloc;
 mod resolver_properties;
 mod resolver_reference;
 mod resolver_semantics;
+mod rollback;
 mod scale_invariance;
 mod scenes;
 mod sequential;

@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod ccd_events;
 mod io_tui_edits;
 mod io_tui_responsive;
 mod tui;

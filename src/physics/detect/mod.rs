@@ -36,6 +36,7 @@ pub mod simplex;
 pub mod support;
 mod support_face;
 pub mod toi;
+pub mod toi_sweep;
 
 #[cfg(test)]
 mod tests;

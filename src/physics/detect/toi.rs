@@ -112,6 +112,9 @@ pub struct ToiStep<T: Real> {
 /// Observer of a search; does nothing by default.
 pub trait ToiObserver<T: Real> {
     fn step(&mut self, _step: &ToiStep<T>) {}
+    /// Bisection's scan of the step (`toi_sweep`): the piece [t0, t1] and
+    /// whether the pair intersects at its end.
+    fn scan(&mut self, _t0: T, _t1: T, _hit: bool) {}
 }
 
 impl<T: Real> ToiObserver<T> for () {}

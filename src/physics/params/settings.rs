@@ -8,6 +8,7 @@ use super::{
     ResolverParams, SleepParams, StepParams, WorldParams, GENERATED_VELOCITY_LIMIT,
 };
 use crate::physics::exact::RestitutionLaw;
+use crate::physics::step::ccd_mode::{Ccd, Rollback};
 use crate::physics::{c, Real};
 
 /// Everything a simulation needs beyond its bodies.
@@ -34,6 +35,10 @@ pub struct SimParams<T: Real> {
     /// just resolved keeps it, instead of losing it for a step and falling
     /// freely (default: 0.005).
     pub contact_margin: T,
+    /// Continuous detection in the step (default: none).
+    pub ccd: Ccd,
+    /// Projection or rolling back time for interpenetrating pairs (default: projection).
+    pub rollback: Rollback,
 }
 
 impl<T: Real> Default for SimParams<T> {
@@ -122,6 +127,8 @@ pub struct SceneSettings {
     pub dt: f64,
     pub steps: u64,
     pub sleep: SleepParams<f64>,
+    pub ccd: Ccd,
+    pub rollback: Rollback,
 }
 
 impl Default for SceneSettings {
@@ -137,6 +144,8 @@ impl Default for SceneSettings {
             dt: 1.0 / 60.0,
             steps: 600,
             sleep: SleepParams::default(),
+            ccd: Ccd::None,
+            rollback: Rollback::Projection,
         }
     }
 }
@@ -181,6 +190,8 @@ impl Settings {
                 contact_margin: p.contact_margin,
                 dt: p.dt,
                 sleep: p.sleep,
+                ccd: p.ccd,
+                rollback: p.rollback,
                 ..SceneSettings::default()
             },
         }
@@ -209,6 +220,8 @@ impl Settings {
             narrow_phase: scene.narrow_phase,
             friction_model: self.contact.friction_model,
             contact_margin: c(scene.contact_margin),
+            ccd: scene.ccd,
+            rollback: scene.rollback,
         }
     }
 }

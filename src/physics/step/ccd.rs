@@ -51,7 +51,7 @@ pub fn tunnelled<T: Real>(
     }
 }
 
-fn in_contact<T: Real>(world: &World<T>, i: usize, j: usize) -> bool {
+pub fn in_contact<T: Real>(world: &World<T>, i: usize, j: usize) -> bool {
     world.contacts.iter().any(|k| {
         let (a, b) = (k.body1.0, k.body2.map(|b| b.0));
         (a == i && b == Some(j)) || (a == j && b == Some(i))

@@ -5,14 +5,19 @@
 
 pub mod audit;
 pub mod ccd;
+pub mod ccd_mode;
 pub mod contact_events;
 pub mod energy;
 pub mod integrate;
 pub mod overlap;
 pub mod replay;
 pub mod report;
+pub mod rollback;
 pub mod simulation;
 pub mod sleep;
+pub mod substep;
+pub mod swept;
+pub mod toi_pair;
 pub mod tolerance;
 
 pub use integrate::{integrate, Loads};

@@ -1,6 +1,8 @@
 //! What a step reports: its numbers, the events worth a line of their own,
 //! and why a run stopped early.
 
+use super::substep::ToiHit;
+use crate::physics::detect::ToiMethod;
 use crate::physics::{to_f64, BodyId, Real, World};
 
 /// Something worth a line of its own in a run's log.
@@ -83,6 +85,48 @@ pub enum Event {
         time: f64,
         point: [f64; 3],
     },
+    /// Continuous detection resolved a collision inside the step.
+    Toi(ToiEvent),
+}
+
+/// A collision continuous detection found inside a step and resolved at
+/// its time ([`super::substep`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ToiEvent {
+    pub body1: BodyId,
+    pub body2: BodyId,
+    pub method: ToiMethod,
+    /// The run's clock (s).
+    pub time: f64,
+    /// The search's tests (GJK calls).
+    pub tests: usize,
+    pub point: [f64; 3],
+    pub normal: [f64; 3],
+    /// Normal speeds before and after (m/s): closing > 0 approaches, separating > 0 leaves.
+    pub closing: f64,
+    pub separating: f64,
+    /// The world's kinetic energy before and after the resolution (J).
+    pub kinetic_before: f64,
+    pub kinetic_after: f64,
+}
+
+impl From<ToiHit> for ToiEvent {
+    /// The hit's time stays the step's: the caller adds the step's start.
+    fn from(h: ToiHit) -> Self {
+        ToiEvent {
+            body1: h.body1,
+            body2: h.body2,
+            method: h.method,
+            time: h.time,
+            tests: h.tests,
+            point: h.point,
+            normal: h.normal,
+            closing: h.closing,
+            separating: h.separating,
+            kinetic_before: h.kinetic_before,
+            kinetic_after: h.kinetic_after,
+        }
+    }
 }
 
 /// What one step did.

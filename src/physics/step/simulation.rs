@@ -6,11 +6,13 @@
 use nalgebra::Vector3;
 
 use super::audit::Switches;
+use super::ccd_mode::Rollback;
 use super::contact_events::{self, PairSet, Touching};
-use super::integrate::{integrate_position, integrate_velocity, Loads};
-pub use super::report::{BlowUp, Event, StepReport};
+use super::integrate::{integrate_velocity, Loads};
+pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
-use super::{audit, ccd, energy, overlap, replay, tolerance};
+use super::substep::{Spent, Substeps};
+use super::{audit, energy, overlap, replay, rollback, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
@@ -58,6 +60,8 @@ pub struct Simulation<T: Real> {
     /// Pairs wholly inside one another this step and the last.
     inside: PairSet,
     inside_before: PairSet,
+    /// Continuous detection's scratch.
+    substeps: Substeps<T>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -85,6 +89,7 @@ impl<T: Real> Simulation<T> {
             scaled: SimParams::default(),
             inside: PairSet::default(),
             inside_before: PairSet::default(),
+            substeps: Substeps::default(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -205,17 +210,17 @@ impl<T: Real> Simulation<T> {
             self.warm.store(&self.world, resolver);
         }
         resolver.write_back(&mut self.world);
-        // The tunnelling audit: each pair's swept motion over the step.
-        let moves =
-            |i: usize| self.world.bodies[i].movable && (self.sleep[i].awake || !p.sleep.enabled);
-        let mut crossed = Vec::new();
-        ccd::tunnelled(&self.world, p.dt, moves, &mut crossed);
-        // 5. Positions of the awake bodies with the resolved velocities.
-        for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
-            if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate_position(&mut body.state, p.dt);
-            }
-        }
+        // 5. Positions of the awake bodies with the resolved velocities,
+        // through the step's collisions with continuous detection on, and
+        // the tunnelling audit of each pair's swept motion (substep.rs).
+        let mut spent = Spent::default();
+        self.substeps.moving.clear();
+        self.substeps.moving.extend(
+            (self.world.bodies.iter().zip(&self.sleep))
+                .map(|(b, s)| b.movable && (s.awake || !p.sleep.enabled)),
+        );
+        self.substeps
+            .spend(&mut self.world, &p, &self.materials, &mut spent);
         // 6. Sleep.
         if p.sleep.enabled {
             self.update_sleep(&mut events);
@@ -224,7 +229,13 @@ impl<T: Real> Simulation<T> {
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
         let start = self.time - to_f64(p.dt);
-        events.extend(crossed.iter().map(|t| Event::Tunnelled {
+        events.extend(spent.hits.iter().map(|h| {
+            Event::Toi(ToiEvent {
+                time: start + h.time,
+                ..ToiEvent::from(*h)
+            })
+        }));
+        events.extend(spent.crossed.iter().map(|t| Event::Tunnelled {
             body1: t.body1,
             body2: t.body2,
             time: start + t.time,
@@ -283,6 +294,16 @@ impl<T: Real> Simulation<T> {
         let p = self.params;
         // 1. Contacts from the shapes where the bodies are now.
         self.generate_contacts();
+        if p.rollback == Rollback::Rollback {
+            // Back to the time of collision instead of projection (rollback.rs).
+            let (sleep, enabled) = (&self.sleep, p.sleep.enabled);
+            let eps = c::<T>(p.resolver.position_epsilon);
+            let moving = |i: usize| sleep[i].awake || !enabled;
+            let back = &mut self.substeps.back;
+            if rollback::roll_back(&mut self.world, moving, eps, p.dt, back) > 0 {
+                self.generate_contacts();
+            }
+        }
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
@@ -351,6 +372,25 @@ impl<T: Real> Simulation<T> {
             scale: sim.energy_scale,
         }
         .replay(off)
+    }
+
+    /// The next step up to where it moves the bodies (contacts resolved,
+    /// positions not yet updated: what continuous detection sweeps), and
+    /// which bodies move, leaving this simulation as it is. Warm starting
+    /// is left out.
+    pub fn resolved_next(&self) -> (World<T>, Vec<bool>) {
+        let mut sim = self.clone();
+        sim.params = tolerance::scaled(&self.params, self.size).0;
+        sim.begin_step(&mut Vec::new());
+        let mut resolver = Resolver::prepare(&sim.world, &sim.params.resolver);
+        resolver.position_phase(Implementation::Indexed, &mut Silent);
+        resolver.velocity_phase(Implementation::Indexed, &mut Silent);
+        resolver.write_back(&mut sim.world);
+        let enabled = sim.params.sleep.enabled;
+        let moving = (sim.world.bodies.iter().zip(&sim.sleep))
+            .map(|(b, s)| b.movable && (s.awake || !enabled))
+            .collect();
+        (sim.world, moving)
     }
 
     /// The scene's energy scale (J): what gains and blow-ups are measured against.

@@ -45,6 +45,7 @@ pub fn render(study: &Study) -> String {
         "max_closing_velocity",
         "energy_gain",
         "drift",
+        "missed_collisions",
         "error_vs_reference",
         "pareto",
     ]);
@@ -72,6 +73,7 @@ fn line(scene: &str, r: &Row, timed: bool) -> String {
         number(r.max_closing_velocity),
         number(r.energy_gain),
         number(r.drift),
+        r.missed_collisions.to_string(),
         number(r.error_vs_reference),
         r.pareto.to_string(),
     ]);

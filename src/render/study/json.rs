@@ -54,6 +54,7 @@ fn row(r: &Row) -> Value {
     );
     o.insert("energy_gain".into(), number(r.energy_gain));
     o.insert("drift".into(), number(r.drift));
+    o.insert("missed_collisions".into(), json!(r.missed_collisions));
     o.insert("error_vs_reference".into(), number(r.error_vs_reference));
     o.insert("pareto".into(), json!(r.pareto));
     o.insert("failure".into(), json!(r.failure));

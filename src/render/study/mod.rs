@@ -13,13 +13,14 @@ use crate::format::Fmt;
 use crate::study::{Row, Study};
 
 /// How each number is measured, in words (text and Markdown say it once).
-pub const MEASURES: [&str; 7] = [
+pub const MEASURES: [&str; 8] = [
     "µs/step: the whole step (contacts, integration, resolution, sleep), median of the timed runs with min–max; without timing the cost is contact visits per step",
     "visits/step: contact visits of both phases per step (one deepest-first iteration or one sequential-impulse contact update is one visit), mean over the run; limit: steps where a phase used its whole budget",
     "pen. left: deepest overlap after any step (the shapes collided again, no margin), m",
     "closing left: fastest closing normal velocity after any step at the contacts it resolved, m/s",
     "energy gain: largest rise of kinetic + potential energy above the start, J",
     "drift: how far the top body (the last on ties) moved across gravity by the end (with no gravity: how far it moved), m",
+    "missed: missed collisions, pairs that crossed inside a step without a contact (tunnelled events)",
     "error: RMS over the movable bodies of the distance between their final positions and the reference's, m",
 ];
 
@@ -53,6 +54,7 @@ pub fn cells(fmt: &Fmt, r: &Row, timed: bool) -> Vec<String> {
         num(fmt, r.max_closing_velocity),
         num(fmt, r.energy_gain),
         num(fmt, r.drift),
+        r.missed_collisions.to_string(),
         num(fmt, r.error_vs_reference),
         match (&r.failure, r.pareto) {
             (Some(_), _) => "blew up".into(),
@@ -76,6 +78,7 @@ pub fn headers(timed: bool) -> Vec<&'static str> {
         "closing left",
         "energy gain",
         "drift",
+        "missed",
         "error",
         "front",
     ]);

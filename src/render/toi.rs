@@ -1,0 +1,160 @@
+//! `detect --toi` as text and JSON (GUIDE's detect contract: each pair's
+//! `toi` with `method`, `time` and `iterations` of `t0`, `t1`, `hit`).
+
+use serde_json::{json, Value};
+
+use crate::format::Fmt;
+use crate::trace::toi::{end_name, end_text, DetectToi, PairToi};
+
+fn vec3(f: &Fmt, v: &[f64; 3]) -> String {
+    format!("({}, {}, {})", f.num(v[0]), f.num(v[1]), f.num(v[2]))
+}
+
+fn yes(b: bool) -> &'static str {
+    if b {
+        "yes"
+    } else {
+        "no"
+    }
+}
+
+/// The run in words: one block per pair.
+pub fn text(d: &DetectToi, f: &Fmt) -> String {
+    let mut s = format!(
+        "{}: step {} (t = {} s to {} s), time of collision by {}\n",
+        d.lesson,
+        d.step,
+        f.num(d.time),
+        f.num(d.time + d.dt),
+        d.method.json_name()
+    );
+    if d.pairs.is_empty() {
+        s.push_str("no pair's movement bounds meet over the step: nothing to search\n");
+    }
+    for p in &d.pairs {
+        s.push('\n');
+        pair_text(&mut s, p, f);
+    }
+    s
+}
+
+fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
+    s.push_str(&format!("{} ↔ {}\n", p.a, p.b));
+    s.push_str(&format!(
+        "  movement bounds: swept AABBs overlap: {}; swept spheres meet: {}\n",
+        yes(p.aabbs_overlap),
+        yes(p.spheres_meet)
+    ));
+    if !p.record.scan.is_empty() {
+        let hit = p.record.scan.iter().find(|x| x.hit);
+        s.push_str(&format!(
+            "  scan: {} pieces tested, each {} s long; {}\n",
+            p.record.scan.len(),
+            f.num(p.record.scan[0].t1 - p.record.scan[0].t0),
+            match hit {
+                Some(x) => format!(
+                    "[{}, {}] ends intersecting: bisected",
+                    f.num(x.t0),
+                    f.num(x.t1)
+                ),
+                None => "none ends intersecting".into(),
+            }
+        ));
+    }
+    for t in &p.record.trials {
+        match p.method {
+            crate::physics::detect::ToiMethod::Bisection => s.push_str(&format!(
+                "  [t₀, t₁] = [{}, {}]: midpoint {} {} → keep [{}, {}]\n",
+                f.num(t.t0),
+                f.num(t.t1),
+                f.num(t.trial),
+                if t.hit { "intersects" } else { "apart" },
+                f.num(if t.hit { t.t0 } else { t.trial }),
+                f.num(if t.hit { t.trial } else { t.t1 })
+            )),
+            crate::physics::detect::ToiMethod::Conservative => s.push_str(&format!(
+                "  t = {}: distance {} m{}\n",
+                f.num(t.t0),
+                f.num(t.distance),
+                if t.hit {
+                    " within the tolerance: stop".to_string()
+                } else {
+                    format!(
+                        " → advance to t = {} (distance / closing bound)",
+                        f.num(t.t1)
+                    )
+                }
+            )),
+        }
+    }
+    s.push_str(&format!(
+        "  time of collision: {} ({}, {} tests)\n",
+        p.time.map_or("none".into(), |t| format!(
+            "t = {} s into the step",
+            f.num(t)
+        )),
+        end_text(p.end),
+        p.tests
+    ));
+    s.push_str(&format!(
+        "  normal at the step's end (EPA): {}\n",
+        p.at_end
+            .map_or("none: apart at the step's end".into(), |o| format!(
+                "{}, depth {} m",
+                vec3(f, &o.normal),
+                f.num(o.depth)
+            ))
+    ));
+    s.push_str(&format!(
+        "  normal one frame earlier (closest points at the step's start): {}\n",
+        p.previous_frame
+            .map_or("none: overlapping at the step's start".into(), |n| vec3(
+                f, &n
+            ))
+    ));
+}
+
+/// The run as JSON.
+pub fn json(d: &DetectToi) -> String {
+    let pairs: Vec<Value> = d.pairs.iter().map(pair_json).collect();
+    let doc = json!({
+        "lesson": d.lesson,
+        "step": d.step,
+        "time": d.time,
+        "dt": d.dt,
+        "pairs": pairs,
+    });
+    serde_json::to_string_pretty(&doc).expect("JSON") + "\n"
+}
+
+fn pair_json(p: &PairToi) -> Value {
+    let iterations: Vec<Value> = p
+        .record
+        .trials
+        .iter()
+        .map(|t| json!({ "t0": t.t0, "t1": t.t1, "trial": t.trial, "hit": t.hit, "distance": t.distance }))
+        .collect();
+    let scan: Vec<Value> = p
+        .record
+        .scan
+        .iter()
+        .map(|x| json!({ "t0": x.t0, "t1": x.t1, "hit": x.hit }))
+        .collect();
+    json!({
+        "a": p.a,
+        "b": p.b,
+        "movement_bounds": { "aabbs_overlap": p.aabbs_overlap, "spheres_meet": p.spheres_meet },
+        "toi": {
+            "method": p.method.json_name(),
+            "time": p.time,
+            "end": end_name(p.end),
+            "tests": p.tests,
+            "scan": scan,
+            "iterations": iterations,
+        },
+        "normals": {
+            "epa_at_end": p.at_end.map(|o| json!({ "normal": o.normal, "depth": o.depth })),
+            "previous_frame": p.previous_frame,
+        },
+    })
+}

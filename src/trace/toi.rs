@@ -1,0 +1,115 @@
+//! `detect --toi`: the time-of-collision search of each pair over one step,
+//! as the searches report it (bisection's scan and its [t₀, t₁] with the
+//! test at each midpoint; advancement's distance and advance), the pair's
+//! movement bounds, and the two normals of a fast pair side by side: EPA's
+//! at the step's end, and the one from the closest points one frame earlier
+//! (the lecture's proposal for fast motion).
+
+use crate::physics::detect::{ToiEnd, ToiMethod, ToiObserver, ToiStep};
+use crate::physics::{to_f64, Real};
+
+/// One test of a search (seconds into the step; metres).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Trial {
+    pub t0: f64,
+    pub t1: f64,
+    pub trial: f64,
+    pub hit: bool,
+    pub distance: f64,
+}
+
+/// One piece of bisection's scan: [t0, t1], intersecting at t1 or not.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Piece {
+    pub t0: f64,
+    pub t1: f64,
+    pub hit: bool,
+}
+
+/// Keeps a search's scan and tests, as f64.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SearchRecord {
+    pub scan: Vec<Piece>,
+    pub trials: Vec<Trial>,
+}
+
+impl<T: Real> ToiObserver<T> for SearchRecord {
+    fn step(&mut self, s: &ToiStep<T>) {
+        self.trials.push(Trial {
+            t0: to_f64(s.t0),
+            t1: to_f64(s.t1),
+            trial: to_f64(s.trial),
+            hit: s.hit,
+            distance: to_f64(s.distance),
+        });
+    }
+    fn scan(&mut self, t0: T, t1: T, hit: bool) {
+        self.scan.push(Piece {
+            t0: to_f64(t0),
+            t1: to_f64(t1),
+            hit,
+        });
+    }
+}
+
+/// EPA's normal and depth where the pair overlaps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Overlap {
+    pub normal: [f64; 3],
+    pub depth: f64,
+}
+
+/// One pair's search over the step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairToi {
+    pub a: String,
+    pub b: String,
+    /// The movement bounds: swept AABBs overlap, swept spheres meet.
+    pub aabbs_overlap: bool,
+    pub spheres_meet: bool,
+    pub method: ToiMethod,
+    /// Seconds into the step (the last time known apart), if found.
+    pub time: Option<f64>,
+    pub end: ToiEnd,
+    pub tests: usize,
+    pub record: SearchRecord,
+    /// EPA's at the step's end poses (moved by v Δt), if they overlap.
+    pub at_end: Option<Overlap>,
+    /// From b's closest point toward a's at the step's start (one frame
+    /// before the end), if the pair was apart then.
+    pub previous_frame: Option<[f64; 3]>,
+}
+
+/// A `detect --toi` run: the step and each pair searched.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DetectToi {
+    pub lesson: String,
+    /// The step searched (1-based) and its start time (s).
+    pub step: u64,
+    pub time: f64,
+    pub dt: f64,
+    pub method: ToiMethod,
+    pub pairs: Vec<PairToi>,
+}
+
+/// Why a search ended, in words.
+pub fn end_text(end: ToiEnd) -> &'static str {
+    match end {
+        ToiEnd::Converged => "converged",
+        ToiEnd::AtStart => "intersecting at the step's start",
+        ToiEnd::NoHitAtEnd => "apart at the step's end: nothing to bracket",
+        ToiEnd::NoHitInStep => "no collision in the step",
+        ToiEnd::IterationCap => "iteration cap reached",
+    }
+}
+
+/// Why a search ended, as the JSON names it.
+pub fn end_name(end: ToiEnd) -> &'static str {
+    match end {
+        ToiEnd::Converged => "converged",
+        ToiEnd::AtStart => "at_start",
+        ToiEnd::NoHitAtEnd => "no_hit_at_end",
+        ToiEnd::NoHitInStep => "no_hit_in_step",
+        ToiEnd::IterationCap => "iteration_cap",
+    }
+}

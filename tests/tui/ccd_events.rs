@@ -1,0 +1,67 @@
+//! The run screen's events list shows the tunnelling auditor's `tunnelled`
+//! event, and with continuous detection on the `toi` event instead
+//! (issue 25, item 6).
+
+use crate::common;
+use crate::common::tui::{draw, key, term, text};
+
+use contact_lab::lesson::embedded;
+use contact_lab::tui::{self, App};
+use ratatui::crossterm::event::KeyCode;
+
+/// The run screen of `lesson` after its first step, as text.
+fn after_first_step(lesson: &std::path::Path) -> (App, String) {
+    let mut a = tui::open(Some(lesson.as_os_str()), None).expect("opens");
+    key(&mut a, KeyCode::Right);
+    let mut t = term(200, 40);
+    draw(&mut t, &a);
+    let shown = text(t.backend().buffer());
+    (a, shown)
+}
+
+#[test]
+fn the_events_list_shows_tunnelled_without_ccd_and_toi_with_it() {
+    let dir = common::scratch("ccd-events");
+    let source = embedded::find("bullet-wall").unwrap();
+    let without = dir.join("bullet.toml");
+    std::fs::write(&without, source).unwrap();
+    let with = dir.join("bullet-ccd.toml");
+    std::fs::write(
+        &with,
+        source.replace("steps = 30", "steps = 30\nccd = \"conservative\""),
+    )
+    .unwrap();
+    let (a, shown) = after_first_step(&without);
+    let kinds: Vec<&str> = a
+        .run
+        .as_ref()
+        .unwrap()
+        .player
+        .run
+        .events
+        .iter()
+        .map(|e| e.kind)
+        .collect();
+    assert_eq!(kinds, vec!["tunnelled"]);
+    assert!(
+        shown.contains("tunnelled: bullet ↔ wall met at t = 0.0048 s"),
+        "{shown}"
+    );
+    let (a, shown) = after_first_step(&with);
+    let kinds: Vec<&str> = a
+        .run
+        .as_ref()
+        .unwrap()
+        .player
+        .run
+        .events
+        .iter()
+        .map(|e| e.kind)
+        .collect();
+    assert_eq!(kinds, vec!["toi"]);
+    assert!(
+        shown.contains("time of collision (conservative, 2 tests): bullet ↔ wall"),
+        "{shown}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
