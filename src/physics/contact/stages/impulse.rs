@@ -110,6 +110,22 @@ impl<T: Real> FactoredMatrix<T> {
         }
     }
 
+    /// Factors `m` for `M⁻¹` only (sequential impulses invert M once and
+    /// never solve with it): the Cholesky factor where M is numerically
+    /// positive-definite, no condition number (NaN, not to be reported).
+    /// [`FactoredMatrix::cholesky_inverse`] gives the same `M⁻¹` bit for bit
+    /// as from [`FactoredMatrix::new`].
+    pub fn for_inverse(m: Matrix3<T>) -> Self {
+        FactoredMatrix {
+            matrix: m,
+            factor: match m.cholesky() {
+                Some(ch) => Factor::Cholesky(ch),
+                None => Factor::Hopeless,
+            },
+            condition_number: c(f64::NAN),
+        }
+    }
+
     fn factor(m: Matrix3<T>, condition_number: T) -> Self {
         // κ ε ≥ 1 (or M numerically indefinite): no digit of g would be right,
         // and an LU solve of such an M can return anything up to inf.
@@ -255,6 +271,7 @@ mod tests {
         // Sequential impulses invert M from the factor held, or factor it afresh.
         let inverse = m.cholesky().map(|ch| ch.inverse());
         assert_eq!(FactoredMatrix::new(m).cholesky_inverse(), inverse);
+        assert_eq!(FactoredMatrix::for_inverse(m).cholesky_inverse(), inverse);
         assert_eq!(
             FactoredMatrix::with_condition(m).cholesky_inverse(),
             inverse
