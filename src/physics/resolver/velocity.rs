@@ -56,6 +56,7 @@ pub fn take<T: Real>(
 
 /// Applies the contact-space impulse `impulse_contact` of contact `c` to its
 /// bodies (body 2 receives the negated impulse) and records the changes.
+#[inline]
 pub fn apply_impulse<T: Real>(
     c: &ResolverContact<T>,
     bodies: &mut [ResolverBody<T>],

@@ -154,6 +154,7 @@ impl<T: Real> FactoredMatrix<T> {
     }
 
     /// `g = M⁻¹ rhs` (None when M cannot be solved or g is not finite).
+    #[inline]
     pub fn solve(&self, rhs: Vector3<T>) -> (Option<Vector3<T>>, MatrixSolve<T>) {
         let solution = match &self.factor {
             Factor::Hopeless => None,
@@ -196,6 +197,7 @@ pub fn closed_form_j<T: Real>(
 /// `(Δv / Δq̇_t, 0, 0)`, or with a sticking friction model the impulse
 /// `M⁻¹ (Δv, -v_y, -v_z)` that removes all sliding (frictionless impulse if
 /// `M` cannot be solved). The resolver calls this with its own bookkeeping.
+#[inline]
 pub fn impulse_contact<T: Real>(
     desired: T,
     contact_velocity: &Vector3<T>,
