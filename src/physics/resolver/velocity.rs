@@ -107,9 +107,9 @@ impl<T: Real> BodyChanges<T> {
             dv: [Vector3::zeros(); 2],
             dw: [Vector3::zeros(); 2],
         };
-        for d in 0..2 {
-            if let (Some(b), Some(m)) = (taken[d], &impulse.bodies[d]) {
-                out.bodies[d] = b;
+        for (d, (slot, change)) in taken.iter().zip(&impulse.bodies).enumerate() {
+            if let (Some(b), Some(m)) = (slot, change) {
+                out.bodies[d] = *b;
                 out.dv[d] = m.dv;
                 out.dw[d] = m.dw;
             }

@@ -193,7 +193,7 @@ pub fn start_of_step<T: Real>(
         let i = s.inertia_world();
         inertia.push(i);
         let energy = s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity);
-        kinetic = kinetic + energy;
+        kinetic += energy;
         let reach = b.shape.and_then(|sh| sh.bounding_radius()).unwrap_or(0.0);
         let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
         let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
