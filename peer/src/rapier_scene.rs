@@ -34,6 +34,10 @@ pub fn from(sim: &Simulation<f64>) -> PhysicsWorld {
             Shape::Cylinder { radius, height } => {
                 ColliderBuilder::cylinder(height as f32 / 2.0, radius as f32)
             }
+            // Along body y, `height` between the hemispheres' centres.
+            Shape::Capsule { radius, height } => {
+                ColliderBuilder::capsule_y(height as f32 / 2.0, radius as f32)
+            }
             Shape::HalfSpace { normal } => ColliderBuilder::halfspace(Unit::new_unchecked(
                 Vector::new(normal[0] as f32, normal[1] as f32, normal[2] as f32),
             )),

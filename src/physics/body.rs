@@ -48,9 +48,19 @@ impl<T: Real> RigidBody<T> {
 
     /// Kinetic energy `½ m v·v + ½ ωᵀ I ω`.
     pub fn kinetic_energy(&self, velocity: &Vector3<T>, angular_velocity: &Vector3<T>) -> T {
+        self.kinetic_energy_with(&self.inertia_world(), velocity, angular_velocity)
+    }
+
+    /// [`RigidBody::kinetic_energy`] with the world inertia `I` already at hand.
+    pub fn kinetic_energy_with(
+        &self,
+        inertia_world: &Matrix3<T>,
+        velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+    ) -> T {
         let half = super::c::<T>(0.5);
         half * self.mass * velocity.dot(velocity)
-            + half * angular_velocity.dot(&(self.inertia_world() * angular_velocity))
+            + half * angular_velocity.dot(&(inertia_world * angular_velocity))
     }
 
     /// Angular momentum about the world point `q`: `I ω + (p - q) × m v`.

@@ -309,3 +309,33 @@ fn island_sleep_freezes_the_stack_at_once_per_body_sleep_flaps_and_no_sleep_lets
         awake.top
     );
 }
+
+#[test]
+fn the_one_pass_start_audit_gives_the_separate_audits_bit_for_bit() {
+    use contact_lab::physics::resolver::{Implementation, Resolver, Silent};
+    use contact_lab::physics::step::{energy, replay, replay::resolved, report};
+    let mut sim = simulation("stack-5");
+    let (g, dt) = (sim.params.world.gravity, sim.params.dt);
+    let (mut speeds, mut inertia) = (Vec::new(), Vec::new());
+    for _ in 0..40 {
+        sim.advance().unwrap();
+        let w = &sim.world;
+        let (kinetic, bound) = report::start_of_step(w, g.norm(), dt, &mut speeds, &mut inertia);
+        assert_eq!(kinetic.to_bits(), energy::kinetic(w).to_bits());
+        assert_eq!(
+            bound.to_bits(),
+            report::surge_bound(w, g.norm(), dt).to_bits()
+        );
+        let each: Vec<f64> = w.bodies.iter().map(|b| b.state.velocity.norm()).collect();
+        assert_eq!(speeds, each);
+        // The resolution's audit with the inertia at hand: the same energies.
+        let (r, _) = Resolver::resolve(
+            w,
+            &sim.params.resolver,
+            Implementation::Indexed,
+            &mut Silent,
+        );
+        let with = replay::resolved_with(w, &r, &g, Some(&inertia));
+        assert_eq!(with, resolved(w, &r, &g));
+    }
+}

@@ -148,7 +148,8 @@ impl<T: Real> Resolver<T> {
             adjacency: std::mem::take(&mut self.adjacency),
             index: std::mem::take(&mut self.index),
         };
-        prepare::prepare_into(world, params.restitution_from, &mut prepared);
+        let inverse_only = params.solver == Solver::SequentialImpulse;
+        prepare::prepare_into(world, params.restitution_from, inverse_only, &mut prepared);
         let n = prepared.contacts.len();
         self.bodies = prepared.bodies;
         self.contacts = prepared.contacts;

@@ -35,6 +35,9 @@ pub struct VelocityImpulse<T: Real> {
 /// Receives each iteration of the resolver. Every method does nothing unless
 /// overridden; contacts are numbered in file order.
 pub trait Observer<T: Real> {
+    /// Whether the observer keeps what it is told: when false (the fast
+    /// path, [`Silent`]), the resolver skips work done only for the reports.
+    const RECORDS: bool = true;
     /// Called before position iteration `iteration` takes `contact`, with the
     /// bodies as they are at that moment.
     fn before_position(&mut self, _iteration: usize, _contact: usize, _bodies: &[ResolverBody<T>]) {
@@ -76,4 +79,6 @@ pub trait Observer<T: Real> {
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Silent;
 
-impl<T: Real> Observer<T> for Silent {}
+impl<T: Real> Observer<T> for Silent {
+    const RECORDS: bool = false;
+}

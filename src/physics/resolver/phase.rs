@@ -3,7 +3,8 @@
 //! contacts (penetration, desired Δv), taking one contact, and updating a
 //! contact that shares a body with it. The loops are written once.
 
-use super::observer::{Observer, PositionMoves, VelocityImpulse};
+use super::observer::{Observer, PositionMoves};
+use super::velocity::BodyChanges;
 use super::{desired_of, position, velocity, Phase, Resolver, ResolverContact};
 use crate::physics::Real;
 
@@ -76,7 +77,8 @@ pub(super) struct Velocities;
 
 impl<T: Real> PhaseWork<T> for Velocities {
     const PHASE: Phase = Phase::Velocity;
-    type Change = VelocityImpulse<T>;
+    /// The taken contact's body changes, compact (the observer has the full record).
+    type Change = BodyChanges<T>;
 
     fn value(c: &ResolverContact<T>) -> T {
         c.desired
@@ -88,25 +90,26 @@ impl<T: Real> PhaseWork<T> for Velocities {
         k: usize,
         desired: T,
         obs: &mut O,
-    ) -> VelocityImpulse<T> {
+    ) -> BodyChanges<T> {
         obs.before_velocity(used, k, &r.bodies);
         let friction = r.setups[k].friction.map(|f| &r.friction[f]);
         let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
         obs.velocity_taken(used, k, desired, &impulse);
-        impulse
+        BodyChanges::of(&impulse.slots, &impulse)
     }
 
+    #[inline(always)]
     fn update<O: Observer<T>>(
         r: &mut Resolver<T>,
         j: usize,
-        taken: &[Option<usize>; 2],
-        impulse: &VelocityImpulse<T>,
+        _taken: &[Option<usize>; 2],
+        changes: &BodyChanges<T>,
         obs: &mut O,
     ) -> (T, T) {
         let from = r.params.restitution_from;
         let c = &mut r.contacts[j];
         let before = c.desired;
-        c.velocity = velocity::updated_velocity(c, taken, impulse);
+        c.velocity = velocity::velocity_after(c, changes);
         c.desired = desired_of(c, from);
         obs.desired_updated(j, before, c.desired);
         (before, c.desired)

@@ -188,14 +188,23 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> 
         adjacency: Adjacency::default(),
         index: Vec::new(),
     };
-    prepare_into(world, from, &mut prepared);
+    prepare_into(world, from, false, &mut prepared);
     prepared
 }
 
 /// Prepares `world` into `out`, reusing its storage: nothing is allocated
 /// when it already holds a world this size (as an engine resolving every
 /// frame would use it).
-pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut Prepared<T>) {
+///
+/// `inverse_only`: the friction matrices are factored for `M⁻¹` only
+/// ([`FactoredMatrix::for_inverse`], what sequential impulses read), not for
+/// solving with a condition number (what the deepest-first order reports).
+pub fn prepare_into<T: Real>(
+    world: &World<T>,
+    from: RestitutionFrom,
+    inverse_only: bool,
+    out: &mut Prepared<T>,
+) {
     let Prepared {
         bodies,
         contacts,
@@ -284,7 +293,11 @@ pub fn prepare_into<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut 
                 model: input.friction_model,
                 static_friction: input.static_friction,
                 dynamic_friction: input.dynamic_friction,
-                matrix: FactoredMatrix::new(matrix),
+                matrix: if inverse_only {
+                    FactoredMatrix::for_inverse(matrix)
+                } else {
+                    FactoredMatrix::new(matrix)
+                },
             });
             friction.len() - 1
         });

@@ -204,13 +204,17 @@ impl<T: Real> Queue<T> for ScanQueue<T> {
         self.keys.extend(values.map(TournamentTree::key));
     }
     fn top(&self) -> Option<(usize, T)> {
-        let (mut best, mut key) = (0, *self.keys.first()?);
-        for (i, k) in self.keys.iter().enumerate().skip(1) {
-            if *k > key {
-                (best, key) = (i, *k);
-            }
-        }
-        Some((best, key))
+        // Two short passes instead of one with a branch per key: the largest
+        // value (keys hold no NaN), then the first key equal to it, which is
+        // the first of the largest (the same contact as one pass taking a
+        // key only when strictly larger; -0 and +0 are equal both ways).
+        let first = *self.keys.first()?;
+        let largest = self
+            .keys
+            .iter()
+            .fold(first, |m, k| if *k > m { *k } else { m });
+        let best = self.keys.iter().position(|k| *k == largest)?;
+        Some((best, self.keys[best]))
     }
     fn set(&mut self, k: usize, value: T) {
         self.keys[k] = TournamentTree::key(value);

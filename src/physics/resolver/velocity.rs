@@ -56,6 +56,7 @@ pub fn take<T: Real>(
 
 /// Applies the contact-space impulse `impulse_contact` of contact `c` to its
 /// bodies (body 2 receives the negated impulse) and records the changes.
+#[inline]
 pub fn apply_impulse<T: Real>(
     c: &ResolverContact<T>,
     bodies: &mut [ResolverBody<T>],
@@ -88,6 +89,49 @@ pub fn apply_impulse<T: Real>(
     }
 }
 
+/// The velocity changes one taken contact made, by resolver body, compact
+/// for the neighbour updates (a slot with no body holds `usize::MAX`, which
+/// no contact's body equals).
+#[derive(Debug, Clone, Copy)]
+pub struct BodyChanges<T: Real> {
+    pub bodies: [usize; 2],
+    pub dv: [Vector3<T>; 2],
+    pub dw: [Vector3<T>; 2],
+}
+
+impl<T: Real> BodyChanges<T> {
+    /// The changes `impulse` records for the slots `taken`.
+    pub fn of(taken: &[Option<usize>; 2], impulse: &VelocityImpulse<T>) -> Self {
+        let mut out = BodyChanges {
+            bodies: [usize::MAX; 2],
+            dv: [Vector3::zeros(); 2],
+            dw: [Vector3::zeros(); 2],
+        };
+        for (d, (slot, change)) in taken.iter().zip(&impulse.bodies).enumerate() {
+            if let (Some(b), Some(m)) = (slot, change) {
+                out.bodies[d] = *b;
+                out.dv[d] = m.dv;
+                out.dw[d] = m.dw;
+            }
+        }
+        out
+    }
+
+    /// The slot of the taken contact that changed `body` (a body is in at
+    /// most one slot of a contact).
+    #[inline(always)]
+    fn slot_of(&self, body: Option<usize>) -> Option<usize> {
+        let body = body?;
+        if self.bodies[0] == body {
+            Some(0)
+        } else if self.bodies[1] == body {
+            Some(1)
+        } else {
+            None
+        }
+    }
+}
+
 /// The contact velocity of `c` after the taken contact (slots `taken`)
 /// applied `impulse`, in the reference engine's order (slot of `c`, then
 /// slot of the taken contact).
@@ -96,28 +140,21 @@ pub fn updated_velocity<T: Real>(
     taken: &[Option<usize>; 2],
     impulse: &VelocityImpulse<T>,
 ) -> Vector3<T> {
+    velocity_after(c, &BodyChanges::of(taken, impulse))
+}
+
+/// [`updated_velocity`] from the compact changes: `v_j += s·Cⱼᵀ(Δv + Δω × r_j)`
+/// for each slot of `c` whose body changed, slot 1 first (the same operations
+/// in the same order).
+#[inline]
+pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>) -> Vector3<T> {
     let mut velocity = c.velocity;
     // Body 1 of `c` gains the change, body 2 loses it (`a − b` is `a + (−b)` exactly).
-    let mut add = |b: usize, body: usize, sign_positive: bool| {
-        for (slot, change) in taken.iter().zip(&impulse.bodies) {
-            if *slot != Some(body) {
-                continue;
-            }
-            if let Some(m) = change {
-                let along = to_contact(&c.basis, &(m.dv + m.dw.cross(&c.r[b])));
-                if sign_positive {
-                    velocity += along;
-                } else {
-                    velocity -= along;
-                }
-            }
-        }
-    };
-    if let Some(body) = c.bodies[0] {
-        add(0, body, true);
+    if let Some(d) = changes.slot_of(c.bodies[0]) {
+        velocity += to_contact(&c.basis, &(changes.dv[d] + changes.dw[d].cross(&c.r[0])));
     }
-    if let Some(body) = c.bodies[1] {
-        add(1, body, false);
+    if let Some(d) = changes.slot_of(c.bodies[1]) {
+        velocity -= to_contact(&c.basis, &(changes.dv[d] + changes.dw[d].cross(&c.r[1])));
     }
     velocity
 }

@@ -6,7 +6,7 @@
 //! is copied on the fast path: a re-run clones them only when a gain is
 //! being explained.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::audit::{gain, EnergyCause, Switch, Switches};
 use crate::physics::resolver::sequential::WarmCache;
@@ -29,6 +29,17 @@ pub struct Resolved {
 /// Energy of `r`'s bodies before (as in `world`) and after resolution
 /// (`½ m v·v + ½ ωᵀ I ω`, with I in the orientation after projection).
 pub fn resolved<T: Real>(world: &World<T>, r: &Resolver<T>, gravity: &Vector3<T>) -> Resolved {
+    resolved_with(world, r, gravity, None)
+}
+
+/// [`resolved`] with each world body's inertia `R I Rᵀ` as `world` holds
+/// it already at hand (`inertia[i]` for body `i`), the same numbers.
+pub fn resolved_with<T: Real>(
+    world: &World<T>,
+    r: &Resolver<T>,
+    gravity: &Vector3<T>,
+    inertia: Option<&[Matrix3<T>]>,
+) -> Resolved {
     let mut out = Resolved {
         kinetic_before: 0.0,
         kinetic_after: 0.0,
@@ -37,8 +48,11 @@ pub fn resolved<T: Real>(world: &World<T>, r: &Resolver<T>, gravity: &Vector3<T>
     };
     for b in &r.bodies {
         let before = &world.body(b.id).state;
-        out.kinetic_before +=
-            to_f64(before.kinetic_energy(&before.velocity, &before.angular_velocity));
+        let (v, w) = (&before.velocity, &before.angular_velocity);
+        out.kinetic_before += to_f64(match inertia {
+            Some(inertia) => before.kinetic_energy_with(&inertia[b.id.0], v, w),
+            None => before.kinetic_energy(v, w),
+        });
         let mut after = before.clone();
         after.orientation = b.orientation;
         out.kinetic_after += to_f64(after.kinetic_energy(&b.velocity, &b.angular_velocity));

@@ -213,6 +213,44 @@ pub fn surge_bound<T: Real>(world: &World<T>, gravity: f64, dt: f64) -> f64 {
         .sum()
 }
 
+/// What a step's audits read at its start, in one pass over the bodies:
+/// the kinetic energy of the movable bodies (as [`super::energy::kinetic`]),
+/// the [`surge_bound`], each body's speed (into `speeds`) and each body's
+/// world inertia (into `inertia`, for the resolution's energy audit; the
+/// orientations do not change before it). Each body's `R I Rᵀ` and kinetic
+/// energy are computed once; the sums are the same operations in the same order.
+pub fn start_of_step<T: Real>(
+    world: &World<T>,
+    gravity: f64,
+    dt: f64,
+    speeds: &mut Vec<f64>,
+    inertia: &mut Vec<nalgebra::Matrix3<T>>,
+) -> (T, f64) {
+    speeds.clear();
+    inertia.clear();
+    let mut kinetic = T::zero();
+    // `Iterator::sum` of f64 starts from -0.0.
+    let mut bound = -0.0f64;
+    for b in &world.bodies {
+        let s = &b.state;
+        speeds.push(to_f64(s.velocity.norm()));
+        if !b.movable {
+            inertia.push(nalgebra::Matrix3::zeros());
+            continue;
+        }
+        let i = s.inertia_world();
+        inertia.push(i);
+        let energy = s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity);
+        kinetic += energy;
+        let reach = b.shape.and_then(|sh| sh.bounding_radius()).unwrap_or(0.0);
+        let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
+        let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
+        let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);
+        bound += e + to_f64(energy);
+    }
+    (kinetic, bound)
+}
+
 /// The first movable body with a non-finite state, as a blow-up.
 pub fn check_finite<T: Real>(world: &World<T>, step: u64) -> Result<(), BlowUp> {
     for (i, b) in world.bodies.iter().enumerate().filter(|(_, b)| b.movable) {

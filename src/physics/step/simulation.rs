@@ -52,6 +52,8 @@ pub struct Simulation<T: Real> {
     lifting: bool,
     /// Each body's speed at the start of the step (storage kept).
     speeds: Vec<f64>,
+    /// Each body's world inertia at the start of the step (storage kept).
+    inertia: Vec<nalgebra::Matrix3<T>>,
     /// The smallest half-width of a movable body (the tolerances' scale).
     size: Option<f64>,
     /// The parameters the scaled ones were made from, and the scaled ones.
@@ -84,6 +86,7 @@ impl<T: Real> Simulation<T> {
             gaining: false,
             lifting: false,
             speeds: Vec::new(),
+            inertia: Vec::new(),
             size: None,
             scaled_for: None,
             scaled: SimParams::default(),
@@ -146,16 +149,14 @@ impl<T: Real> Simulation<T> {
         let mut events = Vec::new();
         // What this step may give at most (the blow-up rule), and each
         // body's speed to name the ones that blew up.
-        let kinetic_start = to_f64(energy::kinetic(&self.world));
-        let surge_bound =
-            super::report::surge_bound(&self.world, to_f64(p.world.gravity.norm()), to_f64(p.dt));
-        self.speeds.clear();
-        self.speeds.extend(
-            self.world
-                .bodies
-                .iter()
-                .map(|b| to_f64(b.state.velocity.norm())),
+        let (kinetic_start, surge_bound) = super::report::start_of_step(
+            &self.world,
+            to_f64(p.world.gravity.norm()),
+            to_f64(p.dt),
+            &mut self.speeds,
+            &mut self.inertia,
         );
+        let kinetic_start = to_f64(kinetic_start);
         self.begin_step(&mut events);
         let max_penetration = self
             .world
@@ -179,7 +180,8 @@ impl<T: Real> Simulation<T> {
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         // The audits, while the world still holds the step's inputs.
-        let energy = replay::resolved(&self.world, resolver, &p.world.gravity);
+        let energy =
+            replay::resolved_with(&self.world, resolver, &p.world.gravity, Some(&self.inertia));
         let gained = audit::gain(
             energy.kinetic_before,
             energy.kinetic_after,

@@ -24,6 +24,7 @@ pub struct AppliedImpulse<T: Real> {
 
 /// One body's velocity change from the impulse `impulse_world` (body 1's
 /// sign, `sign` = ±1): `Δṗ = ±g/m`, `Δθ̇ = I⁻¹(r × ±g)`, from its velocities `v`, `w`.
+#[inline]
 pub fn body_velocity_change<T: Real>(
     inverse_mass: T,
     inverse_inertia_world: &Matrix3<T>,

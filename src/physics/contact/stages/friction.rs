@@ -95,6 +95,7 @@ pub fn friction_clamp<T: Real>(
 }
 
 /// The clamp of each friction model on an impulse (see the module comment).
+#[inline]
 pub fn clamp<T: Real>(input: ClampInputs<'_, T>) -> FrictionClamp<T> {
     let (mu_s, mu_d) = (input.static_friction, input.dynamic_friction);
     let g = input.impulse_contact;

@@ -110,6 +110,22 @@ impl<T: Real> FactoredMatrix<T> {
         }
     }
 
+    /// Factors `m` for `M⁻¹` only (sequential impulses invert M once and
+    /// never solve with it): the Cholesky factor where M is numerically
+    /// positive-definite, no condition number (NaN, not to be reported).
+    /// [`FactoredMatrix::cholesky_inverse`] gives the same `M⁻¹` bit for bit
+    /// as from [`FactoredMatrix::new`].
+    pub fn for_inverse(m: Matrix3<T>) -> Self {
+        FactoredMatrix {
+            matrix: m,
+            factor: match m.cholesky() {
+                Some(ch) => Factor::Cholesky(ch),
+                None => Factor::Hopeless,
+            },
+            condition_number: c(f64::NAN),
+        }
+    }
+
     fn factor(m: Matrix3<T>, condition_number: T) -> Self {
         // κ ε ≥ 1 (or M numerically indefinite): no digit of g would be right,
         // and an LU solve of such an M can return anything up to inf.
@@ -138,6 +154,7 @@ impl<T: Real> FactoredMatrix<T> {
     }
 
     /// `g = M⁻¹ rhs` (None when M cannot be solved or g is not finite).
+    #[inline]
     pub fn solve(&self, rhs: Vector3<T>) -> (Option<Vector3<T>>, MatrixSolve<T>) {
         let solution = match &self.factor {
             Factor::Hopeless => None,
@@ -180,6 +197,7 @@ pub fn closed_form_j<T: Real>(
 /// `(Δv / Δq̇_t, 0, 0)`, or with a sticking friction model the impulse
 /// `M⁻¹ (Δv, -v_y, -v_z)` that removes all sliding (frictionless impulse if
 /// `M` cannot be solved). The resolver calls this with its own bookkeeping.
+#[inline]
 pub fn impulse_contact<T: Real>(
     desired: T,
     contact_velocity: &Vector3<T>,
@@ -255,6 +273,7 @@ mod tests {
         // Sequential impulses invert M from the factor held, or factor it afresh.
         let inverse = m.cholesky().map(|ch| ch.inverse());
         assert_eq!(FactoredMatrix::new(m).cholesky_inverse(), inverse);
+        assert_eq!(FactoredMatrix::for_inverse(m).cholesky_inverse(), inverse);
         assert_eq!(
             FactoredMatrix::with_condition(m).cholesky_inverse(),
             inverse

@@ -144,9 +144,12 @@ pub fn visit<T: Real, O: Observer<T>>(
     let mut impulse = apply(r, k, &delta);
     impulse.regime = regime;
     obs.velocity_taken(visit, k, desired, &impulse);
-    // The visited contact's own Δv wanted after the visit (≈ 0 unless clamped).
-    let after = body_velocity(&r.contacts[k], &r.bodies).x + r.sequential.offset[k].x;
-    obs.desired_updated(k, desired, desired - (after - v.x));
+    // The visited contact's own Δv wanted after the visit (≈ 0 unless
+    // clamped): for the reports only.
+    if O::RECORDS {
+        let after = body_velocity(&r.contacts[k], &r.bodies).x + r.sequential.offset[k].x;
+        obs.desired_updated(k, desired, desired - (after - v.x));
+    }
     delta.norm() * r.setups[k].unit_total
 }
 
