@@ -22,9 +22,9 @@ pub fn from(sim: &Simulation<f64>) -> PhysicsWorld {
     for (body, material) in sim.world.bodies.iter().zip(&sim.materials) {
         let Some(shape) = &body.shape else { continue };
         let s = &body.state;
-        let collider = match *shape {
+        let collider = match shape {
             Shape::Sphere { radius } | Shape::HollowSphere { radius } => {
-                ColliderBuilder::ball(radius as f32)
+                ColliderBuilder::ball(*radius as f32)
             }
             Shape::Box { sides } => ColliderBuilder::cuboid(
                 sides[0] as f32 / 2.0,
@@ -32,11 +32,20 @@ pub fn from(sim: &Simulation<f64>) -> PhysicsWorld {
                 sides[2] as f32 / 2.0,
             ),
             Shape::Cylinder { radius, height } => {
-                ColliderBuilder::cylinder(height as f32 / 2.0, radius as f32)
+                ColliderBuilder::cylinder(*height as f32 / 2.0, *radius as f32)
             }
             // Along body y, `height` between the hemispheres' centres.
             Shape::Capsule { radius, height } => {
-                ColliderBuilder::capsule_y(height as f32 / 2.0, radius as f32)
+                ColliderBuilder::capsule_y(*height as f32 / 2.0, *radius as f32)
+            }
+            // The hull's vertices, in the body frame (its centroid).
+            Shape::Hull(hull) => {
+                let points: Vec<_> = hull
+                    .vertices()
+                    .iter()
+                    .map(|p| Vector::new(p.x as f32, p.y as f32, p.z as f32))
+                    .collect();
+                ColliderBuilder::convex_hull(&points).expect("a hull the lesson accepted")
             }
             Shape::HalfSpace { normal } => ColliderBuilder::halfspace(Unit::new_unchecked(
                 Vector::new(normal[0] as f32, normal[1] as f32, normal[2] as f32),

@@ -7,13 +7,16 @@
 //! again at the end crossed each other unseen: a [`Tunnelled`] report. It
 //! only reports; it changes nothing.
 //!
-//! Cost: pairs are first ruled out by their motion spheres (centre the
+//! Cost: pairs are first ruled out by the swept broad phase (sort and sweep
+//! over each body's movement bounds, then their motion spheres: centre the
 //! midpoint of x₀ and x₁, radius ρ + |v| Δt / 2, ρ the bounding radius about
-//! the body origin), pairs already in contact and pairs that do not move
+//! the body origin); pairs already in contact and pairs that do not move
 //! are skipped, so a resting scene runs no GJK at all.
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::contact_events::PairSet;
+use super::swept::SweptPairs;
 use crate::physics::detect::gjk::{gjk, GjkOptions, GjkVerdict};
 use crate::physics::detect::toi::{conservative_advancement, Motion, ToiEnd, ToiOptions};
 use crate::physics::detect::Convex;
@@ -31,31 +34,47 @@ pub struct Tunnelled {
 }
 
 /// The pairs of `world` whose swept motion over `dt` crossed without a
-/// contact; `moves(i)` says whether body i's position is updated this step.
+/// contact; `moving[i]` says whether body i's position is updated this
+/// step. The candidates come from the swept broad phase (`swept`, its
+/// scratch kept by the caller): sort and sweep over the movement bounds,
+/// so a resting pile costs what its bounds' overlaps cost, not n² pairs.
 pub fn tunnelled<T: Real>(
     world: &World<T>,
     dt: T,
-    moves: impl Fn(usize) -> bool,
+    moving: &[bool],
+    swept: &mut SweptPairs<T>,
     out: &mut Vec<Tunnelled>,
 ) {
-    let n = world.bodies.len();
-    for i in 0..n {
-        for j in (i + 1)..n {
-            if !(moves(i) || moves(j)) {
-                continue;
-            }
-            if let Some(t) = pair(world, i, j, dt, &moves) {
-                out.push(t);
-            }
+    swept.find(world, moving, dt);
+    if swept.pairs.is_empty() {
+        return;
+    }
+    let touching = contact_pairs(world);
+    let from = out.len();
+    for &(i, j) in &swept.pairs {
+        if touching.contains(&key(i, j)) {
+            continue;
+        }
+        if let Some(t) = pair(world, i, j, dt, moving) {
+            out.push(t);
         }
     }
+    // In the order of the bodies, whatever order the sweep found them in.
+    out[from..].sort_by_key(|t| (t.body1, t.body2));
 }
 
-pub fn in_contact<T: Real>(world: &World<T>, i: usize, j: usize) -> bool {
-    world.contacts.iter().any(|k| {
-        let (a, b) = (k.body1.0, k.body2.map(|b| b.0));
-        (a == i && b == Some(j)) || (a == j && b == Some(i))
-    })
+/// The pairs of bodies that have a contact this step, by [`key`].
+pub fn contact_pairs<T: Real>(world: &World<T>) -> PairSet {
+    world
+        .contacts
+        .iter()
+        .filter_map(|k| Some(key(k.body1.0, k.body2?.0)))
+        .collect()
+}
+
+/// A pair of bodies in either order, as one key.
+pub fn key(i: usize, j: usize) -> (BodyId, Option<BodyId>) {
+    (BodyId(i.min(j)), Some(BodyId(i.max(j))))
 }
 
 fn motion<T: Real>(world: &World<T>, i: usize, moving: bool) -> Motion<T> {
@@ -80,18 +99,18 @@ fn pair<T: Real>(
     i: usize,
     j: usize,
     dt: T,
-    moves: &impl Fn(usize) -> bool,
+    moving: &[bool],
 ) -> Option<Tunnelled> {
     let a = Convex::from_shape(world.bodies[i].shape.as_ref()?)?;
     let b = Convex::from_shape(world.bodies[j].shape.as_ref()?)?;
-    let (ma, mb) = (motion(world, i, moves(i)), motion(world, j, moves(j)));
+    let (ma, mb) = (motion(world, i, moving[i]), motion(world, j, moving[j]));
     let (ra, rb): (T, T) = (c(a.bounding_radius()), c(b.bounding_radius()));
     // The motion spheres: ruled out when they do not meet.
     let half = c::<T>(0.5) * dt;
     let reach =
         |m: &Motion<T>, r: T| (m.position + m.velocity * half, r + m.velocity.norm() * half);
     let ((ca, sa), (cb, sb)) = (reach(&ma, ra), reach(&mb, rb));
-    if (ca - cb).norm() > sa + sb || in_contact(world, i, j) {
+    if (ca - cb).norm() > sa + sb {
         return None;
     }
     let options = ToiOptions {

@@ -242,7 +242,11 @@ pub fn start_of_step<T: Real>(
         inertia.push(i);
         let energy = s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity);
         kinetic += energy;
-        let reach = b.shape.and_then(|sh| sh.bounding_radius()).unwrap_or(0.0);
+        let reach = b
+            .shape
+            .as_ref()
+            .and_then(|sh| sh.bounding_radius())
+            .unwrap_or(0.0);
         let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
         let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
         let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);

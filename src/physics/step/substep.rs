@@ -100,7 +100,7 @@ impl<T: Real> Substeps<T> {
     ) {
         let Some(method) = p.ccd.method() else {
             let moving = &self.moving;
-            ccd::tunnelled(world, p.dt, |i| moving[i], &mut out.crossed);
+            ccd::tunnelled(world, p.dt, moving, &mut self.swept, &mut out.crossed);
             advance(world, moving, p.dt);
             return;
         };
@@ -130,7 +130,7 @@ impl<T: Real> Substeps<T> {
         let left = p.dt - elapsed;
         let moving = &self.moving;
         let from = out.crossed.len();
-        ccd::tunnelled(world, left, |i| moving[i], &mut out.crossed);
+        ccd::tunnelled(world, left, moving, &mut self.swept, &mut out.crossed);
         for t in &mut out.crossed[from..] {
             t.time += to_f64(elapsed);
         }
@@ -145,9 +145,10 @@ impl<T: Real> Substeps<T> {
         left: T,
     ) -> Option<(usize, usize, T, usize)> {
         self.swept.find(world, &self.moving, left);
+        let touching = ccd::contact_pairs(world);
         let mut best: Option<(usize, usize, T, usize)> = None;
         for &(i, j) in &self.swept.pairs {
-            if self.done.contains(&(i, j)) || ccd::in_contact(world, i, j) {
+            if self.done.contains(&(i, j)) || touching.contains(&ccd::key(i, j)) {
                 continue;
             }
             let (Some(a), Some(b)) = (shape(world, i), shape(world, j)) else {
