@@ -36,7 +36,8 @@ fn simulate_with_ccd_lists_a_toi_event_in_json_and_no_tunnelled_one() {
 
 #[test]
 fn simulate_with_ccd_prints_the_toi_event_in_its_text() {
-    let text = simulate(&["--ccd", "conservative"]);
+    // Unfolded (`--width 0`): the event on one line.
+    let text = simulate(&["--ccd", "conservative", "--width", "0"]);
     assert!(
         text.contains(
             "time of collision (conservative, 2 tests): bullet ↔ wall met at t = 0.0048 s"

@@ -12,7 +12,6 @@
 use nalgebra::Vector3;
 
 use super::exact::RestitutionLaw;
-use super::step::SleepMode;
 use super::{c, Real};
 
 /// Restitution is 0 below this closing speed for generated contacts (the
@@ -434,5 +433,33 @@ impl Material {
     }
 }
 
+pub mod ccd_mode;
 mod settings;
+pub use ccd_mode::{Ccd, Rollback};
 pub use settings::{ContactSettings, SceneSettings, Settings, SimParams};
+
+/// How bodies fall asleep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SleepMode {
+    /// Each body on its own (the lecture and the reference engine).
+    #[default]
+    Body,
+    /// An island of touching movable bodies sleeps together, once all its
+    /// bodies have been slow for `island_time` (Box2D, Bullet, PhysX).
+    Island,
+}
+
+impl SleepMode {
+    pub fn name(self) -> &'static str {
+        match self {
+            SleepMode::Body => "body",
+            SleepMode::Island => "island",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [SleepMode::Body, SleepMode::Island]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}

@@ -3,12 +3,12 @@
 //! value as a lesson or a command line gives it, in f64, per level:
 //! [`ContactSettings`], [`ResolverParams`], [`SceneSettings`]).
 
+use super::ccd_mode::{Ccd, Rollback};
 use super::{
     BoxBoxMode, ContactParams, FrictionModel, Material, NarrowPhase, ProjectionMethod,
     ResolverParams, SleepParams, StepParams, WorldParams, GENERATED_VELOCITY_LIMIT,
 };
 use crate::physics::exact::RestitutionLaw;
-use crate::physics::step::ccd_mode::{Ccd, Rollback};
 use crate::physics::{c, Real};
 
 /// Everything a simulation needs beyond its bodies.

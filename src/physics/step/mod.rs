@@ -5,7 +5,6 @@
 
 pub mod audit;
 pub mod ccd;
-pub mod ccd_mode;
 pub mod contact_events;
 pub mod energy;
 pub mod integrate;
@@ -20,6 +19,8 @@ pub mod swept;
 pub mod toi_pair;
 pub mod tolerance;
 
+/// The `ccd` and `rollback` knobs' choices (declared with the other params).
+pub use crate::physics::params::ccd_mode;
 pub use integrate::{integrate, Loads};
 pub use simulation::{BlowUp, Event, SimParams, Simulation, StepReport};
 pub use sleep::{SleepMode, SleepState};

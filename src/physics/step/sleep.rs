@@ -7,31 +7,7 @@
 
 use crate::physics::{c, Real, RigidBody};
 
-/// How bodies fall asleep.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum SleepMode {
-    /// Each body on its own (the lecture and the reference engine).
-    #[default]
-    Body,
-    /// An island of touching movable bodies sleeps together, once all its
-    /// bodies have been slow for `island_time` (Box2D, Bullet, PhysX).
-    Island,
-}
-
-impl SleepMode {
-    pub fn name(self) -> &'static str {
-        match self {
-            SleepMode::Body => "body",
-            SleepMode::Island => "island",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [SleepMode::Body, SleepMode::Island]
-            .into_iter()
-            .find(|m| m.name() == name)
-    }
-}
+pub use crate::physics::params::SleepMode;
 
 /// One body's sleep bookkeeping.
 #[derive(Debug, Clone, Copy, PartialEq)]
