@@ -65,3 +65,32 @@ fn the_events_list_shows_tunnelled_without_ccd_and_toi_with_it() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn f_chooses_tunnelled_events_and_n_jumps_to_one() {
+    let dir = common::scratch("ccd-events-jump");
+    let path = dir.join("bullet.toml");
+    std::fs::write(&path, embedded::find("bullet-wall").unwrap()).unwrap();
+    let mut a = tui::open(Some(path.as_os_str()), None).expect("opens");
+    let kinds = contact_lab::tui::screens::EVENT_KINDS;
+    let at = kinds
+        .iter()
+        .position(|k| *k == "tunnelled")
+        .expect("a kind f offers");
+    for _ in 0..at {
+        key(&mut a, KeyCode::Char('f'));
+    }
+    key(&mut a, KeyCode::Char('n'));
+    let run = a.run.as_ref().unwrap();
+    let event = run
+        .player
+        .run
+        .events
+        .iter()
+        .find(|e| e.kind == "tunnelled")
+        .unwrap();
+    assert_eq!(
+        run.frame as u64, event.step,
+        "n jumps to the tunnelled event"
+    );
+}

@@ -52,7 +52,17 @@ impl Default for Toggles {
 }
 
 /// Which events `n` / `N` jump to.
-pub const EVENT_KINDS: [&str; 6] = ["any", "bounce", "contact", "sleep", "limit", "energy"];
+pub const EVENT_KINDS: [&str; 9] = [
+    "any",
+    "bounce",
+    "contact",
+    "sleep",
+    "limit",
+    "energy",
+    "overlap",
+    "tunnelled",
+    "toi",
+];
 
 /// A scene's run on the run screen.
 #[derive(Debug, Clone)]
@@ -260,7 +270,8 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
     },
     Binding {
         label: "f",
-        help: "events to jump to: any, bounce, contact, sleep, limit, energy",
+        help:
+            "events to jump to: any, bounce, contact, sleep, limit, energy, overlap, tunnelled, toi",
         keys: &[(C::Char('f'), Key::EventKind)],
     },
     Binding {
