@@ -8,10 +8,8 @@ use crate::cli::{AdviseArgs, AdviseFormat, PerArg};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Lesson;
-use crate::physics::Solver;
 use crate::render::study::advise as render;
 use crate::study::advise::Per;
-use crate::study::grid::SCENES;
 
 pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     if !(args.error.is_finite() && args.error > 0.0) {
@@ -30,17 +28,13 @@ pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
     }
     let lesson = Lesson::load(&args.scene)?;
     warn(&lesson, err);
-    let Some(scene) = &lesson.simulation else {
+    let Some((default_seconds, solver)) = crate::study::advise::run_of(&lesson) else {
         return Err(AppError::Usage(format!(
             "{} is not a scene: it has no [world], [step] or [sleep] table, so nothing says how to step it",
             lesson.id
         )));
     };
-    let known = SCENES.iter().find(|(id, _, _)| *id == lesson.id);
-    let seconds = args
-        .seconds
-        .unwrap_or_else(|| known.map_or((scene.steps as f64 * scene.dt).min(2.0), |k| k.1));
-    let solver = known.map_or(Solver::SequentialImpulse, |k| k.2);
+    let seconds = args.seconds.unwrap_or(default_seconds);
     let per = match args.per {
         PerArg::Run => Per::Run,
         PerArg::Step => Per::Step,

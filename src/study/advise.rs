@@ -310,6 +310,22 @@ fn best_of(
     (best.unwrap_or(fallback), evals)
 }
 
+/// How long `advise` runs a scene and which solver its reference uses: the
+/// study's default scenes' (`grid::SCENES`); any other scene its own length,
+/// at most 2 s, against sequential impulses. None: not a scene.
+pub fn run_of(lesson: &Lesson) -> Option<(f64, crate::physics::Solver)> {
+    let scene = lesson.simulation.as_ref()?;
+    Some(
+        match grid::SCENES.iter().find(|(id, _, _)| *id == lesson.id) {
+            Some(&(_, seconds, solver)) => (seconds, solver),
+            None => (
+                (scene.steps as f64 * scene.dt).min(2.0),
+                crate::physics::Solver::SequentialImpulse,
+            ),
+        },
+    )
+}
+
 /// Searches `lesson` for the cheapest configuration whose error against
 /// the reference stays at or below `target` (m), the error measured `per`
 /// run or per step.
@@ -403,8 +419,15 @@ pub fn advise(
     })
 }
 
+/// The tables a scene's knobs are read from, in the order the lesson reads
+/// them (lesson/validate/simulation.rs): a knob set in a later table
+/// overrides one set in an earlier (`friction_model` in `[world]` over
+/// `[settings]`).
+const SCENE_TABLES: [Table; 4] = [Table::Settings, Table::World, Table::Step, Table::Sleep];
+
 /// The choice as lesson tables, ready to paste: each searched knob in its
-/// table (`visits_per_contact` for the budget), the float type as a
+/// table (`visits_per_contact` for the budget; a knob with several homes
+/// in the one the scene reads last), the float type as a
 /// comment (a lesson runs in f64; the study and advise can run f32).
 pub fn settings_snippet(a: &Advice) -> String {
     let mut tables: Vec<(Table, Vec<String>)> = Vec::new();
@@ -421,7 +444,14 @@ pub fn settings_snippet(a: &Advice) -> String {
         let Some(k) = crate::physics::knobs::find(name) else {
             continue;
         };
-        let Some(&table) = k.tables.first() else {
+        // The table the scene reads last among the knob's homes, so that
+        // the snippet overrides the scene wherever the scene spells it.
+        let Some(table) = SCENE_TABLES
+            .into_iter()
+            .rev()
+            .find(|t| k.tables.contains(t))
+            .or(k.tables.first().copied())
+        else {
             continue;
         };
         let v = c.get(k);

@@ -5,117 +5,10 @@
 //! lecture's order, the cradle does not take sequential impulses); and the
 //! study's verdicts hold (twice the same, quick against full, the SVG).
 
-use contact_lab::lesson::{embedded, validate, Lesson};
+use crate::common::advise::{check_advice, lesson, pasted};
 use contact_lab::physics::Solver;
-use contact_lab::study::advise::{advise, dimensions, settings_snippet, Advice, Per};
-use contact_lab::study::{grid, run, sweep, Budget, Config, CONVERGED};
-
-fn lesson(id: &str) -> Lesson {
-    Lesson::load(id).unwrap()
-}
-
-/// The scene's file with the snippet's tables merged over its own (a key
-/// the snippet sets replaces the scene's, old spellings included).
-fn pasted(id: &str, snippet: &str) -> Lesson {
-    let mut file: toml::Table = embedded::find(id).unwrap().parse().unwrap();
-    let add: toml::Table = snippet.parse().expect("the snippet is TOML");
-    for (table, keys) in add {
-        let target = file
-            .entry(table.clone())
-            .or_insert_with(|| toml::Value::Table(Default::default()))
-            .as_table_mut()
-            .unwrap();
-        for (key, value) in keys.as_table().unwrap() {
-            let knob = contact_lab::physics::knobs::find(key);
-            for old in knob.map_or(&[][..], |k| k.old_names) {
-                target.remove(*old);
-            }
-            target.insert(key.clone(), value.clone());
-        }
-    }
-    validate::parse(id, &toml::to_string(&file).unwrap()).expect("the pasted scene loads")
-}
-
-/// The error of a configuration against the reference, run for `seconds`.
-fn error(l: &Lesson, c: &Config, reference: &Config, seconds: f64) -> f64 {
-    let r = run::measure(l, reference, seconds);
-    run::rms_distance(&run::measure(l, c, seconds).positions, &r.positions)
-}
-
-/// Advice on `id`, its snippet pasted and run; with `knobs`, every knob
-/// at its cheap setting run again as well (the slow part).
-fn check_advice(id: &str, seconds: f64, solver: Solver, target: f64, knobs: bool) -> Advice {
-    let l = lesson(id);
-    let a = advise(&l, seconds, solver, target, Per::Run).unwrap();
-    assert!(
-        a.choice.error <= target,
-        "{id}: {} > {target}",
-        a.choice.error
-    );
-    assert!(a.choice.cost <= a.reference_cost);
-    let reference = grid::reference(&grid::default_config(&l).unwrap(), solver);
-
-    // The snippet pasted into the scene and run meets the target.
-    let p = pasted(id, &settings_snippet(&a));
-    let mut c = grid::default_config(&p).unwrap();
-    c.precision = a.choice.config.precision;
-    assert_eq!(
-        (run::params(&c), c.budget, c.precision),
-        (
-            run::params(&a.choice.config),
-            a.choice.config.budget,
-            a.choice.config.precision
-        ),
-        "{id}: the pasted scene is the choice"
-    );
-    let e = error(&p, &c, &reference, seconds);
-    assert!(e <= target, "{id}: pasted, error {e} > {target}");
-
-    if !knobs {
-        return a;
-    }
-    // Each knob at its cheap setting: not needed moves the error by less
-    // than the target; needed goes over it.
-    let reference_positions = run::measure(&l, &reference, seconds).positions;
-    let (dims, _) = dimensions(
-        &grid::default_config(&l).unwrap(),
-        &reference,
-        grid::features(&l),
-    );
-    let cheap = |name: &str| -> (String, f64, f64) {
-        let dim = dims.iter().find(|d| d.name == name).unwrap();
-        let mut best: Option<(String, f64, f64)> = None;
-        for v in &dim.values {
-            let mut x = a.choice.config;
-            grid::set(&mut x, name, v).unwrap();
-            let m = run::measure(&l, &x, seconds);
-            let cost = contact_lab::study::advise::cost(&m, seconds);
-            let err = run::rms_distance(&m.positions, &reference_positions);
-            if best.as_ref().is_none_or(|b| cost < b.1 * (1.0 - 1e-9)) {
-                best = Some((v.clone(), cost, err));
-            }
-        }
-        best.unwrap()
-    };
-    for name in &a.not_needed {
-        let (v, _, e) = cheap(name);
-        assert!(
-            (e - a.choice.error).abs() < target,
-            "{id}: {name} = {v} moves the error to {e}"
-        );
-    }
-    for n in &a.needed {
-        let (v, _, e) = cheap(n.knob);
-        assert_eq!(v, n.cheap);
-        assert!(
-            e > target,
-            "{id}: {} = {v} stays within the target ({e})",
-            n.knob
-        );
-        assert_eq!(e, n.error_without);
-    }
-    a
-}
+use contact_lab::study::advise::{settings_snippet, value_of};
+use contact_lab::study::{grid, sweep, Budget, CONVERGED};
 
 #[test]
 fn ball_drop_advice_pasted_meets_the_target_and_each_knob_is_what_it_says() {
@@ -135,6 +28,24 @@ fn resting_box_advice_pasted_meets_the_target() {
         "a box on the floor rests: {}",
         resting.evidence
     );
+}
+
+#[test]
+fn a_knob_the_scene_sets_in_world_is_overridden_by_the_pasted_snippet() {
+    // sliding-box sets friction_model in [world], which the lesson reads
+    // after [settings]: a snippet that put the choice in [settings] left the
+    // scene's kinetic-direction in force (found by the measure layer's
+    // advise_every_scene).
+    let a = check_advice("sliding-box", 2.0, Solver::SequentialImpulse, 0.01, false);
+    let scene = grid::default_config(&lesson("sliding-box")).unwrap();
+    assert_ne!(
+        value_of(&a.choice.config, "friction_model"),
+        value_of(&scene, "friction_model"),
+        "the choice changes the scene's friction model"
+    );
+    let snippet = settings_snippet(&a);
+    let world = snippet.split("[world]").nth(1).unwrap();
+    assert!(world.contains("friction_model = "), "{snippet}");
 }
 
 #[test]

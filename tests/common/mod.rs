@@ -1,6 +1,7 @@
 //! Shared test helpers: snapshots live in the top-level `snapshots/`.
 #![allow(dead_code)]
 
+pub mod advise;
 pub mod dd;
 pub mod json;
 pub mod random;

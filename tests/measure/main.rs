@@ -1,5 +1,5 @@
 //! Measurement reports (run with `--nocapture` for the tables): accuracy
-//! against double-double, the impact integration's error, energy by restitution
+//! against double-double, advise on every scene, the impact integration's error, energy by restitution
 //! law, the 10,000-contact one-shot study, the slide angle. Built only with
 //! `--features measure`; CI runs it as its own step, in release:
 //! `cargo test --locked --release --features measure --test measure`.
@@ -11,6 +11,7 @@ mod common;
 mod exact_support;
 
 mod accuracy;
+mod advise_every_scene;
 mod exact_accuracy;
 mod exact_energy;
 mod exact_study;
