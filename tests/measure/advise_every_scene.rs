@@ -20,7 +20,7 @@ use std::time::Instant;
 
 use crate::common::advise::{check, lesson};
 use contact_lab::lesson::embedded;
-use contact_lab::study::advise::{advise, run_of, value_of, Advice, Per};
+use contact_lab::study::advise::{advise, run_of, value_of, Advice, Per, MAX_PASSES};
 use contact_lab::study::{grid, run};
 
 /// The most the knobs reported as not needed buy when turned, one at a
@@ -54,8 +54,8 @@ const TARGET: f64 = 0.01;
 #[test]
 fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says() {
     println!(
-        "{:<18} {:>4} {:>7} {:>7} {:>9} {:>9} {:>6}  {:<34} choice: budget, float (knobs above their cheap setting)",
-        "scene", "s", "cost", "ref", "error", "pasted", "search", "not needed: the dear setting buys"
+        "{:<18} {:>4} {:>7} {:>7} {:>9} {:>9} {:>6} {:>6}  {:<34} choice: budget, float (knobs above their cheap setting)",
+        "scene", "s", "cost", "ref", "error", "pasted", "search", "passes", "not needed: the dear setting buys"
     );
     let mut failures = Vec::new();
     let ids = embedded::scene_ids();
@@ -73,7 +73,7 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
             .map(|n| format!("{}={}", n.knob, n.value))
             .collect();
         println!(
-            "{:<18} {:>4} {:>7.0} {:>7.0} {:>9.2e} {:>9} {:>5.1}s  {:<34} budget {}, {} ({})",
+            "{:<18} {:>4} {:>7.0} {:>7.0} {:>9.2e} {:>9} {:>5.1}s {:>6}  {:<34} budget {}, {} ({})",
             id,
             seconds,
             a.choice.cost,
@@ -83,11 +83,17 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
                 .as_ref()
                 .map_or("FAILED".to_string(), |c| format!("{:.2e}", c.pasted_error)),
             wall,
+            a.passes,
             format!("{:.1e} ({})", buys.0, buys.1),
             a.choice.config.budget.per_contact(),
             a.choice.config.precision.name(),
             needed.join(", ")
         );
+        // The descent ended on a pass that changed nothing, not at the cap
+        // (mass-ratio-stack was still moving at the 4th pass when 4 was it).
+        if a.passes >= MAX_PASSES {
+            failures.push(format!("{id}: the descent stopped at {MAX_PASSES} passes"));
+        }
         if let Err(e) = checked {
             let why = e
                 .downcast_ref::<String>()
