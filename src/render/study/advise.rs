@@ -103,7 +103,7 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
 
 pub fn text(a: &Advice, fmt: &Fmt) -> String {
     let mut out = format!(
-        "{}  ({}, {} s): the cheapest model within {} m of the reference, per {}\n\nPaste into the scene:\n\n",
+        "{}  ({}, {} s): the cheapest model within {} m of the reference, per {}\n\nMerge into the scene's tables (a key the scene already sets is replaced):\n\n",
         a.title,
         a.scene,
         num(fmt, a.seconds),
@@ -124,7 +124,7 @@ pub fn text(a: &Advice, fmt: &Fmt) -> String {
 
 pub fn markdown(a: &Advice, fmt: &Fmt) -> String {
     let mut out = format!(
-        "# {} (`{}`): the cheapest model within {} m, per {}\n\nPaste into the scene:\n\n```toml\n{}```\n",
+        "# {} (`{}`): the cheapest model within {} m, per {}\n\nMerge into the scene's tables (a key the scene already sets is replaced):\n\n```toml\n{}```\n",
         a.title,
         a.scene,
         num(fmt, a.target),
