@@ -6,6 +6,8 @@
 //! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
 mod chrome;
+mod detect;
+mod detect_nav;
 mod edit;
 mod nav;
 mod picture;
@@ -17,7 +19,9 @@ use std::cell::Cell;
 use ratatui::layout::Rect;
 
 use crate::session::{Player, Recording};
+use crate::trace::detect::DetectTrace;
 use crate::trace::step::StepTrace;
+use crate::trace::toi::DetectToi;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
 
 /// The screen on show.
@@ -26,6 +30,8 @@ pub enum Screen {
     Run,
     Resolver,
     Contact,
+    /// A step's detection: pairs, GJK and EPA iterations, time of collision.
+    Detect,
 }
 
 /// Playback speeds, × real time.
@@ -97,6 +103,19 @@ pub struct ResolverView {
     pub scroll: Cell<usize>,
 }
 
+/// A step's detection on the detection screen (`d` on the run).
+#[derive(Debug, Clone)]
+pub struct DetectView {
+    pub trace: DetectTrace,
+    /// The pair selected: `trace.pairs` (the narrow phase's), then
+    /// `trace.dropped` (ruled out) counted on from them.
+    pub pair: usize,
+    /// The iteration on show (GJK's, then EPA's); one past them: the result.
+    pub stop: usize,
+    /// `t`: the selected pair's time of collision, and the trial on show.
+    pub toi: Option<(DetectToi, usize)>,
+}
+
 /// Where the last draw put what a click can pick: the picture (and its
 /// bounds in scene units), the table's rows, the events list.
 #[derive(Debug, Clone, Default)]
@@ -152,6 +171,12 @@ pub enum Key {
     LineUp,
     Help,
     Quit,
+    /// `d` on the run: the step's detection.
+    Detect,
+    /// `t` on the detection: the pair's time of collision.
+    Toi,
+    NextPair,
+    PrevPair,
 }
 
 /// What the run screen's picture shows or hides.
@@ -280,6 +305,11 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
         keys: &[(C::Enter, Key::Open)],
     },
     Binding {
+        label: "d",
+        help: "this step's detection: pairs, GJK and EPA iterations, time of collision",
+        keys: &[(C::Char('d'), Key::Detect)],
+    },
+    Binding {
         label: "c o s b",
         help: "picture: contacts, normals, sleep state, body names",
         keys: &[
@@ -347,3 +377,72 @@ pub const RESOLVER_KEYS: &[Binding<Key>] = &[
 
 /// The contact screen's keys when a level lies above it.
 pub const CONTACT_UP_KEYS: &[(&str, &str)] = &[("Esc Backspace", "up to the resolver iterations")];
+
+/// The detection screen's keys: what the help shows and what each key does.
+pub const DETECT_KEYS: &[Binding<Key>] = &[
+    Binding {
+        label: "↓ j / ↑ k",
+        help: "select the next / previous pair (kept, then ruled out)",
+        keys: &[
+            (C::Down, Key::NextPair),
+            (C::Char('j'), Key::NextPair),
+            (C::Up, Key::PrevPair),
+            (C::Char('k'), Key::PrevPair),
+        ],
+    },
+    Binding {
+        label: "→ l / ← h",
+        help: "next / previous iteration: GJK's, EPA's, the result (t: trial)",
+        keys: &[
+            (C::Right, Key::Forward),
+            (C::Char('l'), Key::Forward),
+            (C::Left, Key::Back),
+            (C::Char('h'), Key::Back),
+        ],
+    },
+    Binding {
+        label: "Home g / End G",
+        help: "first iteration / the result (with t: first / last trial)",
+        keys: &[
+            (C::Home, Key::First),
+            (C::Char('g'), Key::First),
+            (C::End, Key::Last),
+            (C::Char('G'), Key::Last),
+        ],
+    },
+    Binding {
+        label: "t",
+        help: "the pair's time of collision over the next step (t, Esc: back)",
+        keys: &[(C::Char('t'), Key::Toi)],
+    },
+    PLANE,
+    Binding {
+        label: "Esc Backspace",
+        help: "back to the run at the same step",
+        keys: &[(C::Esc, Key::Up), (C::Backspace, Key::Up)],
+    },
+    Binding {
+        label: "?",
+        help: "this help",
+        keys: &[(C::Char('?'), Key::Help)],
+    },
+    Binding {
+        label: "q Ctrl-C",
+        help: "quit",
+        keys: &[(C::Char('q'), Key::Quit)],
+    },
+];
+
+impl DetectView {
+    /// The selected pair's two body names, and whether the broad phase kept it.
+    pub fn selected(&self) -> Option<(&str, &str, bool)> {
+        let kept = self.trace.pairs.len();
+        match self.trace.pairs.get(self.pair) {
+            Some(p) => Some((&p.a, &p.b, true)),
+            None => {
+                let d = self.trace.dropped.get(self.pair - kept)?;
+                Some((&d.a, &d.b, false))
+            }
+        }
+    }
+}

@@ -1,0 +1,110 @@
+//! Keys of the detection screen: open it on the run's step (the trace
+//! `session` builds, as `contact-lab detect --step N` prints it), select a
+//! pair, step through its iterations or its time-of-collision trials.
+
+use super::{DetectView, Key, Screen};
+use crate::physics::detect::ToiMethod;
+use crate::render::detect::steps::stops;
+use crate::tui::app::App;
+
+impl App {
+    /// `d` on the run: the detection of the bodies at the frame on show.
+    pub(crate) fn open_detect(&mut self) {
+        let Some(run) = self.run.as_deref() else {
+            return;
+        };
+        let lesson = &self.lessons[self.lesson].lesson;
+        let step = run.frame as u64;
+        let Some(trace) = run.player.detect(lesson, step, self.plane) else {
+            return self.say(
+                format!("step {step}'s bodies could not be found again: the run blew up"),
+                true,
+            );
+        };
+        if trace.pairs.is_empty() {
+            self.say(
+                "no pair reaches the narrow phase at this step: the list says why each is ruled out (t: a pair's time of collision)".into(),
+                false,
+            );
+        }
+        self.detect = Some(Box::new(DetectView {
+            trace,
+            pair: 0,
+            stop: 0,
+            toi: None,
+        }));
+        self.screen = Screen::Detect;
+    }
+
+    pub(super) fn detect_key(&mut self, action: Key) {
+        let Some(d) = self.detect.as_deref_mut() else {
+            return;
+        };
+        let pairs = d.trace.pairs.len() + d.trace.dropped.len();
+        // The last stop is the result, after the iterations.
+        let last = match (&d.toi, d.trace.pairs.get(d.pair)) {
+            (Some((t, _)), _) => t.pairs.first().map_or(0, |p| p.record.trials.len()),
+            (None, Some(p)) => stops(p).len(),
+            (None, None) => 0,
+        };
+        let at = match &mut d.toi {
+            Some((_, trial)) => trial,
+            None => &mut d.stop,
+        };
+        match action {
+            Key::Forward => *at = (*at + 1).min(last),
+            Key::Back => *at = at.saturating_sub(1),
+            Key::First => *at = 0,
+            Key::Last => *at = last,
+            Key::NextPair | Key::PrevPair if pairs > 1 => {
+                d.pair = if action == Key::NextPair {
+                    (d.pair + 1) % pairs
+                } else {
+                    (d.pair + pairs - 1) % pairs
+                };
+                d.stop = 0;
+                d.toi = None;
+            }
+            Key::NextPair | Key::PrevPair => {
+                self.say(format!("{pairs} pair(s) at this step"), false);
+            }
+            Key::Toi if d.toi.is_some() => d.toi = None,
+            Key::Toi => self.open_toi(),
+            Key::Up if d.toi.is_some() => d.toi = None,
+            Key::Up => {
+                self.detect = None;
+                self.screen = Screen::Run;
+            }
+            _ => {}
+        }
+    }
+
+    /// `t`: the selected pair's time of collision over the next step.
+    fn open_toi(&mut self) {
+        let (Some(run), Some(d)) = (self.run.as_deref(), self.detect.as_deref()) else {
+            return;
+        };
+        let Some((a, b, _)) = d.selected() else {
+            return self.say("this step has no pair of bodies".into(), false);
+        };
+        let lesson = &self.lessons[self.lesson].lesson;
+        let index = |name: &str| lesson.bodies.iter().position(|x| x.name == name);
+        let (Some(i), Some(j)) = (index(a), index(b)) else {
+            return;
+        };
+        let step = run.frame as u64;
+        match run.player.toi(lesson, step, ToiMethod::Bisection, Some((i, j))) {
+            Some(t) => {
+                if let Some(d) = self.detect.as_deref_mut() {
+                    d.toi = Some((t, 0));
+                }
+            }
+            None => self.say(
+                format!(
+                    "{a} – {b} has no time of collision: both bodies need a convex shape (a half-space has none)"
+                ),
+                false,
+            ),
+        }
+    }
+}
