@@ -6,7 +6,9 @@ use super::Player;
 use crate::lesson::Lesson;
 use crate::physics::collide::record::detect as record;
 use crate::physics::collide::Options;
+use crate::physics::detect::toi::Motion;
 use crate::physics::detect::ToiMethod;
+use crate::physics::step::swept::motion_of;
 use crate::physics::step::swept::SweptPairs;
 use crate::physics::step::toi_pair::search_pair;
 use crate::physics::step::Simulation;
@@ -104,6 +106,27 @@ pub fn toi_trace(
     })
 }
 
+/// One pair's time-of-collision search over a step, with the two bodies'
+/// motions as the search moves them (for a picture at a trial's time).
+#[derive(Debug, Clone)]
+pub struct PairToiRun {
+    pub trace: DetectToi,
+    motions: [Motion<f64>; 2],
+}
+
+impl PairToiRun {
+    /// The two bodies' positions and orientations (w, i, j, k) `t` seconds
+    /// into the step: x₀ + v t, exp(ω t) q₀, the search's own motion.
+    pub fn poses_at(&self, t: f64) -> [([f64; 3], [f64; 4]); 2] {
+        self.motions.map(|m| {
+            let x = m.position + m.velocity * t;
+            let q =
+                nalgebra::UnitQuaternion::from_scaled_axis(m.angular_velocity * t) * m.orientation;
+            ([x.x, x.y, x.z], [q.w, q.i, q.j, q.k])
+        })
+    }
+}
+
 impl Player {
     /// The detection of the bodies after step `step` (≤ computed), from the
     /// nearest kept copy: what `detect --step N` prints for the run as edited.
@@ -119,9 +142,17 @@ impl Player {
         lesson: &Lesson,
         step: u64,
         method: ToiMethod,
-        pair: Option<(usize, usize)>,
-    ) -> Option<DetectToi> {
+        (i, j): (usize, usize),
+    ) -> Option<PairToiRun> {
         let sim = self.state_after(step)?;
-        toi_trace(&sim, lesson, step + 1, method, pair).ok()
+        let trace = toi_trace(&sim, lesson, step + 1, method, Some((i, j))).ok()?;
+        let (world, moving) = sim.resolved_next();
+        Some(PairToiRun {
+            trace,
+            motions: [
+                motion_of(&world, i, moving[i]),
+                motion_of(&world, j, moving[j]),
+            ],
+        })
     }
 }

@@ -6,7 +6,7 @@
 
 mod detect;
 mod edit;
-pub use detect::{detect_trace, toi_trace};
+pub use detect::{detect_trace, toi_trace, PairToiRun};
 pub use edit::SceneEdit;
 
 use crate::lesson::Lesson;

@@ -123,3 +123,20 @@ fn the_detection_screen_at_100_by_30() {
     draw(&mut t, &a);
     snapshot("tui_detect_gjk_separated_100x30", &t);
 }
+
+#[test]
+fn the_time_of_collision_picture_moves_the_bullet_to_the_trial_time() {
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('t'));
+    let first = joined(&screen(&a, 100, 30));
+    assert!(
+        first.contains("bullet – wall · t = 0.00486111 s ·"),
+        "{first}"
+    );
+    key(&mut a, KeyCode::End);
+    let last = joined(&screen(&a, 100, 30));
+    // After the trials: the pair at the time of collision.
+    assert!(last.contains("bullet – wall · t = 0.0048008 s ·"), "{last}");
+    assert!(last.contains("All 15 trials done."), "{last}");
+}

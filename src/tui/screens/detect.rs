@@ -35,7 +35,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     render_pairs(app, d, list, buf);
     render_picture(app, d, pic, buf);
     match &d.toi {
-        Some((toi, trial)) => render_toi(app, d, toi, *trial, right, buf),
+        Some((toi, trial)) => render_toi(app, d, &toi.trace, *trial, right, buf),
         None => render_stops(app, d, right, buf),
     }
 }
@@ -250,12 +250,32 @@ fn render_picture(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     let Some((a, b, _)) = d.selected() else {
         return;
     };
-    let bodies: Vec<BodyView> = [a, b].iter().filter_map(|name| body(tr, name)).collect();
-    let at_start = (vec![], "at the step's start");
-    let (marks, what): (Vec<V3>, &str) = match (&d.toi, tr.pairs.get(d.pair)) {
-        (Some(_), _) | (None, None) => at_start,
+    let mut bodies: Vec<BodyView> = [a, b].iter().filter_map(|name| body(tr, name)).collect();
+    let mut what = String::new();
+    let (marks, said): (Vec<V3>, &str) = match (&d.toi, tr.pairs.get(d.pair)) {
+        (Some((run, trial)), _) => {
+            // The pair where the search puts it at the trial's time (or at
+            // the time of collision, or the step's end, after the trials).
+            let p = run.trace.pairs.first();
+            let time = match p.and_then(|p| p.record.trials.get(*trial)) {
+                Some(x) => x.trial,
+                None => p.and_then(|p| p.time).unwrap_or(run.trace.dt),
+            };
+            if bodies.len() == 2 {
+                for (v, (x, q)) in bodies.iter_mut().zip(run.poses_at(time)) {
+                    v.position = x;
+                    v.orientation = q;
+                }
+                what = format!("t = {} s", app.fmt.num(time));
+            }
+            (vec![], "")
+        }
+        (None, None) => (vec![], "at the step's start"),
         (None, Some(p)) => marks(p, d.stop),
     };
+    if what.is_empty() {
+        what = said.to_string();
+    }
     let contacts: Vec<ContactView> = marks
         .iter()
         .enumerate()

@@ -43,7 +43,7 @@ impl App {
         let pairs = d.trace.pairs.len() + d.trace.dropped.len();
         // The last stop is the result, after the iterations.
         let last = match (&d.toi, d.trace.pairs.get(d.pair)) {
-            (Some((t, _)), _) => t.pairs.first().map_or(0, |p| p.record.trials.len()),
+            (Some((t, _)), _) => t.trace.pairs.first().map_or(0, |p| p.record.trials.len()),
             (None, Some(p)) => stops(p).len(),
             (None, None) => 0,
         };
@@ -93,7 +93,7 @@ impl App {
             return;
         };
         let step = run.frame as u64;
-        match run.player.toi(lesson, step, ToiMethod::Bisection, Some((i, j))) {
+        match run.player.toi(lesson, step, ToiMethod::Bisection, (i, j)) {
             Some(t) => {
                 if let Some(d) = self.detect.as_deref_mut() {
                     d.toi = Some((t, 0));

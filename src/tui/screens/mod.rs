@@ -18,10 +18,9 @@ use std::cell::Cell;
 
 use ratatui::layout::Rect;
 
-use crate::session::{Player, Recording};
+use crate::session::{PairToiRun, Player, Recording};
 use crate::trace::detect::DetectTrace;
 use crate::trace::step::StepTrace;
-use crate::trace::toi::DetectToi;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
 
 /// The screen on show.
@@ -112,8 +111,9 @@ pub struct DetectView {
     pub pair: usize,
     /// The iteration on show (GJK's, then EPA's); one past them: the result.
     pub stop: usize,
-    /// `t`: the selected pair's time of collision, and the trial on show.
-    pub toi: Option<(DetectToi, usize)>,
+    /// `t`: the selected pair's time of collision, and the trial on show
+    /// (one past the trials: the result).
+    pub toi: Option<(PairToiRun, usize)>,
 }
 
 /// Where the last draw put what a click can pick: the picture (and its

@@ -410,7 +410,7 @@ impl App {
     /// the next of them.
     fn pick(&self, col: u16, row: u16) -> Option<Pick> {
         let area = self.targets.picture.get();
-        if self.screen == Screen::Contact || !contains(area, col, row) {
+        if matches!(self.screen, Screen::Contact | Screen::Detect) || !contains(area, col, row) {
             return None;
         }
         let [x0, x1, y0, y1] = self.targets.bounds.get();
