@@ -140,3 +140,19 @@ fn the_time_of_collision_picture_moves_the_bullet_to_the_trial_time() {
     assert!(last.contains("bullet – wall · t = 0.0048008 s ·"), "{last}");
     assert!(last.contains("All 15 trials done."), "{last}");
 }
+
+#[test]
+fn after_gjk_come_the_epa_iterations_then_the_depth() {
+    let mut a = app("epa-edge-edge", false);
+    key(&mut a, KeyCode::Char('d'));
+    keys(&mut a, KeyCode::Right, 2);
+    let epa = joined(&screen(&a, 200, 40));
+    assert!(epa.contains("EPA iteration 1 of 4"), "{epa}");
+    assert!(epa.contains("faces: -2 +4"), "{epa}");
+    key(&mut a, KeyCode::End);
+    let end = joined(&screen(&a, 200, 40));
+    assert!(end.contains("depth 0.05 along normal (0, 1, 0)"), "{end}");
+    assert!(end.contains("• contacts"), "{end}");
+    key(&mut a, KeyCode::Home);
+    assert!(joined(&screen(&a, 200, 40)).contains("GJK iteration 1 of 2"));
+}

@@ -2,10 +2,98 @@
 //! `session` builds, as `contact-lab detect --step N` prints it), select a
 //! pair, step through its iterations or its time-of-collision trials.
 
-use super::{DetectView, Key, Screen};
+use ratatui::crossterm::event::KeyCode as C;
+
+use super::{Key, Screen, PLANE};
 use crate::physics::detect::ToiMethod;
 use crate::render::detect::steps::stops;
+use crate::session::PairToiRun;
+use crate::trace::detect::DetectTrace;
 use crate::tui::app::App;
+use crate::tui::keys::Binding;
+
+/// A step's detection on the detection screen (`d` on the run).
+#[derive(Debug, Clone)]
+pub struct DetectView {
+    pub trace: DetectTrace,
+    /// The pair selected: `trace.pairs` (the narrow phase's), then
+    /// `trace.dropped` (ruled out) counted on from them.
+    pub pair: usize,
+    /// The iteration on show (GJK's, then EPA's); one past them: the result.
+    pub stop: usize,
+    /// `t`: the selected pair's time of collision, and the trial on show
+    /// (one past the trials: the result).
+    pub toi: Option<(PairToiRun, usize)>,
+}
+
+/// The detection screen's keys: what the help shows and what each key does.
+pub const DETECT_KEYS: &[Binding<Key>] = &[
+    Binding {
+        label: "↓ j / ↑ k",
+        help: "select the next / previous pair (kept, then ruled out)",
+        keys: &[
+            (C::Down, Key::NextPair),
+            (C::Char('j'), Key::NextPair),
+            (C::Up, Key::PrevPair),
+            (C::Char('k'), Key::PrevPair),
+        ],
+    },
+    Binding {
+        label: "→ l / ← h",
+        help: "next / previous iteration: GJK's, EPA's, the result (t: trial)",
+        keys: &[
+            (C::Right, Key::Forward),
+            (C::Char('l'), Key::Forward),
+            (C::Left, Key::Back),
+            (C::Char('h'), Key::Back),
+        ],
+    },
+    Binding {
+        label: "Home g / End G",
+        help: "first iteration / the result (with t: first / last trial)",
+        keys: &[
+            (C::Home, Key::First),
+            (C::Char('g'), Key::First),
+            (C::End, Key::Last),
+            (C::Char('G'), Key::Last),
+        ],
+    },
+    Binding {
+        label: "t",
+        help: "the pair's time of collision over the next step (t, Esc: back)",
+        keys: &[(C::Char('t'), Key::Toi)],
+    },
+    PLANE,
+    Binding {
+        label: "Esc Backspace",
+        help: "back to the run at the same step",
+        keys: &[(C::Esc, Key::Up), (C::Backspace, Key::Up)],
+    },
+    Binding {
+        label: "?",
+        help: "this help",
+        keys: &[(C::Char('?'), Key::Help)],
+    },
+    Binding {
+        label: "q Ctrl-C",
+        help: "quit",
+        keys: &[(C::Char('q'), Key::Quit)],
+    },
+];
+
+impl DetectView {
+    /// The selected pair's two body names, and whether the broad phase kept it.
+    pub fn selected(&self) -> Option<(&str, &str, bool)> {
+        let kept = self.trace.pairs.len();
+        match self.trace.pairs.get(self.pair) {
+            Some(p) => Some((&p.a, &p.b, true)),
+            None => {
+                let d = self.trace.dropped.get(self.pair - kept)?;
+                Some((&d.a, &d.b, false))
+            }
+        }
+    }
+}
 
 impl App {
     /// `d` on the run: the detection of the bodies at the frame on show.

@@ -18,10 +18,10 @@ use std::cell::Cell;
 
 use ratatui::layout::Rect;
 
-use crate::session::{PairToiRun, Player, Recording};
-use crate::trace::detect::DetectTrace;
+use crate::session::{Player, Recording};
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
+pub use detect_nav::{DetectView, DETECT_KEYS};
 
 /// The screen on show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -100,20 +100,6 @@ pub struct ResolverView {
     pub selected: usize,
     /// First table row shown.
     pub scroll: Cell<usize>,
-}
-
-/// A step's detection on the detection screen (`d` on the run).
-#[derive(Debug, Clone)]
-pub struct DetectView {
-    pub trace: DetectTrace,
-    /// The pair selected: `trace.pairs` (the narrow phase's), then
-    /// `trace.dropped` (ruled out) counted on from them.
-    pub pair: usize,
-    /// The iteration on show (GJK's, then EPA's); one past them: the result.
-    pub stop: usize,
-    /// `t`: the selected pair's time of collision, and the trial on show
-    /// (one past the trials: the result).
-    pub toi: Option<(PairToiRun, usize)>,
 }
 
 /// Where the last draw put what a click can pick: the picture (and its
@@ -231,7 +217,7 @@ macro_rules! tail_rows {
     };
 }
 
-const PLANE: Binding<Key> = Binding {
+pub(crate) const PLANE: Binding<Key> = Binding {
     label: "v",
     help: "view plane of the picture: xy → yz → zx",
     keys: &[(C::Char('v'), Key::Plane)],
@@ -377,72 +363,3 @@ pub const RESOLVER_KEYS: &[Binding<Key>] = &[
 
 /// The contact screen's keys when a level lies above it.
 pub const CONTACT_UP_KEYS: &[(&str, &str)] = &[("Esc Backspace", "up to the resolver iterations")];
-
-/// The detection screen's keys: what the help shows and what each key does.
-pub const DETECT_KEYS: &[Binding<Key>] = &[
-    Binding {
-        label: "↓ j / ↑ k",
-        help: "select the next / previous pair (kept, then ruled out)",
-        keys: &[
-            (C::Down, Key::NextPair),
-            (C::Char('j'), Key::NextPair),
-            (C::Up, Key::PrevPair),
-            (C::Char('k'), Key::PrevPair),
-        ],
-    },
-    Binding {
-        label: "→ l / ← h",
-        help: "next / previous iteration: GJK's, EPA's, the result (t: trial)",
-        keys: &[
-            (C::Right, Key::Forward),
-            (C::Char('l'), Key::Forward),
-            (C::Left, Key::Back),
-            (C::Char('h'), Key::Back),
-        ],
-    },
-    Binding {
-        label: "Home g / End G",
-        help: "first iteration / the result (with t: first / last trial)",
-        keys: &[
-            (C::Home, Key::First),
-            (C::Char('g'), Key::First),
-            (C::End, Key::Last),
-            (C::Char('G'), Key::Last),
-        ],
-    },
-    Binding {
-        label: "t",
-        help: "the pair's time of collision over the next step (t, Esc: back)",
-        keys: &[(C::Char('t'), Key::Toi)],
-    },
-    PLANE,
-    Binding {
-        label: "Esc Backspace",
-        help: "back to the run at the same step",
-        keys: &[(C::Esc, Key::Up), (C::Backspace, Key::Up)],
-    },
-    Binding {
-        label: "?",
-        help: "this help",
-        keys: &[(C::Char('?'), Key::Help)],
-    },
-    Binding {
-        label: "q Ctrl-C",
-        help: "quit",
-        keys: &[(C::Char('q'), Key::Quit)],
-    },
-];
-
-impl DetectView {
-    /// The selected pair's two body names, and whether the broad phase kept it.
-    pub fn selected(&self) -> Option<(&str, &str, bool)> {
-        let kept = self.trace.pairs.len();
-        match self.trace.pairs.get(self.pair) {
-            Some(p) => Some((&p.a, &p.b, true)),
-            None => {
-                let d = self.trace.dropped.get(self.pair - kept)?;
-                Some((&d.a, &d.b, false))
-            }
-        }
-    }
-}
