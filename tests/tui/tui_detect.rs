@@ -68,6 +68,7 @@ fn t_shows_the_bullets_time_of_collision_trial_by_trial() {
         "{rows}"
     );
     assert!(rows.contains("midpoint 0.00486111 intersects"), "{rows}");
+    assert!(rows.contains("←→ trial  t Esc iterations"), "{rows}");
     key(&mut a, KeyCode::Right);
     let rows = joined(&screen(&a, 200, 40));
     assert!(rows.contains("trial 2 of 15"), "{rows}");

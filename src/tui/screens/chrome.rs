@@ -201,6 +201,13 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
             ("?", "help"),
             ("q", "quit"),
         ],
+        (false, Screen::Detect) if app.detect.as_ref().is_some_and(|d| d.toi.is_some()) => &[
+            ("↑↓", "pair"),
+            ("←→", "trial"),
+            ("t Esc", "iterations"),
+            ("?", "help"),
+            ("q", "quit"),
+        ],
         (false, Screen::Detect) => &[
             ("↑↓", "pair"),
             ("←→", "iteration"),
