@@ -157,3 +157,19 @@ fn after_gjk_come_the_epa_iterations_then_the_depth() {
     key(&mut a, KeyCode::Home);
     assert!(joined(&screen(&a, 200, 40)).contains("GJK iteration 1 of 2"));
 }
+
+#[test]
+fn m_switches_the_search_to_conservative_advancement() {
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('t'));
+    key(&mut a, KeyCode::Char('m'));
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(rows.contains("by conservative"), "{rows}");
+    // Advancement's first trial: the distance at the step's start.
+    assert!(rows.contains("Trial 1 of"), "{rows}");
+    assert!(rows.contains("t = 0: distance"), "{rows}");
+    assert!(rows.contains("time of collision: t = 0.0048"), "{rows}");
+    key(&mut a, KeyCode::Char('m'));
+    assert!(joined(&screen(&a, 200, 40)).contains("by bisection"));
+}

@@ -24,6 +24,8 @@ pub struct DetectView {
     /// `t`: the selected pair's time of collision, and the trial on show
     /// (one past the trials: the result).
     pub toi: Option<(PairToiRun, usize)>,
+    /// The search `t` runs (`m` switches).
+    pub method: ToiMethod,
 }
 
 /// The detection screen's keys: what the help shows and what each key does.
@@ -62,6 +64,11 @@ pub const DETECT_KEYS: &[Binding<Key>] = &[
         label: "t",
         help: "the pair's time of collision over the next step (t, Esc: back)",
         keys: &[(C::Char('t'), Key::Toi)],
+    },
+    Binding {
+        label: "m",
+        help: "time of collision by bisection / by conservative advancement",
+        keys: &[(C::Char('m'), Key::ToiMethod)],
     },
     PLANE,
     Binding {
@@ -120,6 +127,7 @@ impl App {
             pair: 0,
             stop: 0,
             toi: None,
+            method: ToiMethod::Bisection,
         }));
         self.screen = Screen::Detect;
     }
@@ -158,6 +166,21 @@ impl App {
             }
             Key::Toi if d.toi.is_some() => d.toi = None,
             Key::Toi => self.open_toi(),
+            Key::ToiMethod => {
+                d.method = match d.method {
+                    ToiMethod::Bisection => ToiMethod::Conservative,
+                    ToiMethod::Conservative => ToiMethod::Bisection,
+                };
+                let method = d.method;
+                if d.toi.is_some() {
+                    self.open_toi();
+                } else {
+                    self.say(
+                        format!("time of collision by {} (t shows it)", method_name(method)),
+                        false,
+                    );
+                }
+            }
             Key::Up if d.toi.is_some() => d.toi = None,
             Key::Up => {
                 self.detect = None;
@@ -181,7 +204,7 @@ impl App {
             return;
         };
         let step = run.frame as u64;
-        match run.player.toi(lesson, step, ToiMethod::Bisection, (i, j)) {
+        match run.player.toi(lesson, step, d.method, (i, j)) {
             Some(t) => {
                 if let Some(d) = self.detect.as_deref_mut() {
                     d.toi = Some((t, 0));
@@ -194,5 +217,13 @@ impl App {
                 false,
             ),
         }
+    }
+}
+
+/// The search's name in words.
+fn method_name(m: ToiMethod) -> &'static str {
+    match m {
+        ToiMethod::Bisection => "bisection",
+        ToiMethod::Conservative => "conservative advancement",
     }
 }

@@ -161,6 +161,8 @@ pub enum Key {
     Detect,
     /// `t` on the detection: the pair's time of collision.
     Toi,
+    /// `m` with the time of collision: bisection ↔ conservative advancement.
+    ToiMethod,
     NextPair,
     PrevPair,
 }
