@@ -111,15 +111,8 @@ pub fn pair_scale(p: &PairTrace) -> f64 {
     p.spheres.map_or(1.0, |s| s.1)
 }
 
-fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
-    let scale = pair_scale(p);
-    out.push(Block::Heading(
-        2,
-        format!("Pair {} – {} ({})", p.a, p.b, p.method),
-    ));
-    if let Some(why) = &p.forced {
-        out.push(Block::Para(why.clone()));
-    }
+/// The mid phase's paragraph: bounding spheres, boxes swept over the step.
+pub fn mid_phase(p: &PairTrace, f: &Fmt) -> Option<String> {
     let mut mid = vec![];
     if let Some((d, r)) = p.spheres {
         mid.push(format!(
@@ -135,8 +128,20 @@ fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
             if o { "overlap" } else { "apart" }
         ));
     }
-    if !mid.is_empty() {
-        out.push(Block::Para(format!("Mid phase — {}.", mid.join("; "))));
+    (!mid.is_empty()).then(|| format!("Mid phase — {}.", mid.join("; ")))
+}
+
+fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
+    let scale = pair_scale(p);
+    out.push(Block::Heading(
+        2,
+        format!("Pair {} – {} ({})", p.a, p.b, p.method),
+    ));
+    if let Some(why) = &p.forced {
+        out.push(Block::Para(why.clone()));
+    }
+    if let Some(mid) = mid_phase(p, f) {
+        out.push(Block::Para(mid));
     }
     for n in &p.notes {
         out.push(Block::Para(format!("Note: {n}.")));

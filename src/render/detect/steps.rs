@@ -3,7 +3,9 @@
 //! text's table row (`head: value` lines, the same cells), and the result
 //! paragraphs as the text ends each part.
 
-use super::blocks::{epa_result, epa_row, gjk_result, gjk_row, pair_scale, EPA_HEAD, GJK_HEAD};
+use super::blocks::{
+    epa_result, epa_row, gjk_result, gjk_row, mid_phase, pair_scale, EPA_HEAD, GJK_HEAD,
+};
 use crate::format::Fmt;
 use crate::trace::detect::PairTrace;
 
@@ -47,11 +49,11 @@ pub fn stop_lines(p: &PairTrace, stop: Stop, f: &Fmt) -> (String, Vec<String>) {
     (title, lines)
 }
 
-/// The pair's results: GJK's verdict, the depth (EPA or the radii), the
+/// The pair's results: the mid phase's verdict, GJK's verdict, the depth (EPA or the radii), the
 /// contacts handed to the resolver.
 pub fn result_lines(p: &PairTrace, f: &Fmt) -> Vec<String> {
     let scale = pair_scale(p);
-    let mut out = vec![];
+    let mut out: Vec<String> = mid_phase(p, f).into_iter().collect();
     if let Some(g) = &p.gjk {
         out.push(format!("GJK: {}", gjk_result(g, f, scale)));
     }
