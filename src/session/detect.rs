@@ -130,9 +130,17 @@ impl PairToiRun {
 impl Player {
     /// The detection of the bodies after step `step` (≤ computed), from the
     /// nearest kept copy: what `detect --step N` prints for the run as edited.
-    pub fn detect(&self, lesson: &Lesson, step: u64, plane: Plane) -> Option<DetectTrace> {
+    /// `only`: that pair's narrow phase alone, run even when the broad
+    /// phase rules it out (`detect --pair A,B`).
+    pub fn detect(
+        &self,
+        lesson: &Lesson,
+        step: u64,
+        plane: Plane,
+        only: Option<(usize, usize)>,
+    ) -> Option<DetectTrace> {
         let sim = self.state_after(step)?;
-        Some(detect_trace(&sim, lesson, step, plane, None))
+        Some(detect_trace(&sim, lesson, step, plane, only))
     }
 
     /// The time-of-collision searches of step `step + 1` for the bodies

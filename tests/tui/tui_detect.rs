@@ -173,3 +173,22 @@ fn m_switches_the_search_to_conservative_advancement() {
     key(&mut a, KeyCode::Char('m'));
     assert!(joined(&screen(&a, 200, 40)).contains("by bisection"));
 }
+
+#[test]
+fn a_ruled_out_pair_has_its_narrow_phase_run_anyway() {
+    // bullet-wall at step 0: the boxes are apart along x, so the broad phase
+    // rules the pair out; its GJK still runs, as `detect --pair` runs it.
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(
+        rows.contains("bullet – wall: ruled out, their bounding boxes are apart along x"),
+        "{rows}"
+    );
+    assert!(
+        rows.contains("the broad phase rules this pair out"),
+        "{rows}"
+    );
+    assert!(rows.contains("GJK iteration 1 of 2"), "{rows}");
+    assert!(rows.contains("separated at distance 0.48"), "{rows}");
+}

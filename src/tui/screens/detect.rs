@@ -120,7 +120,7 @@ fn verdict(p: &PairTrace) -> String {
 fn render_stops(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let f = &app.fmt;
-    let Some(p) = d.trace.pairs.get(d.pair) else {
+    let Some(p) = d.narrow() else {
         let text = match d.trace.dropped.get(d.pair - d.trace.pairs.len()) {
             Some(x) => format!(
                 "{} – {}: the broad phase rules this pair out ({}), so no GJK or EPA runs for it (contact-lab detect --pair {},{} runs it anyway).\n\nt: its time of collision over the next step.",
@@ -139,6 +139,9 @@ fn render_stops(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     };
     let all = stops(p);
     let mut lines: Vec<Line> = vec![];
+    if let Some(why) = &p.forced {
+        lines.push(Line::styled(format!("{why}."), t.dim()));
+    }
     let title = match all.get(d.stop) {
         Some(stop) => {
             let (title, rows) = stop_lines(p, *stop, f);
@@ -252,7 +255,7 @@ fn render_picture(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     };
     let mut bodies: Vec<BodyView> = [a, b].iter().filter_map(|name| body(tr, name)).collect();
     let mut what = String::new();
-    let (marks, said): (Vec<V3>, &str) = match (&d.toi, tr.pairs.get(d.pair)) {
+    let (marks, said): (Vec<V3>, &str) = match (&d.toi, d.narrow()) {
         (Some((run, trial)), _) => {
             // The pair where the search puts it at the trial's time (or at
             // the time of collision, or the step's end, after the trials).

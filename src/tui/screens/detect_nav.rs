@@ -8,7 +8,7 @@ use super::{Key, Screen, PLANE};
 use crate::physics::detect::ToiMethod;
 use crate::render::detect::steps::stops;
 use crate::session::PairToiRun;
-use crate::trace::detect::DetectTrace;
+use crate::trace::detect::{DetectTrace, PairTrace};
 use crate::tui::app::App;
 use crate::tui::keys::Binding;
 
@@ -26,6 +26,9 @@ pub struct DetectView {
     pub toi: Option<(PairToiRun, usize)>,
     /// The search `t` runs (`m` switches).
     pub method: ToiMethod,
+    /// A ruled-out pair selected: its narrow phase run anyway, as
+    /// `detect --pair A,B` runs it.
+    pub forced: Option<PairTrace>,
 }
 
 /// The detection screen's keys: what the help shows and what each key does.
@@ -89,6 +92,12 @@ pub const DETECT_KEYS: &[Binding<Key>] = &[
 ];
 
 impl DetectView {
+    /// The selected pair's narrow phase: as the step runs it, or run
+    /// anyway for a pair the broad phase rules out.
+    pub fn narrow(&self) -> Option<&PairTrace> {
+        self.trace.pairs.get(self.pair).or(self.forced.as_ref())
+    }
+
     /// The selected pair's two body names, and whether the broad phase kept it.
     pub fn selected(&self) -> Option<(&str, &str, bool)> {
         let kept = self.trace.pairs.len();
@@ -110,7 +119,7 @@ impl App {
         };
         let lesson = &self.lessons[self.lesson].lesson;
         let step = run.frame as u64;
-        let Some(trace) = run.player.detect(lesson, step, self.plane) else {
+        let Some(trace) = run.player.detect(lesson, step, self.plane, None) else {
             return self.say(
                 format!("step {step}'s bodies could not be found again: the run blew up"),
                 true,
@@ -128,8 +137,10 @@ impl App {
             stop: 0,
             toi: None,
             method: ToiMethod::Bisection,
+            forced: None,
         }));
         self.screen = Screen::Detect;
+        self.force_selected();
     }
 
     pub(super) fn detect_key(&mut self, action: Key) {
@@ -138,7 +149,7 @@ impl App {
         };
         let pairs = d.trace.pairs.len() + d.trace.dropped.len();
         // The last stop is the result, after the iterations.
-        let last = match (&d.toi, d.trace.pairs.get(d.pair)) {
+        let last = match (&d.toi, d.narrow()) {
             (Some((t, _)), _) => t.trace.pairs.first().map_or(0, |p| p.record.trials.len()),
             (None, Some(p)) => stops(p).len(),
             (None, None) => 0,
@@ -160,6 +171,8 @@ impl App {
                 };
                 d.stop = 0;
                 d.toi = None;
+                d.forced = None;
+                self.force_selected();
             }
             Key::NextPair | Key::PrevPair => {
                 self.say(format!("{pairs} pair(s) at this step"), false);
@@ -187,6 +200,29 @@ impl App {
                 self.screen = Screen::Run;
             }
             _ => {}
+        }
+    }
+
+    /// A ruled-out pair selected: its narrow phase run anyway.
+    fn force_selected(&mut self) {
+        let (Some(run), Some(d)) = (self.run.as_deref(), self.detect.as_deref()) else {
+            return;
+        };
+        let Some((a, b, false)) = d.selected() else {
+            return;
+        };
+        let lesson = &self.lessons[self.lesson].lesson;
+        let index = |name: &str| lesson.bodies.iter().position(|x| x.name == name);
+        let (Some(i), Some(j)) = (index(a), index(b)) else {
+            return;
+        };
+        let step = run.frame as u64;
+        let forced = run
+            .player
+            .detect(lesson, step, self.plane, Some((i, j)))
+            .and_then(|t| t.pairs.into_iter().next());
+        if let Some(d) = self.detect.as_deref_mut() {
+            d.forced = forced;
         }
     }
 
