@@ -7,11 +7,8 @@ use crate::cli::{DetectArgs, Format};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Lesson;
-use crate::physics::collide::record::detect as record;
-use crate::physics::collide::Options;
 use crate::physics::step::{SimParams, Simulation};
 use crate::render::detect as show;
-use crate::trace::detect::{build, Context};
 
 pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     let lesson = load(&args.lesson, &overrides(&args.knobs)?, None)?;
@@ -22,24 +19,8 @@ pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
     let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let only = args.pair.as_deref().map(|p| pair(p, &names)).transpose()?;
     let sim = advanced(&lesson, args.step)?;
-    let p = &sim.params;
-    let options = Options {
-        box_box: p.box_box,
-        tolerance: p.contact_margin,
-        narrow_phase: p.narrow_phase,
-    };
-    let found = record(&sim.world.bodies, &options, p.dt, only);
-    let cx = Context {
-        lesson: &lesson.id,
-        title: &lesson.title,
-        step: args.step,
-        time: args.step as f64 * p.dt,
-        narrow_phase: p.narrow_phase,
-        plane: super::figure::plane(args.plane),
-        names: &names,
-        bodies: &sim.world.bodies,
-    };
-    let trace = build(&cx, &found);
+    let plane = super::figure::plane(args.plane);
+    let trace = crate::session::detect_trace(&sim, &lesson, args.step, plane, only);
     if let Some(path) = &args.figure {
         let svg = show::svg(&trace, 0).ok_or_else(|| {
             AppError::Usage("--figure: no pair reaches the narrow phase, so there is nothing to draw (name one with --pair A,B)".into())

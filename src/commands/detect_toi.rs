@@ -13,12 +13,9 @@ use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Lesson;
 use crate::physics::detect::ToiMethod;
-use crate::physics::step::swept::SweptPairs;
-use crate::physics::step::toi_pair::search_pair;
 use crate::physics::step::Simulation;
-use crate::physics::to_f64;
 use crate::render::toi as render;
-use crate::trace::toi::{DetectToi, Overlap, PairToi, SearchRecord};
+use crate::trace::toi::DetectToi;
 
 /// `detect --toi` on the lesson `detect` loaded (its knobs applied).
 pub fn detect_toi(args: &DetectArgs, lesson: &Lesson, out: &mut dyn Write) -> Result<(), AppError> {
@@ -100,55 +97,10 @@ pub fn trace(
             ))
         })?;
     }
-    let start = sim.time;
-    let (world, moving) = sim.resolved_next();
-    let dt = sim.params.dt;
-    let pairs = match pair {
-        Some(pair) => vec![pair],
-        None => {
-            let mut swept = SweptPairs::default();
-            swept.find(&world, &moving, dt);
-            swept.pairs.clone()
-        }
-    };
-    let name = |k: usize| lesson.bodies[k].name.clone();
-    let mut found = Vec::new();
-    for (i, j) in pairs {
-        let mut record = SearchRecord::default();
-        let Some(s) = search_pair(&world, &moving, (i, j), dt, method, &mut record) else {
-            if pair.is_some() {
-                return Err(AppError::Usage(format!(
-                    "--pair {},{}: both bodies need a convex shape (a sphere, box, cylinder or capsule) to be searched; a half-space or a body without a shape has no time of collision",
-                    name(i),
-                    name(j)
-                )));
-            }
-            continue;
-        };
-        let v = |x: nalgebra::Vector3<f64>| [x.x, x.y, x.z];
-        found.push(PairToi {
-            a: name(i),
-            b: name(j),
-            aabbs_overlap: s.aabbs_overlap,
-            spheres_meet: s.spheres_meet,
-            method,
-            time: s.toi.time.map(to_f64),
-            end: s.toi.end,
-            tests: s.toi.iterations,
-            record,
-            at_end: s.at_end.map(|(n, depth)| Overlap {
-                normal: v(n),
-                depth,
-            }),
-            previous_frame: s.previous_frame.map(v),
-        });
-    }
-    Ok(DetectToi {
-        lesson: lesson.id.clone(),
-        step,
-        time: start,
-        dt,
-        method,
-        pairs: found,
+    crate::session::toi_trace(&sim, lesson, step, method, pair).map_err(|(i, j)| {
+        AppError::Usage(format!(
+            "--pair {},{}: both bodies need a convex shape (a sphere, box, cylinder or capsule) to be searched; a half-space or a body without a shape has no time of collision",
+            lesson.bodies[i].name, lesson.bodies[j].name
+        ))
     })
 }

@@ -4,7 +4,8 @@
 use serde_json::{json, Value};
 
 use crate::format::Fmt;
-use crate::trace::toi::{end_name, end_text, DetectToi, PairToi};
+use crate::physics::detect::ToiMethod;
+use crate::trace::toi::{end_name, end_text, DetectToi, PairToi, Trial};
 
 fn vec3(f: &Fmt, v: &[f64; 3]) -> String {
     format!("({}, {}, {})", f.num(v[0]), f.num(v[1]), f.num(v[2]))
@@ -62,40 +63,9 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
         ));
     }
     for t in &p.record.trials {
-        match p.method {
-            crate::physics::detect::ToiMethod::Bisection => s.push_str(&format!(
-                "  [t₀, t₁] = [{}, {}]: midpoint {} {} → keep [{}, {}]\n",
-                f.num(t.t0),
-                f.num(t.t1),
-                f.num(t.trial),
-                if t.hit { "intersects" } else { "apart" },
-                f.num(if t.hit { t.t0 } else { t.trial }),
-                f.num(if t.hit { t.trial } else { t.t1 })
-            )),
-            crate::physics::detect::ToiMethod::Conservative => s.push_str(&format!(
-                "  t = {}: distance {} m{}\n",
-                f.num(t.t0),
-                f.num(t.distance),
-                if t.hit {
-                    " within the tolerance: stop".to_string()
-                } else {
-                    format!(
-                        " → advance to t = {} (distance / closing bound)",
-                        f.num(t.t1)
-                    )
-                }
-            )),
-        }
+        s.push_str(&format!("  {}\n", trial_line(p, t, f)));
     }
-    s.push_str(&format!(
-        "  time of collision: {} ({}, {} tests)\n",
-        p.time.map_or("none".into(), |t| format!(
-            "t = {} s into the step",
-            f.num(t)
-        )),
-        end_text(p.end),
-        p.tests
-    ));
+    s.push_str(&format!("  {}\n", outcome_line(p, f)));
     s.push_str(&format!(
         "  normal at the step's end (EPA): {}\n",
         p.at_end
@@ -112,6 +82,47 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
                 f, &n
             ))
     ));
+}
+
+/// One test of the pair's search, as the text's line says it.
+pub fn trial_line(p: &PairToi, t: &Trial, f: &Fmt) -> String {
+    match p.method {
+        ToiMethod::Bisection => format!(
+            "[t₀, t₁] = [{}, {}]: midpoint {} {} → keep [{}, {}]",
+            f.num(t.t0),
+            f.num(t.t1),
+            f.num(t.trial),
+            if t.hit { "intersects" } else { "apart" },
+            f.num(if t.hit { t.t0 } else { t.trial }),
+            f.num(if t.hit { t.trial } else { t.t1 })
+        ),
+        ToiMethod::Conservative => format!(
+            "t = {}: distance {} m{}",
+            f.num(t.t0),
+            f.num(t.distance),
+            if t.hit {
+                " within the tolerance: stop".to_string()
+            } else {
+                format!(
+                    " → advance to t = {} (distance / closing bound)",
+                    f.num(t.t1)
+                )
+            }
+        ),
+    }
+}
+
+/// The search's outcome line: the time of collision and why it ended.
+pub fn outcome_line(p: &PairToi, f: &Fmt) -> String {
+    format!(
+        "time of collision: {} ({}, {} tests)",
+        p.time.map_or("none".into(), |t| format!(
+            "t = {} s into the step",
+            f.num(t)
+        )),
+        end_text(p.end),
+        p.tests
+    )
 }
 
 /// The run as JSON.

@@ -4,7 +4,9 @@
 //! on request — the fast path records nothing. [`edit`] changes the run's
 //! input at a step and computes it again from there.
 
+mod detect;
 mod edit;
+pub use detect::{detect_trace, toi_trace, PairToiRun};
 pub use edit::SceneEdit;
 
 use crate::lesson::Lesson;

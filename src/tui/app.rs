@@ -9,7 +9,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use super::event::{self, Action};
 use super::form::Form;
-use super::screens::{ResolverView, RunView, Screen, Targets};
+use super::screens::{DetectView, ResolverView, RunView, Screen, Targets};
 use super::theme::Theme;
 use super::write;
 use crate::exercise::answer::Score;
@@ -105,6 +105,8 @@ pub struct App {
     pub run: Option<Box<RunView>>,
     /// One resolution's iterations, when opened.
     pub resolver: Option<Box<ResolverView>>,
+    /// A step's detection, when opened (`d` on the run).
+    pub detect: Option<Box<DetectView>>,
     /// The lesson the stepper shows when opened from a resolver iteration:
     /// the bodies as that iteration finds them (the lesson list keeps its own).
     pub opened: Option<Entry>,
@@ -170,6 +172,7 @@ impl App {
             screen: Screen::Contact,
             run: None,
             resolver: None,
+            detect: None,
             opened: None,
             targets: Targets::default(),
         };
@@ -246,6 +249,7 @@ impl App {
         self.opened = None;
         self.run = None;
         self.resolver = None;
+        self.detect = None;
         self.screen = Screen::Contact;
         if self.lessons[i].lesson.simulation.is_some() {
             self.open_lesson_screen(false);

@@ -9,6 +9,7 @@ mod ccd_events;
 mod io_tui_edits;
 mod io_tui_responsive;
 mod tui;
+mod tui_detect;
 mod tui_lesson_picker;
 mod tui_scenes;
 mod tui_teaching;

@@ -106,15 +106,13 @@ fn broad(out: &mut Vec<Block>, t: &DetectTrace, f: &Fmt) {
     }
 }
 
-fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
-    let scale = p.spheres.map_or(1.0, |s| s.1);
-    out.push(Block::Heading(
-        2,
-        format!("Pair {} – {} ({})", p.a, p.b, p.method),
-    ));
-    if let Some(why) = &p.forced {
-        out.push(Block::Para(why.clone()));
-    }
+/// The size against which a pair's round-off shows as 0 (its radii sum).
+pub fn pair_scale(p: &PairTrace) -> f64 {
+    p.spheres.map_or(1.0, |s| s.1)
+}
+
+/// The mid phase's paragraph: bounding spheres, boxes swept over the step.
+pub fn mid_phase(p: &PairTrace, f: &Fmt) -> Option<String> {
     let mut mid = vec![];
     if let Some((d, r)) = p.spheres {
         mid.push(format!(
@@ -130,8 +128,20 @@ fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
             if o { "overlap" } else { "apart" }
         ));
     }
-    if !mid.is_empty() {
-        out.push(Block::Para(format!("Mid phase — {}.", mid.join("; "))));
+    (!mid.is_empty()).then(|| format!("Mid phase — {}.", mid.join("; ")))
+}
+
+fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
+    let scale = pair_scale(p);
+    out.push(Block::Heading(
+        2,
+        format!("Pair {} – {} ({})", p.a, p.b, p.method),
+    ));
+    if let Some(why) = &p.forced {
+        out.push(Block::Para(why.clone()));
+    }
+    if let Some(mid) = mid_phase(p, f) {
+        out.push(Block::Para(mid));
     }
     for n in &p.notes {
         out.push(Block::Para(format!("Note: {n}.")));
@@ -150,71 +160,100 @@ fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
     }
 }
 
-fn gjk(out: &mut Vec<Block>, g: &GjkTrace, f: &Fmt, scale: f64) {
+/// The GJK table's head.
+pub const GJK_HEAD: [&str; 6] = [
+    "k",
+    "d_k",
+    "w_k = s_A(d_k) - s_B(-d_k)",
+    "simplex (✗ dropped)",
+    "v_k",
+    "|v|² - v·w",
+];
+
+/// Row `k` (0-based) of the GJK table.
+pub fn gjk_row(g: &GjkTrace, k: usize, f: &Fmt, scale: f64) -> Vec<String> {
     let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
-    out.push(Block::Heading(3, "GJK".into()));
-    let rows = g
-        .iterations
+    let it = &g.iterations[k];
+    let simplex: Vec<String> = it
+        .simplex
         .iter()
         .enumerate()
-        .map(|(k, it)| {
-            let simplex: Vec<String> = it
-                .simplex
-                .iter()
-                .enumerate()
-                .map(|(i, w)| {
-                    let mark = if it.kept.contains(&i) { "" } else { "✗" };
-                    format!("{}{mark}", v(f, w))
-                })
-                .collect();
-            vec![
-                (k + 1).to_string(),
-                v(f, &it.direction),
-                format!(
-                    "{} = {} - {}",
-                    v(f, &it.support),
-                    v(f, &it.support_a),
-                    v(f, &it.support_b)
-                ),
-                simplex.join(" "),
-                v(f, &it.closest),
-                format!("{} (ε {})", f.num(it.bound), f.num(it.bound_limit)),
-            ]
+        .map(|(i, w)| {
+            let mark = if it.kept.contains(&i) { "" } else { "✗" };
+            format!("{}{mark}", v(f, w))
         })
         .collect();
-    out.push(Block::Table {
-        head: [
-            "k",
-            "d_k",
-            "w_k = s_A(d_k) - s_B(-d_k)",
-            "simplex (✗ dropped)",
-            "v_k",
-            "|v|² - v·w",
-        ]
-        .map(String::from)
-        .to_vec(),
-        rows,
-    });
+    vec![
+        (k + 1).to_string(),
+        v(f, &it.direction),
+        format!(
+            "{} = {} - {}",
+            v(f, &it.support),
+            v(f, &it.support_a),
+            v(f, &it.support_b)
+        ),
+        simplex.join(" "),
+        v(f, &it.closest),
+        format!("{} (ε {})", f.num(it.bound), f.num(it.bound_limit)),
+    ]
+}
+
+/// How GJK ended and its result, as the text's paragraph says it.
+pub fn gjk_result(g: &GjkTrace, f: &Fmt, scale: f64) -> String {
     let verdict = match &g.closest {
         Some([a, b]) => format!(
             "separated at distance {}; closest points {} on A, {} on B",
             f.num_at(g.distance, scale),
-            v(f, a),
-            v(f, b)
+            v_at(f, a, scale),
+            v_at(f, b, scale)
         ),
         None => "intersecting".into(),
     };
-    out.push(Block::Para(format!(
-        "Ended ({}): {}. Result: {}.",
-        g.end, g.end_words, verdict
-    )));
+    format!("Ended ({}): {}. Result: {}.", g.end, g.end_words, verdict)
 }
 
-fn epa(out: &mut Vec<Block>, e: &EpaTrace, f: &Fmt, scale: f64) {
+fn gjk(out: &mut Vec<Block>, g: &GjkTrace, f: &Fmt, scale: f64) {
+    out.push(Block::Heading(3, "GJK".into()));
+    let rows = (0..g.iterations.len())
+        .map(|k| gjk_row(g, k, f, scale))
+        .collect();
+    out.push(Block::Table {
+        head: GJK_HEAD.map(String::from).to_vec(),
+        rows,
+    });
+    out.push(Block::Para(gjk_result(g, f, scale)));
+}
+
+/// The EPA table's head.
+pub const EPA_HEAD: [&str; 6] = ["k", "closest face", "δ_k", "w_k", "|v_k - w_k|", "faces"];
+
+/// Row `k` (0-based) of the EPA table.
+pub fn epa_row(e: &EpaTrace, k: usize, f: &Fmt, scale: f64) -> Vec<String> {
+    let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
+    let it = &e.iterations[k];
+    vec![
+        (k + 1).to_string(),
+        it.face
+            .iter()
+            .map(|p| v(f, p))
+            .collect::<Vec<_>>()
+            .join(" "),
+        f.num_at(it.distance, scale),
+        v(f, &it.support),
+        f.num_at(it.gap, scale),
+        if it.removed + it.added == 0 {
+            "none (ended)".to_string()
+        } else {
+            format!("-{} +{}", it.removed, it.added)
+        },
+    ]
+}
+
+/// The depth's paragraph: EPA's result, or the depth from the radii.
+pub fn epa_result(e: &EpaTrace, f: &Fmt, scale: f64) -> String {
     let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
     if e.source == "margins" {
-        out.push(Block::Heading(3, "Depth from the radii".into()));
-        out.push(Block::Para(format!(
+        return format!(
             "No EPA: the cores are apart, so the depth is the radii less the cores' distance (exact): {} along normal {} (from B toward A), contact point {} (A's deepest {}, B's {}); features {}.",
             f.num_at(e.depth, scale),
             v(f, &e.normal),
@@ -222,46 +261,9 @@ fn epa(out: &mut Vec<Block>, e: &EpaTrace, f: &Fmt, scale: f64) {
             v(f, &e.point_a),
             v(f, &e.point_b),
             e.feature
-        )));
-        return;
+        );
     }
-    out.push(Block::Heading(3, "EPA".into()));
-    if e.iterations.is_empty() {
-        out.push(Block::Para(
-            "No EPA iterations: GJK's simplex could not be grown into a solid.".into(),
-        ));
-    } else {
-        let rows = e
-            .iterations
-            .iter()
-            .enumerate()
-            .map(|(k, it)| {
-                vec![
-                    (k + 1).to_string(),
-                    it.face
-                        .iter()
-                        .map(|p| v(f, p))
-                        .collect::<Vec<_>>()
-                        .join(" "),
-                    f.num_at(it.distance, scale),
-                    v(f, &it.support),
-                    f.num_at(it.gap, scale),
-                    if it.removed + it.added == 0 {
-                        "none (ended)".to_string()
-                    } else {
-                        format!("-{} +{}", it.removed, it.added)
-                    },
-                ]
-            })
-            .collect();
-        out.push(Block::Table {
-            head: ["k", "closest face", "δ_k", "w_k", "|v_k - w_k|", "faces"]
-                .map(String::from)
-                .to_vec(),
-            rows,
-        });
-    }
-    out.push(Block::Para(format!(
+    format!(
         "Ended ({}): depth {} along normal {} (from B toward A), contact point {} (A's deepest {}, B's {}); features {}.",
         e.end,
         f.num_at(e.depth, scale),
@@ -270,7 +272,30 @@ fn epa(out: &mut Vec<Block>, e: &EpaTrace, f: &Fmt, scale: f64) {
         v(f, &e.point_a),
         v(f, &e.point_b),
         e.feature
-    )));
+    )
+}
+
+fn epa(out: &mut Vec<Block>, e: &EpaTrace, f: &Fmt, scale: f64) {
+    if e.source == "margins" {
+        out.push(Block::Heading(3, "Depth from the radii".into()));
+        out.push(Block::Para(epa_result(e, f, scale)));
+        return;
+    }
+    out.push(Block::Heading(3, "EPA".into()));
+    if e.iterations.is_empty() {
+        out.push(Block::Para(
+            "No EPA iterations: GJK's simplex could not be grown into a solid.".into(),
+        ));
+    } else {
+        let rows = (0..e.iterations.len())
+            .map(|k| epa_row(e, k, f, scale))
+            .collect();
+        out.push(Block::Table {
+            head: EPA_HEAD.map(String::from).to_vec(),
+            rows,
+        });
+    }
+    out.push(Block::Para(epa_result(e, f, scale)));
 }
 
 fn contacts(out: &mut Vec<Block>, c: &[ContactLine], f: &Fmt, scale: f64) {

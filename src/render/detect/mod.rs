@@ -1,9 +1,11 @@
 //! `contact-lab detect`: a scene's detection as text, Markdown, LaTeX, JSON
-//! (docs/detect.md) and an SVG figure of one pair's Minkowski difference.
+//! (docs/detect.md) and an SVG figure of one pair's Minkowski difference;
+//! [`steps`] gives a pair's iterations one at a time (the TUI's screen).
 
 mod blocks;
 mod json;
 mod layout;
+pub mod steps;
 mod svg;
 
 pub use json::json;

@@ -7,7 +7,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-use super::{Screen, RESOLVER_KEYS, RUN_KEYS, SPEEDS};
+use super::{Screen, DETECT_KEYS, RESOLVER_KEYS, RUN_KEYS, SPEEDS};
 use crate::physics::resolver::Phase;
 use crate::tui::app::{App, Mode};
 use crate::tui::wrap::{truncate, width};
@@ -20,7 +20,15 @@ pub fn breadcrumb(app: &App) -> String {
         let frame = &run.player.run.frames[run.frame];
         parts.push(format!("t = {:.3} s, step {}", frame.time, frame.step));
     }
-    if app.screen != Screen::Run {
+    if app.screen == Screen::Detect {
+        if let Some(d) = &app.detect {
+            parts.push(match &d.toi {
+                Some(_) => "detection › time of collision".into(),
+                None => "detection".into(),
+            });
+        }
+    }
+    if !matches!(app.screen, Screen::Run | Screen::Detect) {
         if let Some(r) = &app.resolver {
             let table = &r.trace.tables[r.stop];
             let (phase, used) = match table.stop.phase {
@@ -80,14 +88,24 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     key_bar(app, bottom, buf);
     match app.screen {
         Screen::Run => super::run::render(app, body, buf),
+        Screen::Detect => super::detect::render(app, body, buf),
         _ => super::resolver::render(app, body, buf),
     }
     if app.mode == Mode::Help {
-        let (title, keys) = match app.screen {
-            Screen::Run => (" Keys · run ", crate::tui::keys::help(RUN_KEYS)),
-            _ => (" Keys · resolver ", crate::tui::keys::help(RESOLVER_KEYS)),
+        let (title, keys, notes) = match app.screen {
+            Screen::Run => (" Keys · run ", crate::tui::keys::help(RUN_KEYS), &NOTES[..]),
+            Screen::Detect => (
+                " Keys · detection ",
+                crate::tui::keys::help(DETECT_KEYS),
+                &DETECT_NOTES[..],
+            ),
+            _ => (
+                " Keys · resolver ",
+                crate::tui::keys::help(RESOLVER_KEYS),
+                &NOTES[..],
+            ),
         };
-        crate::tui::overlay::help_list(app, title, &keys, &NOTES, area, buf);
+        crate::tui::overlay::help_list(app, title, &keys, notes, area, buf);
     }
     if let Mode::Glossary(scroll) = app.mode {
         crate::tui::overlay::glossary(app, scroll, area, buf);
@@ -102,6 +120,11 @@ const NOTES: [&str; 4] = [
     "Enter goes down a level: a step → its resolver iterations → an iteration's contact and its stages. Esc or Backspace goes back up.",
     "Mouse: click a contact or a body in the picture, or a table row, to select it; the wheel scrolls.",
     "The contact screen has its own keys (? there).",
+];
+
+const DETECT_NOTES: [&str; 2] = [
+    "? again (or PgDn): page 2, the glossary of every symbol.",
+    "The iterations are the rows contact-lab detect --step N prints; the time of collision is detect --toi's (docs/detect.md, docs/ccd.md).",
 ];
 
 fn header(app: &App, area: Rect, buf: &mut Buffer) {
@@ -175,6 +198,21 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
             ("g", "restart"),
             ("cosb", "show"),
             ("/", "find"),
+            ("?", "help"),
+            ("q", "quit"),
+        ],
+        (false, Screen::Detect) if app.detect.as_ref().is_some_and(|d| d.toi.is_some()) => &[
+            ("↑↓", "pair"),
+            ("←→", "trial"),
+            ("t Esc", "iterations"),
+            ("?", "help"),
+            ("q", "quit"),
+        ],
+        (false, Screen::Detect) => &[
+            ("↑↓", "pair"),
+            ("←→", "iteration"),
+            ("t", "time of collision"),
+            ("Esc", "run"),
             ("?", "help"),
             ("q", "quit"),
         ],

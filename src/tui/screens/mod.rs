@@ -6,6 +6,8 @@
 //! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
 mod chrome;
+mod detect;
+mod detect_nav;
 mod edit;
 mod nav;
 mod picture;
@@ -19,6 +21,7 @@ use ratatui::layout::Rect;
 use crate::session::{Player, Recording};
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
+pub use detect_nav::{DetectView, DETECT_KEYS};
 
 /// The screen on show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -26,6 +29,8 @@ pub enum Screen {
     Run,
     Resolver,
     Contact,
+    /// A step's detection: pairs, GJK and EPA iterations, time of collision.
+    Detect,
 }
 
 /// Playback speeds, × real time.
@@ -152,6 +157,14 @@ pub enum Key {
     LineUp,
     Help,
     Quit,
+    /// `d` on the run: the step's detection.
+    Detect,
+    /// `t` on the detection: the pair's time of collision.
+    Toi,
+    /// `m` with the time of collision: bisection ↔ conservative advancement.
+    ToiMethod,
+    NextPair,
+    PrevPair,
 }
 
 /// What the run screen's picture shows or hides.
@@ -206,7 +219,7 @@ macro_rules! tail_rows {
     };
 }
 
-const PLANE: Binding<Key> = Binding {
+pub(crate) const PLANE: Binding<Key> = Binding {
     label: "v",
     help: "view plane of the picture: xy → yz → zx",
     keys: &[(C::Char('v'), Key::Plane)],
@@ -278,6 +291,11 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
         label: "Enter",
         help: "this step's resolver iterations",
         keys: &[(C::Enter, Key::Open)],
+    },
+    Binding {
+        label: "d",
+        help: "this step's detection: pairs, GJK and EPA iterations, time of collision",
+        keys: &[(C::Char('d'), Key::Detect)],
     },
     Binding {
         label: "c o s b",

@@ -8,8 +8,8 @@ use ratatui::crossterm::event::{
 };
 
 use super::{
-    Key, Pick, ResolverView, RunView, Screen, Toggle, Toggles, EVENT_KINDS, RESOLVER_KEYS,
-    RUN_KEYS, SPEEDS,
+    Key, Pick, ResolverView, RunView, Screen, Toggle, Toggles, DETECT_KEYS, EVENT_KINDS,
+    RESOLVER_KEYS, RUN_KEYS, SPEEDS,
 };
 use crate::session::{Player, Poll};
 use crate::trace::step::StepTrace;
@@ -166,10 +166,10 @@ impl App {
                 );
             }
         }
-        let table = if self.screen == Screen::Run {
-            RUN_KEYS
-        } else {
-            RESOLVER_KEYS
+        let table = match self.screen {
+            Screen::Run => RUN_KEYS,
+            Screen::Detect => DETECT_KEYS,
+            _ => RESOLVER_KEYS,
         };
         let Some(action) = keys::find(table, key.code) else {
             return;
@@ -192,6 +192,7 @@ impl App {
             Key::LineDown => self.wheel(false),
             Key::LineUp => self.wheel(true),
             _ if self.screen == Screen::Run => self.run_key(action),
+            _ if self.screen == Screen::Detect => self.detect_key(action),
             _ => self.resolver_key(action),
         }
     }
@@ -257,6 +258,10 @@ impl App {
                     Some(trace) => self.show_resolver(trace),
                     None => said = Some("step 0 is the state before the first step: nothing is resolved yet (→ takes a step)".into()),
                 }
+            }
+            Key::Detect => {
+                run.playing = false;
+                return self.open_detect();
             }
             Key::Up => self.quit = true,
             _ => {}
@@ -389,6 +394,7 @@ impl App {
                     r.scroll.set(if up { s.saturating_sub(1) } else { s + 1 });
                 }
             }
+            Screen::Detect => {}
             Screen::Contact => {
                 self.scroll = if up {
                     self.scroll.saturating_sub(1)
@@ -404,7 +410,7 @@ impl App {
     /// the next of them.
     fn pick(&self, col: u16, row: u16) -> Option<Pick> {
         let area = self.targets.picture.get();
-        if self.screen == Screen::Contact || !contains(area, col, row) {
+        if matches!(self.screen, Screen::Contact | Screen::Detect) || !contains(area, col, row) {
             return None;
         }
         let [x0, x1, y0, y1] = self.targets.bounds.get();

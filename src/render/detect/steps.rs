@@ -1,0 +1,80 @@
+//! One pair's narrow phase a stop at a time, for the TUI's detection
+//! screen: its GJK iterations then its EPA iterations, each as the `detect`
+//! text's table row (`head: value` lines, the same cells), and the result
+//! paragraphs as the text ends each part.
+
+use super::blocks::{
+    epa_result, epa_row, gjk_result, gjk_row, mid_phase, pair_scale, EPA_HEAD, GJK_HEAD,
+};
+use crate::format::Fmt;
+use crate::trace::detect::PairTrace;
+
+/// A stop of the pair's narrow phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stop {
+    /// GJK iteration k (0-based).
+    Gjk(usize),
+    Epa(usize),
+}
+
+/// The pair's stops in order: GJK's iterations, then EPA's.
+pub fn stops(p: &PairTrace) -> Vec<Stop> {
+    let g = p.gjk.as_ref().map_or(0, |g| g.iterations.len());
+    let e = p.epa.as_ref().map_or(0, |e| e.iterations.len());
+    (0..g).map(Stop::Gjk).chain((0..e).map(Stop::Epa)).collect()
+}
+
+/// The stop's title (`GJK iteration 2 of 3`) and its lines.
+pub fn stop_lines(p: &PairTrace, stop: Stop, f: &Fmt) -> (String, Vec<String>) {
+    let scale = pair_scale(p);
+    let (title, head, row) = match (stop, &p.gjk, &p.epa) {
+        (Stop::Gjk(k), Some(g), _) => (
+            format!("GJK iteration {} of {}", k + 1, g.iterations.len()),
+            GJK_HEAD,
+            gjk_row(g, k, f, scale),
+        ),
+        (Stop::Epa(k), _, Some(e)) => (
+            format!("EPA iteration {} of {}", k + 1, e.iterations.len()),
+            EPA_HEAD,
+            epa_row(e, k, f, scale),
+        ),
+        _ => return (String::new(), vec![]),
+    };
+    let lines = head
+        .iter()
+        .zip(row)
+        .skip(1)
+        .map(|(h, v)| format!("{h}: {v}"))
+        .collect();
+    (title, lines)
+}
+
+/// The pair's results: the mid phase's verdict, GJK's verdict, the depth (EPA or the radii), the
+/// contacts handed to the resolver.
+pub fn result_lines(p: &PairTrace, f: &Fmt) -> Vec<String> {
+    let scale = pair_scale(p);
+    let mut out: Vec<String> = mid_phase(p, f).into_iter().collect();
+    if let Some(g) = &p.gjk {
+        out.push(format!("GJK: {}", gjk_result(g, f, scale)));
+    }
+    if let Some(e) = &p.epa {
+        out.push(format!("Depth: {}", epa_result(e, f, scale)));
+    }
+    for n in &p.notes {
+        out.push(format!("Note: {n}."));
+    }
+    out.push(match p.contacts.len() {
+        0 => "Contacts to the resolver: none.".to_string(),
+        n => format!(
+            "Contacts to the resolver: {n}; the deepest {} m.",
+            f.num_at(
+                p.contacts
+                    .iter()
+                    .map(|c| c.penetration)
+                    .fold(f64::NEG_INFINITY, f64::max),
+                scale
+            )
+        ),
+    });
+    out
+}

@@ -1,0 +1,194 @@
+//! The detection screen (issues 24 and 25): `d` on the run opens the step's
+//! detection, → steps through the pair's GJK and EPA iterations, `t` shows
+//! its time of collision, Esc goes back to the run at the same step.
+
+use crate::common::tui::{app, draw, key, keys, screen, snapshot, term};
+
+use contact_lab::tui::app::Mode;
+use contact_lab::tui::screens::{Screen, DETECT_KEYS};
+use ratatui::crossterm::event::KeyCode;
+
+fn joined(rows: &[String]) -> String {
+    rows.join("\n")
+}
+
+#[test]
+fn d_opens_the_detection_and_right_steps_through_the_gjk_iterations() {
+    let mut a = app("gjk-separated", false);
+    assert_eq!(a.screen, Screen::Run);
+    key(&mut a, KeyCode::Char('d'));
+    assert_eq!(a.screen, Screen::Detect);
+    let first = joined(&screen(&a, 200, 40));
+    assert!(first.contains("turned – cube"), "{first}");
+    assert!(first.contains("GJK iteration 1 of 3"), "{first}");
+    // The result: the distance GJK finds, 0.207107 (√2 - 1)/2 ≈ 0.2071.
+    assert!(first.contains("separated at distance 0.207107"), "{first}");
+    // Iteration 1's support point, as `detect` prints it.
+    assert!(
+        first.contains("(1.5, -0.207107, 0) = (1, 0.292893, 0.5) - (-0.5, 0.5, 0.5)"),
+        "{first}"
+    );
+    key(&mut a, KeyCode::Right);
+    let second = joined(&screen(&a, 200, 40));
+    assert!(second.contains("GJK iteration 2 of 3"), "{second}");
+    assert!(
+        second.contains("(0.5, -0.207107, 0) = (1, 0.292893, 0.5) - (0.5, 0.5, 0.5)"),
+        "{second}"
+    );
+    keys(&mut a, KeyCode::Right, 5);
+    let last = joined(&screen(&a, 200, 40));
+    assert!(last.contains("result ·"), "{last}");
+    assert!(!last.contains("GJK iteration"), "{last}");
+}
+
+#[test]
+fn esc_goes_back_to_the_run_at_the_same_step() {
+    let mut a = app("gjk-separated", false);
+    keys(&mut a, KeyCode::Right, 2);
+    key(&mut a, KeyCode::Char('d'));
+    assert_eq!(a.screen, Screen::Detect);
+    assert!(joined(&screen(&a, 200, 40)).contains("step 2 › detection"));
+    key(&mut a, KeyCode::Esc);
+    assert_eq!(a.screen, Screen::Run);
+    assert!(a.detect.is_none());
+    assert_eq!(a.run.as_ref().unwrap().frame, 2);
+    assert!(!a.quit);
+}
+
+#[test]
+fn t_shows_the_bullets_time_of_collision_trial_by_trial() {
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    assert_eq!(a.screen, Screen::Detect);
+    key(&mut a, KeyCode::Char('t'));
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(rows.contains("trial 1 of 15"), "{rows}");
+    assert!(
+        rows.contains("time of collision: t = 0.0048008 s into the step"),
+        "{rows}"
+    );
+    assert!(rows.contains("midpoint 0.00486111 intersects"), "{rows}");
+    assert!(rows.contains("←→ trial  t Esc iterations"), "{rows}");
+    key(&mut a, KeyCode::Right);
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(rows.contains("trial 2 of 15"), "{rows}");
+    assert!(rows.contains("midpoint 0.00481151 intersects"), "{rows}");
+    // Esc leaves the time of collision for the pair's iterations, then the run.
+    key(&mut a, KeyCode::Esc);
+    assert!(a.detect.as_ref().is_some_and(|d| d.toi.is_none()));
+    key(&mut a, KeyCode::Esc);
+    assert_eq!(a.screen, Screen::Run);
+}
+
+#[test]
+fn the_help_lists_the_detection_keys() {
+    let mut a = app("gjk-separated", false);
+    key(&mut a, KeyCode::Char('?'));
+    let run_help = joined(&screen(&a, 120, 50));
+    assert!(run_help.contains("this step's detection"), "{run_help}");
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('?'));
+    assert_eq!(a.mode, Mode::Help);
+    let help = joined(&screen(&a, 120, 50));
+    assert!(help.contains("Keys · detection"), "{help}");
+    let readme = include_str!("../../README.md");
+    for (k, what) in contact_lab::tui::keys::help(DETECT_KEYS) {
+        assert!(help.contains(what), "{what} is not in the help:\n{help}");
+        assert!(
+            readme.contains(&format!("| {k} | {what} |")),
+            "README lacks {k}"
+        );
+    }
+}
+
+#[test]
+fn the_detection_table_binds_each_key_once() {
+    use contact_lab::tui::keys::find;
+    let mut seen = Vec::new();
+    for row in DETECT_KEYS {
+        for (code, bound) in row.keys {
+            assert!(!seen.contains(code), "{code:?} bound twice");
+            seen.push(*code);
+            assert_eq!(find(DETECT_KEYS, *code), Some(*bound), "{}", row.label);
+        }
+    }
+}
+
+#[test]
+fn the_detection_screen_at_100_by_30() {
+    let mut a = app("gjk-separated", false);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Right);
+    let mut t = term(100, 30);
+    draw(&mut t, &a);
+    snapshot("tui_detect_gjk_separated_100x30", &t);
+}
+
+#[test]
+fn the_time_of_collision_picture_moves_the_bullet_to_the_trial_time() {
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('t'));
+    let first = joined(&screen(&a, 100, 30));
+    assert!(
+        first.contains("bullet – wall · t = 0.00486111 s ·"),
+        "{first}"
+    );
+    key(&mut a, KeyCode::End);
+    let last = joined(&screen(&a, 100, 30));
+    // After the trials: the pair at the time of collision.
+    assert!(last.contains("bullet – wall · t = 0.0048008 s ·"), "{last}");
+    assert!(last.contains("All 15 trials done."), "{last}");
+}
+
+#[test]
+fn after_gjk_come_the_epa_iterations_then_the_depth() {
+    let mut a = app("epa-edge-edge", false);
+    key(&mut a, KeyCode::Char('d'));
+    keys(&mut a, KeyCode::Right, 2);
+    let epa = joined(&screen(&a, 200, 40));
+    assert!(epa.contains("EPA iteration 1 of 4"), "{epa}");
+    assert!(epa.contains("faces: -2 +4"), "{epa}");
+    key(&mut a, KeyCode::End);
+    let end = joined(&screen(&a, 200, 40));
+    assert!(end.contains("depth 0.05 along normal (0, 1, 0)"), "{end}");
+    assert!(end.contains("• contacts"), "{end}");
+    key(&mut a, KeyCode::Home);
+    assert!(joined(&screen(&a, 200, 40)).contains("GJK iteration 1 of 2"));
+}
+
+#[test]
+fn m_switches_the_search_to_conservative_advancement() {
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('t'));
+    key(&mut a, KeyCode::Char('m'));
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(rows.contains("by conservative"), "{rows}");
+    // Advancement's first trial: the distance at the step's start.
+    assert!(rows.contains("Trial 1 of"), "{rows}");
+    assert!(rows.contains("t = 0: distance"), "{rows}");
+    assert!(rows.contains("time of collision: t = 0.0048"), "{rows}");
+    key(&mut a, KeyCode::Char('m'));
+    assert!(joined(&screen(&a, 200, 40)).contains("by bisection"));
+}
+
+#[test]
+fn a_ruled_out_pair_has_its_narrow_phase_run_anyway() {
+    // bullet-wall at step 0: the boxes are apart along x, so the broad phase
+    // rules the pair out; its GJK still runs, as `detect --pair` runs it.
+    let mut a = app("bullet-wall", false);
+    key(&mut a, KeyCode::Char('d'));
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(
+        rows.contains("bullet – wall: ruled out, their bounding boxes are apart along x"),
+        "{rows}"
+    );
+    assert!(
+        rows.contains("the broad phase rules this pair out"),
+        "{rows}"
+    );
+    assert!(rows.contains("GJK iteration 1 of 2"), "{rows}");
+    assert!(rows.contains("separated at distance 0.48"), "{rows}");
+}
