@@ -57,6 +57,8 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/bullet-wall.toml",
     "scenes/spinning-edge.toml",
     "scenes/plate-drop.toml",
+    "scenes/tetra-on-floor.toml",
+    "scenes/capsule-on-slope.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

@@ -262,3 +262,14 @@ fn markdown_latex_and_the_figure() {
     let md = String::from_utf8(run(&["epa-edge-edge", "--format", "md"]).stdout).unwrap();
     assert!(md.contains("### EPA") && md.contains("| k | closest face |"));
 }
+
+#[test]
+fn tetra_on_floor_is_a_point_face_contact_one_centimetre_deep() {
+    let d = json(&["tetra-on-floor"]);
+    let p = &d["pairs"][0];
+    assert_eq!(p["method"], "gjk");
+    let e = &p["epa"];
+    assert!((e["depth"].as_f64().unwrap() - 0.01).abs() < 1e-9, "{e}");
+    assert!(near(v3(&e["normal"]), [0.0, 1.0, 0.0], 1e-9), "{e}");
+    assert_eq!(e["feature"], "point-face");
+}

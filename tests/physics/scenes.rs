@@ -339,3 +339,48 @@ fn the_one_pass_start_audit_gives_the_separate_audits_bit_for_bit() {
         assert_eq!(with, resolved(w, &r, &g));
     }
 }
+
+/// The capsule-on-slope scene with its [world] friction set to `mu`
+/// (static and dynamic).
+fn capsule_on_slope(mu: Option<f64>) -> Simulation<f64> {
+    let text = contact_lab::lesson::embedded::find("capsule-on-slope").unwrap();
+    let text = match mu {
+        None => text.to_string(),
+        Some(mu) => text
+            .replace("static_friction = 0.5", &format!("static_friction = {mu}"))
+            .replace(
+                "dynamic_friction = 0.4",
+                &format!("dynamic_friction = {mu}"),
+            ),
+    };
+    let lesson = contact_lab::lesson::validate::parse("capsule-on-slope.toml", &text).unwrap();
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let materials = lesson.simulation.unwrap().materials;
+    Simulation::new(world, params, materials)
+}
+
+#[test]
+fn a_capsule_down_a_slope_sticks_above_tan_theta_and_slides_coulombs_distance_below() {
+    let theta = 20f64.to_radians();
+    let down = nalgebra::Vector3::new(theta.cos(), -theta.sin(), 0.0);
+    // μ_s = 0.5 > tan 20° = 0.364: it stays, within the position epsilon.
+    let mut sim = capsule_on_slope(None);
+    let start = body(&sim, 0).position;
+    run(&mut sim, 240, |_, _| {});
+    let moved = (body(&sim, 0).position - start).dot(&down);
+    assert!(moved.abs() < 2e-3, "moved {moved} m down the slope");
+    // μ = 0.3 < tan 20°: it slides ½ g (sin θ − μ cos θ) t² in t = 2 s.
+    let mut sim = capsule_on_slope(Some(0.3));
+    let start = body(&sim, 0).position;
+    run(&mut sim, 240, |_, _| {});
+    let slid = (body(&sim, 0).position - start).dot(&down);
+    let expected = 0.5 * 9.81 * (theta.sin() - 0.3 * theta.cos()) * 4.0;
+    assert!(
+        (slid - expected).abs() < 0.01 * expected,
+        "{slid} m against ½ g (sin θ − μ cos θ) t² = {expected} m"
+    );
+    // Lying along the fall line it slides without rolling.
+    assert!(body(&sim, 0).angular_velocity.norm() < 0.01);
+}
