@@ -74,6 +74,7 @@ pub fn spheres_meet<T: Real>(a: (Vector3<T>, T), b: (Vector3<T>, T)) -> bool {
 pub struct SweptPairs<T: Real> {
     broad: BroadPhase,
     bounds: Vec<Option<Aabb<T>>>,
+    spheres: Vec<Option<(Vector3<T>, T)>>,
     /// The candidate pairs (i, j), i < j, of the last call.
     pub pairs: Vec<(usize, usize)>,
 }
@@ -83,6 +84,7 @@ impl<T: Real> Default for SweptPairs<T> {
         SweptPairs {
             broad: BroadPhase::new(),
             bounds: Vec::new(),
+            spheres: Vec::new(),
             pairs: Vec::new(),
         }
     }
@@ -100,19 +102,20 @@ impl<T: Real> SweptPairs<T> {
             }));
         self.broad
             .candidate_pairs(&self.bounds, &[], &mut self.pairs);
-        self.pairs.retain(|&(i, j)| {
-            if !(moving[i] || moving[j]) {
-                return false;
-            }
-            let sphere = |k: usize| {
-                let shape = world.bodies[k].shape.as_ref()?;
-                let r: T = c(Convex::from_shape(shape)?.bounding_radius());
+        // Each body's swept sphere once (not once per pair it is in).
+        self.spheres.clear();
+        self.spheres
+            .extend(world.bodies.iter().enumerate().map(|(k, b)| {
+                let r: T = c(Convex::from_shape(b.shape.as_ref()?)?.bounding_radius());
                 Some(swept_sphere(r, &motion_of(world, k, moving[k]), dt))
-            };
-            match (sphere(i), sphere(j)) {
-                (Some(a), Some(b)) => spheres_meet(a, b),
-                _ => false,
-            }
+            }));
+        let spheres = &self.spheres;
+        self.pairs.retain(|&(i, j)| {
+            (moving[i] || moving[j])
+                && match (spheres[i], spheres[j]) {
+                    (Some(a), Some(b)) => spheres_meet(a, b),
+                    _ => false,
+                }
         });
     }
 }
