@@ -115,6 +115,10 @@ struct Validator {
     /// Printed values that are all zeros, by index into the lesson's
     /// printed entries: where they stand.
     printed_zero: Vec<(usize, std::ops::Range<usize>)>,
+    /// The scene-wide knobs set so far (`[settings]`, `[world]`, `[step]`,
+    /// `[sleep]`) and the table each was set in: a knob set in two of them
+    /// is said, since the table read last silently wins.
+    scene_knobs: Vec<(&'static str, crate::physics::knobs::Table)>,
 }
 
 fn v3(a: [f64; 3]) -> Vector3<f64> {

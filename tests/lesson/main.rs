@@ -10,6 +10,7 @@ mod extremes;
 mod finite_outputs;
 mod hulls;
 mod invalid_lessons;
+mod knob_twice;
 mod knobs;
 mod lecture_numbers;
 mod load_warnings;

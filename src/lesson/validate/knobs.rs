@@ -22,12 +22,31 @@ impl Validator {
     ) {
         let mut entries: Vec<(&S<String>, &S<toml::Value>)> = raw.iter().collect();
         entries.sort_by_key(|(k, _)| k.span().start);
+        // The knobs this table sets, as the file spells each.
+        let mut here: Vec<(&'static str, &str)> = Vec::new();
         for (key, value) in entries {
             let name = key.get_ref().as_str();
             if fields.contains(&name) {
                 continue;
             }
-            match knobs::in_table(table, name) {
+            let knob = knobs::in_table(table, name);
+            if let Some(knob) = knob {
+                if let Some((_, first)) = here.iter().find(|(k, _)| *k == knob.name) {
+                    // A knob and its old name in one table: one would be lost.
+                    self.err(
+                        key.span(),
+                        format!(
+                            "in {}: {name} sets the knob {} again (`{first}` sets it above): keep one",
+                            table.name(),
+                            knob.name
+                        ),
+                    );
+                    continue;
+                }
+                here.push((knob.name, name));
+                self.twice_in_scene(table, knob.name, key);
+            }
+            match knob {
                 Some(knob) => match knob_value::from_toml(knob, value.get_ref()) {
                     Ok(v) => (knob.set)(into, v),
                     Err(e) => {
@@ -47,6 +66,24 @@ impl Validator {
                 None => self.misplaced(table, key, fields),
             }
         }
+    }
+
+    /// A scene-wide knob set in a second table: a warning, since the table
+    /// read last wins without a word ([settings], then [world], [step], [sleep]).
+    fn twice_in_scene(&mut self, table: Table, knob: &'static str, key: &S<String>) {
+        if matches!(table, Table::Contact | Table::ContactSettings) {
+            return;
+        }
+        if let Some((_, first)) = self.scene_knobs.iter().find(|(k, _)| *k == knob) {
+            let message = format!(
+                "{knob} is set in {} and again in {}: {} is read later, so its value is the one used",
+                first.name(),
+                table.name(),
+                table.name()
+            );
+            self.warnings.push(Note::new(message, key.span()));
+        }
+        self.scene_knobs.push((knob, table));
     }
 
     /// A key that is no knob of `table`: a knob of another table, or unknown.
