@@ -1,4 +1,4 @@
-//! `detect --toi` as text and JSON (GUIDE's detect contract: each pair's
+//! `detect --toi` as text and JSON (docs/ccd.md, `detect SCENE --toi`: each pair's
 //! `toi` with `method`, `time` and `iterations` of `t0`, `t1`, `hit`).
 
 use serde_json::{json, Value};

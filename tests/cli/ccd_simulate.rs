@@ -1,4 +1,4 @@
-//! `simulate --ccd` (issue 25, GUIDE §10): the collision continuous
+//! `simulate --ccd` (issue 25, docs/ccd.md): the collision continuous
 //! detection finds inside a step is a `toi` event in the text and the JSON,
 //! and the tunnelled event is gone.
 

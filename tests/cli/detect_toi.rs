@@ -1,4 +1,4 @@
-//! `detect SCENE --toi` (issue 25, GUIDE §10): each pair's time of
+//! `detect SCENE --toi` (issue 25, docs/ccd.md): each pair's time of
 //! collision over a step, test by test, in text and JSON, against the closed
 //! form; and the two normals of a fast pair side by side.
 

@@ -1,4 +1,4 @@
-//! `simulate` says when a pair tunnelled (issue 25, GUIDE §10): the JSON's
+//! `simulate` says when a pair tunnelled (issue 25, docs/simulate.md): the JSON's
 //! events have `kind: "tunnelled"` naming both bodies, once for a bullet
 //! that crosses a thin wall inside one step.
 
