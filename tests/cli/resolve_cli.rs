@@ -6,29 +6,9 @@
 
 use std::path::Path;
 
-use assert_cmd::Command;
 use serde_json::Value as J;
 
-fn contact_lab() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_contact-lab"));
-    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
-    cmd
-}
-
-struct Run {
-    code: Option<i32>,
-    stdout: String,
-    stderr: String,
-}
-
-fn run(args: &[&str]) -> Run {
-    let out = contact_lab().args(args).output().expect("contact-lab runs");
-    Run {
-        code: out.status.code(),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
-    }
-}
+use crate::common::cli::run;
 
 fn json(args: &[&str]) -> J {
     let r = run(args);

@@ -5,14 +5,9 @@
 
 use crate::common;
 
-use assert_cmd::Command;
 use serde_json::Value as J;
 
-fn contact_lab() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_contact-lab"));
-    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
-    cmd
-}
+use crate::common::cli::contact_lab;
 
 fn run(args: &[&str]) -> (Option<i32>, String, String) {
     let out = contact_lab().args(args).output().expect("contact-lab runs");

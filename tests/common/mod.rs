@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod advise;
+pub mod cli;
 pub mod dd;
 pub mod json;
 pub mod random;

@@ -7,8 +7,6 @@
 
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
-
 const DIR: &str = "tests/invalid_lessons";
 
 /// File → line, column and a fragment of the message of its one error.
@@ -143,26 +141,7 @@ const HELP: &[(&str, &str)] = &[
     ("float-past-f64", "write `inf` where infinity is meant"),
 ];
 
-fn contact_lab() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_contact-lab"));
-    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
-    cmd
-}
-
-struct Run {
-    code: Option<i32>,
-    stdout: String,
-    stderr: String,
-}
-
-fn run(args: &[&str]) -> Run {
-    let out = contact_lab().args(args).output().expect("contact-lab runs");
-    Run {
-        code: out.status.code(),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
-    }
-}
+use crate::common::cli::{contact_lab, run};
 
 /// Runs `solve PATH` and checks everything a bad lesson must give; returns stderr.
 fn assert_invalid(path: &str, line: usize, column: usize, fragment: &str) -> String {
