@@ -13,12 +13,12 @@
 //! the body origin); pairs already in contact and pairs that do not move
 //! are skipped, so a resting scene runs no GJK at all.
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::Vector3;
 
 use super::contact_events::PairSet;
-use super::swept::SweptPairs;
+use super::swept::{motion_of, SweptPairs};
 use crate::physics::detect::gjk::{gjk, GjkOptions, GjkVerdict};
-use crate::physics::detect::toi::{conservative_advancement, Motion, ToiEnd, ToiOptions};
+use crate::physics::detect::toi::{conservative_advancement, ToiEnd, ToiOptions};
 use crate::physics::detect::Convex;
 use crate::physics::{c, to_f64, BodyId, Real, World};
 
@@ -77,23 +77,6 @@ pub fn key(i: usize, j: usize) -> (BodyId, Option<BodyId>) {
     (BodyId(i.min(j)), Some(BodyId(i.max(j))))
 }
 
-fn motion<T: Real>(world: &World<T>, i: usize, moving: bool) -> Motion<T> {
-    let s = &world.bodies[i].state;
-    let fixed = Motion {
-        orientation: UnitQuaternion::new_normalize(s.orientation),
-        ..Motion::fixed(s.position)
-    };
-    if moving {
-        Motion {
-            velocity: s.velocity,
-            angular_velocity: s.angular_velocity,
-            ..fixed
-        }
-    } else {
-        fixed
-    }
-}
-
 fn pair<T: Real>(
     world: &World<T>,
     i: usize,
@@ -103,16 +86,12 @@ fn pair<T: Real>(
 ) -> Option<Tunnelled> {
     let a = Convex::from_shape(world.bodies[i].shape.as_ref()?)?;
     let b = Convex::from_shape(world.bodies[j].shape.as_ref()?)?;
-    let (ma, mb) = (motion(world, i, moving[i]), motion(world, j, moving[j]));
+    let (ma, mb) = (
+        motion_of(world, i, moving[i]),
+        motion_of(world, j, moving[j]),
+    );
+    // The swept broad phase has kept only pairs whose motion spheres meet.
     let (ra, rb): (T, T) = (c(a.bounding_radius()), c(b.bounding_radius()));
-    // The motion spheres: ruled out when they do not meet.
-    let half = c::<T>(0.5) * dt;
-    let reach =
-        |m: &Motion<T>, r: T| (m.position + m.velocity * half, r + m.velocity.norm() * half);
-    let ((ca, sa), (cb, sb)) = (reach(&ma, ra), reach(&mb, rb));
-    if (ca - cb).norm() > sa + sb {
-        return None;
-    }
     let options = ToiOptions {
         tolerance: c::<T>(1e-4) * ra.min(rb),
         ..ToiOptions::default()
