@@ -164,7 +164,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
         if run.recording.is_some() {
-            let text = super::nav::recording(run);
+            let text = super::run_nav::recording(run);
             Paragraph::new(Line::styled(
                 truncate(&format!(" {text}"), area.width as usize),
                 t.info(),

@@ -2,7 +2,7 @@
 //! play, pause, step, charts, events) and *resolver* (one resolution's
 //! iterations stop by stop). Enter goes down a level (frame → its resolver
 //! iterations → an iteration's contact), Esc or Backspace up. Their state
-//! lives here; [`nav`] updates it, [`run`] and [`resolver`] draw it. They
+//! lives here; [`nav`], [`run_nav`] and [`resolver_nav`] update it, [`run`] and [`resolver`] draw it. They
 //! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
 mod chrome;
@@ -12,7 +12,9 @@ mod edit;
 mod nav;
 mod picture;
 mod resolver;
+mod resolver_nav;
 mod run;
+mod run_nav;
 
 use std::cell::Cell;
 
