@@ -6,6 +6,7 @@
 
 use std::fmt::Write;
 
+use super::minkowski::minkowski;
 use crate::render::figure::{outline, Silhouette, P};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
 
@@ -104,8 +105,10 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
             "d",
         );
     }
-    // Right: the Minkowski difference, the origin, the simplex, the normal.
-    let right_pts: Vec<P> = p.minkowski.iter().map(flat).chain([[0.0, 0.0]]).collect();
+    // Right: the Minkowski difference, the origin, the simplex, the normal
+    // (the result's picture: past the iterations).
+    let m = minkowski(t.plane, p, usize::MAX);
+    let right_pts: Vec<P> = m.hull.iter().copied().chain([[0.0, 0.0]]).collect();
     let right = Fit::new(&right_pts, 20.0 + PANEL + 20.0);
     let _ = writeln!(
         out,
@@ -113,27 +116,14 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
         40.0 + PANEL,
         result(p)
     );
-    if !p.minkowski.is_empty() {
-        let hull = crate::render::figure::hull(p.minkowski.iter().map(flat).collect());
+    if !m.hull.is_empty() {
         let _ = writeln!(
             out,
             r##"  <polygon points="{}" fill="#9467bd" fill-opacity="0.15" stroke="#9467bd" stroke-width="2"/>"##,
-            right.points(&hull)
+            right.points(&m.hull)
         );
     }
-    let simplex: Vec<P> = match (&p.epa, &p.gjk) {
-        (Some(e), _) if !e.iterations.is_empty() => e
-            .iterations
-            .last()
-            .map(|it| it.face.iter().map(flat).collect())
-            .unwrap_or_default(),
-        (_, Some(g)) => g
-            .iterations
-            .last()
-            .map(|it| it.simplex.iter().map(flat).collect())
-            .unwrap_or_default(),
-        _ => vec![],
-    };
+    let simplex = &m.simplex;
     for (i, a) in simplex.iter().enumerate() {
         for b in &simplex[i + 1..] {
             let (a, b) = (right.at(*a), right.at(*b));
@@ -160,26 +150,8 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
         o[0] + 8.0,
         o[1] - 8.0
     );
-    if let Some(e) = &p.epa {
-        let n = flat(&e.normal);
-        // -depth·n: the penetration vector from the origin to the boundary.
-        arrow(
-            &mut out,
-            &right,
-            [0.0, 0.0],
-            [-n[0] * e.depth, -n[1] * e.depth],
-            "#2ca02c",
-            "-δn",
-        );
-    } else if let Some(g) = p.gjk.as_ref().and_then(|g| g.iterations.last()) {
-        arrow(
-            &mut out,
-            &right,
-            [0.0, 0.0],
-            flat(&g.closest),
-            "#2ca02c",
-            "v",
-        );
+    if let Some((to, label)) = m.arrow {
+        arrow(&mut out, &right, [0.0, 0.0], to, "#2ca02c", label);
     }
     out += "</svg>\n";
     Some(out)
