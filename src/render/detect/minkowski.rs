@@ -48,6 +48,7 @@ impl Minkowski {
         let mut out: Vec<P> = self.hull.iter().chain(&self.simplex).copied().collect();
         out.extend(self.support);
         out.extend(self.closest);
+        out.extend(self.direction);
         out.extend(self.arrow.map(|(p, _)| p));
         out.push([0.0, 0.0]);
         out

@@ -7,7 +7,10 @@
 
 mod chrome;
 mod detect;
+mod detect_minkowski;
 mod detect_nav;
+mod detect_stages;
+mod detect_toi;
 mod edit;
 mod nav;
 mod picture;
@@ -23,7 +26,7 @@ use ratatui::layout::Rect;
 use crate::session::{Player, Recording};
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
-pub use detect_nav::{DetectView, DETECT_KEYS};
+pub use detect_nav::{DetectView, Shown, DETECT_KEYS};
 
 /// The screen on show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -167,6 +170,8 @@ pub enum Key {
     ToiMethod,
     NextPair,
     PrevPair,
+    /// `x` on the detection: the shapes and A - B, the shapes, A - B.
+    Picture,
 }
 
 /// What the run screen's picture shows or hides.

@@ -67,7 +67,12 @@ impl App {
                 self.help_scroll = 0;
                 self.mode = Mode::Help;
             }
-            Key::Plane => self.plane = self.plane.next(),
+            Key::Plane => {
+                self.plane = self.plane.next();
+                if self.screen == Screen::Detect {
+                    self.redetect();
+                }
+            }
             Key::NextLesson => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
             Key::PrevLesson => {
                 let n = self.lessons.len();

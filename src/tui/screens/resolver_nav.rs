@@ -21,14 +21,21 @@ impl App {
         self.screen = Screen::Resolver;
     }
 
-    /// Esc or Backspace on the stepper: up a level when there is one.
+    /// Esc or Backspace on the stepper: up a level when there is one (the
+    /// resolver, or the detection the contact was opened from).
     pub(crate) fn up_key(&mut self, key: KeyEvent) -> bool {
         if !matches!(key.code, KeyCode::Esc | KeyCode::Backspace) || self.resolver.is_none() {
             return false;
         }
         self.opened = None;
         self.baseline = None;
-        self.screen = Screen::Resolver;
+        if self.detect.is_some() {
+            // Opened from the detection (Enter on a pair's contact): back there.
+            self.resolver = None;
+            self.screen = Screen::Detect;
+        } else {
+            self.screen = Screen::Resolver;
+        }
         true
     }
 
@@ -67,7 +74,7 @@ impl App {
     }
 
     /// The stepper on the selected contact, bodies as the stop finds them.
-    fn open_contact(&mut self) {
+    pub(super) fn open_contact(&mut self) {
         let Some(r) = self.resolver.as_deref() else {
             return;
         };
