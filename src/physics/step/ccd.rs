@@ -15,7 +15,6 @@
 
 use nalgebra::Vector3;
 
-use super::contact_events::PairSet;
 use super::swept::{motion_of, Earlier, SweptPairs};
 use crate::physics::detect::gjk::{gjk, GjkOptions, GjkVerdict};
 use crate::physics::detect::toi::{conservative_advancement, ToiEnd, ToiOptions};
@@ -67,12 +66,27 @@ pub fn tunnelled<T: Real>(
 }
 
 /// The pairs of bodies that have a contact this step, by [`key`].
-pub fn contact_pairs<T: Real>(world: &World<T>) -> PairSet {
-    world
+pub fn contact_pairs<T: Real>(world: &World<T>) -> ContactPairs {
+    let mut keys: Vec<_> = world
         .contacts
         .iter()
         .filter_map(|k| Some(key(k.body1.0, k.body2?.0)))
-        .collect()
+        .collect();
+    // Generated contacts come pair by pair in sorted order: this sort only checks.
+    keys.sort_unstable();
+    keys.dedup();
+    ContactPairs(keys)
+}
+
+/// A set of body pairs, sorted (building it hashes nothing; a step's
+/// contacts are already in pair order).
+#[derive(Debug, Clone, Default)]
+pub struct ContactPairs(Vec<(BodyId, Option<BodyId>)>);
+
+impl ContactPairs {
+    pub fn contains(&self, pair: &(BodyId, Option<BodyId>)) -> bool {
+        self.0.binary_search(pair).is_ok()
+    }
 }
 
 /// A pair of bodies in either order, as one key.
