@@ -88,14 +88,13 @@ fn world(fast: usize, seed: u64) -> World<f64> {
     }
 }
 
+/// A set of body pairs (i, j), i < j.
+type Pairs = BTreeSet<(usize, usize)>;
+
 /// The swept pairs found fresh and found reusing the generator's pairs
 /// (generated where the bodies were before a projection of up to `shift`),
 /// and whether the second reused them.
-fn both(
-    fast: usize,
-    shift: f64,
-    seed: u64,
-) -> (BTreeSet<(usize, usize)>, BTreeSet<(usize, usize)>, bool) {
+fn both(fast: usize, shift: f64, seed: u64) -> (Pairs, Pairs, bool) {
     let mut w = world(fast, seed);
     let options = Options {
         tolerance: 0.01,
