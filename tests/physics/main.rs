@@ -28,6 +28,7 @@ mod rollback;
 mod scale_invariance;
 mod scenes;
 mod sequential;
+mod swept_reuse;
 mod truth;
 mod tunnelling;
 mod world;

@@ -144,4 +144,9 @@ impl<T: Real> ContactGenerator<T> {
     pub fn pairs(&self) -> &[(usize, usize)] {
         &self.pairs
     }
+
+    /// The boxes of the last call (grown by half the tolerance), by body.
+    pub fn bounds(&self) -> &[Option<Aabb<T>>] {
+        &self.bounds
+    }
 }

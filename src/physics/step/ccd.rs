@@ -15,8 +15,7 @@
 
 use nalgebra::Vector3;
 
-use super::contact_events::PairSet;
-use super::swept::{motion_of, SweptPairs};
+use super::swept::{motion_of, Earlier, SweptPairs};
 use crate::physics::detect::gjk::{gjk, GjkOptions, GjkVerdict};
 use crate::physics::detect::toi::{conservative_advancement, ToiEnd, ToiOptions};
 use crate::physics::detect::Convex;
@@ -37,15 +36,18 @@ pub struct Tunnelled {
 /// contact; `moving[i]` says whether body i's position is updated this
 /// step. The candidates come from the swept broad phase (`swept`, its
 /// scratch kept by the caller): sort and sweep over the movement bounds,
-/// so a resting pile costs what its bounds' overlaps cost, not n² pairs.
+/// so a resting pile costs what its bounds' overlaps cost, not n² pairs;
+/// or the pairs of an `earlier` broad phase (contact generation's) where
+/// the swept boxes lie inside its boxes (the same pairs, docs/ccd.md).
 pub fn tunnelled<T: Real>(
     world: &World<T>,
     dt: T,
     moving: &[bool],
     swept: &mut SweptPairs<T>,
+    earlier: Option<Earlier<'_, T>>,
     out: &mut Vec<Tunnelled>,
 ) {
-    swept.find(world, moving, dt);
+    swept.find_reusing(world, moving, dt, earlier);
     if swept.pairs.is_empty() {
         return;
     }
@@ -64,12 +66,27 @@ pub fn tunnelled<T: Real>(
 }
 
 /// The pairs of bodies that have a contact this step, by [`key`].
-pub fn contact_pairs<T: Real>(world: &World<T>) -> PairSet {
-    world
+pub fn contact_pairs<T: Real>(world: &World<T>) -> ContactPairs {
+    let mut keys: Vec<_> = world
         .contacts
         .iter()
         .filter_map(|k| Some(key(k.body1.0, k.body2?.0)))
-        .collect()
+        .collect();
+    // Generated contacts come pair by pair in sorted order: this sort only checks.
+    keys.sort_unstable();
+    keys.dedup();
+    ContactPairs(keys)
+}
+
+/// A set of body pairs, sorted (building it hashes nothing; a step's
+/// contacts are already in pair order).
+#[derive(Debug, Clone, Default)]
+pub struct ContactPairs(Vec<(BodyId, Option<BodyId>)>);
+
+impl ContactPairs {
+    pub fn contains(&self, pair: &(BodyId, Option<BodyId>)) -> bool {
+        self.0.binary_search(pair).is_ok()
+    }
 }
 
 /// A pair of bodies in either order, as one key.

@@ -50,12 +50,19 @@ pub fn integrate_velocity<T: Real>(
     dt: T,
 ) {
     body.acceleration = gravity + loads.force * body.inverse_mass;
-    let angular_acceleration = body.inverse_inertia_world() * loads.torque;
     body.velocity += body.acceleration * dt;
-    body.angular_velocity += angular_acceleration * dt;
-    // Damping as the fraction of velocity kept per second.
-    body.velocity *= linear_damping.powf(dt);
-    body.angular_velocity *= angular_damping.powf(dt);
+    // Without torque I⁻¹τ is zero: R I⁻¹ Rᵀ is not built (most bodies, most steps).
+    if loads.torque != Vector3::zeros() {
+        let angular_acceleration = body.inverse_inertia_world() * loads.torque;
+        body.angular_velocity += angular_acceleration * dt;
+    }
+    // Damping as the fraction of velocity kept per second (1ʸ = 1: no damping, no pow).
+    if linear_damping != T::one() {
+        body.velocity *= linear_damping.powf(dt);
+    }
+    if angular_damping != T::one() {
+        body.angular_velocity *= angular_damping.powf(dt);
+    }
 }
 
 /// The position half of [`integrate`]: `x += v·dt`, `θ += ½[0, ω·dt]θ`, normalised.

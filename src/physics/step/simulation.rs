@@ -12,6 +12,7 @@ use super::integrate::{integrate_velocity, Loads};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use super::substep::{Spent, Substeps};
+use super::swept::Earlier;
 use super::{audit, energy, overlap, replay, rollback, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 use crate::physics::params::Material;
@@ -221,8 +222,18 @@ impl<T: Real> Simulation<T> {
             (self.world.bodies.iter().zip(&self.sleep))
                 .map(|(b, s)| b.movable && (s.awake || !p.sleep.enabled)),
         );
-        self.substeps
-            .spend(&mut self.world, &p, &self.materials, &mut spent);
+        // The audit reuses contact generation's pairs where it can (swept.rs).
+        let earlier = Earlier {
+            bounds: self.generator.bounds(),
+            pairs: self.generator.pairs(),
+        };
+        self.substeps.spend(
+            &mut self.world,
+            &p,
+            &self.materials,
+            Some(earlier),
+            &mut spent,
+        );
         // 6. Sleep.
         if p.sleep.enabled {
             self.update_sleep(&mut events);

@@ -19,7 +19,7 @@ use nalgebra::Vector3;
 use super::ccd::{self, Tunnelled};
 use super::energy;
 use super::integrate::integrate_position;
-use super::swept::{motion_of, SweptPairs};
+use super::swept::{motion_of, Earlier, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
     query, Convex, EpaOptions, GjkOptions, QueryOptions, ToiEnd, ToiMethod, ToiOptions,
@@ -96,11 +96,19 @@ impl<T: Real> Substeps<T> {
         world: &mut World<T>,
         p: &SimParams<T>,
         materials: &[Material],
+        earlier: Option<Earlier<'_, T>>,
         out: &mut Spent,
     ) {
         let Some(method) = p.ccd.method() else {
             let moving = &self.moving;
-            ccd::tunnelled(world, p.dt, moving, &mut self.swept, &mut out.crossed);
+            ccd::tunnelled(
+                world,
+                p.dt,
+                moving,
+                &mut self.swept,
+                earlier,
+                &mut out.crossed,
+            );
             advance(world, moving, p.dt);
             return;
         };
@@ -130,7 +138,14 @@ impl<T: Real> Substeps<T> {
         let left = p.dt - elapsed;
         let moving = &self.moving;
         let from = out.crossed.len();
-        ccd::tunnelled(world, left, moving, &mut self.swept, &mut out.crossed);
+        ccd::tunnelled(
+            world,
+            left,
+            moving,
+            &mut self.swept,
+            earlier,
+            &mut out.crossed,
+        );
         for t in &mut out.crossed[from..] {
             t.time += to_f64(elapsed);
         }

@@ -38,17 +38,30 @@ pub fn motion_of<T: Real>(world: &World<T>, i: usize, moving: bool) -> Motion<T>
 
 /// The AABB of a shape's motion over `dt` (module docs); `None` for a half-space.
 pub fn swept_aabb<T: Real>(shape: &Shape, m: &Motion<T>, dt: T) -> Option<Aabb<T>> {
-    let ends = [m.pose_at(T::zero()), m.pose_at(dt)];
+    let radius = || Convex::from_shape(shape).map(|s| c::<T>(s.bounding_radius()));
+    swept_aabb_with(shape, m, dt, radius)
+}
+
+/// [`swept_aabb`] with the bounding radius given (asked only for a turning
+/// body). The box at either end is the shape's half extents about the
+/// position there, `x₀ + v t`: a turning body's bounding radius, else the
+/// extents of its one orientation (`exp(0·t) q₀ = q₀`), computed once for
+/// both ends — the same numbers as the box of each end's pose.
+fn swept_aabb_with<T: Real>(
+    shape: &Shape,
+    m: &Motion<T>,
+    dt: T,
+    radius: impl FnOnce() -> Option<T>,
+) -> Option<Aabb<T>> {
     let turning = m.angular_velocity.norm() > T::zero();
-    let bound = |pose: &Pose<T>| -> Option<Aabb<T>> {
-        if turning {
-            let r: T = c(Convex::from_shape(shape)?.bounding_radius());
-            Some(Aabb::around(&pose.position, &Vector3::repeat(r)))
-        } else {
-            Aabb::of(shape, pose, T::zero())
-        }
+    let half = if turning {
+        Vector3::repeat(radius()?)
+    } else {
+        let turned = Pose::from_unit(Vector3::zeros(), &m.orientation);
+        Aabb::of(shape, &turned, T::zero())?.max
     };
-    let (a, b) = (bound(&ends[0])?, bound(&ends[1])?);
+    let a = Aabb::around(&(m.position + m.velocity * T::zero()), &half);
+    let b = Aabb::around(&(m.position + m.velocity * dt), &half);
     Some(Aabb {
         min: a.min.inf(&b.min),
         max: a.max.sup(&b.max),
@@ -75,8 +88,12 @@ pub struct SweptPairs<T: Real> {
     broad: BroadPhase,
     bounds: Vec<Option<Aabb<T>>>,
     spheres: Vec<Option<(Vector3<T>, T)>>,
+    /// Whether body i's swept box leaves its earlier box (`find_reusing`).
+    outside: Vec<bool>,
     /// The candidate pairs (i, j), i < j, of the last call.
     pub pairs: Vec<(usize, usize)>,
+    /// Whether the last call took the earlier pairs instead of sweeping.
+    pub reused: bool,
 }
 
 impl<T: Real> Default for SweptPairs<T> {
@@ -85,30 +102,78 @@ impl<T: Real> Default for SweptPairs<T> {
             broad: BroadPhase::new(),
             bounds: Vec::new(),
             spheres: Vec::new(),
+            outside: Vec::new(),
             pairs: Vec::new(),
+            reused: false,
         }
     }
+}
+
+/// The broad phase of an earlier call over the same bodies (contact
+/// generation's, at the step's start): each body's box and the pairs of
+/// boxes that overlap. [`SweptPairs::find_reusing`] takes its pairs instead
+/// of sorting again where the swept boxes lie inside these boxes.
+#[derive(Debug, Clone, Copy)]
+pub struct Earlier<'a, T: Real> {
+    pub bounds: &'a [Option<Aabb<T>>],
+    pub pairs: &'a [(usize, usize)],
+}
+
+/// At most this many bodies whose swept box leaves its earlier box are
+/// tested against every body one by one; more, and the broad phase sorts
+/// and sweeps again.
+const OUTSIDE_ONE_BY_ONE: usize = 16;
+
+/// Whether `outer` holds all of `inner`.
+fn holds<T: Real>(outer: &Aabb<T>, inner: &Aabb<T>) -> bool {
+    (0..3).all(|k| outer.min[k] <= inner.min[k] && inner.max[k] <= outer.max[k])
 }
 
 impl<T: Real> SweptPairs<T> {
     /// The pairs whose movement bounds over `dt` meet, at least one of them
     /// moving (`moving[i]`).
     pub fn find(&mut self, world: &World<T>, moving: &[bool], dt: T) {
+        self.find_reusing(world, moving, dt, None);
+    }
+
+    /// [`Self::find`], the same pairs, taking the candidate pairs of an
+    /// `earlier` broad phase where it can (docs/ccd.md, "Cost"): when body
+    /// i's swept box lies inside its earlier box for every i, two swept
+    /// boxes that overlap had earlier boxes that overlap, so every pair the
+    /// sweep would find is among the earlier pairs, and those pairs whose
+    /// swept boxes overlap are exactly the sweep's. A few bodies whose swept
+    /// box leaves its earlier box are tested against every body; more, and
+    /// the sweep runs again.
+    pub fn find_reusing(
+        &mut self,
+        world: &World<T>,
+        moving: &[bool],
+        dt: T,
+        earlier: Option<Earlier<'_, T>>,
+    ) {
+        let n = world.bodies.len();
         self.bounds.clear();
-        self.bounds
-            .extend(world.bodies.iter().enumerate().map(|(i, b)| {
-                let m = motion_of(world, i, moving[i]);
-                swept_aabb(b.shape.as_ref()?, &m, dt)
-            }));
-        self.broad
-            .candidate_pairs(&self.bounds, &[], &mut self.pairs);
-        // Each body's swept sphere once (not once per pair it is in).
         self.spheres.clear();
-        self.spheres
-            .extend(world.bodies.iter().enumerate().map(|(k, b)| {
-                let r: T = c(Convex::from_shape(b.shape.as_ref()?)?.bounding_radius());
-                Some(swept_sphere(r, &motion_of(world, k, moving[k]), dt))
-            }));
+        // Each body's motion, swept box and swept sphere once (not once per
+        // pair it is in).
+        for (i, b) in world.bodies.iter().enumerate() {
+            let m = motion_of(world, i, moving[i]);
+            let Some(shape) = b.shape.as_ref() else {
+                self.bounds.push(None);
+                self.spheres.push(None);
+                continue;
+            };
+            let r: Option<T> = Convex::from_shape(shape).map(|s| c(s.bounding_radius()));
+            self.bounds.push(swept_aabb_with(shape, &m, dt, || r));
+            self.spheres.push(r.map(|r| swept_sphere(r, &m, dt)));
+        }
+        self.reused = earlier
+            .filter(|e| e.bounds.len() == n)
+            .is_some_and(|e| self.pairs_inside(e));
+        if !self.reused {
+            self.broad
+                .candidate_pairs(&self.bounds, &[], &mut self.pairs);
+        }
         let spheres = &self.spheres;
         self.pairs.retain(|&(i, j)| {
             (moving[i] || moving[j])
@@ -117,5 +182,50 @@ impl<T: Real> SweptPairs<T> {
                     _ => false,
                 }
         });
+    }
+
+    /// The swept pairs from the `earlier` pairs (see
+    /// [`Self::find_reusing`]); false, nothing found, when too many swept
+    /// boxes leave their earlier boxes.
+    fn pairs_inside(&mut self, earlier: Earlier<'_, T>) -> bool {
+        let bounds = &self.bounds;
+        self.outside.clear();
+        self.outside.extend(
+            bounds
+                .iter()
+                .zip(earlier.bounds)
+                .map(|(s, e)| match (s, e) {
+                    (None, _) => false,
+                    (Some(s), Some(e)) => !holds(e, s),
+                    (Some(_), None) => true,
+                }),
+        );
+        let leaving = self.outside.iter().filter(|o| **o).count();
+        if leaving > OUTSIDE_ONE_BY_ONE {
+            return false;
+        }
+        let overlap = |i: usize, j: usize| match (&bounds[i], &bounds[j]) {
+            (Some(a), Some(b)) => a.overlaps(b),
+            _ => false,
+        };
+        let outside = &self.outside;
+        self.pairs.clear();
+        self.pairs.extend(
+            earlier
+                .pairs
+                .iter()
+                .map(|&(i, j)| (i.min(j), i.max(j)))
+                .filter(|&(i, j)| i != j && !outside[i] && !outside[j] && overlap(i, j)),
+        );
+        for u in (0..bounds.len()).filter(|&u| outside[u]) {
+            // Each pair once: with a body inside, or a later body outside.
+            let others = (0..bounds.len()).filter(|&j| j != u && (!outside[j] || j > u));
+            self.pairs.extend(
+                others
+                    .filter(|&j| overlap(u, j))
+                    .map(|j| (u.min(j), u.max(j))),
+            );
+        }
+        true
     }
 }
