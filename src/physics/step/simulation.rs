@@ -223,6 +223,14 @@ impl<T: Real> Simulation<T> {
         );
         self.substeps
             .spend(&mut self.world, &p, &self.materials, &mut spent);
+        // A sleeper a collision inside the step changed is awake (its
+        // velocity is no longer a sleeper's zero).
+        for &body in &spent.woken {
+            if !self.sleep[body.0].awake {
+                self.sleep[body.0].wake(p.sleep.epsilon);
+                events.push(Event::Wakes { body });
+            }
+        }
         // 6. Sleep.
         if p.sleep.enabled {
             self.update_sleep(&mut events);

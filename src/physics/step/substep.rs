@@ -5,7 +5,8 @@
 //! collision ([`crate::physics::detect::toi_sweep`]); every moving body
 //! advances to the earliest, that pair's contact is resolved there (the
 //! velocity phase, one contact), and the rest of the step is spent the same
-//! way, earliest first. Pairs already in contact at the step's start are
+//! way, earliest first. A body the resolution changes moves from then on,
+//! woken if it slept ([`Spent::woken`]). Pairs already in contact at the step's start are
 //! the discrete resolver's, and a pair resolved here is not searched again
 //! in the same step.
 //!
@@ -61,6 +62,10 @@ pub struct Spent {
     pub crossed: Vec<Tunnelled>,
     /// The cap on sub-steps was hit.
     pub capped: bool,
+    /// Bodies that were not moving (asleep) until a collision resolved here
+    /// changed their velocity: they move for the rest of the step, and the
+    /// step wakes them (as the discrete step wakes a sleeper it acts on).
+    pub woken: Vec<BodyId>,
 }
 
 /// Scratch kept from step to step.
@@ -119,6 +124,12 @@ impl<T: Real> Substeps<T> {
             elapsed += s;
             self.done.push((i, j));
             if let Some(hit) = resolve_at(world, p, materials, i, j) {
+                for body in [hit.body1, hit.body2] {
+                    if world.bodies[body.0].movable && !self.moving[body.0] {
+                        self.moving[body.0] = true;
+                        out.woken.push(body);
+                    }
+                }
                 out.hits.push(ToiHit {
                     method,
                     time: to_f64(elapsed),
