@@ -18,6 +18,7 @@ mod figure_strokes;
 mod glossary;
 mod instructor_snapshots;
 mod latex_compiles;
+mod movement_bounds;
 mod one_minus_sign;
 mod readme_layout;
 mod resolve_snapshots;

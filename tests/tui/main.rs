@@ -8,6 +8,7 @@ mod common;
 mod ccd_events;
 mod io_tui_edits;
 mod io_tui_responsive;
+mod movement_bounds;
 mod tui;
 mod tui_detect;
 mod tui_lesson_picker;

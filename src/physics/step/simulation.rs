@@ -403,6 +403,12 @@ impl<T: Real> Simulation<T> {
         (sim.world, moving)
     }
 
+    /// Each body's movement bounds over the last step, as its first swept
+    /// broad phase made them (`None`: not moving then, or no convex shape).
+    pub fn movement_bounds(&self) -> &[Option<super::swept::MovementBound<T>>] {
+        &self.substeps.bounds
+    }
+
     /// The scene's energy scale (J): what gains and blow-ups are measured against.
     pub fn energy_scale(&self) -> f64 {
         self.energy_scale

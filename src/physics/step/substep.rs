@@ -20,7 +20,7 @@ use nalgebra::Vector3;
 use super::ccd::{self, Tunnelled};
 use super::energy;
 use super::integrate::integrate_position;
-use super::swept::{motion_of, SweptPairs};
+use super::swept::{motion_of, MovementBound, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
     query, Convex, EpaOptions, GjkOptions, QueryOptions, ToiEnd, ToiMethod, ToiOptions,
@@ -76,6 +76,10 @@ pub struct Substeps<T: Real> {
     done: Vec<(usize, usize)>,
     /// Rolling back: each body's time to go back (rollback.rs).
     pub back: Vec<T>,
+    /// Each moving body's movement bounds over the whole step, as the
+    /// step's first swept broad phase made them (`None`: not moving, or
+    /// no convex shape); for pictures.
+    pub bounds: Vec<Option<MovementBound<T>>>,
 }
 
 impl<T: Real> Default for Substeps<T> {
@@ -85,6 +89,7 @@ impl<T: Real> Default for Substeps<T> {
             swept: SweptPairs::default(),
             done: Vec::new(),
             back: Vec::new(),
+            bounds: Vec::new(),
         }
     }
 }
@@ -104,9 +109,9 @@ impl<T: Real> Substeps<T> {
         out: &mut Spent,
     ) {
         let Some(method) = p.ccd.method() else {
-            let moving = &self.moving;
-            ccd::tunnelled(world, p.dt, moving, &mut self.swept, &mut out.crossed);
-            advance(world, moving, p.dt);
+            ccd::tunnelled(world, p.dt, &self.moving, &mut self.swept, &mut out.crossed);
+            self.keep_bounds();
+            advance(world, &self.moving, p.dt);
             return;
         };
         self.done.clear();
@@ -148,6 +153,14 @@ impl<T: Real> Substeps<T> {
         advance(world, moving, left);
     }
 
+    /// The moving bodies' bounds from the last sweep, kept in `bounds`.
+    fn keep_bounds(&mut self) {
+        let (swept, moving) = (&self.swept, &self.moving);
+        self.bounds.clear();
+        self.bounds
+            .extend((0..moving.len()).map(|i| if moving[i] { swept.bound(i) } else { None }));
+    }
+
     /// The pair that meets first within `left`, its time and its tests.
     fn earliest(
         &mut self,
@@ -156,6 +169,10 @@ impl<T: Real> Substeps<T> {
         left: T,
     ) -> Option<(usize, usize, T, usize)> {
         self.swept.find(world, &self.moving, left);
+        if self.done.is_empty() {
+            // The step's first sweep: over the whole step.
+            self.keep_bounds();
+        }
         let touching = ccd::contact_pairs(world);
         let mut best: Option<(usize, usize, T, usize)> = None;
         for &(i, j) in &self.swept.pairs {
