@@ -177,10 +177,9 @@ fn trace_step(
                 fmt.num(step.time),
                 step.world.contacts.len()
             );
-            crate::render::wrap::wrap(
-                &(head + &crate::render::resolve::text::render(&step.resolver, &fmt)),
-                super::text_width(args.width),
-            )
+            let body = crate::render::resolve::text::render(&step.resolver, &fmt);
+            let previous = crate::render::previous_frame::text(&step, &fmt);
+            crate::render::wrap::wrap(&(head + &body + &previous), super::text_width(args.width))
         }
         RunFormat::Json => crate::render::resolve::json::render(
             &step.resolver,

@@ -20,6 +20,7 @@ mod instructor_snapshots;
 mod latex_compiles;
 mod movement_bounds;
 mod one_minus_sign;
+mod previous_frame;
 mod readme_layout;
 mod resolve_snapshots;
 mod scene_snapshots;

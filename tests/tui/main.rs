@@ -9,6 +9,7 @@ mod ccd_events;
 mod io_tui_edits;
 mod io_tui_responsive;
 mod movement_bounds;
+mod previous_frame;
 mod tui;
 mod tui_detect;
 mod tui_lesson_picker;

@@ -9,6 +9,7 @@ use super::audit::Switches;
 use super::ccd_mode::Rollback;
 use super::contact_events::{self, PairSet, Touching};
 use super::integrate::{integrate_velocity, Loads};
+use super::previous_frame::PoseOf;
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use super::substep::{Spent, Substeps};
@@ -64,6 +65,10 @@ pub struct Simulation<T: Real> {
     inside_before: PairSet,
     /// Continuous detection's scratch.
     substeps: Substeps<T>,
+    /// Each body's pose at the start of this step, and at the start of the
+    /// last one: the previous frame (t − Δt) of this step's contacts.
+    frame_start: Vec<PoseOf<T>>,
+    previous: Vec<PoseOf<T>>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -93,6 +98,8 @@ impl<T: Real> Simulation<T> {
             inside: PairSet::default(),
             inside_before: PairSet::default(),
             substeps: Substeps::default(),
+            frame_start: Vec::new(),
+            previous: Vec::new(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -302,6 +309,11 @@ impl<T: Real> Simulation<T> {
     /// integrated, sleepers woken.
     fn begin_step(&mut self, events: &mut Vec<Event>) {
         let p = self.params;
+        // The poses one frame before this step's (previous_frame.rs).
+        std::mem::swap(&mut self.previous, &mut self.frame_start);
+        self.frame_start.clear();
+        self.frame_start
+            .extend((self.world.bodies.iter()).map(|b| (b.state.position, b.state.orientation)));
         // 1. Contacts from the shapes where the bodies are now.
         self.generate_contacts();
         if p.rollback == Rollback::Rollback {
@@ -407,6 +419,12 @@ impl<T: Real> Simulation<T> {
     /// broad phase made them (`None`: not moving then, or no convex shape).
     pub fn movement_bounds(&self) -> &[Option<super::swept::MovementBound<T>>] {
         &self.substeps.bounds
+    }
+
+    /// Each body's pose one frame before the last step's contacts were
+    /// generated (empty before the second step): their previous frame.
+    pub fn previous_poses(&self) -> &[PoseOf<T>] {
+        &self.previous
     }
 
     /// The scene's energy scale (J): what gains and blow-ups are measured against.
