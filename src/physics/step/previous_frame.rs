@@ -7,9 +7,9 @@
 
 use nalgebra::{Quaternion, Vector3};
 
-use crate::physics::detect::{gjk, Convex, GjkOptions, GjkVerdict};
+use crate::physics::detect::{gjk, Convex, GjkOptions, GjkVerdict, Support};
 use crate::physics::pose::Pose;
-use crate::physics::{Contact, Real, World};
+use crate::physics::{Body, Contact, Real, World};
 
 /// A body's position and orientation.
 pub type PoseOf<T> = (Vector3<T>, Quaternion<T>);
@@ -44,13 +44,39 @@ pub fn previous_normal<T: Real>(
     if contact.input.penetration <= T::zero() {
         return None;
     }
-    let (i, j) = (contact.body1.0, contact.body2?.0);
-    let shape = |k: usize| Convex::from_shape(world.bodies[k].shape.as_ref()?);
+    pair_normal(&world.bodies, previous, contact.body1.0, contact.body2?.0)
+}
+
+/// Bodies `i` (body 1) and `j`'s normal from the previous frame (see
+/// [`previous_normal`]), whatever their penetration now.
+pub fn pair_normal<T: Real>(
+    bodies: &[Body<T>],
+    previous: &[PoseOf<T>],
+    i: usize,
+    j: usize,
+) -> Option<Vector3<T>> {
+    let shape = |k: usize| Convex::from_shape(bodies[k].shape.as_ref()?);
     let pose = |k: usize| {
         let (x, q) = previous.get(k)?;
         Some(Pose::new(*x, q))
     };
     apart_normal(&shape(i)?, &pose(i)?, &shape(j)?, &pose(j)?)
+}
+
+/// The depth of bodies `i` (body 1) and `j`'s overlap along the unit `n`
+/// (from j toward i) where they are now: how far i must move along n to
+/// clear j, max over j of x·n minus min over i of x·n, from the support
+/// mappings (the `normal_from = previous` contact's penetration).
+pub fn depth_along<T: Real>(bodies: &[Body<T>], i: usize, j: usize, n: &Vector3<T>) -> Option<T> {
+    let shape = |k: usize| Convex::from_shape(bodies[k].shape.as_ref()?);
+    let pose = |k: usize| {
+        let s = &bodies[k].state;
+        Pose::new(s.position, &s.orientation)
+    };
+    let (a, b) = (shape(i)?, shape(j)?);
+    let deepest_of_b = b.support(&pose(j), n).dot(n);
+    let lowest_of_a = a.support(&pose(i), &-n).dot(n);
+    Some(deepest_of_b - lowest_of_a)
 }
 
 /// The angle between two unit normals (radians): acos(d̂₁·d̂₂), the dot

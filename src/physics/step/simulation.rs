@@ -9,14 +9,14 @@ use super::audit::Switches;
 use super::ccd_mode::Rollback;
 use super::contact_events::{self, PairSet, Touching};
 use super::integrate::{integrate_velocity, Loads};
-use super::previous_frame::PoseOf;
+use super::previous_frame::{self, PoseOf};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use super::substep::{Spent, Substeps};
 use super::{audit, energy, overlap, replay, rollback, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
-use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
+use crate::physics::params::{Material, NormalFrom};
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{c, to_f64, BodyId, Contact, ContactInput, Real, Solver, World};
@@ -446,13 +446,23 @@ impl<T: Real> Simulation<T> {
         self.world.contacts.clear();
         for g in &self.generated {
             let m = self.materials[g.body1.0].combine(&self.materials[g.body2.0]);
+            let (normal, penetration) = match p.normal_from {
+                NormalFrom::Previous if g.contact.penetration > T::zero() => {
+                    let bodies = &self.world.bodies;
+                    let (i, j) = (g.body1.0, g.body2.0);
+                    previous_frame::pair_normal(bodies, &self.previous, i, j)
+                        .and_then(|n| Some((n, previous_frame::depth_along(bodies, i, j, &n)?)))
+                        .unwrap_or((g.contact.normal, g.contact.penetration))
+                }
+                _ => (g.contact.normal, g.contact.penetration),
+            };
             self.world.contacts.push(Contact {
                 body1: g.body1,
                 body2: Some(g.body2),
                 input: ContactInput {
                     point: g.contact.point,
-                    normal: g.contact.normal,
-                    penetration: g.contact.penetration,
+                    normal,
+                    penetration,
                     restitution: c(m.restitution),
                     static_friction: c(m.static_friction),
                     dynamic_friction: c(m.dynamic_friction),
