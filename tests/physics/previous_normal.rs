@@ -10,9 +10,12 @@ use contact_lab::lesson::Lesson;
 use contact_lab::physics::params::NormalFrom;
 use contact_lab::physics::step::Simulation;
 
+/// Each contact's normal and penetration.
+type Contacts = Vec<([f64; 3], f64)>;
+
 /// The blade's contacts' normals and penetrations at step 2, and its
 /// velocity and spin after it.
-fn second_step(from: NormalFrom) -> (Vec<([f64; 3], f64)>, [f64; 3], [f64; 3]) {
+fn second_step(from: NormalFrom) -> (Contacts, [f64; 3], [f64; 3]) {
     let lesson = Lesson::load("spinning-edge").unwrap();
     let mut params = lesson.sim_params().unwrap();
     params.normal_from = from;

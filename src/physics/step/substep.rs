@@ -6,9 +6,9 @@
 //! advances to the earliest, that pair's contact is resolved there (the
 //! velocity phase, one contact), and the rest of the step is spent the same
 //! way, earliest first. A body the resolution changes moves from then on,
-//! woken if it slept ([`Spent::woken`]). Pairs already in contact at the step's start are
-//! the discrete resolver's, and a pair resolved here is not searched again
-//! in the same step.
+//! woken if it slept ([`Spent::woken`]). Pairs already in contact at the
+//! step's start are the discrete resolver's, and a pair resolved here is
+//! not searched again in the same step.
 //!
 //! At most [`MAX_SUBSTEPS`] collisions are resolved in one step; when the
 //! cap is hit the rest of the step is one plain move (the tunnelling auditor
