@@ -64,3 +64,24 @@ pub fn text(step: &StepTrace, f: &Fmt) -> String {
     }
     out
 }
+
+/// The same for JSON: one object per contact with a previous-frame normal
+/// (`contact` its number, `normal` at t, `previous_frame` at t − Δt,
+/// `angle_degrees`).
+pub fn json(step: &StepTrace) -> serde_json::Value {
+    let rows: Vec<serde_json::Value> = (step.world.contacts.iter().enumerate())
+        .zip(&step.previous_normals)
+        .filter_map(|((k, c), previous)| {
+            let previous = (*previous)?;
+            let n = c.input.normal;
+            let angle = angle_between(&n, &nalgebra::Vector3::from(previous)).to_degrees();
+            Some(serde_json::json!({
+                "contact": k,
+                "normal": [n.x, n.y, n.z],
+                "previous_frame": previous,
+                "angle_degrees": angle,
+            }))
+        })
+        .collect();
+    serde_json::Value::Array(rows)
+}

@@ -39,6 +39,25 @@ fn trace_step_lists_both_normals_of_the_blades_penetrating_contacts() {
     }
     // The first step has no frame before it.
     assert!(!trace_step("1").contains("Normals from the previous frame"));
+    // JSON: one entry per such contact, beside resolve's keys.
+    let out = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+        .args([
+            "simulate",
+            "spinning-edge",
+            "--trace-step",
+            "2",
+            "--format",
+            "json",
+        ])
+        .output()
+        .expect("contact-lab runs");
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = j["previous_frame_normals"].as_array().expect("an array");
+    assert_eq!(rows.len(), 4);
+    assert_eq!(rows[0]["contact"], 0);
+    assert!((rows[0]["previous_frame"][1].as_f64().unwrap() - 1.0).abs() < 1e-9);
+    assert!((rows[0]["angle_degrees"].as_f64().unwrap() - 90.0).abs() < 1e-6);
+    assert!(j.get("position").is_some() && j.get("velocity").is_some());
 }
 
 #[test]
