@@ -177,16 +177,16 @@ fn trace_step(
                 fmt.num(step.time),
                 step.world.contacts.len()
             );
-            crate::render::wrap::wrap(
-                &(head + &crate::render::resolve::text::render(&step.resolver, &fmt)),
-                super::text_width(args.width),
-            )
+            let body = crate::render::resolve::text::render(&step.resolver, &fmt);
+            let previous = crate::render::previous_frame::text(&step, &fmt);
+            crate::render::wrap::wrap(&(head + &body + &previous), super::text_width(args.width))
         }
-        RunFormat::Json => crate::render::resolve::json::render(
-            &step.resolver,
-            &crate::render::resolve::Seconds::default(),
-            true,
-        ),
+        RunFormat::Json => {
+            let seconds = crate::render::resolve::Seconds::default();
+            let mut j = crate::render::resolve::json::to_json(&step.resolver, &seconds, true);
+            j["previous_frame_normals"] = crate::render::previous_frame::json(&step);
+            serde_json::to_string_pretty(&j).map_err(|e| AppError::Runtime(e.to_string()))? + "\n"
+        }
         RunFormat::Svg => {
             return Err(AppError::Usage(
                 "--trace-step prints text or json, not svg".into(),

@@ -125,6 +125,10 @@ pub struct ContactDef {
     /// `[settings]` with this contact's `settings` table over it (and its
     /// own `friction_model`).
     pub settings: Settings,
+    /// A scene step's penetrating contact: the normal from the closest
+    /// points one frame earlier (t − Δt), when the pair was apart then
+    /// (physics/step/previous_frame.rs). Never written in a file.
+    pub previous_normal: Option<Vector3<f64>>,
 }
 
 impl Lesson {

@@ -392,6 +392,7 @@ impl Validator {
             static_friction: mu_s,
             dynamic_friction: mu_d,
             settings,
+            previous_normal: None,
         }
     }
 }

@@ -10,7 +10,7 @@
 
 use super::exact::RestitutionLaw;
 use super::params::{BoxBoxMode, NarrowPhase, Settings};
-use super::step::ccd_mode::{Ccd, Rollback};
+use super::step::ccd_mode::{Ccd, NormalFrom, Rollback};
 use super::step::SleepMode;
 use super::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
 
@@ -736,6 +736,32 @@ pub static KNOBS: &[Knob] = &[
         set: |s, v| {
             if let Some(m) = Rollback::from_name(choice(v)) {
                 s.scene.rollback = m;
+            }
+        },
+    },
+    Knob {
+        name: "normal_from",
+        old_names: &[],
+        level: Level::Step,
+        tables: &[Table::Step],
+        doc: "Which normal a penetrating contact between two convex bodies takes in a step: the least penetration where the bodies are now (current: EPA's or the analytic routine's), or the direction from their closest points one frame earlier, when the pair was still apart, with the depth of the overlap along it (previous: Lecture IV Collisions' proposal for fast motion): trades a sideways normal when a fast body strikes an edge for a stale one when a body has slid into contact.",
+        default: "current",
+        kind: Kind::Choice {
+            choices: &[
+                ("current", "the least penetration at t (EPA's or the analytic routine's)"),
+                ("previous", "from the closest points at t − Δt, the depth along it"),
+            ],
+            aliases: &[],
+        },
+        cli: Cli::Option,
+        edit: Offered::Yes,
+        study: Offered::Yes,
+        grid: &[],
+        needs: Needs::Always,
+        get: |s| Value::Choice(s.scene.normal_from.name()),
+        set: |s, v| {
+            if let Some(m) = NormalFrom::from_name(choice(v)) {
+                s.scene.normal_from = m;
             }
         },
     },

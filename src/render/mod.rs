@@ -8,6 +8,7 @@ pub mod figure;
 pub mod fill;
 pub mod glossary;
 pub mod knobs;
+pub mod previous_frame;
 pub mod resolve;
 pub mod run;
 pub mod run_stream;

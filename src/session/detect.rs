@@ -9,11 +9,12 @@ use crate::physics::collide::Options;
 use crate::physics::detect::toi::Motion;
 use crate::physics::detect::ToiMethod;
 use crate::physics::step::swept::motion_of;
-use crate::physics::step::swept::SweptPairs;
+use crate::physics::step::swept::{movement_bounds, SweptPairs};
 use crate::physics::step::toi_pair::search_pair;
 use crate::physics::step::Simulation;
 use crate::physics::to_f64;
 use crate::trace::detect::{build, Context, DetectTrace};
+use crate::trace::movement;
 use crate::trace::toi::{DetectToi, Overlap, PairToi, SearchRecord};
 use crate::trace::Plane;
 
@@ -44,7 +45,13 @@ pub fn detect_trace(
         names: &names,
         bodies: &sim.world.bodies,
     };
-    build(&cx, &found)
+    let mut trace = build(&cx, &found);
+    if p.ccd.method().is_some() {
+        // The bounds the next step's swept broad phase makes (docs/ccd.md).
+        let (world, moving) = sim.resolved_next();
+        trace.movement = movement::of_bounds(&movement_bounds(&world, &moving, p.dt));
+    }
+    trace
 }
 
 /// Step `step`'s time-of-collision searches, `sim` standing after step

@@ -145,6 +145,9 @@ pub struct DetectTrace {
     pub candidate_pairs: usize,
     pub dropped: Vec<Dropped>,
     pub pairs: Vec<PairTrace>,
+    /// With continuous detection on, each body's movement bounds over the
+    /// next step (empty when it is off; set by the session).
+    pub movement: Vec<Option<super::movement::Movement>>,
 }
 
 /// Where the trace's bodies are, for the figure: shape and pose of each.
@@ -223,6 +226,7 @@ pub fn build(cx: &Context, record: &DetectRecord) -> DetectTrace {
         candidate_pairs: record.candidates.len(),
         dropped,
         pairs: record.pairs.iter().map(|p| pair(cx, p)).collect(),
+        movement: Vec::new(),
     }
 }
 

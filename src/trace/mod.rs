@@ -14,6 +14,7 @@ mod acceleration;
 pub mod contact;
 pub mod detect;
 pub mod glossary;
+pub mod movement;
 
 mod names;
 mod plane;

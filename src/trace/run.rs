@@ -4,6 +4,7 @@
 use crate::physics::step::audit::{EnergyCause, Switch, Switches};
 use crate::physics::step::{Event, Simulation, StepReport};
 use crate::physics::{BodyId, Shape};
+use crate::trace::movement::{self, Movement};
 
 /// A body's state in a frame.
 #[derive(Debug, Clone, PartialEq)]
@@ -31,6 +32,9 @@ pub struct Frame {
     pub bodies: Vec<BodyFrame>,
     /// Contact points and normals of the step (for pictures).
     pub contact_points: Vec<([f64; 3], [f64; 3])>,
+    /// With continuous detection on, each body's movement bounds over the
+    /// step that ended here (empty when it is off).
+    pub movement: Vec<Option<Movement>>,
 }
 
 /// An event in words.
@@ -106,6 +110,11 @@ impl RunTrace {
                 .iter()
                 .map(|k| (k.input.point.into(), k.input.normal.into()))
                 .collect(),
+            movement: if sim.params.ccd.method().is_some() && report.step > 0 {
+                movement::of_bounds(sim.movement_bounds())
+            } else {
+                Vec::new()
+            },
         }
     }
 

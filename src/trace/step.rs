@@ -7,6 +7,7 @@ use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
 use super::{BodyView, ContactView};
 use crate::lesson::{ContactDef, Lesson, Settings};
 use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
+use crate::physics::step::previous_frame::previous_normal;
 use crate::physics::step::{BlowUp, Simulation};
 use crate::physics::World;
 
@@ -44,6 +45,9 @@ pub struct StepTrace {
     pub resolver: ResolverTrace,
     /// Per stop, in order: the position phase's, then the velocity phase's.
     pub tables: Vec<Table>,
+    /// A time step's: per contact, the normal from the previous frame
+    /// (t − Δt) where it penetrates and its pair was apart then.
+    pub previous_normals: Vec<Option<[f64; 3]>>,
     /// Resolver bodies before each position iteration; before each velocity
     /// iteration and, last, after both phases.
     bodies: [Vec<Vec<ResolverBody<f64>>>; 2],
@@ -73,6 +77,7 @@ impl StepTrace {
             names,
             resolver,
             tables,
+            previous_normals: Vec::new(),
             bodies,
         }
     }
@@ -206,9 +211,13 @@ impl StepTrace {
                             c.duration.unwrap_or(duration),
                             i.friction_model,
                         ),
+                        previous_normal: None,
                     }
                 })
                 .collect();
+            for (def, n) in at.contacts.iter_mut().zip(&self.previous_normals) {
+                def.previous_normal = n.map(Into::into);
+            }
             for (def, b) in at.bodies.iter_mut().zip(&self.world.bodies) {
                 def.acceleration = b.state.acceleration;
             }
@@ -294,13 +303,19 @@ pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace
         .map(|(k, c)| Names::pair_label(&names.bodies, k, c.body1.0, c.body2.map(|b| b.0)))
         .collect();
     let params = sim.params.resolver;
-    Ok(StepTrace::of_world(
-        world,
-        prepared,
-        names,
-        &params,
-        Implementation::Indexed,
-        sim.step,
-        sim.time,
-    ))
+    let previous_normals = (world.contacts.iter())
+        .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))
+        .collect();
+    Ok(StepTrace {
+        previous_normals,
+        ..StepTrace::of_world(
+            world,
+            prepared,
+            names,
+            &params,
+            Implementation::Indexed,
+            sim.step,
+            sim.time,
+        )
+    })
 }

@@ -21,6 +21,7 @@ impl ContactNames {
                 normal_length: lesson.contacts[k].normal_length,
                 shape_inertia: [0, 1].map(|i| def(i).and_then(|b| b.shape_inertia)),
             },
+            previous_normal: lesson.contacts[k].previous_normal.map(Into::into),
         }
     }
 }

@@ -166,3 +166,74 @@ fn sub_stepping_gains_no_energy_on_any_scene_of_a_set() {
         }
     }
 }
+
+/// A box asleep in the bullet's path (zero gravity, sleep on) and the
+/// bullet at 100 m/s: a collision resolved inside the step is the bullet's
+/// and the box's, so it wakes the box.
+fn sleeping_box(ccd: Ccd) -> Simulation<f64> {
+    let lesson = contact_lab::lesson::validate::parse(
+        "sleeping-box.toml",
+        r#"
+id = "sleeping-box"
+title = "A bullet at a sleeping box"
+[world]
+gravity = [0, 0, 0]
+restitution = 0.5
+[step]
+dt = 0.016666666666666666
+steps = 10
+[sleep]
+enabled = true
+[[body]]
+name = "bullet"
+mass = 0.01
+shape = { sphere = 0.01 }
+position = [-0.5, 0, 0]
+velocity = [100, 0, 0]
+[[body]]
+name = "box"
+mass = 1.0
+shape = { box = [0.02, 0.2, 0.2] }
+position = [0, 0, 0]
+"#,
+    )
+    .expect("a valid scene");
+    let mut params = lesson.sim_params().expect("a scene");
+    params.ccd = ccd;
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = Simulation::new(world, params, lesson.simulation.unwrap().materials);
+    sim.sleep[1].awake = false;
+    sim
+}
+
+#[test]
+fn a_sleeping_box_struck_inside_the_step_wakes_and_moves() {
+    for ccd in [Ccd::Bisection, Ccd::Conservative] {
+        let mut sim = sleeping_box(ccd);
+        let r = sim.advance().expect("no blow-up");
+        assert!(
+            r.events.iter().any(|e| matches!(e, Event::Toi(_))),
+            "{ccd:?}: {:?}",
+            r.events
+        );
+        assert!(
+            r.events
+                .iter()
+                .any(|e| matches!(e, Event::Wakes { body } if body.0 == 1)),
+            "{ccd:?}: {:?}",
+            r.events
+        );
+        assert!(sim.sleep[1].awake, "{ccd:?}");
+        // Momentum: 0.01 kg × 100 m/s shared at e = 0.5 gives the box
+        // (1 + e) m v / (m + M) = 1.4851 m/s, and it has moved this step.
+        let (x, v) = (
+            sim.world.bodies[1].state.position.x,
+            sim.world.bodies[1].state.velocity.x,
+        );
+        assert!((v - 1.5 / 1.01).abs() < 0.01, "{ccd:?}: {v}");
+        assert!(x > 0.0, "{ccd:?}: {x}");
+        sim.advance().expect("no blow-up");
+        assert!(sim.world.bodies[1].state.position.x > x, "{ccd:?}");
+    }
+}

@@ -19,6 +19,7 @@ mod floors;
 mod hull_pairs;
 mod invariants;
 mod models_and_options;
+mod previous_normal;
 mod properties;
 mod resolver_alloc;
 mod resolver_properties;

@@ -8,6 +8,8 @@ mod common;
 mod ccd_events;
 mod io_tui_edits;
 mod io_tui_responsive;
+mod movement_bounds;
+mod previous_frame;
 mod tui;
 mod tui_detect;
 mod tui_detect_stages;

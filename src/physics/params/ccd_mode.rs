@@ -69,3 +69,31 @@ impl Rollback {
         Rollback::ALL.into_iter().find(|m| m.name() == name)
     }
 }
+
+/// Which normal a penetrating contact between two convex bodies takes in a
+/// scene's step ("Lecture IV Collisions": for fast motion, take the normal
+/// from the previous frame).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum NormalFrom {
+    /// The least penetration where the bodies are now (default).
+    #[default]
+    Current,
+    /// The direction from the closest points one frame earlier, when the
+    /// pair was apart, with the depth of the overlap along it.
+    Previous,
+}
+
+impl NormalFrom {
+    pub const ALL: [NormalFrom; 2] = [NormalFrom::Current, NormalFrom::Previous];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            NormalFrom::Current => "current",
+            NormalFrom::Previous => "previous",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        NormalFrom::ALL.into_iter().find(|m| m.name() == name)
+    }
+}

@@ -435,7 +435,7 @@ impl Material {
 
 pub mod ccd_mode;
 mod settings;
-pub use ccd_mode::{Ccd, Rollback};
+pub use ccd_mode::{Ccd, NormalFrom, Rollback};
 pub use settings::{ContactSettings, SceneSettings, Settings, SimParams};
 
 /// How bodies fall asleep.

@@ -3,7 +3,7 @@
 //! value as a lesson or a command line gives it, in f64, per level:
 //! [`ContactSettings`], [`ResolverParams`], [`SceneSettings`]).
 
-use super::ccd_mode::{Ccd, Rollback};
+use super::ccd_mode::{Ccd, NormalFrom, Rollback};
 use super::{
     BoxBoxMode, ContactParams, FrictionModel, Material, NarrowPhase, ProjectionMethod,
     ResolverParams, SleepParams, StepParams, WorldParams, GENERATED_VELOCITY_LIMIT,
@@ -39,6 +39,8 @@ pub struct SimParams<T: Real> {
     pub ccd: Ccd,
     /// Projection or rolling back time for interpenetrating pairs (default: projection).
     pub rollback: Rollback,
+    /// A penetrating convex pair's normal: now, or from the previous frame (default: current).
+    pub normal_from: NormalFrom,
 }
 
 impl<T: Real> Default for SimParams<T> {
@@ -129,6 +131,7 @@ pub struct SceneSettings {
     pub sleep: SleepParams<f64>,
     pub ccd: Ccd,
     pub rollback: Rollback,
+    pub normal_from: NormalFrom,
 }
 
 impl Default for SceneSettings {
@@ -146,6 +149,7 @@ impl Default for SceneSettings {
             sleep: SleepParams::default(),
             ccd: Ccd::None,
             rollback: Rollback::Projection,
+            normal_from: NormalFrom::Current,
         }
     }
 }
@@ -192,6 +196,7 @@ impl Settings {
                 sleep: p.sleep,
                 ccd: p.ccd,
                 rollback: p.rollback,
+                normal_from: p.normal_from,
                 ..SceneSettings::default()
             },
         }
@@ -222,6 +227,7 @@ impl Settings {
             contact_margin: c(scene.contact_margin),
             ccd: scene.ccd,
             rollback: scene.rollback,
+            normal_from: scene.normal_from,
         }
     }
 }

@@ -9,6 +9,7 @@ pub mod contact_events;
 pub mod energy;
 pub mod integrate;
 pub mod overlap;
+pub mod previous_frame;
 pub mod replay;
 pub mod report;
 pub mod rollback;

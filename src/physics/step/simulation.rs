@@ -9,14 +9,15 @@ use super::audit::Switches;
 use super::ccd_mode::Rollback;
 use super::contact_events::{self, PairSet, Touching};
 use super::integrate::{integrate_velocity, Loads};
+use super::previous_frame::{self, PoseOf};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
 use super::{audit, energy, overlap, replay, rollback, tolerance};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
-use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
+use crate::physics::params::{Material, NormalFrom};
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{c, to_f64, BodyId, Contact, ContactInput, Real, Solver, World};
@@ -65,6 +66,10 @@ pub struct Simulation<T: Real> {
     inside_before: PairSet,
     /// Continuous detection's scratch.
     substeps: Substeps<T>,
+    /// Each body's pose at the start of this step, and at the start of the
+    /// last one: the previous frame (t − Δt) of this step's contacts.
+    frame_start: Vec<PoseOf<T>>,
+    previous: Vec<PoseOf<T>>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -94,6 +99,8 @@ impl<T: Real> Simulation<T> {
             inside: PairSet::default(),
             inside_before: PairSet::default(),
             substeps: Substeps::default(),
+            frame_start: Vec::new(),
+            previous: Vec::new(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -234,6 +241,14 @@ impl<T: Real> Simulation<T> {
             Some(earlier),
             &mut spent,
         );
+        // A sleeper a collision inside the step changed is awake (its
+        // velocity is no longer a sleeper's zero).
+        for &body in &spent.woken {
+            if !self.sleep[body.0].awake {
+                self.sleep[body.0].wake(p.sleep.epsilon);
+                events.push(Event::Wakes { body });
+            }
+        }
         // 6. Sleep.
         if p.sleep.enabled {
             self.update_sleep(&mut events);
@@ -305,6 +320,11 @@ impl<T: Real> Simulation<T> {
     /// integrated, sleepers woken.
     fn begin_step(&mut self, events: &mut Vec<Event>) {
         let p = self.params;
+        // The poses one frame before this step's (previous_frame.rs).
+        std::mem::swap(&mut self.previous, &mut self.frame_start);
+        self.frame_start.clear();
+        self.frame_start
+            .extend((self.world.bodies.iter()).map(|b| (b.state.position, b.state.orientation)));
         // 1. Contacts from the shapes where the bodies are now.
         self.generate_contacts();
         if p.rollback == Rollback::Rollback {
@@ -406,6 +426,18 @@ impl<T: Real> Simulation<T> {
         (sim.world, moving)
     }
 
+    /// Each body's movement bounds over the last step, as its first swept
+    /// broad phase made them (`None`: not moving then, or no convex shape).
+    pub fn movement_bounds(&self) -> &[Option<super::swept::MovementBound<T>>] {
+        &self.substeps.bounds
+    }
+
+    /// Each body's pose one frame before the last step's contacts were
+    /// generated (empty before the second step): their previous frame.
+    pub fn previous_poses(&self) -> &[PoseOf<T>] {
+        &self.previous
+    }
+
     /// The scene's energy scale (J): what gains and blow-ups are measured against.
     pub fn energy_scale(&self) -> f64 {
         self.energy_scale
@@ -425,13 +457,23 @@ impl<T: Real> Simulation<T> {
         self.world.contacts.clear();
         for g in &self.generated {
             let m = self.materials[g.body1.0].combine(&self.materials[g.body2.0]);
+            let (normal, penetration) = match p.normal_from {
+                NormalFrom::Previous if g.contact.penetration > T::zero() => {
+                    let bodies = &self.world.bodies;
+                    let (i, j) = (g.body1.0, g.body2.0);
+                    previous_frame::pair_normal(bodies, &self.previous, i, j)
+                        .and_then(|n| Some((n, previous_frame::depth_along(bodies, i, j, &n)?)))
+                        .unwrap_or((g.contact.normal, g.contact.penetration))
+                }
+                _ => (g.contact.normal, g.contact.penetration),
+            };
             self.world.contacts.push(Contact {
                 body1: g.body1,
                 body2: Some(g.body2),
                 input: ContactInput {
                     point: g.contact.point,
-                    normal: g.contact.normal,
-                    penetration: g.contact.penetration,
+                    normal,
+                    penetration,
                     restitution: c(m.restitution),
                     static_friction: c(m.static_friction),
                     dynamic_friction: c(m.dynamic_friction),

@@ -5,9 +5,10 @@
 //! collision ([`crate::physics::detect::toi_sweep`]); every moving body
 //! advances to the earliest, that pair's contact is resolved there (the
 //! velocity phase, one contact), and the rest of the step is spent the same
-//! way, earliest first. Pairs already in contact at the step's start are
-//! the discrete resolver's, and a pair resolved here is not searched again
-//! in the same step.
+//! way, earliest first. A body the resolution changes moves from then on,
+//! woken if it slept ([`Spent::woken`]). Pairs already in contact at the
+//! step's start are the discrete resolver's, and a pair resolved here is
+//! not searched again in the same step.
 //!
 //! At most [`MAX_SUBSTEPS`] collisions are resolved in one step; when the
 //! cap is hit the rest of the step is one plain move (the tunnelling auditor
@@ -19,7 +20,7 @@ use nalgebra::Vector3;
 use super::ccd::{self, Tunnelled};
 use super::energy;
 use super::integrate::integrate_position;
-use super::swept::{motion_of, Earlier, SweptPairs};
+use super::swept::{motion_of, Earlier, MovementBound, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
     query, Convex, EpaOptions, GjkOptions, QueryOptions, ToiEnd, ToiMethod, ToiOptions,
@@ -61,6 +62,10 @@ pub struct Spent {
     pub crossed: Vec<Tunnelled>,
     /// The cap on sub-steps was hit.
     pub capped: bool,
+    /// Bodies that were not moving (asleep) until a collision resolved here
+    /// changed their velocity: they move for the rest of the step, and the
+    /// step wakes them (as the discrete step wakes a sleeper it acts on).
+    pub woken: Vec<BodyId>,
 }
 
 /// Scratch kept from step to step.
@@ -71,6 +76,10 @@ pub struct Substeps<T: Real> {
     done: Vec<(usize, usize)>,
     /// Rolling back: each body's time to go back (rollback.rs).
     pub back: Vec<T>,
+    /// Each moving body's movement bounds over the whole step, as the
+    /// step's first swept broad phase made them (`None`: not moving, or
+    /// no convex shape); for pictures.
+    pub bounds: Vec<Option<MovementBound<T>>>,
 }
 
 impl<T: Real> Default for Substeps<T> {
@@ -80,6 +89,7 @@ impl<T: Real> Default for Substeps<T> {
             swept: SweptPairs::default(),
             done: Vec::new(),
             back: Vec::new(),
+            bounds: Vec::new(),
         }
     }
 }
@@ -100,16 +110,16 @@ impl<T: Real> Substeps<T> {
         out: &mut Spent,
     ) {
         let Some(method) = p.ccd.method() else {
-            let moving = &self.moving;
             ccd::tunnelled(
                 world,
                 p.dt,
-                moving,
+                &self.moving,
                 &mut self.swept,
                 earlier,
                 &mut out.crossed,
             );
-            advance(world, moving, p.dt);
+            self.keep_bounds();
+            advance(world, &self.moving, p.dt);
             return;
         };
         self.done.clear();
@@ -127,6 +137,12 @@ impl<T: Real> Substeps<T> {
             elapsed += s;
             self.done.push((i, j));
             if let Some(hit) = resolve_at(world, p, materials, i, j) {
+                for body in [hit.body1, hit.body2] {
+                    if world.bodies[body.0].movable && !self.moving[body.0] {
+                        self.moving[body.0] = true;
+                        out.woken.push(body);
+                    }
+                }
                 out.hits.push(ToiHit {
                     method,
                     time: to_f64(elapsed),
@@ -152,6 +168,14 @@ impl<T: Real> Substeps<T> {
         advance(world, moving, left);
     }
 
+    /// The moving bodies' bounds from the last sweep, kept in `bounds`.
+    fn keep_bounds(&mut self) {
+        let (swept, moving) = (&self.swept, &self.moving);
+        self.bounds.clear();
+        self.bounds
+            .extend((0..moving.len()).map(|i| if moving[i] { swept.bound(i) } else { None }));
+    }
+
     /// The pair that meets first within `left`, its time and its tests.
     fn earliest(
         &mut self,
@@ -160,6 +184,10 @@ impl<T: Real> Substeps<T> {
         left: T,
     ) -> Option<(usize, usize, T, usize)> {
         self.swept.find(world, &self.moving, left);
+        if self.done.is_empty() {
+            // The step's first sweep: over the whole step.
+            self.keep_bounds();
+        }
         let touching = ccd::contact_pairs(world);
         let mut best: Option<(usize, usize, T, usize)> = None;
         for &(i, j) in &self.swept.pairs {

@@ -82,6 +82,15 @@ pub fn spheres_meet<T: Real>(a: (Vector3<T>, T), b: (Vector3<T>, T)) -> bool {
     (a.0 - b.0).norm() <= a.1 + b.1
 }
 
+/// One body's movement bounds over a step (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MovementBound<T: Real> {
+    pub aabb: Aabb<T>,
+    /// The swept sphere's centre and radius.
+    pub centre: Vector3<T>,
+    pub radius: T,
+}
+
 /// Scratch of the swept broad phase, kept from step to step.
 #[derive(Debug, Clone)]
 pub struct SweptPairs<T: Real> {
@@ -130,6 +139,18 @@ fn holds<T: Real>(outer: &Aabb<T>, inner: &Aabb<T>) -> bool {
 }
 
 impl<T: Real> SweptPairs<T> {
+    /// Body `i`'s movement bounds of the last call (`None`: a half-space,
+    /// a body without a shape, or no call yet).
+    pub fn bound(&self, i: usize) -> Option<MovementBound<T>> {
+        let aabb = (*self.bounds.get(i)?)?;
+        let (centre, radius) = (*self.spheres.get(i)?)?;
+        Some(MovementBound {
+            aabb,
+            centre,
+            radius,
+        })
+    }
+
     /// The pairs whose movement bounds over `dt` meet, at least one of them
     /// moving (`moving[i]`).
     pub fn find(&mut self, world: &World<T>, moving: &[bool], dt: T) {
@@ -228,4 +249,18 @@ impl<T: Real> SweptPairs<T> {
         }
         true
     }
+}
+
+/// Each body's movement bounds over `dt` (`None`: not `moving`, or no
+/// convex shape): one swept broad phase, for a picture of one step.
+pub fn movement_bounds<T: Real>(
+    world: &World<T>,
+    moving: &[bool],
+    dt: T,
+) -> Vec<Option<MovementBound<T>>> {
+    let mut swept = SweptPairs::default();
+    swept.find(world, moving, dt);
+    (0..moving.len())
+        .map(|i| if moving[i] { swept.bound(i) } else { None })
+        .collect()
 }

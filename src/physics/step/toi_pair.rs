@@ -8,12 +8,12 @@
 
 use nalgebra::Vector3;
 
+use super::previous_frame::apart_normal;
 use super::substep::search_options;
 use super::swept::{motion_of, spheres_meet, swept_aabb, swept_sphere};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
-    gjk, query, Convex, EpaOptions, GjkOptions, GjkVerdict, Motion, QueryOptions, Toi, ToiMethod,
-    ToiObserver,
+    query, Convex, EpaOptions, GjkOptions, Motion, QueryOptions, Toi, ToiMethod, ToiObserver,
 };
 use crate::physics::{c, Real, World};
 
@@ -69,17 +69,7 @@ pub fn search_pair<T: Real, O: ToiObserver<T> + ?Sized>(
         &mut (),
     );
     let at_end = end.penetration.map(|p| (p.normal, p.depth));
-    let start = gjk(
-        &a,
-        &ma.pose_at(T::zero()),
-        &b,
-        &mb.pose_at(T::zero()),
-        &GjkOptions::default(),
-        &mut (),
-    );
-    let previous_frame = (start.verdict == GjkVerdict::Separated)
-        .then(|| (start.closest_a - start.closest_b).try_normalize(T::zero()))
-        .flatten();
+    let previous_frame = apart_normal(&a, &ma.pose_at(T::zero()), &b, &mb.pose_at(T::zero()));
     Some(PairSearch {
         aabbs_overlap,
         spheres_meet,

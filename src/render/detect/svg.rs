@@ -9,6 +9,7 @@ use std::fmt::Write;
 use super::minkowski::minkowski;
 use crate::render::figure::{outline, Silhouette, P};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
+use crate::trace::movement::Movement;
 
 const W: f64 = 1000.0;
 const H: f64 = 520.0;
@@ -48,7 +49,10 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
     if let Some((q, _)) = contact {
         pts.push(q);
     }
+    let moving = pair_movement(t, p);
+    pts.extend(moving.iter().flat_map(|m| movement_extent(m, &flat)));
     let left = Fit::new(&pts, 20.0);
+    movement_bounds(&mut out, &left, &moving, &flat);
     let _ = writeln!(
         out,
         r##"  <text x="20" y="30" font-size="18">{} and {} ({} plane)</text>"##,
@@ -155,6 +159,58 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
     }
     out += "</svg>\n";
     Some(out)
+}
+
+/// The pair's movement bounds (continuous detection on; none when off).
+fn pair_movement(t: &DetectTrace, p: &PairTrace) -> Vec<Movement> {
+    t.drawn
+        .iter()
+        .zip(&t.movement)
+        .filter(|(d, _)| d.name == p.a || d.name == p.b)
+        .filter_map(|(_, m)| *m)
+        .collect()
+}
+
+/// The points a body's movement bounds reach in the view plane.
+fn movement_extent(m: &Movement, flat: &impl Fn(&V3) -> P) -> Vec<P> {
+    let (lo, hi, c) = (flat(&m.aabb[0]), flat(&m.aabb[1]), flat(&m.centre));
+    vec![
+        lo,
+        hi,
+        [c[0] - m.radius, c[1] - m.radius],
+        [c[0] + m.radius, c[1] + m.radius],
+    ]
+}
+
+/// Each moving body's movement bounds over the next step, under the
+/// shapes: its swept AABB dashed, its swept sphere dotted, and a legend.
+fn movement_bounds(out: &mut String, f: &Fit, moving: &[Movement], flat: &impl Fn(&V3) -> P) {
+    if moving.is_empty() {
+        return;
+    }
+    for m in moving {
+        let (a, b) = (f.at(flat(&m.aabb[0])), f.at(flat(&m.aabb[1])));
+        let _ = writeln!(
+            out,
+            r##"  <rect x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="none" stroke="#7f7f7f" stroke-width="1.5" stroke-dasharray="8 4"/>"##,
+            a[0].min(b[0]),
+            a[1].min(b[1]),
+            (b[0] - a[0]).abs(),
+            (b[1] - a[1]).abs()
+        );
+        let c = f.at(flat(&m.centre));
+        let _ = writeln!(
+            out,
+            r##"  <circle cx="{:.1}" cy="{:.1}" r="{:.1}" fill="none" stroke="#7f7f7f" stroke-width="1.5" stroke-dasharray="2 4"/>"##,
+            c[0],
+            c[1],
+            m.radius * f.scale
+        );
+    }
+    let _ = writeln!(
+        out,
+        r##"  <text x="20" y="505" font-size="13" fill="#7f7f7f">movement bounds over the next step (ccd): swept AABB dashed, swept sphere dotted</text>"##
+    );
 }
 
 fn result(p: &PairTrace) -> String {

@@ -4,6 +4,7 @@ use nalgebra::Vector3;
 
 use super::builder::{SolvedContact, B, SUB};
 use crate::physics::frame::GuessAxis;
+use crate::physics::step::previous_frame::angle_between;
 use crate::physics::StageId;
 use crate::trace::Step;
 
@@ -47,6 +48,9 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
         guess.1,
         if guess.1 == "y" { ">" } else { "≤" }
     ));
+    if let Some(previous) = c.names.previous_normal {
+        previous_frame(&mut b, &d, &previous.into());
+    }
     let length = c.names.written.normal_length;
     if (length - 1.0).abs() > 1e-12 {
         b.input("normal_length_deviation", length - 1.0);
@@ -69,4 +73,24 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
         ));
     }
     b.done()
+}
+
+/// A scene step's penetrating contact: its normal d̂ at t beside the one
+/// from the closest points at t − Δt, and the angle between them.
+fn previous_frame(b: &mut B, d: &Vector3<f64>, previous: &Vector3<f64>) {
+    b.input("d_prev", *previous);
+    b.value("previous_frame_normal", *previous);
+    b.value(
+        "normal_angle_degrees",
+        angle_between(d, previous).to_degrees(),
+    );
+    b.f(
+        "θ",
+        "acos(d̂ · d̂₋)",
+        Some("acos({d} · {d_prev})"),
+        Some("normal_angle_degrees"),
+    );
+    b.note(
+        "Two normals for this penetrating contact: d̂ at t, the least penetration the step's detection found; d̂₋ from the closest points one frame earlier (t − Δt), when the pair was still apart: the direction it came from, which Lecture IV Collisions proposes for fast motion. They differ by θ = {normal_angle_degrees}°; the stages below use d̂.",
+    );
 }

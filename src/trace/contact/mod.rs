@@ -53,6 +53,9 @@ pub struct ContactNames {
     pub label: String,
     /// The scene as written, where it says more than the physics.
     pub written: AsWritten,
+    /// A scene step's penetrating contact: the normal from the closest
+    /// points one frame earlier (t − Δt), beside the contact's own.
+    pub previous_normal: Option<[f64; 3]>,
 }
 
 /// What a scene file wrote that the physics view drops, for the notes.

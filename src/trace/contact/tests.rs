@@ -71,6 +71,7 @@ fn names(one: &str, two: Option<&str>) -> ContactNames {
         bodies: [Some(one.to_string()), two.map(str::to_string)],
         label: "contact 3, iteration 7".to_string(),
         written: AsWritten::default(),
+        previous_normal: None,
     }
 }
 

@@ -261,8 +261,10 @@ fn render_picture(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
             normals: false,
             sleep: false,
             names: true,
+            bounds: false,
         },
         also: &[],
+        movement: &[],
     };
     picture::render(app, &scene, area, buf);
 }

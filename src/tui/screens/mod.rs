@@ -48,6 +48,8 @@ pub struct Toggles {
     pub normals: bool,
     pub sleep: bool,
     pub names: bool,
+    /// Movement bounds over the step (recorded with continuous detection on).
+    pub bounds: bool,
 }
 
 impl Default for Toggles {
@@ -57,6 +59,7 @@ impl Default for Toggles {
             normals: true,
             sleep: true,
             names: true,
+            bounds: true,
         }
     }
 }
@@ -181,6 +184,7 @@ pub enum Toggle {
     Normals,
     Sleep,
     Names,
+    Bounds,
 }
 
 use crate::tui::keys::Binding;
@@ -305,13 +309,14 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
         keys: &[(C::Char('d'), Key::Detect)],
     },
     Binding {
-        label: "c o s b",
-        help: "picture: contacts, normals, sleep state, body names",
+        label: "c o s b m",
+        help: "picture: contacts, normals, sleep state, body names, movement bounds (with ccd on)",
         keys: &[
             (C::Char('c'), Key::Toggle(Toggle::Contacts)),
             (C::Char('o'), Key::Toggle(Toggle::Normals)),
             (C::Char('s'), Key::Toggle(Toggle::Sleep)),
             (C::Char('b'), Key::Toggle(Toggle::Names)),
+            (C::Char('m'), Key::Toggle(Toggle::Bounds)),
         ],
     },
     PLANE,

@@ -14,6 +14,7 @@ use ratatui::widgets::{Block, Widget};
 use super::{Pick, Toggles};
 use crate::physics::Shape;
 use crate::render::figure::{outline, P};
+use crate::trace::movement::Movement;
 use crate::trace::{BodyView, ContactView, Plane};
 use crate::tui::app::App;
 use crate::tui::theme::Ink;
@@ -31,6 +32,8 @@ pub struct Scene<'a> {
     pub toggles: Toggles,
     /// Bodies whose outlines set the view besides these (the run's first frame).
     pub also: &'a [BodyView],
+    /// Each body's movement bounds over the step (empty: none recorded).
+    pub movement: &'a [Option<Movement>],
 }
 
 fn flat(plane: Plane, v: [f64; 3]) -> P {
@@ -156,6 +159,9 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
     let mut segs: Vec<(P, P, Color)> = vec![];
     // Labels with a rank: lower is placed first when they compete for cells.
     let mut labels: Vec<(P, String, Style, u8)> = vec![];
+    if scene.toggles.bounds {
+        movement_bounds(scene.movement, plane, t.ink(Ink::Arm), &mut segs);
+    }
     let mut points = app.targets.points.borrow_mut();
     for (i, v) in scene.bodies.iter().enumerate() {
         match v.shape {
@@ -265,6 +271,32 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
             }
         })
         .render(inner, buf);
+}
+
+/// Each body's swept AABB (a rectangle in the view plane) and swept
+/// sphere (a circle), drawn under the bodies.
+fn movement_bounds(
+    movement: &[Option<Movement>],
+    plane: Plane,
+    ink: Color,
+    segs: &mut Vec<(P, P, Color)>,
+) {
+    for m in movement.iter().flatten() {
+        let (lo, hi) = (flat(plane, m.aabb[0]), flat(plane, m.aabb[1]));
+        let corners = [lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]];
+        for k in 0..4 {
+            segs.push((corners[k], corners[(k + 1) % 4], ink));
+        }
+        let c = flat(plane, m.centre);
+        let n = 48;
+        let at = |k: usize| {
+            let a = std::f64::consts::TAU * k as f64 / n as f64;
+            [c[0] + m.radius * a.cos(), c[1] + m.radius * a.sin()]
+        };
+        for k in 0..n {
+            segs.push((at(k), at(k + 1), ink));
+        }
+    }
 }
 
 /// Labels put in free cells, by rank: each at its point's cell or beside it

@@ -41,6 +41,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         selected: Some(r.selected),
         toggles: Toggles::default(),
         also: &[],
+        movement: &[],
     };
     picture::render(app, &scene, pic, buf);
     convergence(app, r, conv, buf);

@@ -66,8 +66,16 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
             impulse: None,
         })
         .collect();
+    let legend = if frame.movement.is_empty() || !run.toggles.bounds {
+        ""
+    } else {
+        ", movement bounds (m)"
+    };
     let scene = Scene {
-        title: format!("{} contact(s), {} awake", frame.contacts, frame.awake),
+        title: format!(
+            "{} contact(s), {} awake{legend}",
+            frame.contacts, frame.awake
+        ),
         asleep: frame
             .bodies
             .iter()
@@ -80,6 +88,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         selected: None,
         toggles: run.toggles,
         also: &first,
+        movement: &frame.movement,
     };
     picture::render(app, &scene, pic, buf);
     render_charts(app, run, charts, buf);

@@ -137,6 +137,7 @@ impl App {
             Key::Toggle(Toggle::Normals) => run.toggles.normals = !run.toggles.normals,
             Key::Toggle(Toggle::Sleep) => run.toggles.sleep = !run.toggles.sleep,
             Key::Toggle(Toggle::Names) => run.toggles.names = !run.toggles.names,
+            Key::Toggle(Toggle::Bounds) => run.toggles.bounds = !run.toggles.bounds,
             Key::PageUp => run.events_scroll += 5,
             Key::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
             Key::Open if run.recording.is_some() => {
