@@ -167,23 +167,23 @@ fn trace_step(
         sim.advance().map_err(|e| blew_up(lesson, &e))?;
     }
     let names = crate::trace::resolver::Names::of_lesson(lesson);
-    let step =
-        crate::trace::step::record_next(&mut sim, &names).map_err(|e| blew_up(lesson, &e))?;
+    let (resolver, contacts) =
+        crate::trace::step::describe_next(&mut sim, &names).map_err(|e| blew_up(lesson, &e))?;
     let fmt = Fmt::new(args.digits as usize);
     let text = match args.format {
         RunFormat::Text => {
             let head = format!(
                 "Step {n} (t = {} s): the resolution of its {} contact(s).\n\n",
-                fmt.num(step.time),
-                step.world.contacts.len()
+                fmt.num(sim.time),
+                contacts
             );
             crate::render::wrap::wrap(
-                &(head + &crate::render::resolve::text::render(&step.resolver, &fmt)),
+                &(head + &crate::render::resolve::text::render(&resolver, &fmt)),
                 super::text_width(args.width),
             )
         }
         RunFormat::Json => crate::render::resolve::json::render(
-            &step.resolver,
+            &resolver,
             &crate::render::resolve::Seconds::default(),
             true,
         ),

@@ -3,7 +3,7 @@
 //! lesson's contacts), the bodies as each iteration finds them, and the
 //! contact table (penetration, desired Δv) at every stop of both phases.
 
-use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
+use super::resolver::{describe_prepared, describe_world, ContactRow, Names, ResolverTrace};
 use super::{BodyView, ContactView};
 use crate::lesson::{ContactDef, Lesson, Settings};
 use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
@@ -18,18 +18,23 @@ pub struct Stop {
     pub iteration: usize,
 }
 
-/// The contact table at a stop.
+/// The contact table at a stop. A huge step (its recording elided, see
+/// [`crate::trace::resolver::ROW_BUDGET`]) keeps the whole table only at the
+/// first and last stop of each phase; the others keep what changed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
     pub stop: Stop,
-    /// The resolver's bookkeeping, per contact.
+    /// The resolver's bookkeeping, per contact (both empty when `elided`).
     pub penetration: Vec<f64>,
     pub desired: Vec<f64>,
     /// The contact the next iteration takes (`None` when the phase is done).
     pub next: Option<usize>,
     /// What the iteration just before this stop changed: contact, from, to
-    /// (its own contact included).
+    /// (its own contact included; the other contacts only when that
+    /// iteration's rows were kept).
     pub changed: Vec<(usize, f64, f64)>,
+    /// True when this stop's whole table was not kept.
+    pub elided: bool,
 }
 
 /// One resolution, recorded for stepping through.
@@ -65,7 +70,10 @@ impl StepTrace {
             Some(r) => describe_prepared(&world, r, &names, params, implementation, true, true),
             None => describe_world(&world, &names, params, implementation, true, true),
         };
-        let tables = tables(&resolver);
+        let tables = match resolver.elision {
+            None => tables(&resolver),
+            Some(_) => elided_tables(&resolver),
+        };
         StepTrace {
             step,
             time,
@@ -90,15 +98,30 @@ impl StepTrace {
         )
     }
 
-    /// The bodies at the stop at `t` (an index into `tables`), every world body.
-    pub fn bodies_at(&self, t: usize) -> Vec<BodyView> {
-        let stop = self.tables[t].stop;
-        let resolver = match stop.phase {
+    /// The stop whose bodies [`StepTrace::bodies_at`] shows for stop `t`:
+    /// `t` itself, or in a huge step whose recording elided `t`'s bodies the
+    /// nearest earlier stop that kept them.
+    pub fn bodies_stop(&self, t: usize) -> usize {
+        (0..=t)
+            .rev()
+            .find(|&s| self.resolver_bodies(s).is_some_and(|b| !b.is_empty()))
+            .unwrap_or(t)
+    }
+
+    fn resolver_bodies(&self, t: usize) -> Option<&Vec<ResolverBody<f64>>> {
+        let stop = self.tables.get(t)?.stop;
+        match stop.phase {
             Phase::Position => self.bodies[0]
                 .get(stop.iteration)
                 .or_else(|| self.bodies[1].first()),
             Phase::Velocity => self.bodies[1].get(stop.iteration),
-        };
+        }
+    }
+
+    /// The bodies at the stop at `t` (an index into `tables`), every world
+    /// body (as at [`StepTrace::bodies_stop`] where `t`'s were elided).
+    pub fn bodies_at(&self, t: usize) -> Vec<BodyView> {
+        let resolver = self.resolver_bodies(self.bodies_stop(t));
         self.world
             .bodies
             .iter()
@@ -155,7 +178,7 @@ impl StepTrace {
                 bodies: [Some(c.body1.0), c.body2.map(|b| b.0)],
                 point: c.input.point.into(),
                 normal: c.input.normal.into(),
-                penetration: self.tables[t].penetration.get(k).copied().unwrap_or(0.0),
+                penetration: self.penetration_at(t, k),
                 impulse: last
                     .filter(|it| it.contact == k)
                     .and_then(|it| it.impulse_world),
@@ -218,11 +241,75 @@ impl StepTrace {
             c.penetration = if velocity {
                 0.0
             } else {
-                self.tables[t].penetration.get(k).copied().unwrap_or(0.0)
+                self.penetration_at(t, k)
             };
         }
         at
     }
+
+    /// Contact `k`'s penetration at stop `t`: from the table, or where a huge
+    /// step elided it, from the stop's changes, else as the phase began.
+    pub fn penetration_at(&self, t: usize, k: usize) -> f64 {
+        let table = &self.tables[t];
+        if !table.elided {
+            return table.penetration.get(k).copied().unwrap_or(0.0);
+        }
+        if let Some(c) = table.changed.iter().rev().find(|c| c.0 == k) {
+            return c.2;
+        }
+        self.resolver.before.get(k).map_or(0.0, |r| r.penetration)
+    }
+}
+
+/// A huge step's stops: the whole table at the first and last stop of each
+/// phase (from the contacts before and after), what changed at the others.
+fn elided_tables(trace: &ResolverTrace) -> Vec<Table> {
+    let before = |f: fn(&ContactRow) -> f64| trace.before.iter().map(f).collect::<Vec<f64>>();
+    let after =
+        |f: fn(&ContactRow) -> f64| trace.contacts_after.iter().map(f).collect::<Vec<f64>>();
+    // The position phase changes only penetrations, the velocity phase only desired Δv.
+    let ends = [
+        (before(|r| r.penetration), after(|r| r.penetration)),
+        (before(|r| r.desired), after(|r| r.desired)),
+    ];
+    let mut out = vec![];
+    for (phase, log) in [
+        (Phase::Position, &trace.position.log),
+        (Phase::Velocity, &trace.velocity.log),
+    ] {
+        for i in 0..=log.len() {
+            let changed = match i.checked_sub(1).and_then(|p| log.get(p)) {
+                None => vec![],
+                Some(it) => std::iter::once((it.contact, it.value, it.own_after))
+                    .chain(it.updated.iter().map(|u| (u.contact, u.from, u.to)))
+                    .collect(),
+            };
+            let whole = i == 0 || i == log.len();
+            let (penetration, desired) = match (phase, whole, i == 0) {
+                (_, false, _) => (vec![], vec![]),
+                (Phase::Position, true, true) => (ends[0].0.clone(), ends[1].0.clone()),
+                (Phase::Position, true, false) | (Phase::Velocity, true, true) => {
+                    (ends[0].1.clone(), ends[1].0.clone())
+                }
+                (Phase::Velocity, true, false) => (ends[0].1.clone(), ends[1].1.clone()),
+            };
+            out.push(Table {
+                stop: Stop {
+                    phase,
+                    iteration: i,
+                },
+                penetration,
+                desired,
+                next: log.get(i).map(|it| it.contact),
+                changed,
+                elided: !whole,
+            });
+            if i == log.len() {
+                break;
+            }
+        }
+    }
+    out
 }
 
 /// The table at every stop, from the contacts before and each iteration's updates.
@@ -245,6 +332,7 @@ fn tables(trace: &ResolverTrace) -> Vec<Table> {
                 desired: desired.clone(),
                 next: log.get(i).map(|it| it.contact),
                 changed: std::mem::take(&mut changed),
+                elided: false,
             });
             let Some(it) = log.get(i) else { break };
             let values = match phase {
@@ -277,9 +365,12 @@ impl Observer<f64> for Grab {
     }
 }
 
-/// Advances `sim` one step and records its resolution; `names` holds the
-/// lesson's names and its bodies' (contacts are labelled from the step's).
-pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
+/// Advances `sim` one step; the world its resolver was handed, the
+/// resolver as prepared for it, and `names` with the step's contacts labelled.
+fn grab_next(
+    sim: &mut Simulation<f64>,
+    names: &Names,
+) -> Result<(World<f64>, Option<Resolver<f64>>, Names), BlowUp> {
     let mut grab = Grab::default();
     sim.advance_observed(&mut grab)?;
     let (world, prepared) = match grab.0 {
@@ -293,6 +384,44 @@ pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace
         .enumerate()
         .map(|(k, c)| Names::pair_label(&names.bodies, k, c.body1.0, c.body2.map(|b| b.0)))
         .collect();
+    Ok((world, prepared, names))
+}
+
+/// Advances `sim` one step and describes its resolution, iterations
+/// recorded (no tables or bodies per stop: what `simulate --trace-step`
+/// prints); with the number of the step's contacts.
+pub fn describe_next(
+    sim: &mut Simulation<f64>,
+    names: &Names,
+) -> Result<(ResolverTrace, usize), BlowUp> {
+    let (world, prepared, names) = grab_next(sim, names)?;
+    let params = sim.params.resolver;
+    let (trace, _) = match prepared {
+        Some(r) => describe_prepared(
+            &world,
+            r,
+            &names,
+            &params,
+            Implementation::Indexed,
+            true,
+            false,
+        ),
+        None => describe_world(
+            &world,
+            &names,
+            &params,
+            Implementation::Indexed,
+            true,
+            false,
+        ),
+    };
+    Ok((trace, world.contacts.len()))
+}
+
+/// Advances `sim` one step and records its resolution; `names` holds the
+/// lesson's names and its bodies' (contacts are labelled from the step's).
+pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
+    let (world, prepared, names) = grab_next(sim, names)?;
     let params = sim.params.resolver;
     Ok(StepTrace::of_world(
         world,
