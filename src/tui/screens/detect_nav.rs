@@ -117,6 +117,10 @@ impl App {
         let Some(run) = self.run.as_deref() else {
             return;
         };
+        if run.player.detects_later() {
+            // A large scene: computed on another thread, shown by `tick`.
+            return self.detect_later();
+        }
         let lesson = &self.lessons[self.lesson].lesson;
         let step = run.frame as u64;
         let Some(trace) = run.player.detect(lesson, step, self.plane, None) else {
@@ -125,6 +129,11 @@ impl App {
                 true,
             );
         };
+        self.show_detect(trace);
+    }
+
+    /// The detection screen on `trace`.
+    pub(crate) fn show_detect(&mut self, trace: crate::trace::detect::DetectTrace) {
         if trace.pairs.is_empty() {
             self.say(
                 "no pair reaches the narrow phase at this step: the list says why each is ruled out (t: a pair's time of collision)".into(),

@@ -36,6 +36,7 @@ impl App {
                 event_kind: 0,
                 events_scroll: 0,
                 recording: None,
+                detecting: None,
             }));
             self.screen = Screen::Run;
         } else if several && lesson.contacts.len() > 1 {
@@ -62,6 +63,7 @@ impl App {
             (self.screen == Screen::Run && r.playing)
                 || r.player.computing().is_some()
                 || r.recording.is_some()
+                || r.detecting.is_some()
         })
     }
 
@@ -72,6 +74,7 @@ impl App {
             return;
         }
         self.collect_recording();
+        self.collect_detection();
         let on_run = self.screen == Screen::Run;
         let Some(run) = self.run.as_deref_mut() else {
             return;
@@ -164,6 +167,9 @@ impl App {
                     format!("cancelled: step {step}'s resolver iterations are not recorded"),
                     false,
                 );
+            }
+            if let Some(step) = self.cancel_detecting() {
+                return self.say(format!("cancelled: step {step}'s detection"), false);
             }
         }
         let table = match self.screen {
