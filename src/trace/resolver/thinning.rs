@@ -10,11 +10,13 @@
 //! the iterations plus the budget.
 //!
 //! The budget, measured (release, `simulate --trace-step 1` of a pile of
-//! coincident spheres, text): 20 spheres record 0.3 M rows (2.4 MB of text),
-//! 50 spheres 1.0 M rows (40 MB of text, 4 s, 0.8 GB before this budget),
-//! 150 spheres 27 M rows (not recorded in 300 s before it). Every embedded
-//! lesson and scene records far fewer rows than the budget (the largest step
-//! of the embedded scenes, a few thousand), so their output is unchanged.
+//! coincident spheres, text): 20 spheres record 0.06 M rows (2.4 MB of
+//! text), 50 spheres 1 M rows (40 MB of text, 4 s, 0.8 GB before this
+//! budget), 150 spheres 27 M rows (not recorded in 300 s before it; 6 s and
+//! 143 MB with it). Every embedded lesson and scene records far fewer rows
+//! (the largest step of the embedded scenes: 512 iterations over 32 contacts,
+//! under 20,000 rows), so their output is unchanged. docs/resolve.md has the
+//! table.
 
 /// The most rows a recording keeps (see the module's comment).
 pub const ROW_BUDGET: usize = 200_000;
