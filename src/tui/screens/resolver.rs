@@ -205,6 +205,13 @@ fn render_elided_table(app: &App, r: &ResolverView, inner: Rect, buf: &mut Buffe
         ),
         t.warning(),
     )];
+    let shown = r.trace.bodies_stop(r.stop);
+    if shown != r.stop {
+        lines.push(Line::styled(
+            format!("The picture shows the bodies as at stop {shown} (the recording elided the later ones)."),
+            t.dim(),
+        ));
+    }
     let label = |k: usize| r.trace.names.contacts.get(k).cloned().unwrap_or_default();
     if let Some(k) = table.next {
         lines.push(Line::from(vec![
@@ -294,13 +301,6 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
             prev.changed,
             prev.worse
         )));
-    }
-    let shown = r.trace.bodies_stop(r.stop);
-    if shown != r.stop {
-        lines.push(Line::styled(
-            format!("The picture shows the bodies as at stop {shown} (a huge step's recording elided the later ones)."),
-            t.dim(),
-        ));
     }
     let block = Block::bordered()
         .border_style(t.border())
