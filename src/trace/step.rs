@@ -365,12 +365,12 @@ impl Observer<f64> for Grab {
     }
 }
 
-/// Advances `sim` one step; the world its resolver was handed, the
-/// resolver as prepared for it, and `names` with the step's contacts labelled.
-fn grab_next(
-    sim: &mut Simulation<f64>,
-    names: &Names,
-) -> Result<(World<f64>, Option<Resolver<f64>>, Names), BlowUp> {
+/// A step's world as its resolver was handed it, the resolver as prepared
+/// for it (when it ran), and the names with the step's contacts labelled.
+type Grabbed = (World<f64>, Option<Resolver<f64>>, Names);
+
+/// Advances `sim` one step and grabs what its resolution started from.
+fn grab_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Grabbed, BlowUp> {
     let mut grab = Grab::default();
     sim.advance_observed(&mut grab)?;
     let (world, prepared) = match grab.0 {

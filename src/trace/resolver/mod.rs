@@ -218,7 +218,7 @@ impl Recorder {
             for log in [&mut self.position, &mut self.velocity] {
                 for it in log
                     .iter_mut()
-                    .filter(|it| !it.elided && it.iteration % every != 0)
+                    .filter(|it| !it.elided && !it.iteration.is_multiple_of(every))
                 {
                     dropped += it.updated.len();
                     it.updated = Vec::new();
@@ -227,7 +227,7 @@ impl Recorder {
             }
             for phase in &mut self.bodies {
                 for (i, b) in phase.iter_mut().enumerate() {
-                    if i % every != 0 && !b.is_empty() {
+                    if !i.is_multiple_of(every) && !b.is_empty() {
                         dropped += b.len();
                         *b = Vec::new();
                     }

@@ -55,7 +55,7 @@ impl Thinning {
 
     /// Does iteration `i` (of either phase) keep its rows?
     pub fn keeps(&self, i: usize) -> bool {
-        i % self.every == 0
+        i.is_multiple_of(self.every)
     }
 
     /// How the recording was thinned, if it was.
