@@ -3,7 +3,7 @@
 //! lesson's contacts), the bodies as each iteration finds them, and the
 //! contact table (penetration, desired Δv) at every stop of both phases.
 
-use super::resolver::{describe_prepared, describe_world, ContactRow, Names, ResolverTrace};
+use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
 use super::{BodyView, ContactView};
 use crate::lesson::{ContactDef, Lesson, Settings};
 use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
@@ -72,7 +72,7 @@ impl StepTrace {
         };
         let tables = match resolver.elision {
             None => tables(&resolver),
-            Some(_) => elided_tables(&resolver),
+            Some(_) => super::elided::tables(&resolver),
         };
         StepTrace {
             step,
@@ -259,57 +259,6 @@ impl StepTrace {
         }
         self.resolver.before.get(k).map_or(0.0, |r| r.penetration)
     }
-}
-
-/// A huge step's stops: the whole table at the first and last stop of each
-/// phase (from the contacts before and after), what changed at the others.
-fn elided_tables(trace: &ResolverTrace) -> Vec<Table> {
-    let before = |f: fn(&ContactRow) -> f64| trace.before.iter().map(f).collect::<Vec<f64>>();
-    let after =
-        |f: fn(&ContactRow) -> f64| trace.contacts_after.iter().map(f).collect::<Vec<f64>>();
-    // The position phase changes only penetrations, the velocity phase only desired Δv.
-    let ends = [
-        (before(|r| r.penetration), after(|r| r.penetration)),
-        (before(|r| r.desired), after(|r| r.desired)),
-    ];
-    let mut out = vec![];
-    for (phase, log) in [
-        (Phase::Position, &trace.position.log),
-        (Phase::Velocity, &trace.velocity.log),
-    ] {
-        for i in 0..=log.len() {
-            let changed = match i.checked_sub(1).and_then(|p| log.get(p)) {
-                None => vec![],
-                Some(it) => std::iter::once((it.contact, it.value, it.own_after))
-                    .chain(it.updated.iter().map(|u| (u.contact, u.from, u.to)))
-                    .collect(),
-            };
-            let whole = i == 0 || i == log.len();
-            let (penetration, desired) = match (phase, whole, i == 0) {
-                (_, false, _) => (vec![], vec![]),
-                (Phase::Position, true, true) => (ends[0].0.clone(), ends[1].0.clone()),
-                (Phase::Position, true, false) | (Phase::Velocity, true, true) => {
-                    (ends[0].1.clone(), ends[1].0.clone())
-                }
-                (Phase::Velocity, true, false) => (ends[0].1.clone(), ends[1].1.clone()),
-            };
-            out.push(Table {
-                stop: Stop {
-                    phase,
-                    iteration: i,
-                },
-                penetration,
-                desired,
-                next: log.get(i).map(|it| it.contact),
-                changed,
-                elided: !whole,
-            });
-            if i == log.len() {
-                break;
-            }
-        }
-    }
-    out
 }
 
 /// The table at every stop, from the contacts before and each iteration's updates.

@@ -18,6 +18,9 @@
 //! under 20,000 rows), so their output is unchanged. docs/resolve.md has the
 //! table.
 
+use super::Recorder;
+use crate::physics::resolver::ResolverBody;
+
 /// The most rows a recording keeps (see the module's comment).
 pub const ROW_BUDGET: usize = 200_000;
 
@@ -64,5 +67,54 @@ impl Thinning {
             every: self.every,
             budget: self.budget,
         })
+    }
+}
+
+impl Recorder {
+    /// Past the row budget: keep the rows of every other kept iteration
+    /// only, until they fit (iteration 0 of each phase is always kept).
+    pub(super) fn thin(&mut self) {
+        while self.thinning.kept > self.thinning.budget {
+            let most = self.position.len().max(self.velocity.len());
+            if self.thinning.every >= most {
+                return;
+            }
+            self.thinning.every *= 2;
+            let every = self.thinning.every;
+            let mut dropped = 0;
+            for log in [&mut self.position, &mut self.velocity] {
+                for it in log
+                    .iter_mut()
+                    .filter(|it| !it.elided && !it.iteration.is_multiple_of(every))
+                {
+                    dropped += it.updated.len();
+                    it.updated = Vec::new();
+                    it.elided = true;
+                }
+            }
+            for phase in &mut self.bodies {
+                for (i, b) in phase.iter_mut().enumerate() {
+                    if !i.is_multiple_of(every) && !b.is_empty() {
+                        dropped += b.len();
+                        *b = Vec::new();
+                    }
+                }
+            }
+            self.thinning.kept -= dropped;
+        }
+    }
+
+    /// The bodies before iteration `i` of a phase, when its rows are kept.
+    pub(super) fn keep_bodies_at(&mut self, phase: usize, i: usize, bodies: &[ResolverBody<f64>]) {
+        if !self.keep_bodies {
+            return;
+        }
+        if self.thinning.keeps(i) {
+            self.bodies[phase].push(bodies.to_vec());
+            self.thinning.kept += bodies.len();
+            self.thin();
+        } else {
+            self.bodies[phase].push(Vec::new());
+        }
     }
 }
