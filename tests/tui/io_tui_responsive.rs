@@ -161,6 +161,12 @@ fn enter_on_a_large_pile_records_the_step_off_the_ui_thread() {
     assert_eq!(r.trace.step, 1);
     assert!(!r.trace.world.contacts.is_empty());
     assert!(app.run.as_ref().unwrap().recording.is_none());
+    // The ticks while it recorded did not step the run on.
+    assert_eq!(
+        app.run.as_ref().unwrap().frame,
+        1,
+        "the run stays at step 1"
+    );
 }
 
 /// Esc while a large pile's step is recorded cancels it: the run stays, and
@@ -237,5 +243,10 @@ fn d_on_a_large_scene_opens_the_detection_when_it_is_done() {
     assert!(ticks > 0, "the UI drew while the detection was computed");
     assert_eq!(app.screen, Screen::Detect);
     assert!(app.run.as_ref().unwrap().detecting.is_none());
+    assert_eq!(
+        app.run.as_ref().unwrap().frame,
+        0,
+        "the run stays at step 0"
+    );
     assert!(!app.detect.as_ref().unwrap().trace.pairs.is_empty());
 }
