@@ -167,24 +167,24 @@ fn trace_step(
         sim.advance().map_err(|e| blew_up(lesson, &e))?;
     }
     let names = crate::trace::resolver::Names::of_lesson(lesson);
-    let step =
-        crate::trace::step::record_next(&mut sim, &names).map_err(|e| blew_up(lesson, &e))?;
+    let described =
+        crate::trace::step::describe_next(&mut sim, &names).map_err(|e| blew_up(lesson, &e))?;
     let fmt = Fmt::new(args.digits as usize);
     let text = match args.format {
         RunFormat::Text => {
             let head = format!(
                 "Step {n} (t = {} s): the resolution of its {} contact(s).\n\n",
-                fmt.num(step.time),
-                step.world.contacts.len()
+                fmt.num(sim.time),
+                described.contacts
             );
-            let body = crate::render::resolve::text::render(&step.resolver, &fmt);
-            let previous = crate::render::previous_frame::text(&step, &fmt);
+            let body = crate::render::resolve::text::render(&described.resolver, &fmt);
+            let previous = crate::render::previous_frame::text(&described.previous, &fmt);
             crate::render::wrap::wrap(&(head + &body + &previous), super::text_width(args.width))
         }
         RunFormat::Json => {
             let seconds = crate::render::resolve::Seconds::default();
-            let mut j = crate::render::resolve::json::to_json(&step.resolver, &seconds, true);
-            j["previous_frame_normals"] = crate::render::previous_frame::json(&step);
+            let mut j = crate::render::resolve::json::to_json(&described.resolver, &seconds, true);
+            j["previous_frame_normals"] = crate::render::previous_frame::json(&described.previous);
             serde_json::to_string_pretty(&j).map_err(|e| AppError::Runtime(e.to_string()))? + "\n"
         }
         RunFormat::Svg => {

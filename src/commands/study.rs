@@ -60,6 +60,17 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     for g in &args.grid {
         user.push(grid::parse_grid(g).map_err(|e| AppError::Usage(format!("--grid: {e}")))?);
     }
+    // The cross product's size before it is built: building a huge one is
+    // itself slow (issue 23: a 10⁶-configuration grid started with no word).
+    let crossed = user
+        .iter()
+        .fold(1u64, |n, (_, v)| n.saturating_mul(v.len() as u64));
+    if !args.force && crossed > progress::STUDY_CONFIGURATIONS_CAP {
+        return Err(progress::beyond_cap(
+            format!("the --grid cross product of up to {crossed} configurations"),
+            "2,000 configurations",
+        ));
+    }
     let specs = specs(args, err)?;
     let options = Options {
         timed: !args.no_timing,

@@ -6,27 +6,23 @@
 
 use crate::format::Fmt;
 use crate::physics::step::previous_frame::angle_between;
-use crate::trace::step::StepTrace;
+use crate::trace::step::PreviousNormal;
 
 /// The block (empty when no contact has a previous-frame normal).
-pub fn text(step: &StepTrace, f: &Fmt) -> String {
-    let rows: Vec<[String; 4]> = (step.world.contacts.iter().enumerate())
-        .zip(&step.previous_normals)
-        .filter_map(|((k, c), previous)| {
-            let previous = nalgebra::Vector3::from((*previous)?);
-            let n = c.input.normal;
-            let label = step
-                .names
-                .contacts
-                .get(k)
-                .cloned()
-                .unwrap_or_else(|| k.to_string());
-            Some([
-                label,
+pub fn text(rows: &[PreviousNormal], f: &Fmt) -> String {
+    let rows: Vec<[String; 4]> = rows
+        .iter()
+        .map(|r| {
+            let (n, previous) = (
+                nalgebra::Vector3::from(r.normal),
+                nalgebra::Vector3::from(r.previous),
+            );
+            [
+                r.label.clone(),
                 format!("({})", f.list(&[n.x, n.y, n.z])),
                 format!("({})", f.list(&[previous.x, previous.y, previous.z])),
                 f.num(angle_between(&n, &previous).to_degrees()),
-            ])
+            ]
         })
         .collect();
     if rows.is_empty() {
@@ -68,19 +64,21 @@ pub fn text(step: &StepTrace, f: &Fmt) -> String {
 /// The same for JSON: one object per contact with a previous-frame normal
 /// (`contact` its number, `normal` at t, `previous_frame` at t − Δt,
 /// `angle_degrees`).
-pub fn json(step: &StepTrace) -> serde_json::Value {
-    let rows: Vec<serde_json::Value> = (step.world.contacts.iter().enumerate())
-        .zip(&step.previous_normals)
-        .filter_map(|((k, c), previous)| {
-            let previous = (*previous)?;
-            let n = c.input.normal;
-            let angle = angle_between(&n, &nalgebra::Vector3::from(previous)).to_degrees();
-            Some(serde_json::json!({
-                "contact": k,
-                "normal": [n.x, n.y, n.z],
-                "previous_frame": previous,
+pub fn json(rows: &[PreviousNormal]) -> serde_json::Value {
+    let rows: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|r| {
+            let angle = angle_between(
+                &nalgebra::Vector3::from(r.normal),
+                &nalgebra::Vector3::from(r.previous),
+            )
+            .to_degrees();
+            serde_json::json!({
+                "contact": r.contact,
+                "normal": r.normal,
+                "previous_frame": r.previous,
                 "angle_degrees": angle,
-            }))
+            })
         })
         .collect();
     serde_json::Value::Array(rows)

@@ -4,8 +4,10 @@
 //! on request — the fast path records nothing. [`edit`] changes the run's
 //! input at a step and computes it again from there.
 
+mod background;
 mod detect;
 mod edit;
+pub use background::{Detecting, Job, Recording};
 pub use detect::{detect_trace, toi_trace, PairToiRun};
 pub use edit::SceneEdit;
 
@@ -14,7 +16,7 @@ use crate::physics::step::{BlowUp, Simulation, StepReport};
 use crate::trace::resolver::Names;
 use crate::trace::run::RunTrace;
 use crate::trace::step::{record_next, StepTrace};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::Ordering;
 use std::sync::{Arc, Mutex};
 
 /// Steps between two kept copies of the simulation.
@@ -220,54 +222,17 @@ impl Player {
         let (_, from) = self.checkpoints.iter().rev().find(|(s, _)| *s < step)?;
         let mut sim = from.clone();
         let names = self.names.clone();
-        let slot: RecordSlot = Arc::new(Mutex::new(None));
-        let cancel = Arc::new(AtomicBool::new(false));
-        let (out, stop) = (Arc::clone(&slot), Arc::clone(&cancel));
-        std::thread::spawn(move || {
-            let mut trace = None;
-            let mut ok = true;
-            while ok && sim.step < step - 1 && !stop.load(Ordering::Relaxed) {
-                ok = sim.advance().is_ok();
+        Some(Job::spawn(step, move |stop| {
+            while sim.step < step - 1 {
+                if stop.load(Ordering::Relaxed) || sim.advance().is_err() {
+                    return None;
+                }
             }
-            if ok && !stop.load(Ordering::Relaxed) {
-                trace = record_next(&mut sim, &names).ok();
+            if stop.load(Ordering::Relaxed) {
+                return None;
             }
-            if let Ok(mut s) = out.lock() {
-                *s = Some(trace);
-            }
-        });
-        Some(Recording { step, slot, cancel })
-    }
-}
-
-/// A recorded resolution when its thread is done (`None` inside: it could not be recorded).
-type RecordSlot = Arc<Mutex<Option<Option<StepTrace>>>>;
-
-/// A step's resolution being recorded on another thread ([`Player::record_later`]).
-#[derive(Clone)]
-pub struct Recording {
-    /// The step whose resolution is recorded.
-    pub step: u64,
-    slot: RecordSlot,
-    cancel: Arc<AtomicBool>,
-}
-
-impl std::fmt::Debug for Recording {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Recording {{ step: {} }}", self.step)
-    }
-}
-
-impl Recording {
-    /// The outcome once the thread is done (taken: later calls give `None`);
-    /// `Some(None)` when the step could not be recorded (it blew up).
-    pub fn poll(&self) -> Option<Option<StepTrace>> {
-        self.slot.lock().ok()?.take()
-    }
-
-    /// Asks the thread to stop; its result, if any, is dropped.
-    pub fn cancel(&self) {
-        self.cancel.store(true, Ordering::Relaxed);
+            record_next(&mut sim, &names).ok()
+        }))
     }
 }
 

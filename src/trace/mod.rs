@@ -13,6 +13,7 @@
 mod acceleration;
 pub mod contact;
 pub mod detect;
+mod elided;
 pub mod glossary;
 pub mod movement;
 

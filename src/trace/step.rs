@@ -19,18 +19,23 @@ pub struct Stop {
     pub iteration: usize,
 }
 
-/// The contact table at a stop.
+/// The contact table at a stop. A huge step (its recording elided, see
+/// [`crate::trace::resolver::ROW_BUDGET`]) keeps the whole table only at the
+/// first and last stop of each phase; the others keep what changed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
     pub stop: Stop,
-    /// The resolver's bookkeeping, per contact.
+    /// The resolver's bookkeeping, per contact (both empty when `elided`).
     pub penetration: Vec<f64>,
     pub desired: Vec<f64>,
     /// The contact the next iteration takes (`None` when the phase is done).
     pub next: Option<usize>,
     /// What the iteration just before this stop changed: contact, from, to
-    /// (its own contact included).
+    /// (its own contact included; the other contacts only when that
+    /// iteration's rows were kept).
     pub changed: Vec<(usize, f64, f64)>,
+    /// True when this stop's whole table was not kept.
+    pub elided: bool,
 }
 
 /// One resolution, recorded for stepping through.
@@ -69,7 +74,10 @@ impl StepTrace {
             Some(r) => describe_prepared(&world, r, &names, params, implementation, true, true),
             None => describe_world(&world, &names, params, implementation, true, true),
         };
-        let tables = tables(&resolver);
+        let tables = match resolver.elision {
+            None => tables(&resolver),
+            Some(_) => super::elided::tables(&resolver),
+        };
         StepTrace {
             step,
             time,
@@ -95,15 +103,30 @@ impl StepTrace {
         )
     }
 
-    /// The bodies at the stop at `t` (an index into `tables`), every world body.
-    pub fn bodies_at(&self, t: usize) -> Vec<BodyView> {
-        let stop = self.tables[t].stop;
-        let resolver = match stop.phase {
+    /// The stop whose bodies [`StepTrace::bodies_at`] shows for stop `t`:
+    /// `t` itself, or in a huge step whose recording elided `t`'s bodies the
+    /// nearest earlier stop that kept them.
+    pub fn bodies_stop(&self, t: usize) -> usize {
+        (0..=t)
+            .rev()
+            .find(|&s| self.resolver_bodies(s).is_some_and(|b| !b.is_empty()))
+            .unwrap_or(t)
+    }
+
+    fn resolver_bodies(&self, t: usize) -> Option<&Vec<ResolverBody<f64>>> {
+        let stop = self.tables.get(t)?.stop;
+        match stop.phase {
             Phase::Position => self.bodies[0]
                 .get(stop.iteration)
                 .or_else(|| self.bodies[1].first()),
             Phase::Velocity => self.bodies[1].get(stop.iteration),
-        };
+        }
+    }
+
+    /// The bodies at the stop at `t` (an index into `tables`), every world
+    /// body (as at [`StepTrace::bodies_stop`] where `t`'s were elided).
+    pub fn bodies_at(&self, t: usize) -> Vec<BodyView> {
+        let resolver = self.resolver_bodies(self.bodies_stop(t));
         self.world
             .bodies
             .iter()
@@ -160,7 +183,7 @@ impl StepTrace {
                 bodies: [Some(c.body1.0), c.body2.map(|b| b.0)],
                 point: c.input.point.into(),
                 normal: c.input.normal.into(),
-                penetration: self.tables[t].penetration.get(k).copied().unwrap_or(0.0),
+                penetration: self.penetration_at(t, k),
                 impulse: last
                     .filter(|it| it.contact == k)
                     .and_then(|it| it.impulse_world),
@@ -227,10 +250,23 @@ impl StepTrace {
             c.penetration = if velocity {
                 0.0
             } else {
-                self.tables[t].penetration.get(k).copied().unwrap_or(0.0)
+                self.penetration_at(t, k)
             };
         }
         at
+    }
+
+    /// Contact `k`'s penetration at stop `t`: from the table, or where a huge
+    /// step elided it, from the stop's changes, else as the phase began.
+    pub fn penetration_at(&self, t: usize, k: usize) -> f64 {
+        let table = &self.tables[t];
+        if !table.elided {
+            return table.penetration.get(k).copied().unwrap_or(0.0);
+        }
+        if let Some(c) = table.changed.iter().rev().find(|c| c.0 == k) {
+            return c.2;
+        }
+        self.resolver.before.get(k).map_or(0.0, |r| r.penetration)
     }
 }
 
@@ -254,6 +290,7 @@ fn tables(trace: &ResolverTrace) -> Vec<Table> {
                 desired: desired.clone(),
                 next: log.get(i).map(|it| it.contact),
                 changed: std::mem::take(&mut changed),
+                elided: false,
             });
             let Some(it) = log.get(i) else { break };
             let values = match phase {
@@ -286,9 +323,12 @@ impl Observer<f64> for Grab {
     }
 }
 
-/// Advances `sim` one step and records its resolution; `names` holds the
-/// lesson's names and its bodies' (contacts are labelled from the step's).
-pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
+/// A step's world as its resolver was handed it, the resolver as prepared
+/// for it (when it ran), and the names with the step's contacts labelled.
+type Grabbed = (World<f64>, Option<Resolver<f64>>, Names);
+
+/// Advances `sim` one step and grabs what its resolution started from.
+fn grab_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Grabbed, BlowUp> {
     let mut grab = Grab::default();
     sim.advance_observed(&mut grab)?;
     let (world, prepared) = match grab.0 {
@@ -302,6 +342,99 @@ pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace
         .enumerate()
         .map(|(k, c)| Names::pair_label(&names.bodies, k, c.body1.0, c.body2.map(|b| b.0)))
         .collect();
+    Ok((world, prepared, names))
+}
+
+/// A penetrating contact's normal at t beside the one from the closest
+/// points one frame earlier (t − Δt), when its pair was apart then.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PreviousNormal {
+    /// The contact's number in the step and its label.
+    pub contact: usize,
+    pub label: String,
+    pub normal: [f64; 3],
+    pub previous: [f64; 3],
+}
+
+/// The contacts of `world` that have a previous-frame normal.
+fn previous_rows(
+    world: &World<f64>,
+    names: &Names,
+    previous: &[Option<[f64; 3]>],
+) -> Vec<PreviousNormal> {
+    (world.contacts.iter().enumerate())
+        .zip(previous)
+        .filter_map(|((k, c), previous)| {
+            let n = c.input.normal;
+            Some(PreviousNormal {
+                contact: k,
+                label: names
+                    .contacts
+                    .get(k)
+                    .cloned()
+                    .unwrap_or_else(|| k.to_string()),
+                normal: [n.x, n.y, n.z],
+                previous: (*previous)?,
+            })
+        })
+        .collect()
+}
+
+impl StepTrace {
+    /// The step's contacts that have a previous-frame normal.
+    pub fn previous_rows(&self) -> Vec<PreviousNormal> {
+        previous_rows(&self.world, &self.names, &self.previous_normals)
+    }
+}
+
+/// A step's resolution as `simulate --trace-step` prints it.
+pub struct Described {
+    pub resolver: ResolverTrace,
+    /// How many contacts the step resolved.
+    pub contacts: usize,
+    pub previous: Vec<PreviousNormal>,
+}
+
+/// Advances `sim` one step and describes its resolution, iterations
+/// recorded (no tables or bodies per stop: what `simulate --trace-step`
+/// prints); with the number of the step's contacts.
+pub fn describe_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Described, BlowUp> {
+    let (world, prepared, names) = grab_next(sim, names)?;
+    let params = sim.params.resolver;
+    let normals: Vec<Option<[f64; 3]>> = (world.contacts.iter())
+        .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))
+        .collect();
+    let previous = previous_rows(&world, &names, &normals);
+    let (resolver, _) = match prepared {
+        Some(r) => describe_prepared(
+            &world,
+            r,
+            &names,
+            &params,
+            Implementation::Indexed,
+            true,
+            false,
+        ),
+        None => describe_world(
+            &world,
+            &names,
+            &params,
+            Implementation::Indexed,
+            true,
+            false,
+        ),
+    };
+    Ok(Described {
+        resolver,
+        contacts: world.contacts.len(),
+        previous,
+    })
+}
+
+/// Advances `sim` one step and records its resolution; `names` holds the
+/// lesson's names and its bodies' (contacts are labelled from the step's).
+pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
+    let (world, prepared, names) = grab_next(sim, names)?;
     let params = sim.params.resolver;
     let previous_normals = (world.contacts.iter())
         .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))

@@ -240,6 +240,7 @@ impl App {
 
     pub(super) fn goto_lesson(&mut self, i: usize) {
         self.cancel_recording();
+        self.cancel_detecting();
         self.lesson = i;
         self.score = Score::default();
         self.contact = 0;

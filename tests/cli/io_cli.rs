@@ -94,6 +94,30 @@ fn a_study_beyond_its_caps_asks_for_force() {
     );
 }
 
+/// A 10⁶-configuration grid is refused before its cross product is built
+/// (building it took minutes).
+#[test]
+fn a_million_configuration_grid_is_refused_at_once() {
+    let relaxations: Vec<String> = (1..=1000)
+        .map(|k| format!("{}", k as f64 / 1000.0))
+        .collect();
+    let budgets: Vec<String> = (1..=1000).map(|k| k.to_string()).collect();
+    let (code, out, err) = run(&[
+        "study",
+        "ball-drop",
+        "--grid",
+        &format!("relaxation={}", relaxations.join(",")),
+        "--grid",
+        &format!("budget={}", budgets.join(",")),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("up to 1000000 configurations, over the cap of 2,000 configurations"),
+        "{err}"
+    );
+}
+
 #[test]
 fn a_run_beyond_its_cap_asks_for_force() {
     let (code, out, err) = run(&["simulate", "sphere-row-20", "--steps", "10000000"]);

@@ -16,6 +16,7 @@ mod figure_labels;
 mod figure_stages;
 mod figure_strokes;
 mod glossary;
+mod huge_step;
 mod instructor_snapshots;
 mod latex_compiles;
 mod movement_bounds;

@@ -161,6 +161,12 @@ fn enter_on_a_large_pile_records_the_step_off_the_ui_thread() {
     assert_eq!(r.trace.step, 1);
     assert!(!r.trace.world.contacts.is_empty());
     assert!(app.run.as_ref().unwrap().recording.is_none());
+    // The ticks while it recorded did not step the run on.
+    assert_eq!(
+        app.run.as_ref().unwrap().frame,
+        1,
+        "the run stays at step 1"
+    );
 }
 
 /// Esc while a large pile's step is recorded cancels it: the run stays, and
@@ -185,4 +191,62 @@ fn esc_cancels_a_recording_under_way() {
     assert!(!app.playing(), "nothing left to tick for");
     app.tick(1.0);
     assert_eq!(app.screen, Screen::Run);
+}
+
+/// `d` on a large scene computes the detection off the UI thread: `d`
+/// returns at once with a working line, Esc cancels it, and `q` quits.
+/// (100 spheres in a row: large enough to go to another thread, cheap to
+/// detect; a 500-sphere pile behaves the same, for 20 s of detection.)
+#[test]
+fn d_on_a_large_scene_detects_off_the_ui_thread_and_esc_cancels() {
+    let path = row_of_spheres(100);
+    let mut app = tui::open(Some(path.as_os_str()), None).expect("opens");
+    app.theme = Theme { color: false };
+    let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    let took = timed(&mut app, |a| key(a, KeyCode::Char('d')));
+    assert!(took < ANSWER, "d took {took:?}");
+    assert_eq!(app.screen, Screen::Run, "the run stays on show meanwhile");
+    assert!(app.run.as_ref().unwrap().detecting.is_some());
+    assert!(app.playing(), "the loop keeps ticking");
+    t.draw(|f| f.render_widget(&app, f.area())).unwrap();
+    let screen = crate::common::tui::text(t.backend().buffer());
+    assert!(
+        screen.contains("working: detecting step 0's contacts"),
+        "{screen}"
+    );
+    let took = timed(&mut app, |a| key(a, KeyCode::Esc));
+    assert!(took < ANSWER, "Esc took {took:?}");
+    assert!(!app.quit, "Esc cancels, it does not quit");
+    let said = app.status.clone().expect("said").text;
+    assert!(said.contains("cancelled: step 0's detection"), "{said}");
+    assert!(app.run.as_ref().unwrap().detecting.is_none());
+    app.tick(1.0);
+    assert_eq!(app.screen, Screen::Run, "a cancelled detection never opens");
+    key(&mut app, KeyCode::Char('d'));
+    let took = timed(&mut app, |a| key(a, KeyCode::Char('q')));
+    assert!(took < ANSWER, "q took {took:?}");
+    assert!(app.quit, "q quits while a detection is under way");
+}
+
+/// The detection computed off the UI thread opens its screen when done.
+#[test]
+fn d_on_a_large_scene_opens_the_detection_when_it_is_done() {
+    let path = row_of_spheres(100);
+    let mut app = tui::open(Some(path.as_os_str()), None).expect("opens");
+    app.theme = Theme { color: false };
+    let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    key(&mut app, KeyCode::Char('d'));
+    assert_eq!(app.screen, Screen::Run);
+    let ticks = tick_until(&mut app, &mut t, Duration::from_secs(120), |a| {
+        a.screen == Screen::Detect
+    });
+    assert!(ticks > 0, "the UI drew while the detection was computed");
+    assert_eq!(app.screen, Screen::Detect);
+    assert!(app.run.as_ref().unwrap().detecting.is_none());
+    assert_eq!(
+        app.run.as_ref().unwrap().frame,
+        0,
+        "the run stays at step 0"
+    );
+    assert!(!app.detect.as_ref().unwrap().trace.pairs.is_empty());
 }

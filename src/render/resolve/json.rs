@@ -44,12 +44,18 @@ fn phase(p: &PhaseTrace, log: bool, position: bool) -> J {
                 if let Some(g) = &it.impulse_contact {
                     e.insert("impulse_contact".into(), vector(g));
                 }
-                let updated: Vec<J> = it
-                    .updated
-                    .iter()
-                    .map(|u| json!([u.contact, num(u.to)]))
-                    .collect();
-                e.insert("updated".into(), J::Array(updated));
+                if it.elided {
+                    // A huge step's recording kept no rows here: how many it changed.
+                    e.insert("updated".into(), J::Null);
+                    e.insert("changed".into(), json!(it.changed));
+                } else {
+                    let updated: Vec<J> = it
+                        .updated
+                        .iter()
+                        .map(|u| json!([u.contact, num(u.to)]))
+                        .collect();
+                    e.insert("updated".into(), J::Array(updated));
+                }
                 J::Object(e)
             })
             .collect();
@@ -75,7 +81,7 @@ pub fn to_json(trace: &ResolverTrace, seconds: &Seconds, log: bool) -> J {
             )
         })
         .collect();
-    json!({
+    let mut out = json!({
         "lesson": trace.lesson,
         "contacts": trace.before.len(),
         "position": phase(&trace.position, log, true),
@@ -86,7 +92,11 @@ pub fn to_json(trace: &ResolverTrace, seconds: &Seconds, log: bool) -> J {
             "velocity": num(seconds.velocity),
         },
         "after": after,
-    })
+    });
+    if let (Some(e), true) = (trace.elision, log) {
+        out["elided"] = json!({ "updated_every": e.every, "row_budget": e.budget });
+    }
+    out
 }
 
 pub fn render(trace: &ResolverTrace, seconds: &Seconds, log: bool) -> String {

@@ -55,6 +55,9 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     for w in &trace.warnings {
         let _ = writeln!(out, "> warning: {}\n", escape(w));
     }
+    if let Some(note) = super::elision_note(trace) {
+        let _ = writeln!(out, "> {}\n", escape(&note));
+    }
     let _ = writeln!(out, "## Contacts before\n");
     table(&mut out, &trace.before, fmt);
     phase(&mut out, &trace.position, fmt);

@@ -42,6 +42,19 @@ pub fn how(trace: &ResolverTrace) -> String {
     )
 }
 
+/// What a huge step's recording left out, when it did (one paragraph).
+pub fn elision_note(trace: &ResolverTrace) -> Option<String> {
+    let e = trace.elision?;
+    Some(format!(
+        "Elided: a huge step. Every iteration is listed with the contact it takes and its moves or impulse, \
+         but the other contacts it changed are listed at iterations 0, {}, {}, … of each phase only (the rest say how many), \
+         to keep the recording within {} rows; the full contact tables are the ones before and after.",
+        e.every,
+        2 * e.every,
+        e.budget
+    ))
+}
+
 /// The phase's heading: what it takes first, its epsilon and limit.
 pub fn phase_heading(p: &PhaseTrace, fmt: &Fmt) -> String {
     if p.solver == Solver::SequentialImpulse {
@@ -143,8 +156,18 @@ pub fn row_numbers(rows: &[ContactRow], fmt: &Fmt) -> Vec<[String; 3]> {
         .collect()
 }
 
-/// `2: 0.03 → 0.041 (worse)`, the others an iteration changed.
+/// `2: 0.03 → 0.041 (worse)`, the others an iteration changed; for an
+/// iteration whose rows a huge step's recording elided, how many it changed.
 pub fn updates(it: &Iteration, fmt: &Fmt) -> String {
+    if it.elided {
+        if it.changed == 0 {
+            return String::new();
+        }
+        return format!(
+            "changed {} other contact(s), {} for the worse (rows elided)",
+            it.changed, it.worse
+        );
+    }
     it.updated
         .iter()
         .map(|u| {

@@ -78,6 +78,9 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     for w in &trace.warnings {
         let _ = writeln!(out, "warning: {w}");
     }
+    if let Some(note) = super::elision_note(trace) {
+        let _ = writeln!(out, "{note}");
+    }
     let _ = writeln!(out);
     let _ = writeln!(out, "Contacts before");
     table(&mut out, &trace.before, fmt);

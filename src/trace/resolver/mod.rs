@@ -7,7 +7,10 @@
 
 use nalgebra::Vector3;
 
+mod thinning;
 mod verdicts;
+use thinning::Thinning;
+pub use thinning::{Elision, ROW_BUDGET};
 use verdicts::verdicts;
 
 pub use super::names::Names;
@@ -82,8 +85,15 @@ pub struct Iteration {
     pub impulse_world: Option<[f64; 3]>,
     /// `"static"` or `"dynamic"` for a contact with friction.
     pub regime: Option<&'static str>,
-    /// The other contacts it changed, by contact number.
+    /// The other contacts it changed, by contact number (empty when elided).
     pub updated: Vec<Update>,
+    /// How many other contacts it changed, and how many for the worse
+    /// (counted even when the rows are elided).
+    pub changed: usize,
+    pub worse: usize,
+    /// True when a huge step's recording did not keep this iteration's rows
+    /// (`updated`, and the bodies at its stop): see [`ROW_BUDGET`].
+    pub elided: bool,
 }
 
 /// One phase: its outcome, its notes and (when recorded) its iterations.
@@ -123,6 +133,8 @@ pub struct ResolverTrace {
     pub after: Vec<(String, AfterState)>,
     pub verdicts: Vec<Verdict>,
     pub warnings: Vec<String>,
+    /// Set when the step was too large to keep every iteration's rows.
+    pub elision: Option<Elision>,
 }
 
 /// A resolver observer that keeps every iteration (for the trace).
@@ -135,7 +147,9 @@ pub struct Recorder {
     phase: Option<Phase>,
     /// When kept: the resolver's bodies before each iteration, per phase.
     keep_bodies: bool,
+    /// Before each iteration, per phase (empty at a stop whose rows were elided).
     pub(crate) bodies: [Vec<Vec<ResolverBody<f64>>>; 2],
+    thinning: Thinning,
 }
 
 impl Recorder {
@@ -175,12 +189,22 @@ impl Recorder {
         let Some(it) = self.current() else { return };
         if contact == it.contact {
             it.own_after = to;
-        } else if to != from {
-            it.updated.push(Update { contact, from, to });
+            return;
+        }
+        if to == from {
+            return;
+        }
+        let u = Update { contact, from, to };
+        it.changed += 1;
+        it.worse += usize::from(u.worse());
+        if !it.elided {
+            it.updated.push(u);
+            self.thinning.kept += 1;
+            self.thin();
         }
     }
 
-    fn iteration(iteration: usize, contact: usize, value: f64) -> Iteration {
+    fn iteration(&self, iteration: usize, contact: usize, value: f64) -> Iteration {
         Iteration {
             iteration,
             contact,
@@ -192,6 +216,9 @@ impl Recorder {
             impulse_world: None,
             regime: None,
             updated: vec![],
+            changed: 0,
+            worse: 0,
+            elided: !self.thinning.keeps(iteration),
         }
     }
 
@@ -205,21 +232,17 @@ fn arr(v: &Vector3<f64>) -> [f64; 3] {
 }
 
 impl Observer<f64> for Recorder {
-    fn before_position(&mut self, _i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
-        if self.keep_bodies {
-            self.bodies[0].push(bodies.to_vec());
-        }
+    fn before_position(&mut self, i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
+        self.keep_bodies_at(0, i, bodies);
     }
 
-    fn before_velocity(&mut self, _i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
-        if self.keep_bodies {
-            self.bodies[1].push(bodies.to_vec());
-        }
+    fn before_velocity(&mut self, i: usize, _k: usize, bodies: &[ResolverBody<f64>]) {
+        self.keep_bodies_at(1, i, bodies);
     }
 
     fn position_taken(&mut self, i: usize, k: usize, penetration: f64, moves: &PositionMoves<f64>) {
         self.phase = Some(Phase::Position);
-        let mut it = Recorder::iteration(i, k, penetration);
+        let mut it = self.iteration(i, k, penetration);
         for (slot, m) in moves.bodies.iter().enumerate() {
             if let Some(m) = m {
                 it.moves.push(BodyMove {
@@ -239,7 +262,7 @@ impl Observer<f64> for Recorder {
 
     fn velocity_taken(&mut self, i: usize, k: usize, desired: f64, impulse: &VelocityImpulse<f64>) {
         self.phase = Some(Phase::Velocity);
-        let mut it = Recorder::iteration(i, k, desired);
+        let mut it = self.iteration(i, k, desired);
         it.impulse_contact = Some(arr(&impulse.impulse_contact));
         it.impulse_world = Some(arr(&impulse.impulse_world));
         it.regime = impulse.regime.map(|r| match r {
@@ -294,10 +317,7 @@ fn phase_trace(
     solver: Solver,
     contacts: usize,
 ) -> PhaseTrace {
-    let worsening_iterations = log
-        .iter()
-        .filter(|it| it.updated.iter().any(Update::worse))
-        .count();
+    let worsening_iterations = log.iter().filter(|it| it.worse > 0).count();
     PhaseTrace {
         phase: outcome.phase,
         iterations_used: outcome.iterations_used,
@@ -415,6 +435,7 @@ pub fn describe_prepared(
             resolver.contacts.len(),
         ),
         warnings: names.warnings.clone(),
+        elision: recorder.thinning.elision(),
     };
     (trace, std::mem::take(&mut recorder.bodies))
 }

@@ -167,8 +167,11 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     }
     if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
-        if run.recording.is_some() {
-            let text = super::run_nav::recording(run);
+        if run.recording.is_some() || run.detecting.is_some() {
+            let text = match run.recording {
+                Some(_) => super::run_nav::recording(run),
+                None => super::background::detecting(run),
+            };
             Paragraph::new(Line::styled(
                 truncate(&format!(" {text}"), area.width as usize),
                 t.info(),

@@ -150,21 +150,30 @@ impl App {
         let Some(run) = self.run.as_deref() else {
             return;
         };
+        if run.player.detects_later() {
+            // A large scene: computed on another thread, shown by `tick`.
+            return self.detect_later();
+        }
         let lesson = &self.lessons[self.lesson].lesson;
         let step = run.frame as u64;
-        let scene = scene_method(lesson);
         let Some(trace) = run.player.detect(lesson, step, self.plane, None) else {
             return self.say(
                 format!("step {step}'s bodies could not be found again: the run blew up"),
                 true,
             );
         };
+        self.show_detect(trace);
+    }
+
+    /// The detection screen on `trace`.
+    pub(crate) fn show_detect(&mut self, trace: crate::trace::detect::DetectTrace) {
         if trace.pairs.is_empty() {
             self.say(
                 "no pair reaches the narrow phase at this step: the list says why each is ruled out (t: a pair's time of collision)".into(),
                 false,
             );
         }
+        let scene = scene_method(&self.lessons[self.lesson].lesson);
         self.detect = Some(Box::new(DetectView {
             trace,
             pair: 0,

@@ -5,6 +5,7 @@
 //! lives here; [`nav`], [`run_nav`] and [`resolver_nav`] update it, [`run`] and [`resolver`] draw it. They
 //! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
+mod background;
 mod chrome;
 mod detect;
 mod detect_minkowski;
@@ -96,6 +97,9 @@ pub struct RunView {
     /// Enter on a large scene: the step's resolution being recorded on
     /// another thread, and since when (the key bar shows it; Esc cancels).
     pub recording: Option<(Recording, std::time::Instant)>,
+    /// `d` on a large scene: the step's detection being computed on another
+    /// thread, and since when (the key bar shows it; Esc cancels).
+    pub detecting: Option<(crate::session::Detecting, std::time::Instant)>,
 }
 
 /// One resolution on the resolver screen.

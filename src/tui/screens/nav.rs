@@ -29,6 +29,7 @@ impl App {
                 event_kind: 0,
                 events_scroll: 0,
                 recording: None,
+                detecting: None,
             }));
             self.screen = Screen::Run;
         } else if several && lesson.contacts.len() > 1 {
@@ -51,6 +52,9 @@ impl App {
                     format!("cancelled: step {step}'s resolver iterations are not recorded"),
                     false,
                 );
+            }
+            if let Some(step) = self.cancel_detecting() {
+                return self.say(format!("cancelled: step {step}'s detection"), false);
             }
         }
         let table = match self.screen {

@@ -59,7 +59,17 @@ fn convergence(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     let mut pen = vec![];
     let mut dv = vec![];
     for (i, t) in r.trace.tables.iter().enumerate() {
+        // A huge step keeps no whole table here: the value the iteration took.
+        let elided = |log: &[crate::trace::resolver::Iteration]| {
+            log.get(t.stop.iteration).map_or(0.0, |it| it.value)
+        };
         match t.stop.phase {
+            Phase::Position if t.elided => {
+                pen.push((i as f64, elided(&r.trace.resolver.position.log)))
+            }
+            Phase::Velocity if t.elided => {
+                dv.push((i as f64, elided(&r.trace.resolver.velocity.log)))
+            }
             Phase::Position => pen.push((i as f64, max(&t.penetration))),
             Phase::Velocity => dv.push((i as f64, max(&t.desired))),
         }
@@ -89,6 +99,10 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     let inner = block.inner(area);
     block.render(area, buf);
     app.targets.table.set(area);
+    if table.elided {
+        render_elided_table(app, r, inner, buf);
+        return;
+    }
     let rows = (inner.height as usize).saturating_sub(1);
     let n = table.penetration.len();
     // Keep the selected and the next contact in view.
@@ -166,6 +180,75 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     Paragraph::new(lines).render(inner, buf);
 }
 
+/// A huge step's stop whose whole table was not kept: what it says, then
+/// the rows the last iteration changed (when kept) and the one taken next.
+fn render_elided_table(app: &App, r: &ResolverView, inner: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let f = Fmt::new(4);
+    let table = &r.trace.tables[r.stop];
+    let phase = match table.stop.phase {
+        Phase::Position => &r.trace.resolver.position,
+        Phase::Velocity => &r.trace.resolver.velocity,
+    };
+    let what = match table.stop.phase {
+        Phase::Position => "penetration",
+        Phase::Velocity => "desired Δv",
+    };
+    let last = table
+        .stop
+        .iteration
+        .checked_sub(1)
+        .and_then(|i| phase.log.get(i));
+    let mut lines = vec![Line::styled(
+        format!(
+            "Table elided: a huge step ({} contacts) keeps the whole table at each phase's first and last stop only.",
+            r.trace.names.contacts.len()
+        ),
+        t.warning(),
+    )];
+    let shown = r.trace.bodies_stop(r.stop);
+    if shown != r.stop {
+        lines.push(Line::styled(
+            format!("The picture shows the bodies as at stop {shown} (the recording elided the later ones)."),
+            t.dim(),
+        ));
+    }
+    let label = |k: usize| r.trace.names.contacts.get(k).cloned().unwrap_or_default();
+    if let Some(k) = table.next {
+        lines.push(Line::from(vec![
+            Span::styled("▶ ", t.ink_style(crate::tui::theme::Ink::Impulse)),
+            Span::raw(format!(
+                "{}  {what} {}",
+                label(k),
+                f.num(phase.log[table.stop.iteration].value)
+            )),
+        ]));
+    }
+    if let Some(it) = last {
+        let rows = if it.elided {
+            format!(
+                "Last iteration changed {} other contact(s), {} for the worse; its rows elided (kept at iterations 0, {}, {}, …):",
+                it.changed,
+                it.worse,
+                r.trace.resolver.elision.map_or(1, |e| e.every),
+                r.trace.resolver.elision.map_or(2, |e| 2 * e.every)
+            )
+        } else {
+            format!("Last iteration changed {} other contact(s):", it.changed)
+        };
+        lines.push(Line::styled(rows, t.dim()));
+        for c in &table.changed {
+            lines.push(Line::from(vec![
+                Span::raw(format!("  {}  ", label(c.0))),
+                Span::styled(f.change(c.1, c.2), t.changed()),
+            ]));
+        }
+    }
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .render(inner, buf);
+}
+
 fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let f = Fmt::new(4);
@@ -211,13 +294,13 @@ fn render_note(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
         ))),
     }
     if let Some(prev) = stop.iteration.checked_sub(1).and_then(|i| phase.log.get(i)) {
-        let worse = prev.updated.iter().filter(|u| u.worse()).count();
         lines.push(Line::raw(format!(
-            "Last: {name} iteration {} took contact {}: {what} {}; it changed {} other contact(s), {worse} for the worse.",
+            "Last: {name} iteration {} took contact {}: {what} {}; it changed {} other contact(s), {} for the worse.",
             prev.iteration,
             prev.contact,
             f.change(prev.value, prev.own_after),
-            prev.updated.len()
+            prev.changed,
+            prev.worse
         )));
     }
     let block = Block::bordered()

@@ -18,6 +18,7 @@ impl App {
             (self.screen == Screen::Run && r.playing)
                 || r.player.computing().is_some()
                 || r.recording.is_some()
+                || r.detecting.is_some()
         })
     }
 
@@ -28,6 +29,7 @@ impl App {
             return;
         }
         self.collect_recording();
+        self.collect_detection();
         let on_run = self.screen == Screen::Run;
         let Some(run) = self.run.as_deref_mut() else {
             return;
@@ -35,8 +37,12 @@ impl App {
         if !(on_run && run.playing) {
             // A step asked for with → (or left over from playback): shown
             // when it is done, if the frame before it is still on show.
+            // Only a step under way is collected: polling otherwise starts
+            // the next one (ticks also come while a recording or a
+            // detection is under way, and must not step the run).
             let waiting = run.frame as u64 == run.player.computed();
-            if run.player.poll() == Poll::Ready(true) && waiting && on_run {
+            let under_way = run.player.computing().is_some();
+            if under_way && run.player.poll() == Poll::Ready(true) && waiting && on_run {
                 run.frame += 1;
             }
             return;

@@ -1,0 +1,98 @@
+//! Work for a large scene done on another thread so that the TUI's keys
+//! keep answering: a step's resolution recorded ([`Player::record_later`]),
+//! a step's detection ([`Player::detect_later`]). The UI polls for the
+//! outcome and may cancel (the work stops where it checks, or finishes and
+//! its outcome is dropped).
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+
+use super::detect::detect_trace;
+use super::Player;
+use crate::lesson::Lesson;
+use crate::trace::detect::DetectTrace;
+use crate::trace::step::StepTrace;
+use crate::trace::Plane;
+
+/// The outcome when its thread is done (`None` inside: it could not be made).
+type Slot<T> = Arc<Mutex<Option<Option<T>>>>;
+
+/// Work under way on another thread for step `step`.
+#[derive(Clone)]
+pub struct Job<T> {
+    /// The step the work is for.
+    pub step: u64,
+    slot: Slot<T>,
+    cancel: Arc<AtomicBool>,
+}
+
+/// A step's resolution being recorded on another thread.
+pub type Recording = Job<StepTrace>;
+
+/// A step's detection being computed on another thread.
+pub type Detecting = Job<DetectTrace>;
+
+impl<T> std::fmt::Debug for Job<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Job {{ step: {} }}", self.step)
+    }
+}
+
+impl<T: Send + 'static> Job<T> {
+    /// Runs `work` on a new thread; it is handed the cancel flag to check.
+    pub fn spawn(
+        step: u64,
+        work: impl FnOnce(&AtomicBool) -> Option<T> + Send + 'static,
+    ) -> Job<T> {
+        let slot: Slot<T> = Arc::new(Mutex::new(None));
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (out, stop) = (Arc::clone(&slot), Arc::clone(&cancel));
+        std::thread::spawn(move || {
+            let done = work(&stop);
+            if stop.load(Ordering::Relaxed) {
+                return;
+            }
+            if let Ok(mut s) = out.lock() {
+                *s = Some(done);
+            }
+        });
+        Job { step, slot, cancel }
+    }
+
+    /// The outcome once the thread is done (taken: later calls give `None`);
+    /// `Some(None)` when it could not be made (the run blew up).
+    pub fn poll(&self) -> Option<Option<T>> {
+        self.slot.lock().ok()?.take()
+    }
+
+    /// Asks the thread to stop; its outcome, if any, is dropped.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+}
+
+impl Player {
+    /// Whether `d` (a step's detection) goes to another thread: a large scene.
+    pub fn detects_later(&self) -> bool {
+        self.heavy()
+    }
+
+    /// [`Player::detect`] on another thread, for every pair (`None` for a
+    /// step not computed yet).
+    pub fn detect_later(&self, lesson: &Lesson, step: u64, plane: Plane) -> Option<Detecting> {
+        if step > self.computed() {
+            return None;
+        }
+        let (_, from) = self.checkpoints.iter().rev().find(|(s, _)| *s <= step)?;
+        let mut sim = from.clone();
+        let lesson = lesson.clone();
+        Some(Job::spawn(step, move |stop| {
+            while sim.step < step {
+                if stop.load(Ordering::Relaxed) || sim.advance().is_err() {
+                    return None;
+                }
+            }
+            Some(detect_trace(&sim, &lesson, step, plane, None))
+        }))
+    }
+}
