@@ -1,6 +1,7 @@
 //! The support feature of a shape along a direction, as a polygon: a box's
 //! or hull's face most aligned with it; a cylinder's cap (a regular polygon
-//! of [`CAP_SIDES`] sides inscribed in the rim) or its side (the segment of
+//! of [`CAP_SIDES`] sides inscribed in the rim, one corner at the rim's
+//! support point) or its side (the segment of
 //! its two rim points along the direction); a capsule's side segment (the
 //! two end spheres' points along the direction) within about 11° of
 //! perpendicular to its axis; otherwise the single support point.
@@ -82,9 +83,18 @@ pub fn support_face<T: Real>(shape: &Convex, pose: &Pose<T>, dir: &Vector3<T>) -
                 } else {
                     T::one()
                 };
+                // The first corner is the rim's support point along d (its
+                // direction in the cap's plane, at angle t₀ = atan2(d_x, d_z)),
+                // so the polygon holds the rim's deepest point exactly and a
+                // cap resting on a face gets a symmetric set of corners.
+                let start = if radial > c(1e-9) {
+                    dn.x.atan2(dn.z)
+                } else {
+                    T::zero()
+                };
                 let mut rim: Vec<Vector3<T>> = (0..CAP_SIDES)
                     .map(|m| {
-                        let t = c::<T>(std::f64::consts::TAU * m as f64 / CAP_SIDES as f64);
+                        let t = start + c::<T>(std::f64::consts::TAU * m as f64 / CAP_SIDES as f64);
                         Vector3::new(r * t.sin(), s * h, r * t.cos())
                     })
                     .collect();
