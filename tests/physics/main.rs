@@ -24,6 +24,7 @@ mod resolver_alloc;
 mod resolver_properties;
 mod resolver_reference;
 mod resolver_semantics;
+mod resting_convex;
 mod rollback;
 mod scale_invariance;
 mod scenes;
