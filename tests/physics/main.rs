@@ -16,6 +16,7 @@ mod collide_properties;
 mod convex_pairs;
 mod exact_impact;
 mod floors;
+mod hull_manifolds;
 mod hull_pairs;
 mod invariants;
 mod models_and_options;

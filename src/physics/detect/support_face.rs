@@ -121,3 +121,34 @@ pub fn support_face<T: Real>(shape: &Convex, pose: &Pose<T>, dir: &Vector3<T>) -
         Convex::Sphere { .. } => world(vec![shape.local_support(&d)], dn),
     }
 }
+
+/// How far world point `p` lies outside `shape` at `pose` (≤ 0: inside or
+/// on it): a box's max_k |x_k| − h_k, a hull's max over its faces of
+/// n·x − offset, a cylinder's max(|y| − h, √(x² + z²) − r), a sphere's or
+/// capsule's distance to its core less the radius (x in the body frame).
+/// Exact on the flat faces, a bound within the round edges.
+pub fn outside_by<T: Real>(shape: &Convex, pose: &Pose<T>, p: &Vector3<T>) -> T {
+    let x = pose.to_local(p);
+    match shape {
+        Convex::Cuboid { half } => (0..3)
+            .map(|k| x[k].abs() - c::<T>(half[k]))
+            .fold(T::min_value().unwrap_or(-T::one()), T::max),
+        Convex::Hull(hull) => hull
+            .faces()
+            .iter()
+            .map(|f| f.normal.map(c::<T>).dot(&x) - c::<T>(f.offset))
+            .fold(T::min_value().unwrap_or(-T::one()), T::max),
+        Convex::Cylinder {
+            radius,
+            half_height,
+        } => {
+            (x.y.abs() - c::<T>(*half_height)).max((x.x * x.x + x.z * x.z).sqrt() - c::<T>(*radius))
+        }
+        Convex::Sphere { radius } => x.norm() - c::<T>(*radius),
+        Convex::Capsule(cap) => {
+            let h = c::<T>(cap.height / 2.0);
+            let core = Vector3::new(T::zero(), x.y.max(-h).min(h), T::zero());
+            (x - core).norm() - c::<T>(cap.radius)
+        }
+    }
+}
