@@ -172,12 +172,17 @@ fn the_json_depth_and_normal_are_the_contact_the_step_generates() {
         let d = json(args);
         let e = &d["pairs"][0]["epa"];
         let (depth, normal) = step_contact(id, 0, 1, gjk);
+        // The step's deepest contact is the clipped faces' (a box's corner,
+        // the cylinder rim's exact lowest point, the reference face's
+        // normal): EPA's depth is within its stated tolerance of it, its
+        // normal within 1e-9.
+        let tolerance = e["tolerance"].as_f64().unwrap();
         assert!(
-            (e["depth"].as_f64().unwrap() - depth).abs() < 1e-12,
+            (e["depth"].as_f64().unwrap() - depth).abs() <= tolerance.max(1e-12),
             "{id}: {e} vs {depth}"
         );
         assert!(
-            near(v3(&e["normal"]), normal, 1e-12),
+            near(v3(&e["normal"]), normal, 1e-9),
             "{id}: {e} vs {normal:?}"
         );
         // The contacts listed are the step's (to round-off: the command's

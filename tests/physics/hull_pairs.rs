@@ -2,7 +2,7 @@
 //! conventions, a hull box agrees with the analytic box, and the
 //! `hull-stack` scene (three hulls on the floor) stands for 10 s.
 
-use crate::collide_support::{check_pair, pose};
+use crate::collide_support::{check_pair, collide_all, pose};
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::collide::BoxBoxMode;
 use contact_lab::physics::detect::ConvexHull;
@@ -60,8 +60,10 @@ fn a_hull_collides_with_every_shape_and_keeps_the_conventions() {
         // The floor through y = 0.5, where the box's top is.
         let lift = if other.is_finite() { 0.0 } else { 0.5 };
         let at = pose([0.0, lift, 0.0], UnitQuaternion::identity());
-        // A ball on a vertex: the midway point along the normal lies off
-        // the vertex's side by up to about half the depth (depth ≈ 0.08).
+        // A ball on a vertex: the point is midway between the vertex and
+        // the ball's deepest point (as box–sphere puts it; see the closed
+        // form below), which lies outside the hull beside a sharp vertex by
+        // up to half the depth (depth ≈ 0.08).
         let curved = matches!(other, Shape::Sphere { .. } | Shape::Capsule { .. });
         let extra = if curved { 0.05 } else { 0.0 };
         let out = check_pair(
@@ -158,4 +160,64 @@ fn three_hulls_stacked_stand_for_ten_seconds_without_gaining_energy() {
             b.state.velocity
         );
     }
+}
+
+#[test]
+fn a_sphere_on_a_hull_vertex_touches_on_the_line_through_the_vertex() {
+    // Closed form: centre c, radius r, vertex v at distance d < r: depth
+    // r − d along n = (c − v)/d (hull → sphere), the point midway between
+    // the vertex and the sphere's deepest point c − r n, i.e. v − ½ depth n,
+    // as box–sphere puts it (on the line of the normal through both).
+    let ball = Shape::Sphere { radius: 0.5 };
+    let turn = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
+    let (hull, at) = (tetra(), pose([0.0, 0.0, 0.0], turn));
+    let top = [1.0, 1.0, 1.0].map(|x| 0.4 * x);
+    let v = at.to_world(&Vector3::from(top));
+    for (dir, d) in [
+        (Vector3::new(0.3, 1.0, 0.2), 0.45),
+        (Vector3::new(0.1, 0.6, 1.0), 0.3),
+        (Vector3::new(1.0, 1.0, 1.0), 0.49),
+    ] {
+        // Keep the direction in the vertex's normal cone: the hull's point
+        // nearest the centre must be the vertex.
+        let n = (turn * dir).normalize();
+        let c = v + n * d;
+        let sphere = pose([c.x, c.y, c.z], UnitQuaternion::identity());
+        let out = collide_all((&ball, &sphere), (&hull, &at), BoxBoxMode::Manifold);
+        assert_eq!(out.len(), 1, "{out:?}");
+        let k = out[0];
+        let depth = 0.5 - d;
+        assert!((k.penetration - depth).abs() < 1e-9, "{k:?} vs {depth}");
+        assert!((k.normal - n).norm() < 1e-9, "{k:?} vs {n}");
+        let expected = v - n * (0.5 * depth);
+        assert!(
+            (k.point - expected).norm() < 1e-9,
+            "{:?} is {} from v − ½ depth n",
+            k.point,
+            (k.point - expected).norm()
+        );
+    }
+    // The same at a box's corner: the analytic box–sphere routine and the
+    // hull of the box's corners (GJK with the sphere's margin) agree.
+    let sides = [1.0, 0.6, 0.8];
+    let corner = Vector3::new(0.5, 0.3, 0.4);
+    let at = pose([0.2, -0.1, 0.3], turn);
+    let c = at.to_world(&(corner + Vector3::new(0.2, 0.25, 0.15).normalize() * 0.42));
+    let sphere = pose([c.x, c.y, c.z], UnitQuaternion::identity());
+    let analytic = collide_all(
+        (&ball, &sphere),
+        (&Shape::Box { sides }, &at),
+        BoxBoxMode::Manifold,
+    );
+    let hulled = collide_all(
+        (&ball, &sphere),
+        (&hull_box(sides), &at),
+        BoxBoxMode::Manifold,
+    );
+    assert_eq!((analytic.len(), hulled.len()), (1, 1));
+    let (a, h) = (analytic[0], hulled[0]);
+    assert!((a.penetration - 0.08).abs() < 1e-9, "{a:?}");
+    assert!((a.penetration - h.penetration).abs() < 1e-9, "{a:?} {h:?}");
+    assert!((a.normal - h.normal).norm() < 1e-9, "{a:?} {h:?}");
+    assert!((a.point - h.point).norm() < 1e-9, "{a:?} {h:?}");
 }

@@ -60,9 +60,10 @@ pub(super) fn convex_pair<T: Real>(
         rotation: pa.rotation,
     };
     let mut points = manifold(&a, &touching, &b, pb, &pen);
-    // A cylinder's cap is clipped as a polygon of `CAP_SIDES` sides, which
-    // can miss the rim's deepest point: then EPA's point joins the manifold,
-    // so that its deepest contact is the pair's depth.
+    // A cylinder's cap is a polygon of `CAP_SIDES` sides starting at the
+    // rim's deepest point; where clipping loses that point (a cap as the
+    // reference face, or hanging over the other face's edge), EPA's point
+    // joins the manifold, so that its deepest contact is the pair's depth.
     let deepest = points
         .iter()
         .map(|m| m.penetration)

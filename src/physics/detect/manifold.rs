@@ -2,11 +2,12 @@
 //! penetration normal; the one more aligned with it is the reference face,
 //! the other (the incident face) is clipped against the reference face's side
 //! planes (Sutherland–Hodgman), and the clipped points below the reference
-//! face are the contacts, each with its own depth n_ref·(r₀ − q). More than
-//! 4 are reduced to 4: the deepest, the farthest from it, the one making the
-//! largest triangle with them, and the one adding the most area beyond that
-//! triangle. Boxes, hulls and cylinder caps (see [`CAP_SIDES`]) are polygons;
-//! a cylinder's or capsule's side is a segment, clipped the same way. Where
+//! face and inside the reference body are the contacts, each with its own
+//! depth n_ref·(r₀ − q). More than 4 are reduced to 4: the deepest, the
+//! farthest from it, the one making the largest triangle with them, and the
+//! one adding the most area beyond that triangle. Boxes, hulls and cylinder
+//! caps (see [`CAP_SIDES`]) are polygons; a cylinder's or capsule's side is
+//! a segment, clipped the same way. Where
 //! neither face is a polygon (spheres, capsule ends, two sides), the single
 //! point of the penetration is the manifold; so it is where no polygon face
 //! lies within 1° of the normal (two edges crossing).
@@ -16,7 +17,7 @@ use nalgebra::Vector3;
 use super::query::Penetration;
 use super::support::Convex;
 pub use super::support_face::CAP_SIDES;
-use super::support_face::{support_face, SupportFace};
+use super::support_face::{outside_by, support_face, SupportFace};
 use crate::physics::pose::{Pose, Side};
 use crate::physics::{c, Real};
 
@@ -71,6 +72,10 @@ pub fn manifold<T: Real>(
     } else {
         -reference.normal
     };
+    let (ref_shape, ref_pose) = match side {
+        Side::A => (a, pose_a),
+        Side::B => (b, pose_b),
+    };
     let clipped = clip(&incident.points, &reference);
     let size = reference
         .points
@@ -88,6 +93,10 @@ pub fn manifold<T: Real>(
             reference: Some(side),
         })
         .filter(|m| m.penetration >= -tol)
+        // Below the reference face and within its side planes, a point can
+        // still lie outside the reference body through a slanted side (a
+        // hull's; a deep pair): it touches nothing there.
+        .filter(|m| outside_by(ref_shape, ref_pose, &m.point) <= tol)
         .collect();
     if points.is_empty() {
         return single;

@@ -1,6 +1,7 @@
 //! The support feature of a shape along a direction, as a polygon: a box's
 //! or hull's face most aligned with it; a cylinder's cap (a regular polygon
-//! of [`CAP_SIDES`] sides inscribed in the rim) or its side (the segment of
+//! of [`CAP_SIDES`] sides inscribed in the rim, one corner at the rim's
+//! support point) or its side (the segment of
 //! its two rim points along the direction); a capsule's side segment (the
 //! two end spheres' points along the direction) within about 11° of
 //! perpendicular to its axis; otherwise the single support point.
@@ -82,9 +83,18 @@ pub fn support_face<T: Real>(shape: &Convex, pose: &Pose<T>, dir: &Vector3<T>) -
                 } else {
                     T::one()
                 };
+                // The first corner is the rim's support point along d (its
+                // direction in the cap's plane, at angle t₀ = atan2(d_x, d_z)),
+                // so the polygon holds the rim's deepest point exactly and a
+                // cap resting on a face gets a symmetric set of corners.
+                let start = if radial > c(1e-9) {
+                    dn.x.atan2(dn.z)
+                } else {
+                    T::zero()
+                };
                 let mut rim: Vec<Vector3<T>> = (0..CAP_SIDES)
                     .map(|m| {
-                        let t = c::<T>(std::f64::consts::TAU * m as f64 / CAP_SIDES as f64);
+                        let t = start + c::<T>(std::f64::consts::TAU * m as f64 / CAP_SIDES as f64);
                         Vector3::new(r * t.sin(), s * h, r * t.cos())
                     })
                     .collect();
@@ -109,5 +119,36 @@ pub fn support_face<T: Real>(shape: &Convex, pose: &Pose<T>, dir: &Vector3<T>) -
             }
         }
         Convex::Sphere { .. } => world(vec![shape.local_support(&d)], dn),
+    }
+}
+
+/// How far world point `p` lies outside `shape` at `pose` (≤ 0: inside or
+/// on it): a box's max_k |x_k| − h_k, a hull's max over its faces of
+/// n·x − offset, a cylinder's max(|y| − h, √(x² + z²) − r), a sphere's or
+/// capsule's distance to its core less the radius (x in the body frame).
+/// Exact on the flat faces, a bound within the round edges.
+pub fn outside_by<T: Real>(shape: &Convex, pose: &Pose<T>, p: &Vector3<T>) -> T {
+    let x = pose.to_local(p);
+    match shape {
+        Convex::Cuboid { half } => (0..3)
+            .map(|k| x[k].abs() - c::<T>(half[k]))
+            .fold(T::min_value().unwrap_or(-T::one()), T::max),
+        Convex::Hull(hull) => hull
+            .faces()
+            .iter()
+            .map(|f| f.normal.map(c::<T>).dot(&x) - c::<T>(f.offset))
+            .fold(T::min_value().unwrap_or(-T::one()), T::max),
+        Convex::Cylinder {
+            radius,
+            half_height,
+        } => {
+            (x.y.abs() - c::<T>(*half_height)).max((x.x * x.x + x.z * x.z).sqrt() - c::<T>(*radius))
+        }
+        Convex::Sphere { radius } => x.norm() - c::<T>(*radius),
+        Convex::Capsule(cap) => {
+            let h = c::<T>(cap.height / 2.0);
+            let core = Vector3::new(T::zero(), x.y.max(-h).min(h), T::zero());
+            (x - core).norm() - c::<T>(cap.radius)
+        }
     }
 }

@@ -155,3 +155,45 @@ fn hulls_and_boxes_rest_on_each_other_with_four_points() {
         .iter()
         .all(|p| (p.penetration - 0.01).abs() < 1e-9 && p.reference == Some(Side::B)));
 }
+
+#[test]
+fn a_tilted_cap_keeps_the_rims_deepest_point_and_a_balanced_set() {
+    // A cap tilted 0.5° (its rim 7 mm higher on one side than on the
+    // other, all of it below the face) about an axis that puts the rim's
+    // lowest point between two corners of a fixed polygon: the polygon
+    // starts at the rim's support point, so the manifold's deepest point is
+    // EPA's, on the rim, and the four points are two opposite pairs
+    // (centroid on the axis).
+    let (b, pb) = floor();
+    let (r, h) = (0.4, 0.6);
+    let a = Convex::Cylinder {
+        radius: r,
+        half_height: h,
+    };
+    let axis = nalgebra::Unit::new_normalize(Vector3::new(1.0, 0.0, 0.37));
+    let tilt = 0.5f64.to_radians();
+    let turn = UnitQuaternion::from_axis_angle(&axis, tilt);
+    // The lowest rim point sits h·cos θ + r·sin θ below the centre: 1 cm deep.
+    let pa = Pose::from_unit(
+        Vector3::new(0.1, h * tilt.cos() + r * tilt.sin() - 0.01, -0.2),
+        &turn,
+    );
+    let q = query(&a, &pa, &b, &pb, &QueryOptions::default(), &mut (), &mut ());
+    let pen = q.penetration.expect("overlapping");
+    assert!((pen.depth - 0.01).abs() < 1e-9, "{pen:?}");
+    let m = manifold(&a, &pa, &b, &pb, &pen);
+    assert_eq!(m.len(), 4, "{m:?}");
+    let deepest = m.iter().map(|p| p.penetration).fold(f64::MIN, f64::max);
+    assert!(
+        (deepest - pen.depth).abs() < 1e-9,
+        "{deepest} vs {}",
+        pen.depth
+    );
+    let local: Vec<Vector3<f64>> = m.iter().map(|p| pa.to_local(&p.point)).collect();
+    for p in &local {
+        assert!((p.y + h).abs() < 1e-9, "on the bottom cap: {p}");
+        assert!((p.xz().norm() - r).abs() < 1e-9, "on the rim: {p}");
+    }
+    let centroid = local.iter().sum::<Vector3<f64>>() / 4.0;
+    assert!(centroid.xz().norm() < 1e-9, "balanced: {centroid}");
+}
