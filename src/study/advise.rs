@@ -270,9 +270,9 @@ impl Evaluator<'_> {
     }
 }
 
-/// Work per simulated second: (visits + 1) per step × steps / seconds.
+/// Work per simulated second: (visits + ccd tests + 1) per step × steps / seconds.
 pub fn cost(m: &run::Measured, seconds: f64) -> f64 {
-    (m.visits_per_step + 1.0) * m.steps as f64 / seconds
+    (m.visits_per_step + m.ccd_tests_per_step + 1.0) * m.steps as f64 / seconds
 }
 
 /// `a` cheaper than `b` beyond a tie.

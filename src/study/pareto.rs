@@ -11,9 +11,10 @@ use crate::physics::Solver;
 const ERROR_TIE_RELATIVE: f64 = 1e-6;
 const ERROR_TIE_ABSOLUTE: f64 = 1e-12;
 
-/// A row's cost for the front: its contact visits per step (deterministic).
+/// A row's cost for the front: its work per step (contact visits and
+/// continuous detection's tests, deterministic: [`Row::work`]).
 fn cost_of(r: &Row) -> f64 {
-    r.visits_per_step
+    r.work()
 }
 
 /// `a` below `b` beyond round-off.
@@ -61,8 +62,8 @@ pub fn mark(rows: &mut [Row]) {
 pub fn front(rows: &[Row]) -> Vec<&Row> {
     let mut f: Vec<&Row> = rows.iter().filter(|r| r.pareto).collect();
     f.sort_by(|a, b| {
-        a.visits_per_step
-            .total_cmp(&b.visits_per_step)
+        a.work()
+            .total_cmp(&b.work())
             .then(b.error_vs_reference.total_cmp(&a.error_vs_reference))
     });
     f
@@ -83,8 +84,20 @@ fn at_budget<'a>(rows: &'a [Row], label: &str, per_contact: usize) -> Option<&'a
 /// are quoted in contact visits per step (deterministic) whether or not
 /// timing is on, so the same study gives the same sentence.
 pub fn verdict(study: &SceneStudy) -> String {
-    let cost_unit = "visits/step";
     let fmt = Fmt::new(2);
+    // Work as the table shows it: continuous detection's tests named
+    // where a row made any.
+    let work = |r: &Row| {
+        if r.ccd_tests_per_step > 0.0 {
+            format!(
+                "{} visits + {} ccd tests/step",
+                fmt.num(r.visits_per_step),
+                fmt.num(r.ccd_tests_per_step)
+            )
+        } else {
+            format!("{} visits/step", fmt.num(r.visits_per_step))
+        }
+    };
     let f = front(&study.rows);
     let (Some(cheap), Some(best)) = (f.first(), f.last()) else {
         return "No configuration finished: nothing to compare.".into();
@@ -92,19 +105,19 @@ pub fn verdict(study: &SceneStudy) -> String {
     let name = |r: &Row| format!("{} = {}", r.knob, r.value);
     let mut s = if f.len() == 1 {
         format!(
-            "One configuration is both the cheapest and the most accurate: {} ({} {cost_unit}, error {} m)",
+            "One configuration is both the cheapest and the most accurate: {} ({}, error {} m)",
             name(cheap),
-            fmt.num(cheap.visits_per_step),
+            work(cheap),
             fmt.num(cheap.error_vs_reference),
         )
     } else {
         format!(
-            "The front runs from {} ({} {cost_unit}, error {} m) to {} ({} {cost_unit}, error {} m)",
+            "The front runs from {} ({}, error {} m) to {} ({}, error {} m)",
             name(cheap),
-            fmt.num(cheap.visits_per_step),
+            work(cheap),
             fmt.num(cheap.error_vs_reference),
             name(best),
-            fmt.num(best.visits_per_step),
+            work(best),
             fmt.num(best.error_vs_reference),
         )
     };
