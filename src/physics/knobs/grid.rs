@@ -12,6 +12,12 @@ pub enum Needs {
     Friction,
     /// Two boxes or more.
     BoxPairs,
+    /// Bodies that can end deep in one another: a mass ratio above 10
+    /// between two movable bodies (the light one's contacts give way under
+    /// the heavy one), or a body that crosses half the thinnest other body
+    /// in one step (a tunnelling scene). Only the study's default grid reads
+    /// it: `advise` searches such a knob in every scene.
+    Penetration,
 }
 
 /// `friction_model`.
@@ -36,5 +42,8 @@ pub const CCD: &[&str] = &["none", "bisection", "conservative"];
 pub const BOX_BOX: &[&str] = &["single", "manifold"];
 /// `narrow_phase`.
 pub const NARROW_PHASE: &[&str] = &["analytic", "gjk"];
+/// `rollback`: the lecture's projection against rolling back to the time
+/// of collision, in the scenes where a pair can be found deep and closing.
+pub const ROLLBACK: &[&str] = &["projection", "rollback"];
 /// `sleep`.
 pub const SLEEP: &[&str] = &["true", "false"];

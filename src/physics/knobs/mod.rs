@@ -515,8 +515,8 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &[],
-        needs: Needs::Always,
+        grid: grid::ROLLBACK,
+        needs: Needs::Penetration,
         get: |s| Value::Choice(s.scene.rollback.name()),
         set: |s, v| {
             if let Some(m) = Rollback::from_name(choice(v)) {
