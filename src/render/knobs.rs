@@ -50,7 +50,7 @@ fn values(k: &Knob) -> String {
 pub fn markdown() -> String {
     let mut out = String::from(
         "# Knobs\n\n\
-         Every tunable of contact-lab, declared once in `src/physics/knobs.rs`; this page is\n\
+         Every tunable of contact-lab, declared once in `src/physics/knobs/mod.rs`; this page is\n\
          generated from that table (`contact-lab knobs`; a test keeps it current).\n\n\
          A knob has one name: the key in a lesson file's table, the key in JSON and in the\n\
          study's `--grid`, and, with `-` for `_`, the command-line flag (`relaxation`,\n\

@@ -38,7 +38,7 @@ pub struct Exercised {
 }
 
 /// The thinnest extent of a shape (m); a half-space has none.
-fn thinnest(shape: &Option<Shape>) -> f64 {
+pub fn thinnest(shape: &Option<Shape>) -> f64 {
     match shape {
         Some(Shape::Sphere { radius } | Shape::HollowSphere { radius }) => 2.0 * radius,
         Some(Shape::Box { sides }) => sides.iter().copied().fold(f64::INFINITY, f64::min),

@@ -169,6 +169,55 @@ fn probe_config() -> Config {
 pub struct Features {
     pub friction: bool,
     pub box_pairs: bool,
+    /// Bodies that can end deep in one another ([`Needs::Penetration`]).
+    pub penetration: bool,
+}
+
+impl Features {
+    /// True when the scene has what `needs` asks for.
+    pub fn meet(&self, needs: Needs) -> bool {
+        match needs {
+            Needs::Always => true,
+            Needs::Friction => self.friction,
+            Needs::BoxPairs => self.box_pairs,
+            Needs::Penetration => self.penetration,
+        }
+    }
+}
+
+/// [`Needs::Penetration`] from the lesson's bodies at the start: two movable
+/// bodies whose masses differ more than [`super::exercised::HEAVY`] times,
+/// or a movable body whose speed — its own, plus what it gains falling to
+/// the lowest other body, √(v² + 2 g h) — crosses more than
+/// [`super::exercised::FAST`] of the thinnest other body in one step of the
+/// scene's dt.
+fn penetration(lesson: &Lesson) -> bool {
+    let Some(scene) = lesson.simulation.as_ref() else {
+        return false;
+    };
+    let g = scene.world.gravity.norm();
+    let up = if g > 0.0 {
+        -scene.world.gravity / g
+    } else {
+        nalgebra::Vector3::zeros()
+    };
+    let movable: Vec<_> = lesson.bodies.iter().filter(|b| b.movable()).collect();
+    let heavy = movable.iter().any(|a| {
+        movable
+            .iter()
+            .any(|b| a.mass > super::exercised::HEAVY * b.mass)
+    });
+    let fast = movable.iter().any(|a| {
+        lesson.bodies.iter().any(|o| {
+            if std::ptr::eq(*a, o) {
+                return false;
+            }
+            let h = (a.position - o.position).dot(&up).max(0.0);
+            let speed = (a.velocity.norm_squared() + 2.0 * g * h).sqrt();
+            speed * scene.dt > super::exercised::FAST * super::exercised::thinnest(&o.shape)
+        })
+    });
+    heavy || fast
 }
 
 pub fn features(lesson: &Lesson) -> Features {
@@ -185,6 +234,7 @@ pub fn features(lesson: &Lesson) -> Features {
     Features {
         friction,
         box_pairs: boxes >= 2,
+        penetration: penetration(lesson),
     }
 }
 
@@ -281,12 +331,7 @@ pub fn rows(
     }
     one("precision", &["f32"], &mut out);
     for knob in super::study_knobs().filter(|k| !k.grid.is_empty()) {
-        let wanted = match knob.needs {
-            Needs::Always => true,
-            Needs::Friction => features.friction,
-            Needs::BoxPairs => features.box_pairs,
-        };
-        if wanted {
+        if features.meet(knob.needs) {
             one(knob.name, knob.grid, &mut out);
         }
     }

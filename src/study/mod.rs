@@ -126,6 +126,9 @@ pub struct Row {
     pub microseconds: Option<[f64; 3]>,
     /// Contact visits (both phases) per step, mean over the run.
     pub visits_per_step: f64,
+    /// Continuous detection's time-of-collision tests (GJK calls) per step,
+    /// mean over the run (0 with `ccd = "none"`).
+    pub ccd_tests_per_step: f64,
     /// Steps in which a phase stopped at its limit with work left.
     pub limit_steps: usize,
     pub steps: usize,
@@ -143,9 +146,16 @@ pub struct Row {
 }
 
 impl Row {
-    /// The cost the front is drawn against: µs per step when timed, else visits per step.
+    /// Deterministic work per step: contact visits plus continuous
+    /// detection's tests, one GJK call counted as one visit.
+    pub fn work(&self) -> f64 {
+        self.visits_per_step + self.ccd_tests_per_step
+    }
+
+    /// The cost the front is drawn against: µs per step when timed, else
+    /// the work per step ([`Row::work`]).
     pub fn cost(&self) -> f64 {
-        self.microseconds.map_or(self.visits_per_step, |m| m[0])
+        self.microseconds.map_or(self.work(), |m| m[0])
     }
 }
 

@@ -11,9 +11,10 @@ use crate::physics::Solver;
 const ERROR_TIE_RELATIVE: f64 = 1e-6;
 const ERROR_TIE_ABSOLUTE: f64 = 1e-12;
 
-/// A row's cost for the front: its contact visits per step (deterministic).
+/// A row's cost for the front: its work per step (contact visits and
+/// continuous detection's tests, deterministic: [`Row::work`]).
 fn cost_of(r: &Row) -> f64 {
-    r.visits_per_step
+    r.work()
 }
 
 /// `a` below `b` beyond round-off.
@@ -61,8 +62,8 @@ pub fn mark(rows: &mut [Row]) {
 pub fn front(rows: &[Row]) -> Vec<&Row> {
     let mut f: Vec<&Row> = rows.iter().filter(|r| r.pareto).collect();
     f.sort_by(|a, b| {
-        a.visits_per_step
-            .total_cmp(&b.visits_per_step)
+        a.work()
+            .total_cmp(&b.work())
             .then(b.error_vs_reference.total_cmp(&a.error_vs_reference))
     });
     f
@@ -78,13 +79,85 @@ fn at_budget<'a>(rows: &'a [Row], label: &str, per_contact: usize) -> Option<&'a
     })
 }
 
+/// `a` against `b` in a word: less, more, or the same (within round-off).
+fn compared(a: f64, b: f64) -> &'static str {
+    if less_error(a, b) {
+        "less"
+    } else if less_error(b, a) {
+        "more"
+    } else {
+        "the same"
+    }
+}
+
+/// Where the grid turns `rollback` (scenes that can end deep in one
+/// another): that row against the default's, on what rolling back trades —
+/// penetration left, energy gained (a body rolled back against gravity
+/// gains potential energy), work and error; all deterministic, so the same
+/// study says the same sentence.
+fn rollback_sentence(study: &SceneStudy, fmt: &Fmt) -> Option<String> {
+    let default = study.rows.iter().find(|r| r.knob == "default")?;
+    let other = study.rows.iter().find(|r| r.knob == "rollback")?;
+    let (to, from) = (
+        other.config.params.rollback.name(),
+        default.config.params.rollback.name(),
+    );
+    if other.failure.is_some() || default.failure.is_some() {
+        return Some(format!(
+            "Rollback: with rollback = {to} instead of {from} (the default) a run blew up, so the two do not compare."
+        ));
+    }
+    let pairs = [
+        (other.max_penetration, default.max_penetration),
+        (other.energy_gain, default.energy_gain),
+        (other.work(), default.work()),
+        (other.error_vs_reference, default.error_vs_reference),
+    ];
+    if pairs.iter().all(|&(a, b)| compared(a, b) == "the same") {
+        return Some(format!(
+            "Rollback: rollback = {to} changes nothing against {from} here: no pair was found deeper than position_epsilon while closing, so none had a time of collision to go back to."
+        ));
+    }
+    Some(format!(
+        "Rollback: with rollback = {to} instead of {from} (the default) the run leaves {} penetration ({} m against {} m), gains {} energy ({} J against {} J), does {} work ({} against {} visits/step) and ends {} the reference ({} m against {} m).",
+        compared(pairs[0].0, pairs[0].1),
+        fmt.num(pairs[0].0),
+        fmt.num(pairs[0].1),
+        compared(pairs[1].0, pairs[1].1),
+        fmt.num(pairs[1].0),
+        fmt.num(pairs[1].1),
+        compared(pairs[2].0, pairs[2].1),
+        fmt.num(pairs[2].0),
+        fmt.num(pairs[2].1),
+        match compared(pairs[3].0, pairs[3].1) {
+            "less" => "nearer to",
+            "more" => "further from",
+            _ => "as far from",
+        },
+        fmt.num(pairs[3].0),
+        fmt.num(pairs[3].1),
+    ))
+}
+
 /// One sentence: the cheapest and the most accurate configuration of the
 /// front, and the two solvers at equal work (8 visits per contact). Costs
 /// are quoted in contact visits per step (deterministic) whether or not
 /// timing is on, so the same study gives the same sentence.
 pub fn verdict(study: &SceneStudy) -> String {
-    let cost_unit = "visits/step";
     let fmt = Fmt::new(2);
+    // Work as the table shows it: continuous detection's tests named
+    // where a row made any.
+    let work = |r: &Row| {
+        if r.ccd_tests_per_step > 0.0 {
+            format!(
+                "{} visits + {} ccd tests/step",
+                fmt.num(r.visits_per_step),
+                fmt.num(r.ccd_tests_per_step)
+            )
+        } else {
+            format!("{} visits/step", fmt.num(r.visits_per_step))
+        }
+    };
     let f = front(&study.rows);
     let (Some(cheap), Some(best)) = (f.first(), f.last()) else {
         return "No configuration finished: nothing to compare.".into();
@@ -92,19 +165,19 @@ pub fn verdict(study: &SceneStudy) -> String {
     let name = |r: &Row| format!("{} = {}", r.knob, r.value);
     let mut s = if f.len() == 1 {
         format!(
-            "One configuration is both the cheapest and the most accurate: {} ({} {cost_unit}, error {} m)",
+            "One configuration is both the cheapest and the most accurate: {} ({}, error {} m)",
             name(cheap),
-            fmt.num(cheap.visits_per_step),
+            work(cheap),
             fmt.num(cheap.error_vs_reference),
         )
     } else {
         format!(
-            "The front runs from {} ({} {cost_unit}, error {} m) to {} ({} {cost_unit}, error {} m)",
+            "The front runs from {} ({}, error {} m) to {} ({}, error {} m)",
             name(cheap),
-            fmt.num(cheap.visits_per_step),
+            work(cheap),
             fmt.num(cheap.error_vs_reference),
             name(best),
-            fmt.num(best.visits_per_step),
+            work(best),
             fmt.num(best.error_vs_reference),
         )
     };
@@ -130,6 +203,10 @@ pub fn verdict(study: &SceneStudy) -> String {
         ));
     }
     s.push('.');
+    if let Some(r) = rollback_sentence(study, &fmt) {
+        s.push(' ');
+        s.push_str(&r);
+    }
     if let Some(missing) = study.partial {
         s.push_str(&format!(
             " The grid is partial (quick): {missing} rows of the full grid were not run, and they could move the front; the solvers are compared on the same rows as the full grid's."

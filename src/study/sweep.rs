@@ -75,6 +75,7 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
                 config,
                 microseconds,
                 visits_per_step: m.visits_per_step,
+                ccd_tests_per_step: m.ccd_tests_per_step,
                 limit_steps: m.limit_steps,
                 steps: m.steps,
                 max_penetration: m.max_penetration,

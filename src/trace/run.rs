@@ -134,6 +134,7 @@ impl RunTrace {
             ),
             position_iterations: 0,
             velocity_iterations: 0,
+            ccd_tests: 0,
             events: Vec::new(),
         };
         Self::frame(sim, &report)

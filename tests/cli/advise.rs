@@ -192,3 +192,59 @@ fn the_study_svg_keeps_its_legend_inside_one_style_per_row_front_and_reference()
         assert!(svg.contains(&contact_lab::render::study::svg::row_name(r).replace('&', "&amp;")));
     }
 }
+
+/// The rollback knob is in the full default grid where bodies can end deep
+/// in one another (mass-ratio-stack's 1:100 masses, bullet-wall's bullet)
+/// and not elsewhere (resting-box). On mass-ratio-stack the heavy box sinks
+/// into the light one under projection; rolled back it is lifted to where
+/// the pair met, so the row leaves a seventh of the penetration and gains
+/// the potential energy of the lift; the same timed study twice gives the
+/// same marks and says the same sentence about it.
+#[test]
+fn rollback_is_in_the_grid_where_pairs_end_deep_and_its_sentence_holds() {
+    let in_grid = |id: &str| {
+        let l = lesson(id);
+        let d = grid::default_config(&l).unwrap();
+        grid::rows(&d, grid::features(&l), false, &[])
+            .iter()
+            .any(|(knob, _, _)| knob == "rollback")
+    };
+    assert!(in_grid("mass-ratio-stack") && in_grid("bullet-wall"));
+    assert!(!in_grid("resting-box"));
+    let o = sweep::Options {
+        timed: true,
+        repeats: 1,
+        quick: false,
+        grid: Vec::new(),
+    };
+    let s = specs(&["mass-ratio-stack"], 0.5);
+    let (a, b) = (
+        sweep::study(&s, &o, &mut |_, _| {}),
+        sweep::study(&s, &o, &mut |_, _| {}),
+    );
+    let marks = |s: &contact_lab::study::SceneStudy| {
+        s.rows
+            .iter()
+            .map(|r| (r.value.clone(), r.pareto))
+            .collect::<Vec<_>>()
+    };
+    let (x, y) = (&a.scenes[0], &b.scenes[0]);
+    assert_eq!(marks(x), marks(y));
+    assert_eq!(x.verdict, y.verdict);
+    let row = |knob: &str| x.rows.iter().find(|r| r.knob == knob).unwrap();
+    let (projected, rolled) = (row("default"), row("rollback"));
+    assert!(
+        rolled.max_penetration < projected.max_penetration / 5.0,
+        "{} vs {}",
+        rolled.max_penetration,
+        projected.max_penetration
+    );
+    assert!(rolled.energy_gain > projected.energy_gain + 1.0);
+    assert!(
+        x.verdict.contains(
+            "Rollback: with rollback = rollback instead of projection (the default) the run leaves less penetration"
+        ),
+        "{}",
+        x.verdict
+    );
+}

@@ -69,6 +69,8 @@ fn json_rows_carry_the_contract_and_mark_a_front() {
                 "drift",
                 "error_vs_reference",
                 "pareto",
+                "contact_visits_per_step",
+                "ccd_tests_per_step",
             ] {
                 assert!(r.get(key).is_some(), "{key} in {r}");
             }
@@ -138,6 +140,52 @@ fn a_user_grid_runs_its_cross_product() {
     // The default and the four combinations.
     assert_eq!(rows.len(), 5);
     assert_eq!(rows[1]["value"], "solver=deepest_first, budget=1");
+}
+
+/// Continuous detection's work is in the deterministic cost: on
+/// bullet-wall (no contact is ever resolved by the phases, so every row
+/// makes 0 contact visits) each ccd row, every other knob as the default's
+/// `ccd = "none"`, does more work than the default, by its time-of-collision
+/// tests, and is not starred for free.
+#[test]
+fn ccd_rows_cost_their_time_of_collision_tests() {
+    let (code, out, err) = run(&[
+        "study",
+        "bullet-wall",
+        "--no-timing",
+        "--grid",
+        "ccd=none,bisection,conservative",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: J = serde_json::from_str(&out).unwrap();
+    let rows = v["scenes"][0]["rows"].as_array().unwrap();
+    let work = |r: &J| {
+        r["contact_visits_per_step"].as_f64().unwrap() + r["ccd_tests_per_step"].as_f64().unwrap()
+    };
+    let none = &rows[0];
+    assert_eq!(none["config"]["ccd"], "none");
+    assert_eq!(none["ccd_tests_per_step"], 0.0);
+    let without_ccd = |r: &J| {
+        let mut c = r["config"].clone();
+        c.as_object_mut().unwrap().remove("ccd");
+        c
+    };
+    for method in ["bisection", "conservative"] {
+        let r = rows
+            .iter()
+            .find(|r| r["config"]["ccd"] == method)
+            .unwrap_or_else(|| panic!("a {method} row"));
+        assert_eq!(without_ccd(r), without_ccd(none), "only ccd differs");
+        assert!(r["ccd_tests_per_step"].as_f64().unwrap() > 0.0, "{r}");
+        assert!(
+            work(r) > work(none),
+            "{method}: {} vs {}",
+            work(r),
+            work(none)
+        );
+    }
 }
 
 #[test]

@@ -145,6 +145,9 @@ pub struct StepReport {
     pub potential_energy: f64,
     pub position_iterations: usize,
     pub velocity_iterations: usize,
+    /// Continuous detection's work: the GJK calls of its time-of-collision
+    /// searches this step (0 with `ccd = "none"`).
+    pub ccd_tests: usize,
     pub events: Vec<Event>,
 }
 

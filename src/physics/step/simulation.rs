@@ -312,6 +312,7 @@ impl<T: Real> Simulation<T> {
             potential_energy: to_f64(energy::potential(&self.world, &p.world.gravity)),
             position_iterations: position.iterations_used,
             velocity_iterations: velocity.iterations_used,
+            ccd_tests: spent.tests,
             events,
         })
     }

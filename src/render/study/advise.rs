@@ -90,10 +90,18 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     out.push((
         "The search".into(),
         vec![format!(
-            "coordinate descent from the reference ({}): each pass tries every value of one dimension with the others held and keeps the cheapest within the target; {} passes, {} configurations run, {} steps simulated ({} s each)",
-            a.reference,
-            a.passes,
+            "searched {} configurations in {} s: coordinate descent from the reference ({}){}, each pass trying every value of one dimension with the others held and keeping the cheapest within the target; where no single change helps, pair moves (each value that alone cuts the cost with every value of another dimension) restart it from the cheapest pair within the target; {} passes, {} pair moves taken of {} pairs tried, {} steps simulated ({} s each)",
             a.runs,
+            num(fmt, a.wall_seconds),
+            a.reference,
+            if a.per == crate::study::advise::Per::Run {
+                " and from where the same descent against the per-step error stops"
+            } else {
+                ""
+            },
+            a.passes,
+            a.escapes,
+            a.pairs,
             a.steps,
             num(fmt, a.seconds)
         )],
@@ -160,8 +168,13 @@ pub fn json(a: &Advice) -> String {
         "exercised": findings(&a.exercised).iter().map(|f| json!({
             "feature": f.feature, "present": f.present, "evidence": f.evidence, "calls_for": f.calls_for,
         })).collect::<Vec<_>>(),
-        "search": { "method": "coordinate descent from the reference", "passes": a.passes,
-                    "configurations": a.runs, "steps": a.steps },
+        "search": { "method": if a.per == crate::study::advise::Per::Run {
+                        "coordinate descent from the reference and from the per-step descent's stop, with pair moves out of local optima"
+                    } else {
+                        "coordinate descent from the reference, with pair moves out of local optima"
+                    },
+                    "passes": a.passes, "pair_moves": a.escapes, "pairs_tried": a.pairs,
+                    "configurations": a.runs, "steps": a.steps, "seconds": a.wall_seconds },
     });
     serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
 }

@@ -39,6 +39,7 @@ pub fn render(study: &Study) -> String {
     }
     head.extend([
         "contact_visits_per_step",
+        "ccd_tests_per_step",
         "limit_steps",
         "steps",
         "max_penetration",
@@ -67,6 +68,7 @@ fn line(scene: &str, r: &Row, timed: bool) -> String {
     }
     f.extend([
         number(r.visits_per_step),
+        number(r.ccd_tests_per_step),
         r.limit_steps.to_string(),
         r.steps.to_string(),
         number(r.max_penetration),

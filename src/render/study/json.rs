@@ -45,6 +45,7 @@ fn row(r: &Row) -> Value {
         );
     }
     o.insert("contact_visits_per_step".into(), number(r.visits_per_step));
+    o.insert("ccd_tests_per_step".into(), number(r.ccd_tests_per_step));
     o.insert("limit_steps".into(), json!(r.limit_steps));
     o.insert("steps".into(), json!(r.steps));
     o.insert("max_penetration".into(), number(r.max_penetration));

@@ -80,7 +80,7 @@ pub fn render(study: &Study) -> String {
     let x_label = if study.timed {
         "µs per step (median)"
     } else {
-        "contact visits per step"
+        "visits + ccd tests per step"
     };
     let mut out = format!(
         r##"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height}" viewBox="0 0 {WIDTH} {height}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">

@@ -1,7 +1,8 @@
 //! Every tunable, declared once: its name (the same in TOML, JSON, the
 //! study's `--grid`, and on the command line with `-` for `_`), where it lives,
 //! what it trades, its default, its range rule or its choices, which TOML
-//! tables take it, and how it is read and written on [`Settings`].
+//! tables take it, and how it is read and written on
+//! [`Settings`](super::params::Settings).
 //!
 //! Lesson validation, the command line, overrides, the TUI's edit form and
 //! scene edits, the study and `docs/knobs.md` all read [`KNOBS`]; none of
@@ -9,232 +10,16 @@
 //! `lesson::knob_value`: physics only declares the rule.
 
 use super::exact::RestitutionLaw;
-use super::params::{BoxBoxMode, NarrowPhase, Settings};
+use super::params::{BoxBoxMode, NarrowPhase};
 use super::step::ccd_mode::{Ccd, NormalFrom, Rollback};
 use super::step::SleepMode;
 use super::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
 
-/// A knob's value.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Value {
-    Number(f64),
-    Count(u64),
-    Flag(bool),
-    /// One of the knob's choices, by its canonical name.
-    Choice(&'static str),
-    Vector([f64; 3]),
-    /// An optional knob left to its default rule (e.g. `8 × contacts`).
-    Unset,
-}
+pub mod grid;
+mod knob;
 
-/// Where a knob lives: which part of the physics reads it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Level {
-    /// How one contact is resolved (`[settings]`, a contact's `settings`).
-    Contact,
-    /// How a set of contacts is resolved together (`[settings]`).
-    Resolver,
-    /// The time step (`[step]`).
-    Step,
-    /// Forces and contact generation (`[world]`).
-    World,
-    /// When bodies stop being simulated (`[sleep]`).
-    Sleep,
-}
-
-impl Level {
-    pub const ALL: [Level; 5] = [
-        Level::Contact,
-        Level::Resolver,
-        Level::Step,
-        Level::World,
-        Level::Sleep,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Level::Contact => "contact",
-            Level::Resolver => "resolver",
-            Level::Step => "step",
-            Level::World => "world",
-            Level::Sleep => "sleep",
-        }
-    }
-}
-
-/// A TOML table of a lesson file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Table {
-    /// `[settings]`.
-    Settings,
-    /// A `[[contact]]`'s own `settings` table.
-    ContactSettings,
-    /// A `[[contact]]` itself.
-    Contact,
-    World,
-    Step,
-    Sleep,
-}
-
-impl Table {
-    /// The table as a lesson file writes it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Table::Settings => "[settings]",
-            Table::ContactSettings => "[contact.settings]",
-            Table::Contact => "[[contact]]",
-            Table::World => "[world]",
-            Table::Step => "[step]",
-            Table::Sleep => "[sleep]",
-        }
-    }
-}
-
-/// The values a number knob accepts (checked and worded in `lesson::knob_value`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Range {
-    /// A finite number ≥ 0.
-    NonNegative,
-    /// A number ≥ 0, `inf` allowed (no limit).
-    NonNegativeOrInf,
-    /// In (0, 1]: a share.
-    Share,
-    /// In (0, 1]: the fraction of velocity kept per second.
-    Damping,
-    /// A finite duration > 0, at most [`MAX_DT`] seconds.
-    Duration,
-}
-
-/// The longest time step or frame duration accepted, in seconds (the same
-/// in a file, on the command line and in the study).
-pub const MAX_DT: f64 = 1e6;
-/// The most iterations a resolver phase may be given.
-pub const MAX_ITERATIONS: u64 = 1_000_000_000;
-/// The most steps a run may ask for (a longer run is a loop, not a lesson).
-pub const MAX_STEPS: u64 = 10_000_000;
-
-/// How a knob's value is written.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Kind {
-    /// A number under its range rule; `optional` when it may be left unset
-    /// (unset follows another rule, which the knob's doc names).
-    Number {
-        range: Range,
-        optional: bool,
-    },
-    /// A whole number from 0 to `max`; `optional` when it may be left unset.
-    Count {
-        max: u64,
-        optional: bool,
-    },
-    Flag,
-    /// One name of a list: `(name, what it is)`; the first spelling is the
-    /// canonical one, `aliases` are old spellings still accepted.
-    Choice {
-        choices: &'static [(&'static str, &'static str)],
-        aliases: &'static [(&'static str, &'static str)],
-    },
-    Vector,
-}
-
-impl Kind {
-    /// A number's range rule; `None` for every other kind.
-    pub fn range(&self) -> Option<Range> {
-        match self {
-            Kind::Number { range, .. } => Some(*range),
-            _ => None,
-        }
-    }
-}
-
-/// How a knob is set on the command line.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Cli {
-    /// `--NAME VALUE` (for a flag knob: `--NAME` alone means true, and
-    /// `--NAME=false` turns it off).
-    Option,
-    /// As `Option`, and `--ALIAS` alone sets the flag knob to false.
-    Negated(&'static str),
-    /// Not on the command line, and why.
-    No(&'static str),
-}
-
-/// Which surfaces offer a knob besides the lesson file; a `No` says why.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Offered {
-    Yes,
-    No(&'static str),
-}
-
-/// What a scene must have for a knob to matter in it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Needs {
-    Always,
-    /// A friction coefficient above 0.
-    Friction,
-    /// Two boxes or more.
-    BoxPairs,
-}
-
-/// One tunable.
-pub struct Knob {
-    /// The one spelling: a TOML key, a JSON key, a study knob, and a
-    /// command-line flag with `-` for `_`.
-    pub name: &'static str,
-    /// Old TOML keys still read as this knob.
-    pub old_names: &'static [&'static str],
-    pub level: Level,
-    /// The tables of a lesson file that take it.
-    pub tables: &'static [Table],
-    /// What it does and what it trades.
-    pub doc: &'static str,
-    /// The default, as the docs show it.
-    pub default: &'static str,
-    pub kind: Kind,
-    pub cli: Cli,
-    /// The TUI's edit form (scene knobs: when the contact was opened from a run).
-    pub edit: Offered,
-    /// The study's `--grid`.
-    pub study: Offered,
-    /// The values the study's default grid tries, one at a time around a
-    /// scene's own configuration (empty: not in the default grid).
-    pub grid: &'static [&'static str],
-    /// What a scene must have for the default grid to try the knob.
-    pub needs: Needs,
-    pub get: fn(&Settings) -> Value,
-    pub set: fn(&mut Settings, Value),
-}
-
-impl std::fmt::Debug for Knob {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name)
-    }
-}
-
-impl PartialEq for Knob {
-    fn eq(&self, other: &Self) -> bool {
-        self.name == other.name
-    }
-}
-
-impl Knob {
-    /// The canonical choice `name` stands for (an alias or the name itself).
-    pub fn choice(&self, name: &str) -> Option<&'static str> {
-        let Kind::Choice { choices, aliases } = self.kind else {
-            return None;
-        };
-        choices
-            .iter()
-            .map(|(c, _)| *c)
-            .find(|c| *c == name)
-            .or_else(|| aliases.iter().find(|(a, _)| *a == name).map(|(_, c)| *c))
-    }
-
-    /// True when a TOML key `key` in `table` is this knob.
-    pub fn read_as(&self, table: Table, key: &str) -> bool {
-        self.tables.contains(&table) && (self.name == key || self.old_names.contains(&key))
-    }
-}
+pub use grid::Needs;
+pub use knob::*;
 
 /// The knob named `name` (the canonical spelling, `-` or `_` alike).
 pub fn find(name: &str) -> Option<&'static Knob> {
@@ -396,7 +181,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["millington", "kinetic-direction", "velocity-scaling"],
+        grid: grid::FRICTION_MODEL,
         needs: Needs::Friction,
         get: |s| Value::Choice(s.contact.friction_model.name()),
         set: |s, v| {
@@ -416,7 +201,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["0", "0.25", "1"],
+        grid: grid::VELOCITY_LIMIT,
         needs: Needs::Always,
         get: |s| Value::Number(s.contact.velocity_limit),
         set: |s, v| s.contact.velocity_limit = number(v),
@@ -448,7 +233,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["0.5"],
+        grid: grid::RELAXATION,
         needs: Needs::Always,
         get: |s| Value::Number(s.contact.relaxation),
         set: |s, v| s.contact.relaxation = number(v),
@@ -480,7 +265,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["linear", "nonlinear"],
+        grid: grid::PROJECTION,
         needs: Needs::Always,
         get: |s| Value::Choice(s.contact.projection.name()),
         set: |s, v| {
@@ -604,7 +389,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["0.1", "0.001"],
+        grid: grid::POSITION_EPSILON,
         needs: Needs::Always,
         get: |s| Value::Number(s.resolver.position_epsilon),
         set: |s, v| s.resolver.position_epsilon = number(v),
@@ -620,7 +405,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["0.1", "0.001"],
+        grid: grid::VELOCITY_EPSILON,
         needs: Needs::Always,
         get: |s| Value::Number(s.resolver.velocity_epsilon),
         set: |s, v| s.resolver.velocity_epsilon = number(v),
@@ -657,7 +442,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["current", "initial"],
+        grid: grid::RESTITUTION_FROM,
         needs: Needs::Always,
         get: |s| Value::Choice(s.resolver.restitution_from.name()),
         set: |s, v| {
@@ -678,7 +463,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::No("a run's time step is its frames: change it with simulate --dt"),
         study: Offered::Yes,
-        grid: &["1/30", "1/60", "1/120", "1/240", "1/480"],
+        grid: grid::DT,
         needs: Needs::Always,
         get: |s| Value::Number(s.scene.dt),
         set: |s, v| s.scene.dt = number(v),
@@ -710,7 +495,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["none", "bisection", "conservative"],
+        grid: grid::CCD,
         needs: Needs::Always,
         get: |s| Value::Choice(s.scene.ccd.name()),
         set: |s, v| {
@@ -730,8 +515,8 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &[],
-        needs: Needs::Always,
+        grid: grid::ROLLBACK,
+        needs: Needs::Penetration,
         get: |s| Value::Choice(s.scene.rollback.name()),
         set: |s, v| {
             if let Some(m) = Rollback::from_name(choice(v)) {
@@ -841,7 +626,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["single", "manifold"],
+        grid: grid::BOX_BOX,
         needs: Needs::BoxPairs,
         get: |s| Value::Choice(s.scene.box_box.name()),
         set: |s, v| {
@@ -861,7 +646,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Option,
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["analytic", "gjk"],
+        grid: grid::NARROW_PHASE,
         needs: Needs::Always,
         get: |s| Value::Choice(s.scene.narrow_phase.name()),
         set: |s, v| {
@@ -898,7 +683,7 @@ pub static KNOBS: &[Knob] = &[
         cli: Cli::Negated("no-sleep"),
         edit: Offered::Yes,
         study: Offered::Yes,
-        grid: &["true", "false"],
+        grid: grid::SLEEP,
         needs: Needs::Always,
         get: |s| Value::Flag(s.scene.sleep.enabled),
         set: |s, v| s.scene.sleep.enabled = flag(v),

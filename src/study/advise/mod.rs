@@ -1,30 +1,25 @@
-//! The cheapest model that meets a target (`contact-lab advise`): a
-//! coordinate descent over the study's dimensions (the budget, the float
-//! type, and every knob of the table offered to the study), starting from
-//! the scene's reference (error 0, the dearest configuration), each pass
-//! trying every value of one dimension with the others held and keeping the
-//! cheapest whose error stays at or below the target, until a pass changes
-//! nothing. Every configuration is measured once (a cache): the cost is
-//! deterministic work, not time, so the same scene and target always give
-//! the same advice.
+//! The cheapest model that meets a target (`contact-lab advise`): the
+//! study's dimensions (the budget, the float type, and every knob of the
+//! table offered to the study) searched from the scene's reference (error 0,
+//! the dearest configuration) by coordinate descent with pair moves to leave
+//! local optima ([`search`]).
 //!
-//! Cost: (contact visits + 1) per step × steps per simulated second — the
-//! resolver's visits of both phases plus one for the step's own work
+//! Cost: (contact visits + continuous detection's tests + 1) per step ×
+//! steps per simulated second — the resolver's visits of both phases, the
+//! time-of-collision searches' GJK calls, plus one for the step's own work
 //! (integration, detection), per simulated second so that time steps of
 //! different lengths compare.
+
+mod search;
+mod snippet;
 
 use super::{grid, run, Config};
 use crate::lesson::knob_value;
 use crate::lesson::Lesson;
-use crate::physics::knobs::{Kind, Needs, Table};
+use crate::physics::knobs::{Kind, Needs};
 
-/// Most passes of the descent (each pass tries every dimension): the
-/// embedded scenes at 1 cm per run end within 6 (mass-ratio-stack was still
-/// improving when this was 4; tests/measure/advise_every_scene.rs).
-pub const MAX_PASSES: usize = 8;
-
-/// Costs this close (relative) are a tie, and the simpler value wins.
-const COST_TIE: f64 = 1e-9;
+pub use search::{cost, MAX_ESCAPES, MAX_PASSES};
+pub use snippet::settings_snippet;
 
 /// One dimension searched: a name (the study's) and its values as text,
 /// cheap or simple first (ties in cost go to the earlier value).
@@ -104,10 +99,17 @@ pub struct Advice {
     pub needed: Vec<Needed>,
     pub not_needed: Vec<&'static str>,
     pub held: Vec<Held>,
-    /// The search's own cost: configurations run, steps simulated, passes.
+    /// The search's own cost: configurations run, steps simulated, passes
+    /// of the descents, pair moves taken and pair configurations tried,
+    /// and its wall time (s).
     pub runs: usize,
     pub steps: usize,
     pub passes: usize,
+    pub escapes: usize,
+    pub pairs: usize,
+    pub wall_seconds: f64,
+    /// A descent stopped at [`MAX_PASSES`] while still improving.
+    pub capped: bool,
     /// What the reference run exercised (the evidence).
     pub exercised: super::exercised::Exercised,
 }
@@ -136,11 +138,9 @@ pub fn dimensions(
             });
             budget_pushed = true;
         }
-        let wanted = match k.needs {
-            Needs::Always => true,
-            Needs::Friction => features.friction,
-            Needs::BoxPairs => features.box_pairs,
-        };
+        // Penetration only picks the study's rows: the search tries
+        // rollback everywhere (mass-ratio-stack's cheapest model uses it).
+        let wanted = k.needs == Needs::Penetration || features.meet(k.needs);
         if !wanted {
             held.push(Held {
                 name: k.name,
@@ -207,111 +207,6 @@ pub fn value_of(c: &Config, name: &str) -> String {
         })
 }
 
-/// Measures configurations, each once (a run stopped at a cost cap is run
-/// again only when asked with a higher cap).
-struct Evaluator<'a> {
-    lesson: &'a Lesson,
-    seconds: f64,
-    reference: Vec<nalgebra::Vector3<f64>>,
-    /// The reference's positions at every step, for [`Per::Step`].
-    trajectory: Option<run::Trajectory>,
-    /// Each configuration's evaluation, and the cap it was stopped at.
-    cache: Vec<(Eval, Option<f64>)>,
-    steps: usize,
-    runs: usize,
-}
-
-impl Evaluator<'_> {
-    /// `config` measured, or, when its cost passes `cap`, an evaluation of
-    /// infinite cost (it cannot be chosen against a row that costs `cap`).
-    fn eval(&mut self, config: &Config, cap: f64) -> Eval {
-        if let Some((e, stopped)) = self.cache.iter().find(|(e, _)| e.config == *config) {
-            if stopped.is_none_or(|c| cap <= c) {
-                return *e;
-            }
-        }
-        let work = cap * self.seconds;
-        let limit = if work.is_finite() && work < 1e18 {
-            work.ceil() as usize
-        } else {
-            usize::MAX
-        };
-        let m = run::measure_against(
-            self.lesson,
-            config,
-            self.seconds,
-            limit,
-            self.trajectory.as_ref(),
-        );
-        self.runs += 1;
-        self.steps += m.steps;
-        let e = if m.capped {
-            Eval {
-                config: *config,
-                cost: f64::INFINITY,
-                error: f64::NAN,
-            }
-        } else {
-            Eval {
-                config: *config,
-                cost: cost(&m, self.seconds),
-                error: if m.failure.is_some() {
-                    f64::NAN
-                } else if self.trajectory.is_some() {
-                    m.step_error
-                } else {
-                    run::rms_distance(&m.positions, &self.reference)
-                },
-            }
-        };
-        self.cache.retain(|(x, _)| x.config != *config);
-        self.cache.push((e, m.capped.then_some(cap)));
-        e
-    }
-}
-
-/// Work per simulated second: (visits + 1) per step × steps / seconds.
-pub fn cost(m: &run::Measured, seconds: f64) -> f64 {
-    (m.visits_per_step + 1.0) * m.steps as f64 / seconds
-}
-
-/// `a` cheaper than `b` beyond a tie.
-fn cheaper(a: f64, b: f64) -> bool {
-    a < b * (1.0 - COST_TIE)
-}
-
-/// The best value of `dim` around `current`: the cheapest meeting `target`
-/// (ties: the earlier value), with every value's evaluation.
-fn best_of(
-    ev: &mut Evaluator,
-    current: &Config,
-    dim: &Dimension,
-    target: Option<f64>,
-) -> (usize, Vec<Eval>) {
-    // Nothing dearer than the current configuration can be chosen, nor be
-    // the cheap setting: runs stop once they pass its cost.
-    let cap = ev.eval(current, f64::INFINITY).cost * (1.0 + 2.0 * COST_TIE);
-    let evals: Vec<Eval> = dim
-        .values
-        .iter()
-        .map(|v| {
-            let mut c = *current;
-            let _ = grid::set(&mut c, dim.name, v);
-            ev.eval(&c, cap)
-        })
-        .collect();
-    let mut best: Option<usize> = None;
-    for (i, e) in evals.iter().enumerate() {
-        let ok = target.is_none_or(|t| e.error <= t);
-        if ok && best.is_none_or(|b| cheaper(e.cost, evals[b].cost)) {
-            best = Some(i);
-        }
-    }
-    // The current value always meets the target (the descent keeps it so).
-    let fallback = evals.iter().position(|e| e.config == *current).unwrap_or(0);
-    (best.unwrap_or(fallback), evals)
-}
-
 /// How long `advise` runs a scene and which solver its reference uses: the
 /// study's default scenes' (`grid::SCENES`); any other scene its own length,
 /// at most 2 s, against sequential impulses. None: not a scene.
@@ -338,6 +233,7 @@ pub fn advise(
     target: f64,
     per: Per,
 ) -> Option<Advice> {
+    let started = std::time::Instant::now();
     let default = grid::default_config(lesson)?;
     let reference_config = grid::reference(&default, reference_solver);
     let features = grid::features(lesson);
@@ -346,7 +242,7 @@ pub fn advise(
     // Per step: the reference run again, its positions kept at every step.
     let trajectory =
         (per == Per::Step).then(|| run::trajectory(lesson, &reference_config, seconds));
-    let mut ev = Evaluator {
+    let mut ev = search::Evaluator {
         lesson,
         seconds,
         reference: reference_run.positions.clone(),
@@ -361,24 +257,29 @@ pub fn advise(
         error: 0.0,
     };
     ev.cache.push((reference_eval, None));
-    let mut current = reference_config;
-    let mut passes = 0;
-    while passes < MAX_PASSES {
-        passes += 1;
-        let mut changed = false;
-        for dim in &dims {
-            let (i, _) = best_of(&mut ev, &current, dim, Some(target));
-            let mut next = current;
-            let _ = grid::set(&mut next, dim.name, &dim.values[i]);
-            if next != current {
-                current = next;
-                changed = true;
-            }
-        }
-        if !changed {
-            break;
-        }
+    // The seeds: the reference and, for a per-run target, where the descent
+    // against the per-step error stops. It meets the run's target too (the
+    // run's error is its last step's) and lies where a descent from the
+    // reference, one knob at a time, cannot go: on mass-ratio-stack at 1 cm
+    // it changes the time step, rollback, the epsilon and sleep together.
+    let mut seeds = vec![reference_config];
+    if per == Per::Run {
+        let mut by_step = search::Evaluator {
+            lesson,
+            seconds,
+            reference: reference_run.positions.clone(),
+            trajectory: Some(run::trajectory(lesson, &reference_config, seconds)),
+            cache: vec![(reference_eval, None)],
+            steps: reference_run.steps,
+            runs: 1,
+        };
+        let (seed, _, _) = search::descend(&mut by_step, &dims, reference_config, target);
+        ev.runs += by_step.runs;
+        ev.steps += by_step.steps;
+        seeds.push(seed);
     }
+    let searched = search::search(&mut ev, &dims, &seeds, target);
+    let current = searched.config;
     let choice = ev.eval(&current, f64::INFINITY);
     // What each dimension buys: its cheap setting (the cheapest value, ties
     // to the earlier) with everything else as chosen.
@@ -387,7 +288,7 @@ pub fn advise(
     let mut values = Vec::new();
     for dim in &dims {
         let here = value_of(&current, dim.name);
-        let (cheap, evals) = best_of(&mut ev, &current, dim, None);
+        let (cheap, evals) = search::best_of(&mut ev, &current, dim, None);
         let chosen = evals.iter().position(|e| e.config == current);
         values.push((dim.name, here.clone()));
         if chosen == Some(cheap) {
@@ -416,66 +317,11 @@ pub fn advise(
         held,
         runs: ev.runs,
         steps: ev.steps,
-        passes,
+        passes: searched.passes,
+        escapes: searched.escapes,
+        pairs: searched.pairs,
+        wall_seconds: started.elapsed().as_secs_f64(),
+        capped: searched.capped,
         exercised,
     })
-}
-
-/// The tables a scene's knobs are read from, in the order the lesson reads
-/// them (lesson/validate/simulation.rs): a knob set in a later table
-/// overrides one set in an earlier (`friction_model` in `[world]` over
-/// `[settings]`).
-const SCENE_TABLES: [Table; 4] = [Table::Settings, Table::World, Table::Step, Table::Sleep];
-
-/// The choice as lesson tables, ready to paste: each searched knob in its
-/// table (`visits_per_contact` for the budget; a knob with several homes
-/// in the one the scene reads last), the float type as a
-/// comment (a lesson runs in f64; the study and advise can run f32).
-pub fn settings_snippet(a: &Advice) -> String {
-    let mut tables: Vec<(Table, Vec<String>)> = Vec::new();
-    let mut push = |t: Table, line: String| match tables.iter_mut().find(|(x, _)| *x == t) {
-        Some((_, lines)) => lines.push(line),
-        None => tables.push((t, vec![line])),
-    };
-    let c = &a.choice.config;
-    push(
-        Table::Settings,
-        format!("visits_per_contact = {}", c.budget.per_contact()),
-    );
-    for (name, _) in &a.values {
-        let Some(k) = crate::physics::knobs::find(name) else {
-            continue;
-        };
-        // The table the scene reads last among the knob's homes, so that
-        // the snippet overrides the scene wherever the scene spells it.
-        let Some(table) = SCENE_TABLES
-            .into_iter()
-            .rev()
-            .find(|t| k.tables.contains(t))
-            .or(k.tables.first().copied())
-        else {
-            continue;
-        };
-        let v = c.get(k);
-        let toml = match v {
-            crate::physics::knobs::Value::Choice(s) => format!("\"{s}\""),
-            _ => knob_value::text(v),
-        };
-        push(table, format!("{} = {toml}", k.name));
-    }
-    let mut out = String::new();
-    for (t, lines) in &tables {
-        out.push_str(t.name());
-        out.push('\n');
-        for l in lines {
-            out.push_str(l);
-            out.push('\n');
-        }
-        out.push('\n');
-    }
-    out.push_str(&format!(
-        "# precision: {} (the float type: a lesson runs in f64; study --grid precision={0} runs this one)\n",
-        c.precision.name()
-    ));
-    out
 }
