@@ -19,6 +19,7 @@ pub mod substep;
 pub mod swept;
 pub mod toi_pair;
 pub mod tolerance;
+mod wake_sleep;
 
 /// The `ccd` and `rollback` knobs' choices (declared with the other params).
 pub use crate::physics::params::ccd_mode;

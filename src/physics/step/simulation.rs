@@ -11,16 +11,16 @@ use super::contact_events::{self, PairSet, Touching};
 use super::integrate::{integrate_velocity, Loads};
 use super::previous_frame::{self, PoseOf};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
-use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
+use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
-use super::{audit, energy, overlap, replay, rollback, tolerance};
+use super::{audit, energy, overlap, replay, rollback, tolerance, wake_sleep};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 pub use crate::physics::params::SimParams;
 use crate::physics::params::{Material, NormalFrom};
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
-use crate::physics::{c, to_f64, BodyId, Contact, ContactInput, Real, Solver, World};
+use crate::physics::{c, to_f64, Contact, ContactInput, Real, Solver, World};
 
 /// A world stepping in time.
 #[derive(Debug, Clone)]
@@ -251,7 +251,7 @@ impl<T: Real> Simulation<T> {
         }
         // 6. Sleep.
         if p.sleep.enabled {
-            self.update_sleep(&mut events);
+            wake_sleep::update_sleep(&mut self.world, &self.params, &mut self.sleep, &mut events);
         }
         self.step += 1;
         self.time += to_f64(p.dt);
@@ -358,7 +358,7 @@ impl<T: Real> Simulation<T> {
         self.world.step.anticipate_planar_acceleration = false;
         // 3. Wake sleepers that an awake body presses on.
         if p.sleep.enabled {
-            self.wake_touched(events);
+            wake_sleep::wake_touched(&self.world, &self.params, &mut self.sleep, events);
         }
     }
 
@@ -502,117 +502,7 @@ impl<T: Real> Simulation<T> {
     }
 
     fn point_velocity(&self, k: &Contact<T>) -> Vector3<T> {
-        let v = |id: Option<BodyId>| {
-            id.map_or(Vector3::zeros(), |id| {
-                let b = &self.world.body(id).state;
-                b.point_velocity(&(k.input.point - b.position))
-            })
-        };
-        v(Some(k.body1)) - v(k.body2)
-    }
-
-    /// A contact between an awake and a sleeping movable body that the
-    /// resolver will act on (penetrating beyond the position epsilon, or
-    /// closing faster than the velocity epsilon) wakes the sleeper, as the
-    /// reference engine wakes the bodies of a contact it resolves; the world
-    /// wakes nobody.
-    fn wake_touched(&mut self, events: &mut Vec<Event>) {
-        let eps = self.params.sleep.epsilon;
-        let (pen_eps, vel_eps) = (
-            c::<T>(self.params.resolver.position_epsilon),
-            c::<T>(self.params.resolver.velocity_epsilon),
-        );
-        let mut woken = Vec::new();
-        for k in &self.world.contacts {
-            let Some(b2) = k.body2.filter(|b| self.world.body(*b).movable) else {
-                continue;
-            };
-            let (a, b) = (self.sleep[k.body1.0].awake, self.sleep[b2.0].awake);
-            let acts = k.input.penetration > pen_eps
-                || -self.point_velocity(k).dot(&k.input.normal) > vel_eps;
-            if a != b && acts {
-                woken.push(if a { b2 } else { k.body1 });
-            }
-        }
-        if self.params.sleep.mode == SleepMode::Island && !woken.is_empty() {
-            let roots = self.islands();
-            let asleep: Vec<usize> = woken.iter().map(|b| roots[b.0]).collect();
-            for (i, r) in roots.iter().enumerate() {
-                if asleep.contains(r) && !self.sleep[i].awake {
-                    woken.push(BodyId(i));
-                }
-            }
-        }
-        for id in woken {
-            if !self.sleep[id.0].awake {
-                self.sleep[id.0].wake(eps);
-                events.push(Event::Wakes { body: id });
-            }
-        }
-    }
-
-    /// Island roots of the movable bodies, joined by this step's contacts.
-    fn islands(&self) -> Vec<usize> {
-        let links = self.world.contacts.iter().filter_map(|k| {
-            let b2 = k.body2?;
-            (self.world.body(k.body1).movable && self.world.body(b2).movable)
-                .then_some((k.body1.0, b2.0))
-        });
-        islands(self.world.bodies.len(), links)
-    }
-
-    /// Sleep after the step. A body falls asleep only while it touches
-    /// something (one of this step's contacts, the margin included): sleep
-    /// is for resting contacts, and a body in flight or coasting in free
-    /// space is not resting however slowly it moves. In island mode an
-    /// island needs every body slow for at least one step and `island_time`.
-    fn update_sleep(&mut self, events: &mut Vec<Event>) {
-        let p = self.params.sleep;
-        let dt = self.params.dt;
-        let n = self.world.bodies.len();
-        let mut touching = vec![false; n];
-        for k in &self.world.contacts {
-            touching[k.body1.0] = true;
-            if let Some(b) = k.body2 {
-                touching[b.0] = true;
-            }
-        }
-        let mut falls = vec![false; n];
-        for (i, (body, state)) in self
-            .world
-            .bodies
-            .iter()
-            .zip(self.sleep.iter_mut())
-            .enumerate()
-        {
-            if body.movable && state.awake {
-                falls[i] = update_motion(state, &body.state, p.epsilon, dt) && touching[i];
-            }
-        }
-        if p.mode == SleepMode::Island {
-            let roots = self.islands();
-            let long_enough = if p.island_time > dt {
-                p.island_time
-            } else {
-                dt
-            };
-            let mut ready = vec![true; n];
-            for i in 0..n {
-                let (b, s) = (&self.world.bodies[i], &self.sleep[i]);
-                if b.movable && s.awake {
-                    ready[roots[i]] &= s.slow_for >= long_enough && touching[i];
-                }
-            }
-            for (i, fall) in falls.iter_mut().enumerate() {
-                *fall = self.world.bodies[i].movable && self.sleep[i].awake && ready[roots[i]];
-            }
-        }
-        for (i, fall) in falls.into_iter().enumerate() {
-            if fall {
-                put_to_sleep(&mut self.sleep[i], &mut self.world.bodies[i].state);
-                events.push(Event::FallsAsleep { body: BodyId(i) });
-            }
-        }
+        wake_sleep::relative_point_velocity(&self.world, k)
     }
 
     /// Contact made or lost, bounces, sticking and sliding, per touching pair.

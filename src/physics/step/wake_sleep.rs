@@ -1,0 +1,130 @@
+//! Waking and sleeping over a step's contacts: a sleeper an awake body
+//! presses on wakes (with its island in island mode), and a body that
+//! touches something and has been slow long enough falls asleep
+//! (sleep.rs holds the lecture's per-body bookkeeping).
+
+use nalgebra::Vector3;
+
+use super::report::Event;
+use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
+use crate::physics::params::SimParams;
+use crate::physics::{c, BodyId, Contact, Real, World};
+
+/// The velocity of body 1's material point at the contact relative to
+/// body 2's (lecture eq. A for each body).
+pub(super) fn relative_point_velocity<T: Real>(world: &World<T>, k: &Contact<T>) -> Vector3<T> {
+    let v = |id: Option<BodyId>| {
+        id.map_or(Vector3::zeros(), |id| {
+            let b = &world.body(id).state;
+            b.point_velocity(&(k.input.point - b.position))
+        })
+    };
+    v(Some(k.body1)) - v(k.body2)
+}
+
+/// A contact between an awake and a sleeping movable body that the
+/// resolver will act on (penetrating beyond the position epsilon, or
+/// closing faster than the velocity epsilon) wakes the sleeper, as the
+/// reference engine wakes the bodies of a contact it resolves; the world
+/// wakes nobody.
+pub(super) fn wake_touched<T: Real>(
+    world: &World<T>,
+    params: &SimParams<T>,
+    sleep: &mut [SleepState<T>],
+    events: &mut Vec<Event>,
+) {
+    let eps = params.sleep.epsilon;
+    let (pen_eps, vel_eps) = (
+        c::<T>(params.resolver.position_epsilon),
+        c::<T>(params.resolver.velocity_epsilon),
+    );
+    let mut woken = Vec::new();
+    for k in &world.contacts {
+        let Some(b2) = k.body2.filter(|b| world.body(*b).movable) else {
+            continue;
+        };
+        let (a, b) = (sleep[k.body1.0].awake, sleep[b2.0].awake);
+        let acts = k.input.penetration > pen_eps
+            || -relative_point_velocity(world, k).dot(&k.input.normal) > vel_eps;
+        if a != b && acts {
+            woken.push(if a { b2 } else { k.body1 });
+        }
+    }
+    if params.sleep.mode == SleepMode::Island && !woken.is_empty() {
+        let roots = contact_islands(world);
+        let asleep: Vec<usize> = woken.iter().map(|b| roots[b.0]).collect();
+        for (i, r) in roots.iter().enumerate() {
+            if asleep.contains(r) && !sleep[i].awake {
+                woken.push(BodyId(i));
+            }
+        }
+    }
+    for id in woken {
+        if !sleep[id.0].awake {
+            sleep[id.0].wake(eps);
+            events.push(Event::Wakes { body: id });
+        }
+    }
+}
+
+/// Island roots of the movable bodies, joined by this step's contacts.
+fn contact_islands<T: Real>(world: &World<T>) -> Vec<usize> {
+    let links = world.contacts.iter().filter_map(|k| {
+        let b2 = k.body2?;
+        (world.body(k.body1).movable && world.body(b2).movable).then_some((k.body1.0, b2.0))
+    });
+    islands(world.bodies.len(), links)
+}
+
+/// Sleep after the step. A body falls asleep only while it touches
+/// something (one of this step's contacts, the margin included): sleep
+/// is for resting contacts, and a body in flight or coasting in free
+/// space is not resting however slowly it moves. In island mode an
+/// island needs every body slow for at least one step and `island_time`.
+pub(super) fn update_sleep<T: Real>(
+    world: &mut World<T>,
+    params: &SimParams<T>,
+    sleep: &mut [SleepState<T>],
+    events: &mut Vec<Event>,
+) {
+    let p = params.sleep;
+    let dt = params.dt;
+    let n = world.bodies.len();
+    let mut touching = vec![false; n];
+    for k in &world.contacts {
+        touching[k.body1.0] = true;
+        if let Some(b) = k.body2 {
+            touching[b.0] = true;
+        }
+    }
+    let mut falls = vec![false; n];
+    for (i, (body, state)) in world.bodies.iter().zip(sleep.iter_mut()).enumerate() {
+        if body.movable && state.awake {
+            falls[i] = update_motion(state, &body.state, p.epsilon, dt) && touching[i];
+        }
+    }
+    if p.mode == SleepMode::Island {
+        let roots = contact_islands(world);
+        let long_enough = if p.island_time > dt {
+            p.island_time
+        } else {
+            dt
+        };
+        let mut ready = vec![true; n];
+        for i in 0..n {
+            let (b, s) = (&world.bodies[i], &sleep[i]);
+            if b.movable && s.awake {
+                ready[roots[i]] &= s.slow_for >= long_enough && touching[i];
+            }
+        }
+        for (i, fall) in falls.iter_mut().enumerate() {
+            *fall = world.bodies[i].movable && sleep[i].awake && ready[roots[i]];
+        }
+    }
+    for (i, fall) in falls.into_iter().enumerate() {
+        if fall {
+            put_to_sleep(&mut sleep[i], &mut world.bodies[i].state);
+            events.push(Event::FallsAsleep { body: BodyId(i) });
+        }
+    }
+}
