@@ -30,6 +30,8 @@ pub struct DetectArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    #[command(flatten)]
+    pub fold: super::WidthArg,
     /// Also write an SVG figure of the (first) pair: both shapes, the
     /// Minkowski difference A - B, the simplex or EPA's face, the normal.
     #[arg(long, value_name = "F.svg")]

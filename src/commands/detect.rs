@@ -29,7 +29,10 @@ pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
     }
     let f = Fmt::new(args.digits as usize);
     let text = match args.format {
-        Format::Text => show::text(&trace, &f),
+        Format::Text => {
+            let width = super::text_width(args.fold.width);
+            crate::render::wrap::wrap(&show::text(&trace, &f, width), width)
+        }
         Format::Md => show::markdown(&trace, &f),
         Format::Latex => show::latex(&trace, &f),
         Format::Json => show::json(&trace),

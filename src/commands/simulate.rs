@@ -64,7 +64,7 @@ pub fn simulate(
     };
     // Written as computed: memory stays flat in the number of steps.
     let width = match args.format {
-        RunFormat::Text => super::text_width(args.width),
+        RunFormat::Text => super::text_width(args.fold.width),
         _ => 0,
     };
     let folded = crate::render::wrap::WrapWriter::new(out, width);
@@ -179,7 +179,7 @@ fn trace_step(
             );
             crate::render::wrap::wrap(
                 &(head + &crate::render::resolve::text::render(&step.resolver, &fmt)),
-                super::text_width(args.width),
+                super::text_width(args.fold.width),
             )
         }
         RunFormat::Json => crate::render::resolve::json::render(
