@@ -10,4 +10,4 @@ mod svg;
 
 pub use json::json;
 pub use layout::{latex, markdown, text};
-pub use svg::svg;
+pub use svg::{svg, svg_at, Shown};

@@ -2,7 +2,7 @@
 //! left the two shapes (outlines in the view plane) with the contact normal
 //! at the contact point; on the right the Minkowski difference A - B seen in
 //! the same plane, the origin, GJK's last simplex (or EPA's closest face)
-//! and the normal from the origin.
+//! and the normal from the origin, or a chosen iteration ([`Shown`]).
 
 use std::fmt::Write;
 
@@ -13,8 +13,18 @@ const W: f64 = 1000.0;
 const H: f64 = 520.0;
 const PANEL: f64 = 480.0;
 
-/// The figure of pair `k` (`None` when there is no such pair).
+mod iteration;
+pub use iteration::Shown;
+
+/// The figure of pair `k` at its last iteration (`None` when there is no
+/// such pair).
 pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
+    svg_at(t, k, Shown::Last)
+}
+
+/// The figure of pair `k` drawing the iteration `shown` (`None` when there
+/// is no such pair or iteration).
+pub fn svg_at(t: &DetectTrace, k: usize, shown: Shown) -> Option<String> {
     let p = t.pairs.get(k)?;
     let (u, w, _) = t.plane.axes();
     let flat = |x: &V3| -> P { [x[u], x[w]] };
@@ -105,7 +115,10 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
         );
     }
     // Right: the Minkowski difference, the origin, the simplex, the normal.
-    let right_pts: Vec<P> = p.minkowski.iter().map(flat).chain([[0.0, 0.0]]).collect();
+    let mut right_pts: Vec<P> = p.minkowski.iter().map(flat).chain([[0.0, 0.0]]).collect();
+    // The chosen iteration's marks are in view too.
+    let d_length = iteration::d_length(&right_pts);
+    right_pts.extend(iteration::reach(p, shown, &flat, d_length));
     let right = Fit::new(&right_pts, 20.0 + PANEL + 20.0);
     let _ = writeln!(
         out,
@@ -121,66 +134,7 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
             right.points(&hull)
         );
     }
-    let simplex: Vec<P> = match (&p.epa, &p.gjk) {
-        (Some(e), _) if !e.iterations.is_empty() => e
-            .iterations
-            .last()
-            .map(|it| it.face.iter().map(flat).collect())
-            .unwrap_or_default(),
-        (_, Some(g)) => g
-            .iterations
-            .last()
-            .map(|it| it.simplex.iter().map(flat).collect())
-            .unwrap_or_default(),
-        _ => vec![],
-    };
-    for (i, a) in simplex.iter().enumerate() {
-        for b in &simplex[i + 1..] {
-            let (a, b) = (right.at(*a), right.at(*b));
-            let _ = writeln!(
-                out,
-                r##"  <line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="#ff7f0e" stroke-width="2"/>"##,
-                a[0], a[1], b[0], b[1]
-            );
-        }
-        let c = right.at(*a);
-        let _ = writeln!(
-            out,
-            r##"  <circle cx="{:.1}" cy="{:.1}" r="4" fill="#ff7f0e"/>"##,
-            c[0], c[1]
-        );
-    }
-    let o = right.at([0.0, 0.0]);
-    let _ = writeln!(
-        out,
-        r#"  <circle cx="{:.1}" cy="{:.1}" r="5" fill="black"/>
-  <text x="{:.1}" y="{:.1}" font-size="14">O</text>"#,
-        o[0],
-        o[1],
-        o[0] + 8.0,
-        o[1] - 8.0
-    );
-    if let Some(e) = &p.epa {
-        let n = flat(&e.normal);
-        // -depth·n: the penetration vector from the origin to the boundary.
-        arrow(
-            &mut out,
-            &right,
-            [0.0, 0.0],
-            [-n[0] * e.depth, -n[1] * e.depth],
-            "#2ca02c",
-            "-δn",
-        );
-    } else if let Some(g) = p.gjk.as_ref().and_then(|g| g.iterations.last()) {
-        arrow(
-            &mut out,
-            &right,
-            [0.0, 0.0],
-            flat(&g.closest),
-            "#2ca02c",
-            "v",
-        );
-    }
+    iteration::draw(&mut out, &right, p, shown, &flat, d_length)?;
     out += "</svg>\n";
     Some(out)
 }
