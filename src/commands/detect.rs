@@ -44,11 +44,13 @@ pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
     out.write_all(text.as_bytes()).map_err(io)
 }
 
-/// The iteration `--iteration K` / `--phase` ask the figure to draw,
-/// checked against the pair's GJK or EPA iteration count (exit 2 outside).
-fn shown(args: &DetectArgs, p: &PairTrace) -> Result<show::Shown, AppError> {
+/// The stop (an index into [`show::steps::stops`]: GJK's iterations, then
+/// EPA's; `usize::MAX`: the result) `--iteration K` / `--phase` ask the
+/// figure to draw, checked against the pair's GJK or EPA iteration count
+/// (exit 2 outside).
+fn shown(args: &DetectArgs, p: &PairTrace) -> Result<usize, AppError> {
     let phase = match (args.phase, args.iteration) {
-        (None, None) => return Ok(show::Shown::Last),
+        (None, None) => return Ok(usize::MAX),
         (Some(phase), _) => phase,
         (None, Some(_)) => DetectPhaseArg::Gjk,
     };
@@ -77,9 +79,10 @@ fn shown(args: &DetectArgs, p: &PairTrace) -> Result<show::Shown, AppError> {
             )))
         }
     };
+    let gjk = p.gjk.as_ref().map_or(0, |g| g.iterations.len());
     Ok(match phase {
-        DetectPhaseArg::Gjk => show::Shown::Gjk(k - 1),
-        DetectPhaseArg::Epa => show::Shown::Epa(k - 1),
+        DetectPhaseArg::Gjk => k - 1,
+        DetectPhaseArg::Epa => gjk + k - 1,
     })
 }
 

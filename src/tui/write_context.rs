@@ -43,11 +43,11 @@ impl Context {
         } else {
             shell_word(&lesson.origin)
         };
-        let step = app
-            .run
-            .as_ref()
-            .and_then(|r| r.player.run.frames.get(r.frame))
-            .map(|f| (f.time, f.step));
+        // The step whose resolution the contact is in (the frame on show,
+        // or the next one for a contact opened from the detection).
+        let step = (app.run.as_ref())
+            .and(app.resolver.as_ref())
+            .map(|r| (r.trace.time, r.trace.step));
         let stop = app.resolver.as_ref().map(|r| {
             let table = &r.trace.tables[r.stop];
             let (name, used) = match table.stop.phase {

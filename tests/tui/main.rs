@@ -10,6 +10,7 @@ mod io_tui_edits;
 mod io_tui_responsive;
 mod tui;
 mod tui_detect;
+mod tui_detect_stages;
 mod tui_labels;
 mod tui_lesson_picker;
 mod tui_scenes;

@@ -2,10 +2,13 @@
 //! left the two shapes (outlines in the view plane) with the contact normal
 //! at the contact point; on the right the Minkowski difference A - B seen in
 //! the same plane, the origin, GJK's last simplex (or EPA's closest face)
-//! and the normal from the origin, or a chosen iteration ([`Shown`]).
+//! and the normal from the origin; or, at a chosen stop of GJK or EPA
+//! ([`svg_at`]), that iteration's simplex or closest face, w_k, v_k and d_k.
 
 use std::fmt::Write;
 
+use super::minkowski::{minkowski, Minkowski};
+use super::steps::Stop;
 use crate::render::figure::{outline, Silhouette, P};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
 
@@ -13,18 +16,15 @@ const W: f64 = 1000.0;
 const H: f64 = 520.0;
 const PANEL: f64 = 480.0;
 
-mod iteration;
-pub use iteration::Shown;
-
-/// The figure of pair `k` at its last iteration (`None` when there is no
-/// such pair).
+/// The figure of pair `k` at the result (`None` when there is no such pair).
 pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
-    svg_at(t, k, Shown::Last)
+    svg_at(t, k, usize::MAX)
 }
 
-/// The figure of pair `k` drawing the iteration `shown` (`None` when there
-/// is no such pair or iteration).
-pub fn svg_at(t: &DetectTrace, k: usize, shown: Shown) -> Option<String> {
+/// The figure of pair `k` at `stop`, an index into the pair's
+/// [`stops`](super::steps::stops) (GJK's iterations, then EPA's); past them,
+/// the result (`None` when there is no such pair).
+pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
     let p = t.pairs.get(k)?;
     let (u, w, _) = t.plane.axes();
     let flat = |x: &V3| -> P { [x[u], x[w]] };
@@ -114,11 +114,15 @@ pub fn svg_at(t: &DetectTrace, k: usize, shown: Shown) -> Option<String> {
             "d",
         );
     }
-    // Right: the Minkowski difference, the origin, the simplex, the normal.
-    let mut right_pts: Vec<P> = p.minkowski.iter().map(flat).chain([[0.0, 0.0]]).collect();
-    // The chosen iteration's marks are in view too.
-    let d_length = iteration::d_length(&right_pts);
-    right_pts.extend(iteration::reach(p, shown, &flat, d_length));
+    // Right: the Minkowski difference, the origin, the simplex, the normal
+    // (the result's picture past the iterations), in view with the marks
+    // of the stop.
+    let m = minkowski(t.plane, p, stop);
+    let right_pts: Vec<P> = if super::steps::stops(p).get(stop).is_some() {
+        m.points()
+    } else {
+        m.hull.iter().copied().chain([[0.0, 0.0]]).collect()
+    };
     let right = Fit::new(&right_pts, 20.0 + PANEL + 20.0);
     let _ = writeln!(
         out,
@@ -126,17 +130,105 @@ pub fn svg_at(t: &DetectTrace, k: usize, shown: Shown) -> Option<String> {
         40.0 + PANEL,
         result(p)
     );
-    if !p.minkowski.is_empty() {
-        let hull = crate::render::figure::hull(p.minkowski.iter().map(flat).collect());
+    if !m.hull.is_empty() {
         let _ = writeln!(
             out,
             r##"  <polygon points="{}" fill="#9467bd" fill-opacity="0.15" stroke="#9467bd" stroke-width="2"/>"##,
-            right.points(&hull)
+            right.points(&m.hull)
         );
     }
-    iteration::draw(&mut out, &right, p, shown, &flat, d_length)?;
+    for [a, b] in m.edges() {
+        let (a, b) = (right.at(a), right.at(b));
+        let _ = writeln!(
+            out,
+            r##"  <line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="#ff7f0e" stroke-width="2"/>"##,
+            a[0], a[1], b[0], b[1]
+        );
+    }
+    for (i, a) in m.simplex.iter().enumerate() {
+        let c = right.at(*a);
+        // A point GJK dropped (✗) is hollow.
+        let fill = if m.dropped.contains(&i) {
+            r##"fill="white" stroke="#ff7f0e" stroke-width="2""##
+        } else {
+            r##"fill="#ff7f0e""##
+        };
+        let _ = writeln!(
+            out,
+            r#"  <circle cx="{:.1}" cy="{:.1}" r="4" {fill}/>"#,
+            c[0], c[1]
+        );
+    }
+    let o = right.at([0.0, 0.0]);
+    let _ = writeln!(
+        out,
+        r#"  <circle cx="{:.1}" cy="{:.1}" r="5" fill="black"/>
+  <text x="{:.1}" y="{:.1}" font-size="14">O</text>"#,
+        o[0],
+        o[1],
+        o[0] + 8.0,
+        o[1] - 8.0
+    );
+    if let Some((to, label)) = m.arrow {
+        arrow(&mut out, &right, [0.0, 0.0], to, "#2ca02c", label);
+    }
+    if let Some(stop) = super::steps::stops(p).get(stop) {
+        iteration(&mut out, &right, p, *stop, &m);
+    }
     out += "</svg>\n";
     Some(out)
+}
+
+/// A stop's marks: its title, d_k from the origin, v_k, w_k.
+fn iteration(out: &mut String, f: &Fit, p: &PairTrace, stop: Stop, m: &Minkowski) {
+    let title = match (stop, &p.gjk, &p.epa) {
+        (Stop::Gjk(k), Some(g), _) => format!(
+            "GJK iteration {} of {}: simplex (hollow: dropped), v_k, w_k, d_k",
+            k + 1,
+            g.iterations.len()
+        ),
+        (Stop::Epa(k), _, Some(e)) => format!(
+            "EPA iteration {} of {}: closest face, v_k = δ_k n_k, w_k, d_k = n_k",
+            k + 1,
+            e.iterations.len()
+        ),
+        _ => return,
+    };
+    let _ = writeln!(
+        out,
+        r#"  <text x="{:.1}" y="50" font-size="14">{}</text>"#,
+        f.left + 20.0,
+        xml(&title)
+    );
+    if let Some(tip) = m.direction {
+        arrow(out, f, [0.0, 0.0], tip, "#17becf", "d_k");
+    }
+    if let Some(v) = m.closest {
+        let (o, tip) = (f.at([0.0, 0.0]), f.at(v));
+        if (tip[0] - o[0]).hypot(tip[1] - o[1]) > 8.0 {
+            arrow(out, f, [0.0, 0.0], v, "#2ca02c", "v_k");
+        } else {
+            // v_k at the origin (in this plane): said below O, not over it.
+            let _ = writeln!(
+                out,
+                r##"  <text x="{:.1}" y="{:.1}" font-size="15" fill="#2ca02c">v_k ≈ 0</text>"##,
+                o[0] + 8.0,
+                o[1] + 20.0
+            );
+        }
+    }
+    if let Some(w) = m.support {
+        let c = f.at(w);
+        let _ = writeln!(
+            out,
+            r##"  <rect x="{:.1}" y="{:.1}" width="10" height="10" fill="#8c564b"/>
+  <text x="{:.1}" y="{:.1}" font-size="15" fill="#8c564b">w_k</text>"##,
+            c[0] - 5.0,
+            c[1] - 5.0,
+            c[0] + 8.0,
+            c[1] + 16.0
+        );
+    }
 }
 
 fn result(p: &PairTrace) -> String {

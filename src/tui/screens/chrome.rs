@@ -20,16 +20,19 @@ pub fn breadcrumb(app: &App) -> String {
         let frame = &run.player.run.frames[run.frame];
         parts.push(format!("t = {:.3} s, step {}", frame.time, frame.step));
     }
-    if app.screen == Screen::Detect {
+    if matches!(app.screen, Screen::Detect | Screen::Contact) {
         if let Some(d) = &app.detect {
             parts.push(match &d.toi {
-                Some(_) => "detection › time of collision".into(),
-                None => "detection".into(),
+                Some(_) if app.screen == Screen::Detect => "detection › time of collision".into(),
+                _ => "detection".into(),
             });
         }
     }
     if !matches!(app.screen, Screen::Run | Screen::Detect) {
-        if let Some(r) = &app.resolver {
+        if let (Some(r), Some(_)) = (&app.resolver, &app.detect) {
+            // A contact opened from the detection: the step that resolves it.
+            parts.push(format!("step {}'s resolver", r.trace.step));
+        } else if let Some(r) = &app.resolver {
             let table = &r.trace.tables[r.stop];
             let (phase, used) = match table.stop.phase {
                 Phase::Position => ("position", r.trace.resolver.position.iterations_used),
@@ -122,8 +125,9 @@ const NOTES: [&str; 4] = [
     "The contact screen has its own keys (? there).",
 ];
 
-const DETECT_NOTES: [&str; 2] = [
+const DETECT_NOTES: [&str; 3] = [
     "? again (or PgDn): page 2, the glossary of every symbol.",
+    "A - B: the Minkowski difference seen in the view plane through the origin O, with the iteration's simplex (• kept, ✗ dropped), w_k, v_k and d_k; at the result -δn (the penetration) or v (the distance). x puts it beside the shapes, alone, or hides it.",
     "The iterations are the rows contact-lab detect --step N prints; the time of collision is detect --toi's (docs/detect.md, docs/ccd.md).",
 ];
 
@@ -164,7 +168,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
         if run.recording.is_some() {
-            let text = super::nav::recording(run);
+            let text = super::run_nav::recording(run);
             Paragraph::new(Line::styled(
                 truncate(&format!(" {text}"), area.width as usize),
                 t.info(),
@@ -211,6 +215,8 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         (false, Screen::Detect) => &[
             ("↑↓", "pair"),
             ("←→", "iteration"),
+            ("Enter", "stages"),
+            ("x", "picture"),
             ("t", "time of collision"),
             ("Esc", "run"),
             ("?", "help"),

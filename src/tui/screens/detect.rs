@@ -2,7 +2,9 @@
 //! out, and why), the selected pair's GJK then EPA iterations one at a time
 //! as `contact-lab detect` prints their rows, the result, and the pair
 //! drawn with the iteration's support points; `t`: its time-of-collision
-//! trials. It reads the traces `session` built: no physics here.
+//! trials ([`super::detect_toi`]), and beside the shapes A - B
+//! ([`super::detect_minkowski`]). It reads the traces `session` built: no
+//! physics here.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -10,11 +12,10 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 use super::picture::{self, Scene};
-use super::{DetectView, Toggles};
+use super::{detect_minkowski, detect_toi};
+use super::{DetectView, Shown, Toggles};
 use crate::render::detect::steps::{result_lines, stop_lines, stops, Stop};
-use crate::render::toi::{outcome_line, trial_line};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
-use crate::trace::toi::DetectToi;
 use crate::trace::{BodyView, ContactView};
 use crate::tui::app::App;
 use crate::tui::wrap::truncate;
@@ -33,9 +34,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     ])
     .areas(left);
     render_pairs(app, d, list, buf);
-    render_picture(app, d, pic, buf);
+    render_pictures(app, d, pic, buf);
     match &d.toi {
-        Some((toi, trial)) => render_toi(app, d, &toi.trace, *trial, right, buf),
+        Some((toi, trial)) => detect_toi::render(app, d, &toi.trace, *trial, right, buf),
         None => render_stops(app, d, right, buf),
     }
 }
@@ -175,74 +176,29 @@ fn render_stops(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
         .render(area, buf);
 }
 
-/// The pair's time-of-collision trial on show and the outcome.
-fn render_toi(
-    app: &App,
-    d: &DetectView,
-    toi: &DetectToi,
-    trial: usize,
-    area: Rect,
-    buf: &mut Buffer,
-) {
-    let t = &app.theme;
-    let f = &app.fmt;
-    let mut lines = vec![Line::from(format!(
-        "Step {} (t = {} s to {} s), by {}.",
-        toi.step,
-        f.num(toi.time),
-        f.num(toi.time + toi.dt),
-        toi.method.json_name()
-    ))];
-    let title = match toi.pairs.first() {
-        None => {
-            lines.push(Line::from(
-                "The pair's movement bounds do not meet over the step: nothing to search.",
-            ));
-            "time of collision".to_string()
-        }
-        Some(p) => {
-            let n = p.record.trials.len();
-            lines.push(Line::from(format!(
-                "Movement bounds: swept AABBs overlap: {}; swept spheres meet: {}.",
-                yes(p.aabbs_overlap),
-                yes(p.spheres_meet)
-            )));
-            lines.push(Line::from(""));
-            match p.record.trials.get(trial) {
-                Some(x) => lines.push(Line::from(format!(
-                    "Trial {} of {n}: {}",
-                    trial + 1,
-                    trial_line(p, x, f)
-                ))),
-                None => lines.push(Line::styled(format!("All {n} trials done."), t.dim())),
-            }
-            lines.push(Line::from(""));
-            lines.push(Line::styled("Result", t.title()));
-            lines.push(Line::from(outcome_line(p, f)));
-            match trial < n {
-                true => format!("time of collision · trial {} of {n}", trial + 1),
-                false => "time of collision · result".into(),
-            }
-        }
-    };
-    let (a, b, _) = d.selected().unwrap_or(("", "", false));
-    let block = Block::bordered()
-        .border_style(t.border())
-        .title(Span::styled(
-            format!(" {a} – {b} · {title} · ←→ "),
-            t.title(),
-        ));
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: false })
-        .block(block)
-        .render(area, buf);
-}
-
-fn yes(b: bool) -> &'static str {
-    if b {
-        "yes"
+/// The shapes and A - B (`x`): side by side in a wide area, one above the
+/// other in a tall one; the shapes alone where two do not fit.
+fn render_pictures(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
+    // A cell is about twice as tall as it is wide.
+    let wide = area.width >= 2 * area.height;
+    let fits = if wide {
+        area.width >= 2 * 16
     } else {
-        "no"
+        area.height >= 2 * 6
+    };
+    match d.shown {
+        Shown::Both if fits => {
+            let halves = [Constraint::Fill(1), Constraint::Fill(1)];
+            let [one, two] = if wide {
+                Layout::horizontal(halves).areas(area)
+            } else {
+                Layout::vertical(halves).areas(area)
+            };
+            render_picture(app, d, one, buf);
+            detect_minkowski::render(app, d, two, buf);
+        }
+        Shown::Both | Shown::Shapes => render_picture(app, d, area, buf),
+        Shown::Difference => detect_minkowski::render(app, d, area, buf),
     }
 }
 
@@ -291,13 +247,15 @@ fn render_picture(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
             impulse: None,
         })
         .collect();
+    // At the result: the contacts numbered, the one Enter opens selected.
+    let at_result = d.toi.is_none() && said == "• contacts" && !contacts.is_empty();
     let scene = Scene {
         title: format!("{a} – {b} · {what}"),
         asleep: vec![false; bodies.len()],
         bodies: &bodies,
         contacts: &contacts,
         next: None,
-        selected: None,
+        selected: at_result.then_some(d.contact),
         toggles: Toggles {
             contacts: true,
             normals: false,

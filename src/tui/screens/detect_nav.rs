@@ -1,6 +1,7 @@
 //! Keys of the detection screen: open it on the run's step (the trace
 //! `session` builds, as `contact-lab detect --step N` prints it), select a
-//! pair, step through its iterations or its time-of-collision trials.
+//! pair, step through its iterations or its time-of-collision trials, show
+//! the shapes and A - B, and go down to a contact's stages (Enter).
 
 use ratatui::crossterm::event::KeyCode as C;
 
@@ -24,11 +25,28 @@ pub struct DetectView {
     /// `t`: the selected pair's time of collision, and the trial on show
     /// (one past the trials: the result).
     pub toi: Option<(PairToiRun, usize)>,
-    /// The search `t` runs (`m` switches).
+    /// The search `t` runs (`m` switches): at first the scene's.
     pub method: ToiMethod,
+    /// The search the scene's continuous detection runs (`None`: none).
+    pub scene_method: Option<ToiMethod>,
     /// A ruled-out pair selected: its narrow phase run anyway, as
     /// `detect --pair A,B` runs it.
     pub forced: Option<PairTrace>,
+    /// What the picture area shows (`x`).
+    pub shown: Shown,
+    /// The selected pair's contact Enter opens (Tab at the result).
+    pub contact: usize,
+}
+
+/// What the detection screen's picture area shows (`x` cycles; where the
+/// area is too small for two, `Both` shows the shapes).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shown {
+    /// The two shapes and, beside them, A - B.
+    Both,
+    Shapes,
+    /// A - B alone.
+    Difference,
 }
 
 /// The detection screen's keys: what the help shows and what each key does.
@@ -62,6 +80,21 @@ pub const DETECT_KEYS: &[Binding<Key>] = &[
             (C::End, Key::Last),
             (C::Char('G'), Key::Last),
         ],
+    },
+    Binding {
+        label: "x",
+        help: "picture: the shapes and A - B beside them → the shapes → A - B",
+        keys: &[(C::Char('x'), Key::Picture)],
+    },
+    Binding {
+        label: "Tab / Shift-Tab",
+        help: "select the next / previous contact the pair gives the resolver",
+        keys: &[(C::Tab, Key::NextContact), (C::BackTab, Key::PrevContact)],
+    },
+    Binding {
+        label: "Enter",
+        help: "the selected contact's stages, as the resolver gets it (Esc: back here)",
+        keys: &[(C::Enter, Key::Open)],
     },
     Binding {
         label: "t",
@@ -119,6 +152,7 @@ impl App {
         };
         let lesson = &self.lessons[self.lesson].lesson;
         let step = run.frame as u64;
+        let scene = scene_method(lesson);
         let Some(trace) = run.player.detect(lesson, step, self.plane, None) else {
             return self.say(
                 format!("step {step}'s bodies could not be found again: the run blew up"),
@@ -136,8 +170,11 @@ impl App {
             pair: 0,
             stop: 0,
             toi: None,
-            method: ToiMethod::Bisection,
+            method: scene.unwrap_or(ToiMethod::Bisection),
+            scene_method: scene,
             forced: None,
+            shown: Shown::Both,
+            contact: 0,
         }));
         self.screen = Screen::Detect;
         self.force_selected();
@@ -172,8 +209,35 @@ impl App {
                 d.stop = 0;
                 d.toi = None;
                 d.forced = None;
+                d.contact = 0;
                 self.force_selected();
             }
+            Key::NextContact | Key::PrevContact => {
+                let n = d.trace.pairs.get(d.pair).map_or(0, |p| p.contacts.len());
+                if n > 0 {
+                    d.contact = if action == Key::NextContact {
+                        (d.contact + 1) % n
+                    } else {
+                        (d.contact + n - 1) % n
+                    };
+                    if d.toi.is_none() {
+                        d.stop = last;
+                    }
+                }
+                let text = match n {
+                    0 => "the pair gives the resolver no contact at this step".to_string(),
+                    n => format!("contact {} of {n} (Enter opens its stages)", d.contact + 1),
+                };
+                self.say(text, false);
+            }
+            Key::Picture => {
+                d.shown = match d.shown {
+                    Shown::Both => Shown::Shapes,
+                    Shown::Shapes => Shown::Difference,
+                    Shown::Difference => Shown::Both,
+                };
+            }
+            Key::Open => self.open_stages(),
             Key::NextPair | Key::PrevPair => {
                 self.say(format!("{pairs} pair(s) at this step"), false);
             }
@@ -200,6 +264,28 @@ impl App {
                 self.screen = Screen::Run;
             }
             _ => {}
+        }
+    }
+
+    /// `v` on the detection: the step's detection again in the new view
+    /// plane (A - B's outline is traced in it), the pair and stop kept.
+    pub(super) fn redetect(&mut self) {
+        let (Some(run), Some(d)) = (self.run.as_deref(), self.detect.as_deref()) else {
+            return;
+        };
+        let lesson = &self.lessons[self.lesson].lesson;
+        let Some(trace) = run
+            .player
+            .detect(lesson, run.frame as u64, self.plane, None)
+        else {
+            return;
+        };
+        let forced = d.forced.is_some();
+        if let Some(d) = self.detect.as_deref_mut() {
+            d.trace = trace;
+        }
+        if forced {
+            self.force_selected();
         }
     }
 
@@ -256,8 +342,14 @@ impl App {
     }
 }
 
+/// The search the scene's continuous detection runs, if any: the
+/// time-of-collision view starts with it (bisection when none).
+fn scene_method(lesson: &crate::lesson::Lesson) -> Option<ToiMethod> {
+    lesson.sim_params().and_then(|p| p.ccd.method())
+}
+
 /// The search's name in words.
-fn method_name(m: ToiMethod) -> &'static str {
+pub(super) fn method_name(m: ToiMethod) -> &'static str {
     match m {
         ToiMethod::Bisection => "bisection",
         ToiMethod::Conservative => "conservative advancement",

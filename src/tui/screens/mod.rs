@@ -2,17 +2,22 @@
 //! play, pause, step, charts, events) and *resolver* (one resolution's
 //! iterations stop by stop). Enter goes down a level (frame → its resolver
 //! iterations → an iteration's contact), Esc or Backspace up. Their state
-//! lives here; [`nav`] updates it, [`run`] and [`resolver`] draw it. They
+//! lives here; [`nav`], [`run_nav`] and [`resolver_nav`] update it, [`run`] and [`resolver`] draw it. They
 //! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
 mod chrome;
 mod detect;
+mod detect_minkowski;
 mod detect_nav;
+mod detect_stages;
+mod detect_toi;
 mod edit;
 mod nav;
 mod picture;
 mod resolver;
+mod resolver_nav;
 mod run;
+mod run_nav;
 
 use std::cell::Cell;
 
@@ -21,7 +26,7 @@ use ratatui::layout::Rect;
 use crate::session::{Player, Recording};
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
-pub use detect_nav::{DetectView, DETECT_KEYS};
+pub use detect_nav::{DetectView, Shown, DETECT_KEYS};
 
 /// The screen on show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -165,6 +170,8 @@ pub enum Key {
     ToiMethod,
     NextPair,
     PrevPair,
+    /// `x` on the detection: the shapes and A - B, the shapes, A - B.
+    Picture,
 }
 
 /// What the run screen's picture shows or hides.

@@ -112,7 +112,7 @@ fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
 }
 
 /// Bounds with a margin, widened so a braille dot is as wide as it is tall.
-fn fit(b: [f64; 4], cols: u16, rows: u16) -> [f64; 4] {
+pub(super) fn fit(b: [f64; 4], cols: u16, rows: u16) -> [f64; 4] {
     let (cx, cy) = ((b[0] + b[1]) / 2.0, (b[2] + b[3]) / 2.0);
     let mut w = (b[1] - b[0]).max(1e-9) * 1.25;
     let mut h = (b[3] - b[2]).max(1e-9) * 1.25;
@@ -273,7 +273,7 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
 /// neither selected nor next (rank 3) keeps to its own cell, with a free
 /// cell after it: a number moved off its point would misplace it, and
 /// coincident contacts in this view are one mark.
-fn place(
+pub(super) fn place(
     mut labels: Vec<(P, String, Style, u8)>,
     b: [f64; 4],
     cols: u16,

@@ -1,0 +1,109 @@
+//! The detection screen's time of collision (`t`): the trial on show of
+//! the pair's search over the next step, the outcome, and which search it
+//! is (the scene's continuous detection, bisection when it runs none, or
+//! `m`'s switch). It reads the trace `session` built: no physics here.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+
+use super::DetectView;
+use crate::physics::detect::ToiMethod;
+use crate::render::toi::{outcome_line, trial_line};
+use crate::trace::toi::DetectToi;
+use crate::tui::app::App;
+
+/// The pair's time-of-collision trial on show and the outcome.
+pub fn render(
+    app: &App,
+    d: &DetectView,
+    toi: &DetectToi,
+    trial: usize,
+    area: Rect,
+    buf: &mut Buffer,
+) {
+    let t = &app.theme;
+    let f = &app.fmt;
+    let mut lines = vec![
+        Line::from(format!(
+            "Step {} (t = {} s to {} s), by {}.",
+            toi.step,
+            f.num(toi.time),
+            f.num(toi.time + toi.dt),
+            toi.method.json_name()
+        )),
+        Line::styled(method_origin(d), t.dim()),
+    ];
+    let title = match toi.pairs.first() {
+        None => {
+            lines.push(Line::from(
+                "The pair's movement bounds do not meet over the step: nothing to search.",
+            ));
+            "time of collision".to_string()
+        }
+        Some(p) => {
+            let n = p.record.trials.len();
+            lines.push(Line::from(format!(
+                "Movement bounds: swept AABBs overlap: {}; swept spheres meet: {}.",
+                yes(p.aabbs_overlap),
+                yes(p.spheres_meet)
+            )));
+            lines.push(Line::from(""));
+            match p.record.trials.get(trial) {
+                Some(x) => lines.push(Line::from(format!(
+                    "Trial {} of {n}: {}",
+                    trial + 1,
+                    trial_line(p, x, f)
+                ))),
+                None => lines.push(Line::styled(format!("All {n} trials done."), t.dim())),
+            }
+            lines.push(Line::from(""));
+            lines.push(Line::styled("Result", t.title()));
+            lines.push(Line::from(outcome_line(p, f)));
+            match trial < n {
+                true => format!("time of collision · trial {} of {n}", trial + 1),
+                false => "time of collision · result".into(),
+            }
+        }
+    };
+    let (a, b, _) = d.selected().unwrap_or(("", "", false));
+    let block = Block::bordered()
+        .border_style(t.border())
+        .title(Span::styled(
+            format!(" {a} – {b} · {title} · ←→ "),
+            t.title(),
+        ));
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .block(block)
+        .render(area, buf);
+}
+
+/// Where the search comes from: the scene's continuous detection, the
+/// default when it runs none, or `m`.
+fn method_origin(d: &DetectView) -> String {
+    let name = super::detect_nav::method_name;
+    match d.scene_method {
+        Some(m) if m == d.method => format!(
+            "The scene's continuous detection (its ccd knob) searches by {}; m: the other search.",
+            name(m)
+        ),
+        None if d.method == ToiMethod::Bisection => {
+            "The scene runs no continuous detection (ccd none): bisection, the lecture's; m: conservative advancement.".into()
+        }
+        Some(m) => format!(
+            "m switched from the scene's search ({}, its ccd knob).",
+            name(m)
+        ),
+        None => "m switched from bisection (the scene runs no continuous detection).".into(),
+    }
+}
+
+fn yes(b: bool) -> &'static str {
+    if b {
+        "yes"
+    } else {
+        "no"
+    }
+}
