@@ -1,6 +1,6 @@
 //! `contact-lab detect`'s arguments.
 
-use clap::Args;
+use clap::{Args, ValueEnum};
 
 use super::{Format, KnobArgs, PlaneArg, RunLevel, ToiMethodArg};
 
@@ -30,14 +30,35 @@ pub struct DetectArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    #[command(flatten)]
+    pub fold: super::WidthArg,
     /// Also write an SVG figure of the (first) pair: both shapes, the
     /// Minkowski difference A - B, the simplex or EPA's face, the normal.
     #[arg(long, value_name = "F.svg")]
     pub figure: Option<std::path::PathBuf>,
+    /// The figure draws iteration K (1 = the first, as the text numbers
+    /// them) of the list --phase names: its simplex (GJK) or closest face
+    /// (EPA), v_k, w_k and d_k. Default: the last iteration.
+    #[arg(long, value_name = "K", requires = "figure",
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub iteration: Option<u64>,
+    /// Which iterations --iteration counts: GJK's (the default) or EPA's.
+    /// Alone, the figure draws that phase's last iteration.
+    #[arg(long, value_enum, requires = "figure")]
+    pub phase: Option<DetectPhaseArg>,
     /// The plane the figure shows.
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,
     /// Every knob over the lesson's (`--narrow-phase gjk` forces GJK/EPA).
     #[command(flatten)]
     pub knobs: KnobArgs<RunLevel>,
+}
+
+/// The iteration list `detect --iteration` counts in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DetectPhaseArg {
+    /// GJK: the simplex, v_k, w_k and the search direction d_k.
+    Gjk,
+    /// EPA: the face closest to the origin, v_k on it, w_k and d_k (its normal).
+    Epa,
 }

@@ -103,6 +103,18 @@ pub enum Format {
     Latex,
 }
 
+/// `--width`: the columns plain text folds to, on every command that
+/// prints text (one declaration, flattened into each).
+#[derive(Debug, Clone, Copy, Args)]
+pub struct WidthArg {
+    /// Text: fold lines to N columns (0: never); tables fold as tables
+    /// (columns split into blocks). Default: the terminal's width, or 100
+    /// when stdout is not a terminal. Markdown, LaTeX and JSON are never
+    /// folded.
+    #[arg(long, value_name = "N")]
+    pub width: Option<usize>,
+}
+
 /// A contact's knobs (`--friction-model`, …), from the knob table.
 pub type ModelArgs = KnobArgs<ContactLevel>;
 
@@ -131,6 +143,8 @@ pub struct SolveArgs {
     /// Markdown: write an SVG figure of each contact to DIR and link it.
     #[arg(long, value_name = "DIR")]
     pub figures: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub fold: WidthArg,
     #[command(flatten)]
     pub model: ModelArgs,
 }
@@ -190,6 +204,8 @@ pub struct ErrataArgs {
     /// Output format.
     #[arg(long, short, value_enum, default_value_t = ErrataFormat::Text)]
     pub format: ErrataFormat,
+    #[command(flatten)]
+    pub fold: WidthArg,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

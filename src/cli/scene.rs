@@ -70,11 +70,8 @@ pub struct ResolveArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
-    /// Text: fold lines to N columns (0: never). Default: the terminal's
-    /// width, or 100 when stdout is not a terminal. Markdown and JSON are
-    /// never folded.
-    #[arg(long, value_name = "N")]
-    pub width: Option<usize>,
+    #[command(flatten)]
+    pub fold: WidthArg,
     /// A contact's and the resolver's knobs, each over the lesson's.
     #[command(flatten)]
     pub knobs: KnobArgs<ResolveLevel>,
@@ -110,11 +107,8 @@ pub struct SimulateArgs {
     /// is a summary: energy, penetration, iterations, events, final state.
     #[arg(long)]
     pub table: bool,
-    /// Text: fold lines to N columns (0: never). Default: the terminal's
-    /// width, or 100 when stdout is not a terminal. Markdown and JSON are
-    /// never folded.
-    #[arg(long, value_name = "N")]
-    pub width: Option<usize>,
+    #[command(flatten)]
+    pub fold: WidthArg,
     /// The plane of the film strip (svg).
     #[arg(long, value_enum, default_value_t = PlaneArg::Xy)]
     pub plane: PlaneArg,
@@ -173,6 +167,8 @@ pub struct StudyArgs {
     /// Significant digits of text and Markdown (JSON and CSV carry full f64).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    #[command(flatten)]
+    pub fold: WidthArg,
     /// Run even beyond the caps (over 2,000 configurations or 10 million simulated steps).
     #[arg(long)]
     pub force: bool,

@@ -3,12 +3,13 @@
 use std::io::Write;
 
 use super::{io, load, overrides, warn, write_atomic};
-use crate::cli::{DetectArgs, Format};
+use crate::cli::{DetectArgs, DetectPhaseArg, Format};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Lesson;
 use crate::physics::step::{SimParams, Simulation};
 use crate::render::detect as show;
+use crate::trace::detect::PairTrace;
 
 pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     let lesson = load(&args.lesson, &overrides(&args.knobs)?, None)?;
@@ -22,19 +23,67 @@ pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
     let plane = super::figure::plane(args.plane);
     let trace = crate::session::detect_trace(&sim, &lesson, args.step, plane, only);
     if let Some(path) = &args.figure {
-        let svg = show::svg(&trace, 0).ok_or_else(|| {
+        let first = trace.pairs.first().ok_or_else(|| {
             AppError::Usage("--figure: no pair reaches the narrow phase, so there is nothing to draw (name one with --pair A,B)".into())
         })?;
+        let shown = shown(args, first)?;
+        let svg = show::svg_at(&trace, 0, shown)
+            .ok_or_else(|| AppError::Runtime("--figure: nothing to draw".into()))?;
         write_atomic(path, svg.as_bytes())?;
     }
     let f = Fmt::new(args.digits as usize);
     let text = match args.format {
-        Format::Text => show::text(&trace, &f),
+        Format::Text => {
+            let width = super::text_width(args.fold.width);
+            crate::render::wrap::wrap(&show::text(&trace, &f, width), width)
+        }
         Format::Md => show::markdown(&trace, &f),
         Format::Latex => show::latex(&trace, &f),
         Format::Json => show::json(&trace),
     };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// The stop (an index into [`show::steps::stops`]: GJK's iterations, then
+/// EPA's; `usize::MAX`: the result) `--iteration K` / `--phase` ask the
+/// figure to draw, checked against the pair's GJK or EPA iteration count
+/// (exit 2 outside).
+fn shown(args: &DetectArgs, p: &PairTrace) -> Result<usize, AppError> {
+    let phase = match (args.phase, args.iteration) {
+        (None, None) => return Ok(usize::MAX),
+        (Some(phase), _) => phase,
+        (None, Some(_)) => DetectPhaseArg::Gjk,
+    };
+    let (name, count) = match phase {
+        DetectPhaseArg::Gjk => ("GJK", p.gjk.as_ref().map_or(0, |g| g.iterations.len())),
+        DetectPhaseArg::Epa => ("EPA", p.epa.as_ref().map_or(0, |e| e.iterations.len())),
+    };
+    let pair = format!("{} – {}", p.a, p.b);
+    if count == 0 {
+        return Err(AppError::Usage(format!(
+            "--phase {}: pair {pair} has no {name} iterations (method {}{})",
+            name.to_lowercase(),
+            p.method,
+            match &p.gjk {
+                Some(g) => format!(", GJK: {}", g.result),
+                None => String::new(),
+            }
+        )));
+    }
+    let k = match args.iteration {
+        None => count,
+        Some(k) if (1..=count as u64).contains(&k) => k as usize,
+        Some(k) => {
+            return Err(AppError::Usage(format!(
+                "--iteration {k}: pair {pair} has {count} {name} iteration(s), 1 to {count}"
+            )))
+        }
+    };
+    let gjk = p.gjk.as_ref().map_or(0, |g| g.iterations.len());
+    Ok(match phase {
+        DetectPhaseArg::Gjk => k - 1,
+        DetectPhaseArg::Epa => gjk + k - 1,
+    })
 }
 
 /// `A,B` as two body indices.

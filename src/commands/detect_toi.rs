@@ -31,7 +31,10 @@ pub fn detect_toi(args: &DetectArgs, lesson: &Lesson, out: &mut dyn Write) -> Re
         .transpose()?;
     let detected = trace(&lesson, args.step.max(1), method, pair)?;
     let text = match args.format {
-        Format::Text => render::text(&detected, &Fmt::new(args.digits as usize)),
+        Format::Text => crate::render::wrap::wrap(
+            &render::text(&detected, &Fmt::new(args.digits as usize)),
+            super::text_width(args.fold.width),
+        ),
         Format::Json => render::json(&detected),
         Format::Md | Format::Latex => {
             return Err(AppError::Usage(

@@ -29,7 +29,10 @@ pub fn errata(args: &ErrataArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         lessons.push((lesson.id.clone(), lesson.title.clone()));
     }
     let text = match args.format {
-        ErrataFormat::Text => render::errata::text(&lessons, &items, &Fmt::default()),
+        ErrataFormat::Text => render::wrap::wrap(
+            &render::errata::text(&lessons, &items, &Fmt::default()),
+            super::text_width(args.fold.width),
+        ),
         ErrataFormat::Json => render::errata::json(&items),
     };
     out.write_all(text.as_bytes()).map_err(io)?;

@@ -111,7 +111,7 @@ pub fn resolve(
             let trace = crate::trace::resolver::describe(&lesson, &params, implementation, true);
             crate::render::wrap::wrap(
                 &resolve::text::render(&trace, &fmt),
-                super::text_width(args.width),
+                super::text_width(args.fold.width),
             )
         }
         ResolveFormat::Md => {

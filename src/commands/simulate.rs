@@ -64,7 +64,7 @@ pub fn simulate(
     };
     // Written as computed: memory stays flat in the number of steps.
     let width = match args.format {
-        RunFormat::Text => super::text_width(args.width),
+        RunFormat::Text => super::text_width(args.fold.width),
         _ => 0,
     };
     let folded = crate::render::wrap::WrapWriter::new(out, width);
@@ -179,7 +179,10 @@ fn trace_step(
             );
             let body = crate::render::resolve::text::render(&described.resolver, &fmt);
             let previous = crate::render::previous_frame::text(&described.previous, &fmt);
-            crate::render::wrap::wrap(&(head + &body + &previous), super::text_width(args.width))
+            crate::render::wrap::wrap(
+                &(head + &body + &previous),
+                super::text_width(args.fold.width),
+            )
         }
         RunFormat::Json => {
             let seconds = crate::render::resolve::Seconds::default();

@@ -57,7 +57,13 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
             .collect::<Result<_, AppError>>()?;
         let text = match args.format {
             Format::Json => render::contact::compare::json(&compared),
-            _ => render::contact::compare::text(&compared, &fmt),
+            _ => {
+                let width = super::text_width(args.fold.width);
+                crate::render::wrap::wrap(
+                    &render::contact::compare::text(&compared, &fmt, width),
+                    width,
+                )
+            }
         };
         return out.write_all(text.as_bytes()).map_err(io);
     }
@@ -99,6 +105,10 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         alone_note(&text, &lesson.id, args.format)
     } else {
         text
+    };
+    let text = match args.format {
+        Format::Text => crate::render::wrap::wrap(&text, super::text_width(args.fold.width)),
+        _ => text,
     };
     out.write_all(text.as_bytes()).map_err(io)
 }

@@ -107,7 +107,10 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     drop(progress);
     let fmt = Fmt::new(args.digits as usize);
     let text = match args.format {
-        StudyFormat::Text => render::text(&study, &fmt),
+        StudyFormat::Text => {
+            let width = super::text_width(args.fold.width);
+            crate::render::wrap::wrap(&render::text(&study, &fmt, width), width)
+        }
         StudyFormat::Json => render::json::render(&study),
         StudyFormat::Csv => render::csv::render(&study),
         StudyFormat::Svg => render::svg::render(&study),

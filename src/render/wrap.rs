@@ -102,6 +102,106 @@ pub fn wrap(text: &str, width: usize) -> String {
     out
 }
 
+/// A table laid out in aligned columns (two spaces between them, `indent`
+/// spaces before each line, trailing spaces trimmed) and folded to `width`
+/// as a table: when the columns are wider than the width, the first `keys`
+/// columns (the row's name) stay and the others are split into blocks that
+/// fit, one after another with a blank line between; a block of one column
+/// still too wide folds its lines under that column. Width 0 never folds.
+/// Each line ends with a newline; no blank line follows the last block.
+pub fn table(
+    indent: usize,
+    keys: usize,
+    head: &[String],
+    rows: &[Vec<String>],
+    width: usize,
+) -> String {
+    let n = head.len();
+    let cell = |r: &[String], k: usize| r.get(k).map_or(0, |c| c.chars().count());
+    let widths: Vec<usize> = (0..n)
+        .map(|k| {
+            rows.iter()
+                .map(|r| cell(r, k))
+                .chain([cell(head, k)])
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let span = |cols: &[usize]| {
+        indent + cols.iter().map(|k| widths[*k]).sum::<usize>() + 2 * cols.len().saturating_sub(1)
+    };
+    let all: Vec<usize> = (0..n).collect();
+    let blocks: Vec<Vec<usize>> = if width == 0 || n < 2 || span(&all) <= width {
+        vec![all]
+    } else {
+        // The name columns, fewer when they leave no room for a value.
+        let narrowest = (1..n).map(|k| widths[k]).min().unwrap_or(0);
+        let keys = (1..=keys.clamp(1, n - 1))
+            .rev()
+            .find(|k| span(&all[..*k]) + 2 + narrowest <= width)
+            .unwrap_or(1);
+        let mut blocks: Vec<Vec<usize>> = Vec::new();
+        for k in keys..n {
+            match blocks.last_mut() {
+                Some(b) if span(&[b.as_slice(), &[k]].concat()) <= width => b.push(k),
+                _ => blocks.push([&all[..keys], &[k]].concat()),
+            }
+        }
+        blocks
+    };
+    let line = |r: &[String], cols: &[usize]| {
+        let mut l = " ".repeat(indent);
+        for (i, k) in cols.iter().enumerate() {
+            let c = r.get(*k).map_or("", String::as_str);
+            if i > 0 {
+                l.push_str("  ");
+            }
+            l.push_str(c);
+            l.push_str(&" ".repeat(widths[*k] - c.chars().count()));
+        }
+        let l = l.trim_end();
+        // A line still too wide hangs under its second column.
+        let hang = span(&cols[..cols.len() - 1]) + 2;
+        if width == 0 || l.chars().count() <= width || cols.len() < 2 || hang > width / 2 {
+            return wrap_line(l, width);
+        }
+        let (name, rest): (String, String) = {
+            let chars: Vec<char> = l.chars().collect();
+            (
+                chars[..hang].iter().collect(),
+                chars[hang..].iter().collect(),
+            )
+        };
+        let mut out = Vec::new();
+        for (j, piece) in wrap_line(&rest, width - hang).into_iter().enumerate() {
+            let lead = if j == 0 {
+                name.clone()
+            } else {
+                " ".repeat(hang)
+            };
+            out.push(
+                format!("{lead}{}", piece.trim_start())
+                    .trim_end()
+                    .to_string(),
+            );
+        }
+        out
+    };
+    let mut out = String::new();
+    for (b, cols) in blocks.iter().enumerate() {
+        if b > 0 {
+            out.push('\n');
+        }
+        for r in std::iter::once(head).chain(rows.iter().map(Vec::as_slice)) {
+            for l in line(r, cols) {
+                out.push_str(&l);
+                out.push('\n');
+            }
+        }
+    }
+    out
+}
+
 /// A writer that folds whole lines to a width as they pass through (for
 /// output written as it is computed, like `simulate`'s table).
 pub struct WrapWriter<W: Write> {
@@ -185,6 +285,52 @@ mod tests {
         assert!(lines[1..]
             .iter()
             .all(|l| l.starts_with("  ") && !l.starts_with("   ")));
+    }
+
+    fn strings(cells: &[&str]) -> Vec<String> {
+        cells.iter().map(|c| c.to_string()).collect()
+    }
+
+    #[test]
+    fn a_table_that_fits_is_aligned_columns() {
+        let head = strings(&["k", "value", "note"]);
+        let rows = vec![strings(&["1", "2.5", "first"]), strings(&["10", "-3", ""])];
+        let want = " k   value  note\n 1   2.5    first\n 10  -3\n";
+        assert_eq!(table(1, 1, &head, &rows, 80), want);
+        assert_eq!(table(1, 1, &head, &rows, 0), want);
+    }
+
+    #[test]
+    fn a_wide_table_splits_into_blocks_that_repeat_the_name_columns() {
+        let head = strings(&["knob", "value", "aaaaaaaaaa", "bbbbbbbbbb", "cccccccccc"]);
+        let rows = vec![strings(&["dt", "1/30", "1", "2", "3"])];
+        let text = table(0, 2, &head, &rows, 30);
+        let want = "knob  value  aaaaaaaaaa\n\
+                    dt    1/30   1\n\
+                    \n\
+                    knob  value  bbbbbbbbbb\n\
+                    dt    1/30   2\n\
+                    \n\
+                    knob  value  cccccccccc\n\
+                    dt    1/30   3\n";
+        assert_eq!(text, want);
+        // Two value columns fit in 40.
+        let text = table(0, 2, &head, &rows, 40);
+        assert!(
+            text.starts_with("knob  value  aaaaaaaaaa  bbbbbbbbbb\n"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_cell_wider_than_the_room_folds_under_its_column() {
+        let head = strings(&["k", "w_k"]);
+        let rows = vec![strings(&["1", "(1, 2, 3) = (4, 5, 6) - (3, 3, 3)"])];
+        let text = table(0, 1, &head, &rows, 20);
+        assert_eq!(
+            text,
+            "k  w_k\n1  (1, 2, 3) =\n   (4, 5, 6) -\n   (3, 3, 3)\n"
+        );
     }
 
     #[test]

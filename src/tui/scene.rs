@@ -48,10 +48,10 @@ fn place_labels(
     if w < 2 || h < 2 || xr <= 0.0 || yr <= 0.0 {
         return vec![];
     }
-    let mut labels: Vec<(&P, &String, Ink, u8)> = marks
+    let mut labels: Vec<(&P, &String, Ink, u8, Option<P>)> = marks
         .iter()
         .filter_map(|m| match m {
-            Mark::Label(p, text, ink, rank) => Some((p, text, *ink, *rank)),
+            Mark::Label(p, text, ink, rank, lean) => Some((p, text, *ink, *rank, *lean)),
             Mark::Seg(..) => None,
         })
         .collect();
@@ -78,7 +78,7 @@ fn place_labels(
         }
     }
     let mut out = vec![];
-    for (p, text, ink, _) in labels {
+    for (p, text, ink, _, lean) in labels {
         if !(xb[0]..=xb[1]).contains(&p[0]) || !(yb[0]..=yb[1]).contains(&p[1]) {
             continue;
         }
@@ -86,7 +86,7 @@ fn place_labels(
         let c = ((p[0] - xb[0]) * f64::from(2 * w - 1) / xr).round() as i32 / 2;
         let r = ((yb[1] - p[1]) * f64::from(4 * h - 1) / yr).round() as i32 / 4;
         let n = super::wrap::width(text) as i32;
-        let tries = [
+        let near = [
             (0, 0),
             (1, 0),
             (-n, 0),
@@ -99,6 +99,16 @@ fn place_labels(
             (2, 0),
             (-n - 1, 0),
         ];
+        // An arrow's label first past its head: to the right of a head
+        // pointing right, to the left of one pointing left, above or below
+        // one pointing up or down (a cell is about twice as tall as wide).
+        let past: &[(i32, i32)] = match lean {
+            Some(u) if u[0].abs() >= 0.5 * u[1].abs() && u[0] > 0.0 => &[(1, 0), (1, -1), (1, 1)],
+            Some(u) if u[0].abs() >= 0.5 * u[1].abs() => &[(-n, 0), (-n, -1), (-n, 1)],
+            Some(u) if u[1] > 0.0 => &[(0, -1), (1, -1), (-n, -1)],
+            Some(_) => &[(0, 1), (1, 1), (-n, 1)],
+            None => &[],
+        };
         let free = |c: i32, r: i32| {
             r >= 0
                 && r < h
@@ -107,13 +117,18 @@ fn place_labels(
                 && (c..c + n).all(|x| !taken[(r * w + x) as usize])
         };
         let clear = |c: i32, r: i32| free(c, r) && (c..c + n).all(|x| !drawn[(r * w + x) as usize]);
-        let spot = |c0: i32, r0: i32, ok: &dyn Fn(i32, i32) -> bool| {
+        let spot = |tries: &[(i32, i32)], ok: &dyn Fn(i32, i32) -> bool| {
             tries
                 .iter()
-                .map(|(dc, dr)| (c0 + dc, r0 + dr))
+                .map(|(dc, dr)| (c + dc, r + dr))
                 .find(|&(c, r)| ok(c, r))
         };
-        if let Some((c, r)) = spot(c, r, &clear).or_else(|| spot(c, r, &free)) {
+        // Past the head even over the drawing, before anywhere else near.
+        let place = spot(past, &clear)
+            .or_else(|| spot(past, &free))
+            .or_else(|| spot(&near, &clear))
+            .or_else(|| spot(&near, &free));
+        if let Some((c, r)) = place {
             for x in c..c + n {
                 taken[(r * w + x) as usize] = true;
             }
@@ -286,7 +301,7 @@ mod tests {
         // A horizontal line across a 10 × 5 canvas through the label's point.
         let marks = vec![
             Mark::Seg([0.0, 2.0], [10.0, 2.0], Ink::Body),
-            Mark::Label([5.0, 2.0], "q".into(), Ink::Point, 0),
+            Mark::Label([5.0, 2.0], "q".into(), Ink::Point, 0, None),
         ];
         let placed = place_labels(&marks, [0.0, 10.0], [0.0, 4.0], 10, 5);
         assert_eq!(placed.len(), 1);
@@ -295,6 +310,36 @@ mod tests {
             (y - 2.0).abs() > 0.5,
             "the label is off the line's row: y = {y}"
         );
+    }
+
+    #[test]
+    fn two_arrow_heads_that_meet_keep_their_labels_past_each_head() {
+        // v₁ arrives from the left, v₂ from the right, both heads at (5, 2)
+        // (two-boxes: A's and B's velocities meet at the contact).
+        let marks = vec![
+            Mark::Seg([1.0, 2.0], [5.0, 2.0], Ink::VelocityBefore),
+            Mark::Seg([9.0, 2.0], [5.0, 2.0], Ink::VelocityBefore),
+            Mark::Label(
+                [5.0, 2.0],
+                "v₁".into(),
+                Ink::VelocityBefore,
+                3,
+                Some([1.0, 0.0]),
+            ),
+            Mark::Label(
+                [5.0, 2.0],
+                "v₂".into(),
+                Ink::VelocityBefore,
+                3,
+                Some([-1.0, 0.0]),
+            ),
+        ];
+        let placed = place_labels(&marks, [0.0, 10.0], [0.0, 4.0], 21, 5);
+        let x = |name: &str| placed.iter().find(|l| l.1 == name).expect(name).0[0];
+        let y = |name: &str| placed.iter().find(|l| l.1 == name).expect(name).0[1];
+        assert!(x("v₁") > 5.0, "v₁ right of the heads: {placed:?}");
+        assert!(x("v₂") < 5.0, "v₂ left of the heads: {placed:?}");
+        assert_eq!(y("v₁"), y("v₂"), "both on the heads' row: {placed:?}");
     }
 
     #[test]

@@ -10,6 +10,7 @@ mod advise_per_step;
 mod ccd_simulate;
 mod check_rows;
 mod detect_cli;
+mod detect_iteration;
 mod detect_toi;
 mod exercise_asks;
 mod exercise_figures;

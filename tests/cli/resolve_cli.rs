@@ -360,7 +360,14 @@ fn bad_lessons_are_reported_exactly_as_solve_reports_them() {
 
 #[test]
 fn solve_all_contacts_says_each_is_solved_alone_and_points_to_resolve() {
-    let r = run(&["solve", "box-four-corners", "--all-contacts"]);
+    // Unfolded (--width 0): the note's sentences on their own lines.
+    let r = run(&[
+        "solve",
+        "box-four-corners",
+        "--all-contacts",
+        "--width",
+        "0",
+    ]);
     assert_eq!(r.code, Some(0));
     assert!(r.stdout.starts_with(
         "Each contact below is solved alone, from the scene as given: the results are independent of each other."

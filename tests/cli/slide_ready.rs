@@ -108,3 +108,112 @@ fn the_film_strip_has_a_legend_for_its_dashed_boxes() {
     }
     assert!(legend.contains(r#"stroke-dasharray="4 3""#));
 }
+
+/// `contact-lab ARGS` run to success, its stdout.
+fn text_of(args: &[String]) -> String {
+    let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+    stdout(&refs)
+}
+
+/// Every line of `text` no wider than `width`, else the lines that are.
+fn fits(what: &str, text: &str, width: usize) {
+    let wide: Vec<&str> = text.lines().filter(|l| l.chars().count() > width).collect();
+    assert!(
+        wide.is_empty(),
+        "{what} --width {width}: {} line(s) wider, first {:?}",
+        wide.len(),
+        wide[0]
+    );
+}
+
+#[test]
+fn solve_check_detect_and_study_fold_every_lesson_and_scene_to_the_width() {
+    use contact_lab::lesson::embedded;
+    let lessons = embedded::ids();
+    let scenes = embedded::scene_ids();
+    for width in [60usize, 80, 100] {
+        let w = width.to_string();
+        let with = |args: &[&str]| -> Vec<String> {
+            args.iter()
+                .map(|a| a.to_string())
+                .chain(["--width".to_string(), w.clone()])
+                .collect()
+        };
+        for id in &lessons {
+            for args in [
+                with(&["solve", id, "--all-contacts"]),
+                with(&["solve", id, "--compare-friction"]),
+                with(&["detect", id]),
+            ] {
+                fits(&args.join(" "), &text_of(&args), width);
+            }
+        }
+        for id in &scenes {
+            for args in [with(&["detect", id]), with(&["detect", id, "--toi"])] {
+                fits(&args.join(" "), &text_of(&args), width);
+            }
+        }
+        // `check` exits 0: every printed number agrees or is a known erratum.
+        fits("check", &text_of(&with(&["check"])), width);
+        let study = with(&[
+            "study",
+            "ramp-stick",
+            "--quick",
+            "--no-timing",
+            "--seconds",
+            "0.2",
+        ]);
+        fits("study", &text_of(&study), width);
+    }
+}
+
+#[test]
+fn solve_and_check_fold_by_moving_line_breaks_only() {
+    let words = |t: &str| t.split_whitespace().map(str::to_string).collect::<Vec<_>>();
+    for args in [&["solve", "rod-reverses"][..], &["check", "lecture-1"][..]] {
+        let whole = stdout(&[args, &["--width", "0"]].concat());
+        let narrow = stdout(&[args, &["--width", "60"]].concat());
+        assert!(widest(&whole) > 200, "{args:?}: {} columns", widest(&whole));
+        assert_eq!(words(&narrow), words(&whole), "{args:?}");
+    }
+}
+
+#[test]
+fn a_wide_table_folds_into_blocks_that_keep_each_row_named() {
+    // The study's table: knob and value start every block's rows.
+    let args = [
+        "study",
+        "ramp-stick",
+        "--quick",
+        "--no-timing",
+        "--seconds",
+        "0.2",
+    ];
+    let whole = stdout(&[&args[..], &["--width", "0"]].concat());
+    let narrow = stdout(&[&args[..], &["--width", "60"]].concat());
+    assert!(widest(&whole) > 120);
+    let heads: Vec<&str> = narrow
+        .lines()
+        .filter(|l| l.starts_with("  knob       value "))
+        .collect();
+    assert!(heads.len() >= 3, "{narrow}");
+    for column in ["visits/step", "pen. left", "energy gain", "error", "front"] {
+        assert!(
+            heads.iter().any(|h| h.contains(column)),
+            "no block holds {column}: {heads:?}"
+        );
+    }
+    let f32_rows = narrow
+        .lines()
+        .filter(|l| l.starts_with("  precision  f32"))
+        .count();
+    assert_eq!(f32_rows, heads.len(), "the f32 row in each block");
+    // detect's GJK table: one block unfolded, the iteration k heading each
+    // block at 60 columns.
+    let whole = stdout(&["detect", "epa-edge-edge", "--width", "0"]);
+    assert!(whole.contains("\nk  d_k  "), "{whole}");
+    let narrow = stdout(&["detect", "epa-edge-edge", "--width", "60"]);
+    for head in ["k  d_k\n", "k  simplex (✗ dropped)\n", "k  faces\n"] {
+        assert!(narrow.contains(head), "no block {head:?} in:\n{narrow}");
+    }
+}

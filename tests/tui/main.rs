@@ -14,6 +14,7 @@ mod tui;
 mod tui_detect;
 mod tui_detect_stages;
 mod tui_huge_step;
+mod tui_labels;
 mod tui_lesson_picker;
 mod tui_scenes;
 mod tui_teaching;

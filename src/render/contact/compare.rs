@@ -18,11 +18,12 @@ pub struct Compared {
     pub trace: Trace,
 }
 
+/// One paragraph (folded with the rest of the text).
 const HOW_THEY_DIFFER: &str = "\
-How they differ: millington solves for the impulse that stops all sliding and, if that needs more than μ_s g_n,
-slides with μ_d g_n along it while keeping the normal velocity target; kinetic-direction (the collisions lectures: Lecture IV Collisions; Pronost) always
-applies μ_k j against the slip, however slow, so it can reverse the slip and, when friction turns the body, miss
-the normal target; velocity-scaling (the friction lecture: PSE Friction) sets a velocity target (remove, or scale by μ_d) instead of bounding
+How they differ: millington solves for the impulse that stops all sliding and, if that needs more than μ_s g_n, \
+slides with μ_d g_n along it while keeping the normal velocity target; kinetic-direction (the collisions lectures: Lecture IV Collisions; Pronost) always \
+applies μ_k j against the slip, however slow, so it can reverse the slip and, when friction turns the body, miss \
+the normal target; velocity-scaling (the friction lecture: PSE Friction) sets a velocity target (remove, or scale by μ_d) instead of bounding \
 the impulse, so its impulse can leave the Coulomb cone.";
 
 /// ✓, ✗ or · for a check the solution ran, – for one it did not.
@@ -118,44 +119,22 @@ fn rows(compared: &[Compared], fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     rows
 }
 
-pub fn text(compared: &[Compared], fmt: &Fmt) -> String {
+/// The models side by side, the table folded to `width` as a table (0:
+/// never).
+pub fn text(compared: &[Compared], fmt: &Fmt, width: usize) -> String {
     let t = &compared[0].trace;
     let mut out = format!(
         "Friction models compared — {} ({}), contact {}\n\n",
         t.title, t.lesson, t.contact_label
     );
-    let rows = rows(compared, fmt);
-    let label_w = rows
-        .iter()
-        .map(|(l, _)| l.chars().count())
-        .max()
-        .unwrap_or(0);
-    let col_w: Vec<usize> = (0..compared.len())
-        .map(|i| {
-            rows.iter()
-                .map(|(_, c)| c[i].chars().count())
-                .chain([compared[i].model.name().len()])
-                .max()
-                .unwrap_or(0)
-        })
+    let head: Vec<String> = std::iter::once(String::new())
+        .chain(compared.iter().map(|c| c.model.name().to_string()))
         .collect();
-    let pad = |s: &str, w: usize| format!("{s}{}", " ".repeat(w.saturating_sub(s.chars().count())));
-    let mut header = pad("", label_w);
-    for (i, c) in compared.iter().enumerate() {
-        header.push_str("  ");
-        header.push_str(&pad(c.model.name(), col_w[i]));
-    }
-    out.push_str(header.trim_end());
-    out.push('\n');
-    for (label, cells) in &rows {
-        let mut line = pad(label, label_w);
-        for (i, c) in cells.iter().enumerate() {
-            line.push_str("  ");
-            line.push_str(&pad(c, col_w[i]));
-        }
-        out.push_str(line.trim_end());
-        out.push('\n');
-    }
+    let rows: Vec<Vec<String>> = rows(compared, fmt)
+        .into_iter()
+        .map(|(label, cells)| std::iter::once(label).chain(cells).collect())
+        .collect();
+    out.push_str(&crate::render::wrap::table(0, 1, &head, &rows, width));
     out.push('\n');
     out.push_str(HOW_THEY_DIFFER);
     out.push('\n');

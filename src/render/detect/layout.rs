@@ -5,8 +5,10 @@ use crate::format::Fmt;
 use crate::render::tex::escape_text;
 use crate::trace::detect::DetectTrace;
 
-/// Plain text: underlined headings, tables in aligned columns.
-pub fn text(t: &DetectTrace, f: &Fmt) -> String {
+/// Plain text: underlined headings, tables in aligned columns folded to
+/// `width` as tables (0: never; the prose is left to
+/// [`crate::render::wrap::wrap`]).
+pub fn text(t: &DetectTrace, f: &Fmt, width: usize) -> String {
     let mut out = String::new();
     for b in page(t, f) {
         match b {
@@ -18,32 +20,14 @@ pub fn text(t: &DetectTrace, f: &Fmt) -> String {
                 } else {
                     '·'
                 };
-                out += &format!("{s}\n{}\n", rule.to_string().repeat(s.chars().count()));
+                // The rule as long as the heading's longest folded line.
+                let lines = crate::render::wrap::wrap_line(&s, width);
+                let long = lines.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+                out += &format!("{}\n{}\n", lines.join("\n"), rule.to_string().repeat(long));
             }
             Block::Para(s) => out += &format!("{s}\n\n"),
             Block::Table { head, rows } => {
-                let n = head.len();
-                let width: Vec<usize> = (0..n)
-                    .map(|k| {
-                        rows.iter()
-                            .map(|r| r[k].chars().count())
-                            .chain([head[k].chars().count()])
-                            .max()
-                            .unwrap_or(0)
-                    })
-                    .collect();
-                let line = |r: &[String]| {
-                    let cells: Vec<String> = r
-                        .iter()
-                        .zip(&width)
-                        .map(|(c, w)| format!("{c}{}", " ".repeat(w - c.chars().count())))
-                        .collect();
-                    cells.join("  ").trim_end().to_string() + "\n"
-                };
-                out += &line(&head);
-                for r in &rows {
-                    out += &line(r);
-                }
+                out += &crate::render::wrap::table(0, 1, &head, &rows, width);
                 out += "\n";
             }
         }

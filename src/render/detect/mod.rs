@@ -12,4 +12,4 @@ mod svg;
 
 pub use json::json;
 pub use layout::{latex, markdown, text};
-pub use svg::svg;
+pub use svg::{svg, svg_at};

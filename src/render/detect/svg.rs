@@ -2,11 +2,13 @@
 //! left the two shapes (outlines in the view plane) with the contact normal
 //! at the contact point; on the right the Minkowski difference A - B seen in
 //! the same plane, the origin, GJK's last simplex (or EPA's closest face)
-//! and the normal from the origin.
+//! and the normal from the origin; or, at a chosen stop of GJK or EPA
+//! ([`svg_at`]), that iteration's simplex or closest face, w_k, v_k and d_k.
 
 use std::fmt::Write;
 
-use super::minkowski::minkowski;
+use super::minkowski::{minkowski, Minkowski};
+use super::steps::Stop;
 use crate::render::figure::{outline, Silhouette, P};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
 use crate::trace::movement::Movement;
@@ -15,8 +17,15 @@ const W: f64 = 1000.0;
 const H: f64 = 520.0;
 const PANEL: f64 = 480.0;
 
-/// The figure of pair `k` (`None` when there is no such pair).
+/// The figure of pair `k` at the result (`None` when there is no such pair).
 pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
+    svg_at(t, k, usize::MAX)
+}
+
+/// The figure of pair `k` at `stop`, an index into the pair's
+/// [`stops`](super::steps::stops) (GJK's iterations, then EPA's); past them,
+/// the result (`None` when there is no such pair).
+pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
     let p = t.pairs.get(k)?;
     let (u, w, _) = t.plane.axes();
     let flat = |x: &V3| -> P { [x[u], x[w]] };
@@ -110,9 +119,14 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
         );
     }
     // Right: the Minkowski difference, the origin, the simplex, the normal
-    // (the result's picture: past the iterations).
-    let m = minkowski(t.plane, p, usize::MAX);
-    let right_pts: Vec<P> = m.hull.iter().copied().chain([[0.0, 0.0]]).collect();
+    // (the result's picture past the iterations), in view with the marks
+    // of the stop.
+    let m = minkowski(t.plane, p, stop);
+    let right_pts: Vec<P> = if super::steps::stops(p).get(stop).is_some() {
+        m.points()
+    } else {
+        m.hull.iter().copied().chain([[0.0, 0.0]]).collect()
+    };
     let right = Fit::new(&right_pts, 20.0 + PANEL + 20.0);
     let _ = writeln!(
         out,
@@ -127,20 +141,25 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
             right.points(&m.hull)
         );
     }
-    let simplex = &m.simplex;
-    for (i, a) in simplex.iter().enumerate() {
-        for b in &simplex[i + 1..] {
-            let (a, b) = (right.at(*a), right.at(*b));
-            let _ = writeln!(
-                out,
-                r##"  <line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="#ff7f0e" stroke-width="2"/>"##,
-                a[0], a[1], b[0], b[1]
-            );
-        }
-        let c = right.at(*a);
+    for [a, b] in m.edges() {
+        let (a, b) = (right.at(a), right.at(b));
         let _ = writeln!(
             out,
-            r##"  <circle cx="{:.1}" cy="{:.1}" r="4" fill="#ff7f0e"/>"##,
+            r##"  <line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="#ff7f0e" stroke-width="2"/>"##,
+            a[0], a[1], b[0], b[1]
+        );
+    }
+    for (i, a) in m.simplex.iter().enumerate() {
+        let c = right.at(*a);
+        // A point GJK dropped (✗) is hollow.
+        let fill = if m.dropped.contains(&i) {
+            r##"fill="white" stroke="#ff7f0e" stroke-width="2""##
+        } else {
+            r##"fill="#ff7f0e""##
+        };
+        let _ = writeln!(
+            out,
+            r#"  <circle cx="{:.1}" cy="{:.1}" r="4" {fill}/>"#,
             c[0], c[1]
         );
     }
@@ -156,6 +175,9 @@ pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
     );
     if let Some((to, label)) = m.arrow {
         arrow(&mut out, &right, [0.0, 0.0], to, "#2ca02c", label);
+    }
+    if let Some(stop) = super::steps::stops(p).get(stop) {
+        iteration(&mut out, &right, p, *stop, &m);
     }
     out += "</svg>\n";
     Some(out)
@@ -211,6 +233,58 @@ fn movement_bounds(out: &mut String, f: &Fit, moving: &[Movement], flat: &impl F
         out,
         r##"  <text x="20" y="505" font-size="13" fill="#7f7f7f">movement bounds over the next step (ccd): swept AABB dashed, swept sphere dotted</text>"##
     );
+}
+
+/// A stop's marks: its title, d_k from the origin, v_k, w_k.
+fn iteration(out: &mut String, f: &Fit, p: &PairTrace, stop: Stop, m: &Minkowski) {
+    let title = match (stop, &p.gjk, &p.epa) {
+        (Stop::Gjk(k), Some(g), _) => format!(
+            "GJK iteration {} of {}: simplex (hollow: dropped), v_k, w_k, d_k",
+            k + 1,
+            g.iterations.len()
+        ),
+        (Stop::Epa(k), _, Some(e)) => format!(
+            "EPA iteration {} of {}: closest face, v_k = δ_k n_k, w_k, d_k = n_k",
+            k + 1,
+            e.iterations.len()
+        ),
+        _ => return,
+    };
+    let _ = writeln!(
+        out,
+        r#"  <text x="{:.1}" y="50" font-size="14">{}</text>"#,
+        f.left + 20.0,
+        xml(&title)
+    );
+    if let Some(tip) = m.direction {
+        arrow(out, f, [0.0, 0.0], tip, "#17becf", "d_k");
+    }
+    if let Some(v) = m.closest {
+        let (o, tip) = (f.at([0.0, 0.0]), f.at(v));
+        if (tip[0] - o[0]).hypot(tip[1] - o[1]) > 8.0 {
+            arrow(out, f, [0.0, 0.0], v, "#2ca02c", "v_k");
+        } else {
+            // v_k at the origin (in this plane): said below O, not over it.
+            let _ = writeln!(
+                out,
+                r##"  <text x="{:.1}" y="{:.1}" font-size="15" fill="#2ca02c">v_k ≈ 0</text>"##,
+                o[0] + 8.0,
+                o[1] + 20.0
+            );
+        }
+    }
+    if let Some(w) = m.support {
+        let c = f.at(w);
+        let _ = writeln!(
+            out,
+            r##"  <rect x="{:.1}" y="{:.1}" width="10" height="10" fill="#8c564b"/>
+  <text x="{:.1}" y="{:.1}" font-size="15" fill="#8c564b">w_k</text>"##,
+            c[0] - 5.0,
+            c[1] - 5.0,
+            c[0] + 8.0,
+            c[1] + 16.0
+        );
+    }
 }
 
 fn result(p: &PairTrace) -> String {

@@ -99,8 +99,9 @@ pub fn headers(timed: bool) -> Vec<&'static str> {
     h
 }
 
-/// The text tables.
-pub fn text(study: &Study, fmt: &Fmt) -> String {
+/// The text tables, folded to `width` as tables (0: never; the prose is
+/// left to [`crate::render::wrap::wrap`]).
+pub fn text(study: &Study, fmt: &Fmt, width: usize) -> String {
     let mut out = String::new();
     out.push_str("Speed against accuracy: each scene under one knob at a time around its default, and the iteration budget of each solver.\n");
     out.push_str("★ marks the Pareto front of work (contact visits and ccd tests, deterministic) against error: no other row does less work and is more accurate; ties stay.\n");
@@ -121,30 +122,9 @@ pub fn text(study: &Study, fmt: &Fmt) -> String {
             fmt.num(s.seconds),
             s.reference
         ));
-        let head = headers(study.timed);
+        let head: Vec<String> = headers(study.timed).iter().map(|h| h.to_string()).collect();
         let rows: Vec<Vec<String>> = s.rows.iter().map(|r| cells(fmt, r, study.timed)).collect();
-        let widths: Vec<usize> = (0..head.len())
-            .map(|i| {
-                rows.iter()
-                    .map(|r| r[i].chars().count())
-                    .chain([head[i].chars().count()])
-                    .max()
-                    .unwrap_or(0)
-            })
-            .collect();
-        let line = |cells: &[String]| {
-            let mut l = String::from("  ");
-            for (i, c) in cells.iter().enumerate() {
-                l.push_str(&format!("{c:<w$}  ", w = widths[i]));
-            }
-            l.trim_end().to_string() + "\n"
-        };
-        out.push_str(&line(
-            &head.iter().map(|h| h.to_string()).collect::<Vec<_>>(),
-        ));
-        for r in &rows {
-            out.push_str(&line(r));
-        }
+        out.push_str(&crate::render::wrap::table(2, 2, &head, &rows, width));
         out.push_str(&format!("  {}\n", s.verdict));
     }
     out

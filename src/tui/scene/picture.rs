@@ -8,8 +8,10 @@ use crate::tui::theme::Ink;
 /// One thing to draw, in plane coordinates.
 pub(super) enum Mark {
     Seg(P, P, Ink),
-    /// Text at a point; lower `rank` is placed first when labels compete for cells.
-    Label(P, String, Ink, u8),
+    /// Text at a point; lower `rank` is placed first when labels compete for
+    /// cells; an arrow's label has the arrow's direction (a unit vector) and
+    /// is put past its head, so two heads that meet keep their own labels.
+    Label(P, String, Ink, u8, Option<P>),
 }
 
 pub(super) struct Picture {
@@ -29,7 +31,8 @@ impl Picture {
         self.marks.push(Mark::Seg(a, b, ink));
     }
     fn label(&mut self, at: P, text: impl Into<String>, ink: Ink, rank: u8) {
-        self.marks.push(Mark::Label(at, text.into(), ink, rank));
+        self.marks
+            .push(Mark::Label(at, text.into(), ink, rank, None));
     }
 
     /// An arrow from `from` along `along` with a head; a dot when it has no length.
@@ -38,9 +41,13 @@ impl Picture {
         let len = along[0].hypot(along[1]);
         self.seg(from, to, ink);
         if len > 1e-12 {
-            self.head(to, scale(along, 1.0 / len), head.min(0.4 * len), ink);
+            let u = scale(along, 1.0 / len);
+            self.head(to, u, head.min(0.4 * len), ink);
+            self.marks
+                .push(Mark::Label(to, label.to_string(), ink, rank, Some(u)));
+        } else {
+            self.label(to, label, ink, rank);
         }
-        self.label(to, label, ink, rank);
         self.keep.add(to);
     }
 
