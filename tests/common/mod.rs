@@ -5,6 +5,7 @@ pub mod advise;
 pub mod cli;
 pub mod dd;
 pub mod json;
+pub mod pile;
 pub mod random;
 pub mod svg;
 pub mod tui;

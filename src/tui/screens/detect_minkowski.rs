@@ -9,12 +9,10 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
-use ratatui::symbols::Marker;
 use ratatui::text::Span;
-use ratatui::widgets::canvas::{Canvas, Line};
 use ratatui::widgets::{Block, Widget};
 
-use super::picture::{fit, place};
+use super::picture::{draw, fit};
 use super::DetectView;
 use crate::render::detect::minkowski::minkowski;
 use crate::render::figure::P;
@@ -85,22 +83,7 @@ pub fn render(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
         let mark = if m.dropped.contains(&k) { "✗" } else { "•" };
         labels.push((*s, mark.into(), t.ink_style(Ink::Point), 2));
     }
-    let labels = place(labels, b, inner.width, inner.height);
-    Canvas::default()
-        .marker(Marker::Braille)
-        .background_color(Color::Reset)
-        .x_bounds([b[0], b[1]])
-        .y_bounds([b[2], b[3]])
-        .paint(|ctx| {
-            for (a, c, color) in &segs {
-                ctx.draw(&Line::new(a[0], a[1], c[0], c[1], *color));
-            }
-            ctx.layer();
-            for (p, text, style) in &labels {
-                ctx.print(p[0], p[1], Span::styled(text.clone(), *style));
-            }
-        })
-        .render(inner, buf);
+    draw(buf, inner, b, &segs, labels);
 }
 
 /// The stop on show in a few words: `GJK 2`, `EPA 1`, `result`.

@@ -255,6 +255,18 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
         }
     }
     drop(points);
+    draw(buf, inner, b, &segs, labels);
+}
+
+/// Line segments, then labels placed in free cells (`place`) over them, on
+/// a braille canvas spanning `b` (x min, x max, y min, y max).
+pub(super) fn draw(
+    buf: &mut Buffer,
+    inner: Rect,
+    b: [f64; 4],
+    segs: &[(P, P, Color)],
+    labels: Vec<(P, String, Style, u8)>,
+) {
     let labels = place(labels, b, inner.width, inner.height);
     Canvas::default()
         .marker(Marker::Braille)
@@ -262,7 +274,7 @@ pub fn render(app: &App, scene: &Scene, area: Rect, buf: &mut Buffer) {
         .x_bounds([b[0], b[1]])
         .y_bounds([b[2], b[3]])
         .paint(|ctx| {
-            for (a, c, color) in &segs {
+            for (a, c, color) in segs {
                 ctx.draw(&Line::new(a[0], a[1], c[0], c[1], *color));
             }
             ctx.layer();
