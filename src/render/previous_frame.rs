@@ -6,7 +6,7 @@
 
 use crate::format::Fmt;
 use crate::physics::step::previous_frame::angle_between;
-use crate::trace::step::PreviousNormal;
+use crate::trace::previous_frame::PreviousNormal;
 
 /// The block (empty when no contact has a previous-frame normal).
 pub fn text(rows: &[PreviousNormal], f: &Fmt) -> String {

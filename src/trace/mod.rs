@@ -16,6 +16,7 @@ pub mod detect;
 mod elided;
 pub mod glossary;
 pub mod movement;
+pub mod previous_frame;
 
 mod names;
 mod plane;

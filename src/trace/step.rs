@@ -345,54 +345,12 @@ fn grab_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Grabbed, BlowUp
     Ok((world, prepared, names))
 }
 
-/// A penetrating contact's normal at t beside the one from the closest
-/// points one frame earlier (t − Δt), when its pair was apart then.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PreviousNormal {
-    /// The contact's number in the step and its label.
-    pub contact: usize,
-    pub label: String,
-    pub normal: [f64; 3],
-    pub previous: [f64; 3],
-}
-
-/// The contacts of `world` that have a previous-frame normal.
-fn previous_rows(
-    world: &World<f64>,
-    names: &Names,
-    previous: &[Option<[f64; 3]>],
-) -> Vec<PreviousNormal> {
-    (world.contacts.iter().enumerate())
-        .zip(previous)
-        .filter_map(|((k, c), previous)| {
-            let n = c.input.normal;
-            Some(PreviousNormal {
-                contact: k,
-                label: names
-                    .contacts
-                    .get(k)
-                    .cloned()
-                    .unwrap_or_else(|| k.to_string()),
-                normal: [n.x, n.y, n.z],
-                previous: (*previous)?,
-            })
-        })
-        .collect()
-}
-
-impl StepTrace {
-    /// The step's contacts that have a previous-frame normal.
-    pub fn previous_rows(&self) -> Vec<PreviousNormal> {
-        previous_rows(&self.world, &self.names, &self.previous_normals)
-    }
-}
-
 /// A step's resolution as `simulate --trace-step` prints it.
 pub struct Described {
     pub resolver: ResolverTrace,
     /// How many contacts the step resolved.
     pub contacts: usize,
-    pub previous: Vec<PreviousNormal>,
+    pub previous: Vec<super::previous_frame::PreviousNormal>,
 }
 
 /// Advances `sim` one step and describes its resolution, iterations
@@ -404,7 +362,7 @@ pub fn describe_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Describ
     let normals: Vec<Option<[f64; 3]>> = (world.contacts.iter())
         .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))
         .collect();
-    let previous = previous_rows(&world, &names, &normals);
+    let previous = super::previous_frame::rows(&world, &names, &normals);
     let (resolver, _) = match prepared {
         Some(r) => describe_prepared(
             &world,
