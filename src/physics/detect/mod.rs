@@ -51,4 +51,6 @@ pub use manifold::{manifold, ManifoldPoint};
 pub use query::{query, Penetration, PenetrationSource, Query, QueryOptions};
 pub use sat::{sat, Polyhedron, SatResult};
 pub use support::{plane_depth, Capsule, Convex, Support};
-pub use toi::{toi, Motion, Toi, ToiEnd, ToiMethod, ToiObserver, ToiOptions, ToiRecorder, ToiStep};
+pub use toi::{
+    toi, Motion, MovingPair, Toi, ToiEnd, ToiMethod, ToiObserver, ToiOptions, ToiRecorder, ToiStep,
+};

@@ -156,14 +156,46 @@ pub struct Toi<T: Real> {
     pub end: ToiEnd,
 }
 
+/// Two shapes and their motions over the step: what every time-of-collision
+/// search takes.
+pub struct MovingPair<'s, T: Real, A: ?Sized, B: ?Sized> {
+    pub a: &'s A,
+    pub motion_a: &'s Motion<T>,
+    pub b: &'s B,
+    pub motion_b: &'s Motion<T>,
+}
+
+impl<'s, T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized> MovingPair<'s, T, A, B> {
+    pub fn new(a: &'s A, motion_a: &'s Motion<T>, b: &'s B, motion_b: &'s Motion<T>) -> Self {
+        MovingPair {
+            a,
+            motion_a,
+            b,
+            motion_b,
+        }
+    }
+
+    /// GJK at time t: whether they intersect, their distance and the gap
+    /// between their closest points (A's minus B's).
+    fn distance_at(&self, t: T, options: &GjkOptions<T>) -> (bool, T, Vector3<T>) {
+        let (a, b) = (self.a, self.b);
+        let r = gjk(
+            a,
+            &self.motion_a.pose_at(t),
+            b,
+            &self.motion_b.pose_at(t),
+            options,
+            &mut (),
+        );
+        let hit = r.verdict == GjkVerdict::Intersecting;
+        (hit, r.distance, r.closest_a - r.closest_b)
+    }
+}
+
 /// Runs `method` over [0, dt].
-#[allow(clippy::too_many_arguments)]
 pub fn toi<T, A, B, O>(
     method: ToiMethod,
-    a: &A,
-    motion_a: &Motion<T>,
-    b: &B,
-    motion_b: &Motion<T>,
+    pair: &MovingPair<'_, T, A, B>,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
@@ -175,32 +207,14 @@ where
     O: ToiObserver<T> + ?Sized,
 {
     match method {
-        ToiMethod::Bisection => bisection(a, motion_a, b, motion_b, dt, options, observer),
-        ToiMethod::Conservative => {
-            conservative_advancement(a, motion_a, b, motion_b, dt, options, observer)
-        }
+        ToiMethod::Bisection => bisection(pair, dt, options, observer),
+        ToiMethod::Conservative => conservative_advancement(pair, dt, options, observer),
     }
-}
-
-fn distance_at<T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized>(
-    a: &A,
-    ma: &Motion<T>,
-    b: &B,
-    mb: &Motion<T>,
-    t: T,
-    options: &GjkOptions<T>,
-) -> (bool, T, Vector3<T>) {
-    let r = gjk(a, &ma.pose_at(t), b, &mb.pose_at(t), options, &mut ());
-    let hit = r.verdict == GjkVerdict::Intersecting;
-    (hit, r.distance, r.closest_a - r.closest_b)
 }
 
 /// Bisection on [0, dt] (module docs).
 pub fn bisection<T, A, B, O>(
-    a: &A,
-    ma: &Motion<T>,
-    b: &B,
-    mb: &Motion<T>,
+    pair: &MovingPair<'_, T, A, B>,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
@@ -217,10 +231,10 @@ where
         iterations,
         end,
     };
-    if distance_at(a, ma, b, mb, T::zero(), &options.gjk).0 {
+    if pair.distance_at(T::zero(), &options.gjk).0 {
         return done(Some(T::zero()), 0, ToiEnd::AtStart);
     }
-    if !distance_at(a, ma, b, mb, dt, &options.gjk).0 {
+    if !pair.distance_at(dt, &options.gjk).0 {
         return done(None, 0, ToiEnd::NoHitAtEnd);
     }
     let (mut t0, mut t1) = (T::zero(), dt);
@@ -230,7 +244,7 @@ where
             return done(Some(t0), index, ToiEnd::IterationCap);
         }
         let trial = (t0 + t1) * c::<T>(0.5);
-        let (hit, distance, _) = distance_at(a, ma, b, mb, trial, &options.gjk);
+        let (hit, distance, _) = pair.distance_at(trial, &options.gjk);
         observer.step(&ToiStep {
             index,
             t0,
@@ -265,10 +279,7 @@ pub fn bounding_radius<T: Real, S: Support<T> + ?Sized>(shape: &S) -> T {
 
 /// Conservative advancement on [0, dt] (module docs).
 pub fn conservative_advancement<T, A, B, O>(
-    a: &A,
-    ma: &Motion<T>,
-    b: &B,
-    mb: &Motion<T>,
+    pair: &MovingPair<'_, T, A, B>,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
@@ -286,12 +297,13 @@ where
         end,
     };
     // The rotation part of μ: |ω_A| ρ_A + |ω_B| ρ_B (constant over the step).
-    let spin = ma.angular_velocity.norm() * bounding_radius(a)
-        + mb.angular_velocity.norm() * bounding_radius(b);
+    let (ma, mb) = (pair.motion_a, pair.motion_b);
+    let spin = ma.angular_velocity.norm() * bounding_radius(pair.a)
+        + mb.angular_velocity.norm() * bounding_radius(pair.b);
     let relative = ma.velocity - mb.velocity;
     let mut t = T::zero();
     for index in 0..options.max_iterations {
-        let (hit, distance, gap) = distance_at(a, ma, b, mb, t, &options.gjk);
+        let (hit, distance, gap) = pair.distance_at(t, &options.gjk);
         if hit && index == 0 {
             return done(Some(t), 0, ToiEnd::AtStart);
         }

@@ -15,8 +15,8 @@ use nalgebra::{UnitQuaternion, Vector3};
 use super::gjk::{gjk, GjkVerdict};
 use super::support::Support;
 use super::toi::{
-    bisection, bounding_radius, conservative_advancement, Motion, Toi, ToiEnd, ToiMethod,
-    ToiObserver, ToiOptions, ToiStep,
+    bisection, bounding_radius, conservative_advancement, Motion, MovingPair, Toi, ToiEnd,
+    ToiMethod, ToiObserver, ToiOptions, ToiStep,
 };
 use crate::physics::{c, Real};
 
@@ -45,14 +45,12 @@ pub fn smallest_width<T: Real, S: Support<T> + ?Sized>(shape: &S) -> T {
 
 /// μ: a bound on the pair's closing speed, |v_A − v_B| + |ω_A| ρ_A + |ω_B| ρ_B.
 pub fn closing_bound<T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized>(
-    a: &A,
-    ma: &Motion<T>,
-    b: &B,
-    mb: &Motion<T>,
+    pair: &MovingPair<'_, T, A, B>,
 ) -> T {
+    let (ma, mb) = (pair.motion_a, pair.motion_b);
     (ma.velocity - mb.velocity).norm()
-        + ma.angular_velocity.norm() * bounding_radius(a)
-        + mb.angular_velocity.norm() * bounding_radius(b)
+        + ma.angular_velocity.norm() * bounding_radius(pair.a)
+        + mb.angular_velocity.norm() * bounding_radius(pair.b)
 }
 
 /// Shifts the times a piece's bisection reports by the piece's start.
@@ -75,10 +73,7 @@ impl<T: Real, O: ToiObserver<T> + ?Sized> ToiObserver<T> for Shifted<'_, T, O> {
 /// Bisection over [0, dt] after the scan (module docs). `options.tolerance`
 /// is the bisection's, in seconds.
 pub fn scanned_bisection<T, A, B, O>(
-    a: &A,
-    ma: &Motion<T>,
-    b: &B,
-    mb: &Motion<T>,
+    pair: &MovingPair<'_, T, A, B>,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
@@ -89,8 +84,9 @@ where
     B: Support<T> + ?Sized,
     O: ToiObserver<T> + ?Sized,
 {
+    let (a, b) = (pair.a, pair.b);
     let width = (smallest_width(a) + smallest_width(b)) * c::<T>(0.5);
-    let mu = closing_bound(a, ma, b, mb);
+    let mu = closing_bound(pair);
     let pieces = if width > T::zero() {
         let n = (dt * mu / width).ceil();
         if n >= c::<T>(MAX_PIECES as f64) {
@@ -105,7 +101,7 @@ where
     let mut tests = 0;
     for k in 0..pieces {
         let start = h * c::<T>(k as f64);
-        let (pa, pb) = (rebased(ma, start), rebased(mb, start));
+        let (pa, pb) = (rebased(pair.motion_a, start), rebased(pair.motion_b, start));
         let end = gjk(a, &pa.pose_at(h), b, &pb.pose_at(h), &options.gjk, &mut ());
         tests += 1;
         let hit = end.verdict == GjkVerdict::Intersecting;
@@ -117,7 +113,7 @@ where
             by: start,
             inner: observer,
         };
-        let found = bisection(a, &pa, b, &pb, h, options, &mut shifted);
+        let found = bisection(&MovingPair::new(a, &pa, b, &pb), h, options, &mut shifted);
         return Toi {
             time: found.time.map(|t| t + start),
             iterations: tests + found.iterations,
@@ -134,13 +130,9 @@ where
 
 /// The search continuous detection runs: conservative advancement as it is,
 /// bisection after the scan.
-#[allow(clippy::too_many_arguments)]
 pub fn swept_toi<T, A, B, O>(
     method: ToiMethod,
-    a: &A,
-    ma: &Motion<T>,
-    b: &B,
-    mb: &Motion<T>,
+    pair: &MovingPair<'_, T, A, B>,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
@@ -152,7 +144,7 @@ where
     O: ToiObserver<T> + ?Sized,
 {
     match method {
-        ToiMethod::Bisection => scanned_bisection(a, ma, b, mb, dt, options, observer),
-        ToiMethod::Conservative => conservative_advancement(a, ma, b, mb, dt, options, observer),
+        ToiMethod::Bisection => scanned_bisection(pair, dt, options, observer),
+        ToiMethod::Conservative => conservative_advancement(pair, dt, options, observer),
     }
 }

@@ -17,7 +17,7 @@ use nalgebra::Vector3;
 
 use super::swept::{motion_of, Earlier, SweptPairs};
 use crate::physics::detect::gjk::{gjk, GjkOptions, GjkVerdict};
-use crate::physics::detect::toi::{conservative_advancement, ToiEnd, ToiOptions};
+use crate::physics::detect::toi::{conservative_advancement, MovingPair, ToiEnd, ToiOptions};
 use crate::physics::detect::Convex;
 use crate::physics::{c, to_f64, BodyId, Real, World};
 
@@ -113,7 +113,7 @@ fn pair<T: Real>(
         tolerance: c::<T>(1e-4) * ra.min(rb),
         ..ToiOptions::default()
     };
-    let toi = conservative_advancement(&a, &ma, &b, &mb, dt, &options, &mut ());
+    let toi = conservative_advancement(&MovingPair::new(&a, &ma, &b, &mb), dt, &options, &mut ());
     let time = match (toi.end, toi.time) {
         (ToiEnd::Converged, Some(t)) if t > T::zero() && t < dt => t,
         _ => return None,

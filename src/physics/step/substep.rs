@@ -23,7 +23,7 @@ use super::integrate::integrate_position;
 use super::swept::{motion_of, Earlier, MovementBound, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
-    query, Convex, EpaOptions, GjkOptions, QueryOptions, ToiEnd, ToiMethod, ToiOptions,
+    query, Convex, EpaOptions, GjkOptions, MovingPair, QueryOptions, ToiEnd, ToiMethod, ToiOptions,
 };
 use crate::physics::params::{Material, SimParams};
 use crate::physics::pose::Pose;
@@ -208,8 +208,9 @@ impl<T: Real> Substeps<T> {
                 motion_of(world, i, self.moving[i]),
                 motion_of(world, j, self.moving[j]),
             );
-            let options = search_options(method, &a, &b, closing_bound(&a, &ma, &b, &mb));
-            let toi = swept_toi(method, &a, &ma, &b, &mb, left, &options, &mut ());
+            let pair = MovingPair::new(&a, &ma, &b, &mb);
+            let options = search_options(method, &a, &b, closing_bound(&pair));
+            let toi = swept_toi(method, &pair, left, &options, &mut ());
             *spent += toi.iterations;
             let time = match (toi.end, toi.time) {
                 (ToiEnd::Converged | ToiEnd::IterationCap, Some(t)) if t < left => t,

@@ -13,7 +13,8 @@ use super::substep::search_options;
 use super::swept::{motion_of, spheres_meet, swept_aabb, swept_sphere};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
-    query, Convex, EpaOptions, GjkOptions, Motion, QueryOptions, Toi, ToiMethod, ToiObserver,
+    query, Convex, EpaOptions, GjkOptions, Motion, MovingPair, QueryOptions, Toi, ToiMethod,
+    ToiObserver,
 };
 use crate::physics::{c, Real, World};
 
@@ -54,8 +55,9 @@ pub fn search_pair<T: Real, O: ToiObserver<T> + ?Sized>(
     };
     let spheres = |s: &Convex, m: &Motion<T>| swept_sphere(c(s.bounding_radius()), m, dt);
     let spheres_meet = spheres_meet(spheres(&a, &ma), spheres(&b, &mb));
-    let options = search_options(method, &a, &b, closing_bound(&a, &ma, &b, &mb));
-    let toi = swept_toi(method, &a, &ma, &b, &mb, dt, &options, observer);
+    let pair = MovingPair::new(&a, &ma, &b, &mb);
+    let options = search_options(method, &a, &b, closing_bound(&pair));
+    let toi = swept_toi(method, &pair, dt, &options, observer);
     let end = query(
         &a,
         &ma.pose_at(dt),

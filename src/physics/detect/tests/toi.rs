@@ -7,7 +7,9 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use crate::physics::detect::toi::bounding_radius;
-use crate::physics::detect::{toi, Convex, Motion, ToiEnd, ToiMethod, ToiOptions, ToiRecorder};
+use crate::physics::detect::{
+    toi, Convex, Motion, MovingPair, ToiEnd, ToiMethod, ToiOptions, ToiRecorder,
+};
 
 const DT: f64 = 1.0 / 60.0;
 
@@ -71,10 +73,7 @@ fn bisection_meets_gap_over_speed_in_log2_of_step_over_tolerance_tests() {
             let mut rec = ToiRecorder::default();
             let r = toi(
                 ToiMethod::Bisection,
-                &a,
-                &ma,
-                &b,
-                &mb,
+                &MovingPair::new(&a, &ma, &b, &mb),
                 DT,
                 &options(tol),
                 &mut rec,
@@ -107,10 +106,7 @@ fn conservative_advancement_meets_gap_over_speed_in_fewer_tests() {
         let speed = ma.velocity.norm();
         let r = toi(
             ToiMethod::Conservative,
-            &a,
-            &ma,
-            &b,
-            &mb,
+            &MovingPair::new(&a, &ma, &b, &mb),
             DT,
             &options(tol),
             &mut (),
@@ -139,10 +135,7 @@ fn a_bullet_through_a_thin_wall_is_missed_by_bisection_and_found_by_advancement(
     let mb = Motion::fixed(Vector3::zeros());
     let b = toi(
         ToiMethod::Bisection,
-        &bullet,
-        &ma,
-        &wall,
-        &mb,
+        &MovingPair::new(&bullet, &ma, &wall, &mb),
         DT,
         &options(1e-6),
         &mut (),
@@ -150,10 +143,7 @@ fn a_bullet_through_a_thin_wall_is_missed_by_bisection_and_found_by_advancement(
     assert_eq!((b.end, b.time), (ToiEnd::NoHitAtEnd, None));
     let c = toi(
         ToiMethod::Conservative,
-        &bullet,
-        &ma,
-        &wall,
-        &mb,
+        &MovingPair::new(&bullet, &ma, &wall, &mb),
         DT,
         &options(1e-6),
         &mut (),
@@ -184,20 +174,14 @@ fn advancement_with_spin_stays_before_the_first_contact() {
     let mut rec = ToiRecorder::default();
     let c = toi(
         ToiMethod::Conservative,
-        &plank,
-        &ma,
-        &slab,
-        &mb,
+        &MovingPair::new(&plank, &ma, &slab, &mb),
         DT,
         &options(tol),
         &mut rec,
     );
     let b = toi(
         ToiMethod::Bisection,
-        &plank,
-        &ma,
-        &slab,
-        &mb,
+        &MovingPair::new(&plank, &ma, &slab, &mb),
         DT,
         &options(1e-9),
         &mut (),
