@@ -129,6 +129,12 @@ fn enter_on_a_large_pile_records_the_step_off_the_ui_thread() {
         a.run.as_ref().unwrap().frame == 1
     });
     assert_eq!(app.run.as_ref().unwrap().frame, 1, "step 1 computed");
+    // The key bar's "computing step 1" went with the step's arrival.
+    let said = app.status.as_ref().map(|s| s.text.clone());
+    assert!(
+        !said.as_deref().unwrap_or("").contains("computing step"),
+        "{said:?}"
+    );
     let took = timed(&mut app, |a| key(a, KeyCode::Enter));
     assert!(took < ANSWER, "Enter took {took:?}");
     assert_eq!(app.screen, Screen::Run, "the run stays on show meanwhile");

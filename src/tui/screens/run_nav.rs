@@ -4,7 +4,7 @@
 
 use super::{Key, RunView, Screen, Toggle, EVENT_KINDS, SPEEDS};
 use crate::session::Poll;
-use crate::tui::app::{App, Mode};
+use crate::tui::app::{App, Mode, Status};
 
 /// At most this many steps are computed in one tick (playback falls behind
 /// real time rather than freezing the app).
@@ -42,8 +42,14 @@ impl App {
             // detection is under way, and must not step the run).
             let waiting = run.frame as u64 == run.player.computed();
             let under_way = run.player.computing().is_some();
-            if under_way && run.player.poll() == Poll::Ready(true) && waiting && on_run {
+            let finished = under_way && run.player.poll() == Poll::Ready(true);
+            if finished && waiting && on_run {
                 run.frame += 1;
+            }
+            // The key bar's "computing step N" is stale once the step is in.
+            let stale = |s: &Status| s.text.starts_with("computing step");
+            if finished && self.status.as_ref().is_some_and(stale) {
+                self.status = None;
             }
             return;
         }
