@@ -102,7 +102,8 @@ fn run_in<T: Real>(
             let there = r.at((step + 1) as f64 * config.params.dt);
             let e = run::rms_distance(&positions(&sim), &there);
             ran.step_error = ran.step_error.max(e);
-            if stop_over.is_some_and(|t| !(ran.step_error <= t)) {
+            // A position gone NaN passes any target.
+            if stop_over.is_some_and(|t| e.is_nan() || ran.step_error > t) {
                 ran.over = true;
                 ran.steps = step + 1;
                 return ran;
