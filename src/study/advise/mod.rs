@@ -10,6 +10,7 @@
 //! (integration, detection), per simulated second so that time steps of
 //! different lengths compare.
 
+mod runner;
 mod search;
 mod snippet;
 
@@ -248,6 +249,7 @@ pub fn advise(
         reference: reference_run.positions.clone(),
         trajectory,
         cache: Vec::new(),
+        stop_over: None,
         steps: reference_run.steps * if per == Per::Step { 2 } else { 1 },
         runs: if per == Per::Step { 2 } else { 1 },
     };
@@ -270,6 +272,7 @@ pub fn advise(
             reference: reference_run.positions.clone(),
             trajectory: Some(run::trajectory(lesson, &reference_config, seconds)),
             cache: vec![(reference_eval, None)],
+            stop_over: Some(target),
             steps: reference_run.steps,
             runs: 1,
         };

@@ -12,11 +12,14 @@
 //! from the cheapest place they stop.
 //!
 //! Every configuration is measured once (a cache), and a run stops as soon
-//! as its work passes the cost it would have to beat: the cost is
-//! deterministic work, not time, so the same scene and target always give
-//! the same advice.
+//! as its work passes the cost it would have to beat (the current
+//! configuration's, or within a dimension the cheapest value already within
+//! the target: values come cheap first), or, against a per-step target, at
+//! the first step whose error passes it; the runs measure only what the
+//! search reads ([`runner`]). The cost is deterministic work, not time, so
+//! the same scene and target always give the same advice.
 
-use super::{Dimension, Eval};
+use super::{runner, Dimension, Eval};
 use crate::lesson::Lesson;
 use crate::study::{grid, run, Config};
 
@@ -41,6 +44,9 @@ pub(super) struct Evaluator<'a> {
     pub trajectory: Option<run::Trajectory>,
     /// Each configuration's evaluation, and the cap it was stopped at.
     pub cache: Vec<(Eval, Option<f64>)>,
+    /// Against a per-step target: stop a run at the first step whose error
+    /// passes it (the run cannot be chosen; its cost is left unknown).
+    pub stop_over: Option<f64>,
     pub steps: usize,
     pub runs: usize,
 }
@@ -60,26 +66,27 @@ impl Evaluator<'_> {
         } else {
             usize::MAX
         };
-        let m = run::measure_against(
+        let m = runner::run(
             self.lesson,
             config,
             self.seconds,
             limit,
             self.trajectory.as_ref(),
+            self.stop_over,
         );
         self.runs += 1;
         self.steps += m.steps;
-        let e = if m.capped {
+        let e = if m.capped || m.over {
             Eval {
                 config: *config,
                 cost: f64::INFINITY,
-                error: f64::NAN,
+                error: if m.over { f64::INFINITY } else { f64::NAN },
             }
         } else {
             Eval {
                 config: *config,
-                cost: cost(&m, self.seconds),
-                error: if m.failure.is_some() {
+                cost: work_cost(m.work, m.steps, self.seconds),
+                error: if m.failed {
                     f64::NAN
                 } else if self.trajectory.is_some() {
                     m.step_error
@@ -99,6 +106,11 @@ pub fn cost(m: &run::Measured, seconds: f64) -> f64 {
     (m.visits_per_step + m.ccd_tests_per_step + 1.0) * m.steps as f64 / seconds
 }
 
+/// [`cost`] of a search run: its `work` (visits + ccd tests) and `steps`.
+fn work_cost(work: usize, steps: usize, seconds: f64) -> f64 {
+    (work + steps) as f64 / seconds
+}
+
 /// `a` cheaper than `b` beyond a tie.
 fn cheaper(a: f64, b: f64) -> bool {
     a < b * (1.0 - COST_TIE)
@@ -114,14 +126,20 @@ pub(super) fn best_of(
 ) -> (usize, Vec<Eval>) {
     // Nothing dearer than the current configuration can be chosen, nor be
     // the cheap setting: runs stop once they pass its cost.
-    let cap = ev.eval(current, f64::INFINITY).cost * (1.0 + 2.0 * COST_TIE);
+    // Against a target, nothing dearer than the cheapest value meeting it so
+    // far either: the values come cheap first, so the cap falls early.
+    let mut cap = ev.eval(current, f64::INFINITY).cost * (1.0 + 2.0 * COST_TIE);
     let evals: Vec<Eval> = dim
         .values
         .iter()
         .map(|v| {
             let mut c = *current;
             let _ = grid::set(&mut c, dim.name, v);
-            ev.eval(&c, cap)
+            let e = ev.eval(&c, cap);
+            if target.is_some_and(|t| e.error <= t) {
+                cap = cap.min(e.cost * (1.0 + 2.0 * COST_TIE));
+            }
+            e
         })
         .collect();
     let mut best: Option<usize> = None;
