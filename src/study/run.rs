@@ -132,7 +132,8 @@ fn cast<T: Real>(p: &SimParams<f64>) -> SimParams<T> {
     crate::physics::Settings::of_run(p).sim_params()
 }
 
-fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
+/// The simulation a configuration runs (advise's runner starts from it too).
+pub(crate) fn simulation<T: Real>(lesson: &Lesson, config: &Config) -> Simulation<T> {
     let p = cast::<T>(&params(config));
     let mut world = lesson.world::<T>();
     world.contacts.clear();

@@ -3,7 +3,7 @@
 //! other measures (they generate every step's contacts a second time), and
 //! stopped early as soon as the run cannot be chosen: its work passes the
 //! cap, or, against a per-step target, one step's error passes it. The
-//! bodies move exactly as in `run::measure` (same setup, same steps), so a
+//! bodies move exactly as in `run::measure` (`run::simulation`, the same steps), so a
 //! configuration's cost and error are the same either way
 //! (tests/measure/advise_every_scene.rs pastes each choice and runs it
 //! through `run::measure`).
@@ -54,16 +54,7 @@ fn run_in<T: Real>(
     reference: Option<&run::Trajectory>,
     stop_over: Option<f64>,
 ) -> Ran {
-    // As run.rs's `simulation`: the knobs cast through the settings.
-    let params = crate::physics::Settings::of_run(&run::params(config)).sim_params::<T>();
-    let mut world = lesson.world::<T>();
-    world.contacts.clear();
-    let materials = lesson
-        .simulation
-        .as_ref()
-        .map(|s| s.materials.clone())
-        .unwrap_or_default();
-    let mut sim = Simulation::new(world, params, materials);
+    let mut sim = run::simulation::<T>(lesson, config);
     let n = run::steps(seconds, config.params.dt);
     let movable: Vec<usize> = (0..sim.world.bodies.len())
         .filter(|&i| sim.world.bodies[i].movable)
