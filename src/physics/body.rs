@@ -41,6 +41,16 @@ impl<T: Real> RigidBody<T> {
         to_world(&self.rotation(), &self.inertia_body)
     }
 
+    /// `(I_w⁻¹, I_w)` from one rotation matrix: the same numbers as
+    /// [`RigidBody::inverse_inertia_world`] and [`RigidBody::inertia_world`].
+    pub fn world_inertias(&self) -> (Matrix3<T>, Matrix3<T>) {
+        let r = self.rotation();
+        (
+            to_world(&r, &self.inverse_inertia_body),
+            to_world(&r, &self.inertia_body),
+        )
+    }
+
     /// Velocity of the material point at offset `r` from the centre: `ω × r + v` (lecture eq. A).
     pub fn point_velocity(&self, r: &Vector3<T>) -> Vector3<T> {
         self.angular_velocity.cross(r) + self.velocity
@@ -70,7 +80,18 @@ impl<T: Real> RigidBody<T> {
         velocity: &Vector3<T>,
         angular_velocity: &Vector3<T>,
     ) -> Vector3<T> {
-        self.inertia_world() * angular_velocity + (self.position - q).cross(&(velocity * self.mass))
+        self.angular_momentum_about_with(&self.inertia_world(), q, velocity, angular_velocity)
+    }
+
+    /// [`RigidBody::angular_momentum_about`] with the world inertia `I` already at hand.
+    pub fn angular_momentum_about_with(
+        &self,
+        inertia_world: &Matrix3<T>,
+        q: &Vector3<T>,
+        velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+    ) -> Vector3<T> {
+        inertia_world * angular_velocity + (self.position - q).cross(&(velocity * self.mass))
     }
 }
 
