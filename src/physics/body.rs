@@ -41,16 +41,6 @@ impl<T: Real> RigidBody<T> {
         to_world(&self.rotation(), &self.inertia_body)
     }
 
-    /// `(I_w⁻¹, I_w)` from one rotation matrix: the same numbers as
-    /// [`RigidBody::inverse_inertia_world`] and [`RigidBody::inertia_world`].
-    pub fn world_inertias(&self) -> (Matrix3<T>, Matrix3<T>) {
-        let r = self.rotation();
-        (
-            to_world(&r, &self.inverse_inertia_body),
-            to_world(&r, &self.inertia_body),
-        )
-    }
-
     /// Velocity of the material point at offset `r` from the centre: `ω × r + v` (lecture eq. A).
     pub fn point_velocity(&self, r: &Vector3<T>) -> Vector3<T> {
         self.angular_velocity.cross(r) + self.velocity
@@ -103,4 +93,32 @@ fn to_world<T: Real>(r: &Matrix3<T>, a: &Matrix3<T>) -> Matrix3<T> {
     let m = (m + m.transpose()) * super::c::<T>(0.5);
     let floor = m.amax() * T::default_epsilon() * super::c::<T>(8.0);
     m.map(|x| if x.abs() <= floor { T::zero() } else { x })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn momentum_with_the_inertia_at_hand_is_the_same_bit_for_bit() {
+        let body = RigidBody {
+            mass: 2.0,
+            inverse_mass: 0.5,
+            inertia_body: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+            inverse_inertia_body: Matrix3::from_diagonal(&Vector3::new(1.0, 0.5, 1.0 / 3.0)),
+            position: Vector3::new(0.1, 0.2, 0.3),
+            orientation: Quaternion::new(0.9, 0.1, -0.3, 0.2),
+            velocity: Vector3::new(1.0, -2.0, 0.5),
+            angular_velocity: Vector3::new(0.3, 0.7, -1.1),
+            acceleration: Vector3::zeros(),
+        };
+        let inertia = body.inertia_world();
+        assert_ne!(inertia, body.inertia_body, "the rotation turns the tensor");
+        let q = Vector3::new(-0.4, 0.0, 0.9);
+        let (v, w) = (body.velocity, body.angular_velocity);
+        assert_eq!(
+            body.angular_momentum_about_with(&inertia, &q, &v, &w),
+            body.angular_momentum_about(&q, &v, &w)
+        );
+    }
 }
