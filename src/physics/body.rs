@@ -70,7 +70,18 @@ impl<T: Real> RigidBody<T> {
         velocity: &Vector3<T>,
         angular_velocity: &Vector3<T>,
     ) -> Vector3<T> {
-        self.inertia_world() * angular_velocity + (self.position - q).cross(&(velocity * self.mass))
+        self.angular_momentum_about_with(&self.inertia_world(), q, velocity, angular_velocity)
+    }
+
+    /// [`RigidBody::angular_momentum_about`] with the world inertia `I` already at hand.
+    pub fn angular_momentum_about_with(
+        &self,
+        inertia_world: &Matrix3<T>,
+        q: &Vector3<T>,
+        velocity: &Vector3<T>,
+        angular_velocity: &Vector3<T>,
+    ) -> Vector3<T> {
+        inertia_world * angular_velocity + (self.position - q).cross(&(velocity * self.mass))
     }
 }
 
@@ -82,4 +93,32 @@ fn to_world<T: Real>(r: &Matrix3<T>, a: &Matrix3<T>) -> Matrix3<T> {
     let m = (m + m.transpose()) * super::c::<T>(0.5);
     let floor = m.amax() * T::default_epsilon() * super::c::<T>(8.0);
     m.map(|x| if x.abs() <= floor { T::zero() } else { x })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn momentum_with_the_inertia_at_hand_is_the_same_bit_for_bit() {
+        let body = RigidBody {
+            mass: 2.0,
+            inverse_mass: 0.5,
+            inertia_body: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+            inverse_inertia_body: Matrix3::from_diagonal(&Vector3::new(1.0, 0.5, 1.0 / 3.0)),
+            position: Vector3::new(0.1, 0.2, 0.3),
+            orientation: Quaternion::new(0.9, 0.1, -0.3, 0.2),
+            velocity: Vector3::new(1.0, -2.0, 0.5),
+            angular_velocity: Vector3::new(0.3, 0.7, -1.1),
+            acceleration: Vector3::zeros(),
+        };
+        let inertia = body.inertia_world();
+        assert_ne!(inertia, body.inertia_body, "the rotation turns the tensor");
+        let q = Vector3::new(-0.4, 0.0, 0.9);
+        let (v, w) = (body.velocity, body.angular_velocity);
+        assert_eq!(
+            body.angular_momentum_about_with(&inertia, &q, &v, &w),
+            body.angular_momentum_about(&q, &v, &w)
+        );
+    }
 }

@@ -225,13 +225,17 @@ fn velocity_checks<T: Real>(
     let problem = input.problem;
     let q = problem.contact.point;
     let d = input.frame.normal();
-    let pairs: Vec<_> = (0..2)
-        .filter_map(|i| Some((i, problem.bodies[i].as_ref()?, applied.bodies[i].as_ref()?)))
-        .collect();
+    // Each body's world inertia R I Rᵀ once, for momentum and energy.
+    // (A fixed pair of slots, not a Vec: nothing allocated.)
+    let slots = [0, 1].map(|i| {
+        let b = problem.bodies[i].as_ref()?;
+        Some((i, b, applied.bodies[i].as_ref()?, b.inertia_world()))
+    });
+    let pairs = || slots.iter().flatten();
 
-    if pairs.len() == 2 {
+    if pairs().count() == 2 {
         let (mut before, mut after, mut scale) = (Vector3::zeros(), Vector3::zeros(), T::zero());
-        for (_, b, a) in &pairs {
+        for (_, b, a, _) in pairs() {
             before += b.velocity * b.mass;
             after += a.v * b.mass;
             scale += norm(&(b.velocity * b.mass)) + norm(&a.impulse);
@@ -243,11 +247,11 @@ fn velocity_checks<T: Real>(
         ));
     }
 
-    for (i, b, a) in &pairs {
-        let before = b.angular_momentum_about(&q, &b.velocity, &b.angular_velocity);
-        let after = b.angular_momentum_about(&q, &a.v, &a.w);
+    for (i, b, a, inertia) in pairs() {
+        let before = b.angular_momentum_about_with(inertia, &q, &b.velocity, &b.angular_velocity);
+        let after = b.angular_momentum_about_with(inertia, &q, &a.v, &a.w);
         let scale = norm(&before)
-            + norm(&(b.inertia_world() * a.w))
+            + norm(&(inertia * a.w))
             + norm(&(b.position - q)) * b.mass * (norm(&b.velocity) + norm(&a.v));
         let error = norm(&(after - before));
         items.push(item(
@@ -259,7 +263,7 @@ fn velocity_checks<T: Real>(
     // Separating velocity after the impulse, along the normal.
     let mut after_world = Vector3::zeros();
     let mut scale = norm(&input.desired.contact_velocity_world);
-    for (i, b, a) in &pairs {
+    for (i, b, a, _) in pairs() {
         let r = input.frame.r[*i].unwrap_or_else(Vector3::zeros);
         let v = a.w.cross(&r) + a.v;
         scale += norm(&v) + norm(&b.point_velocity(&r));
@@ -281,9 +285,9 @@ fn velocity_checks<T: Real>(
     ));
 
     let (mut e_before, mut e_after) = (T::zero(), T::zero());
-    for (_, b, a) in &pairs {
-        e_before += b.kinetic_energy(&b.velocity, &b.angular_velocity);
-        e_after += b.kinetic_energy(&a.v, &a.w);
+    for (_, b, a, inertia) in pairs() {
+        e_before += b.kinetic_energy_with(inertia, &b.velocity, &b.angular_velocity);
+        e_after += b.kinetic_energy_with(inertia, &a.v, &a.w);
     }
     let rise = causes::rose(e_before, e_after)
         .then(|| causes::energy_rise(problem, input.impulse, friction_solve, (e_before, e_after)));

@@ -1,7 +1,7 @@
 //! The input of one contact, a by-value view taken from a world: the two
 //! bodies, the contact geometry, its coefficients and parameters.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::{Real, RigidBody};
 use crate::physics::{ContactParams, FrictionModel};
@@ -37,7 +37,18 @@ pub struct Problem<T: Real> {
     pub duration: T,
 }
 
+/// Each slot's world inverse inertia `R I_b⁻¹ Rᵀ` (`None` for an empty
+/// slot), computed once per solve and handed to the stages that need it.
+pub type InverseInertias<T> = [Option<Matrix3<T>>; 2];
+
 impl<T: Real> Problem<T> {
+    /// Each slot's world inverse inertia `R I_b⁻¹ Rᵀ`.
+    pub fn inverse_inertias(&self) -> InverseInertias<T> {
+        self.bodies
+            .each_ref()
+            .map(|b| b.as_ref().map(RigidBody::inverse_inertia_world))
+    }
+
     /// The sign body i takes in the contact: +1 for body 1, -1 for body 2
     /// (the lecture's (-1)^(i+1)).
     pub fn sign(i: usize) -> T {

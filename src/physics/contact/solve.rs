@@ -55,18 +55,21 @@ pub struct BodyAfter<T: Real> {
 pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
     let contact = &problem.contact;
     let frame = contact_frame(problem);
-    let unit = unit_impulse(problem, &frame, contact.has_friction());
+    // Each body's R I⁻¹ Rᵀ once, for every stage that reads it.
+    let inverse_inertias = problem.inverse_inertias();
+    let unit = unit_impulse_with(problem, &inverse_inertias, &frame, contact.has_friction());
     let desired = desired_delta_velocity(problem, &frame);
     let closing = desired.desired > T::zero();
-    let impulse = closing.then(|| impulse(problem, &frame, &unit, &desired));
+    let impulse =
+        closing.then(|| impulse_with(problem, &inverse_inertias, &frame, &unit, &desired));
     let friction = impulse
         .as_ref()
         .filter(|_| contact.has_friction())
         .map(|g| friction_clamp(problem, &frame, &unit, &desired, g));
     let final_impulse = final_impulse_world(impulse.as_ref(), friction.as_ref());
-    let applied = final_impulse.map(|g| apply_impulse(problem, &frame, &g));
-    let projection =
-        (contact.penetration > T::zero()).then(|| nonlinear_projection(problem, &frame));
+    let applied = final_impulse.map(|g| apply_impulse_with(problem, &inverse_inertias, &frame, &g));
+    let projection = (contact.penetration > T::zero())
+        .then(|| nonlinear_projection_with(problem, &inverse_inertias, &frame));
     let orientation = projection
         .as_ref()
         .map(|p| orientation_update(problem, p))

@@ -277,9 +277,11 @@ pub fn prepare_into<T: Real>(
         let duration = contact.duration.unwrap_or(world.step.duration);
         let (velocity_from_acceleration, mut planar) =
             acceleration_terms(&acceleration, &basis, duration);
+        // `Cᵀ(q̇₁ - q̇₂)` once: the slip reads it as it is, the bookkeeping
+        // velocity with the planar term added (what `contact_velocity` adds).
+        let (_, bodies_velocity) = contact_velocity(&point_velocity, &basis, &Vector3::zeros());
         let slip = if with_friction {
-            let (_, bodies) = contact_velocity(&point_velocity, &basis, &Vector3::zeros());
-            let (y, z) = (bodies.y - planar.y, bodies.z - planar.z);
+            let (y, z) = (bodies_velocity.y - planar.y, bodies_velocity.z - planar.z);
             (y * y + z * z).sqrt()
         } else {
             T::zero()
@@ -287,7 +289,11 @@ pub fn prepare_into<T: Real>(
         if !world.step.anticipate_planar_acceleration {
             planar = Vector3::zeros();
         }
-        let (_, velocity) = contact_velocity(&point_velocity, &basis, &planar);
+        let velocity = if planar != Vector3::zeros() {
+            bodies_velocity + planar
+        } else {
+            bodies_velocity
+        };
         let friction_index = matrix.map(|matrix| {
             friction.push(FrictionData {
                 model: input.friction_model,

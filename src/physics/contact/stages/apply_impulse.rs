@@ -3,6 +3,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::ContactFrame;
+use crate::physics::contact::problem::InverseInertias;
 use crate::physics::{Problem, Real};
 
 #[derive(Debug, Clone, PartialEq)]
@@ -52,12 +53,22 @@ pub fn apply_impulse<T: Real>(
     frame: &ContactFrame<T>,
     impulse_world: &Vector3<T>,
 ) -> AppliedImpulse<T> {
+    apply_impulse_with(problem, &problem.inverse_inertias(), frame, impulse_world)
+}
+
+/// [`apply_impulse`] with each slot's world inverse inertia already at hand.
+pub fn apply_impulse_with<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    impulse_world: &Vector3<T>,
+) -> AppliedImpulse<T> {
     let bodies = [0, 1].map(|i| {
         let body = problem.bodies[i].as_ref()?;
         let r = frame.r[i]?;
         Some(body_velocity_change(
             body.inverse_mass,
-            &body.inverse_inertia_world(),
+            inverse_inertias[i].as_ref()?,
             &r,
             impulse_world,
             Problem::<T>::sign(i),

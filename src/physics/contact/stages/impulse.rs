@@ -8,6 +8,7 @@
 use nalgebra::{Cholesky, Matrix3, Vector3, LU, U3};
 
 use super::{ContactFrame, DesiredVelocity, UnitImpulse};
+use crate::physics::contact::problem::InverseInertias;
 use crate::physics::{c, FrictionModel, Problem, Real};
 
 /// How the 3×3 system `M g = rhs` was solved, and how well.
@@ -182,12 +183,22 @@ pub fn closed_form_j<T: Real>(
     frame: &ContactFrame<T>,
     desired: &DesiredVelocity<T>,
 ) -> T {
+    closed_form_j_with(problem, &problem.inverse_inertias(), frame, desired)
+}
+
+/// [`closed_form_j`] with each slot's world inverse inertia already at hand.
+pub fn closed_form_j_with<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    desired: &DesiredVelocity<T>,
+) -> T {
     let n = frame.normal();
     let mut denominator = T::zero();
     for (i, body) in problem.bodies.iter().enumerate() {
-        if let (Some(b), Some(r)) = (body, frame.r[i]) {
+        if let (Some(b), Some(r), Some(inverse)) = (body, frame.r[i], &inverse_inertias[i]) {
             let u = r.cross(&n);
-            denominator += b.inverse_mass + u.dot(&(b.inverse_inertia_world() * u));
+            denominator += b.inverse_mass + u.dot(&(inverse * u));
         }
     }
     -(T::one() + desired.restitution) * desired.contact_velocity_world.dot(&n) / denominator
@@ -228,6 +239,17 @@ pub fn impulse<T: Real>(
     unit: &UnitImpulse<T>,
     desired: &DesiredVelocity<T>,
 ) -> Impulse<T> {
+    impulse_with(problem, &problem.inverse_inertias(), frame, unit, desired)
+}
+
+/// [`impulse`] with each slot's world inverse inertia already at hand.
+pub fn impulse_with<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+) -> Impulse<T> {
     let normal_only = Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
     let (impulse_contact, solve) = impulse_contact(
         desired.desired,
@@ -236,7 +258,7 @@ pub fn impulse<T: Real>(
         unit.matrix.map(FactoredMatrix::with_condition).as_ref(),
         sticking_model(&problem.contact),
     );
-    let closed_form_j = closed_form_j(problem, frame, desired);
+    let closed_form_j = closed_form_j_with(problem, inverse_inertias, frame, desired);
     let scale = closed_form_j.abs().max(T::min_value().unwrap_or(T::zero()));
     let closed_form_relative_difference = if scale > T::zero() {
         (normal_only.x - closed_form_j).abs() / scale

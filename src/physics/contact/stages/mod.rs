@@ -10,11 +10,11 @@ pub mod orientation;
 pub mod projection;
 pub mod unit_impulse;
 
-pub use apply_impulse::{apply_impulse, AppliedImpulse, BodyVelocityChange};
+pub use apply_impulse::{apply_impulse, apply_impulse_with, AppliedImpulse, BodyVelocityChange};
 pub use contact_frame::{contact_frame, ContactFrame};
 pub use desired_velocity::{desired_delta_velocity, DesiredVelocity};
 pub use friction::{friction_clamp, FrictionClamp, FrictionRegime};
-pub use impulse::{impulse, Impulse, MatrixSolve};
+pub use impulse::{impulse, impulse_with, Impulse, MatrixSolve};
 pub use orientation::{orientation_update, BodyOrientation, OrientationUpdate};
-pub use projection::{nonlinear_projection, BodyProjection, Projection};
-pub use unit_impulse::{unit_impulse, BodyUnitResponse, UnitImpulse};
+pub use projection::{nonlinear_projection, nonlinear_projection_with, BodyProjection, Projection};
+pub use unit_impulse::{unit_impulse, unit_impulse_with, BodyUnitResponse, UnitImpulse};

@@ -9,6 +9,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::unit_impulse::{angular_response, AngularResponse};
 use super::ContactFrame;
+use crate::physics::contact::problem::InverseInertias;
 use crate::physics::scale::stable_norm;
 use crate::physics::{ContactParams, Problem, ProjectionMethod, Real};
 
@@ -163,6 +164,15 @@ pub fn nonlinear_projection<T: Real>(
     problem: &Problem<T>,
     frame: &ContactFrame<T>,
 ) -> Projection<T> {
+    nonlinear_projection_with(problem, &problem.inverse_inertias(), frame)
+}
+
+/// [`nonlinear_projection`] with each slot's world inverse inertia already at hand.
+pub fn nonlinear_projection_with<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+) -> Projection<T> {
     let settings = &problem.contact.settings;
     let d = frame.normal();
     let depth = problem.contact.penetration * settings.relaxation;
@@ -172,7 +182,7 @@ pub fn nonlinear_projection<T: Real>(
         let r = frame.r[i]?;
         Some(projection_inertia(
             body.inverse_mass,
-            &body.inverse_inertia_world(),
+            inverse_inertias[i].as_ref()?,
             &r,
             &d,
             settings,

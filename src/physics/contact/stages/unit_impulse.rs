@@ -5,6 +5,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::ContactFrame;
+use crate::physics::contact::problem::InverseInertias;
 use crate::physics::frame::skew;
 use crate::physics::{Problem, Real};
 
@@ -163,13 +164,23 @@ pub fn unit_impulse<T: Real>(
     frame: &ContactFrame<T>,
     with_matrix: bool,
 ) -> UnitImpulse<T> {
+    unit_impulse_with(problem, &problem.inverse_inertias(), frame, with_matrix)
+}
+
+/// [`unit_impulse`] with each slot's world inverse inertia already at hand.
+pub fn unit_impulse_with<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    with_matrix: bool,
+) -> UnitImpulse<T> {
     let d = frame.normal();
     let bodies = [0, 1].map(|i| {
         let body = problem.bodies[i].as_ref()?;
         let r = frame.r[i]?;
         Some(body_unit_response(
             body.inverse_mass,
-            body.inverse_inertia_world(),
+            inverse_inertias[i]?,
             r,
             &d,
             with_matrix,
