@@ -1,9 +1,8 @@
 //! What a step reports: its numbers, the events worth a line of their own,
 //! and why a run stopped early.
 
-use super::substep::ToiHit;
 use crate::physics::detect::ToiMethod;
-use crate::physics::{to_f64, BodyId, Real, World};
+use crate::physics::{to_f64, Body, BodyId, Real, World};
 
 /// Something worth a line of its own in a run's log.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,7 +95,8 @@ pub struct ToiEvent {
     pub body1: BodyId,
     pub body2: BodyId,
     pub method: ToiMethod,
-    /// The run's clock (s).
+    /// The run's clock (s); time into the step while the sub-steps hold it
+    /// (`Spent::hits`), until the step adds its start.
     pub time: f64,
     /// The search's tests (GJK calls).
     pub tests: usize,
@@ -108,25 +108,6 @@ pub struct ToiEvent {
     /// The world's kinetic energy before and after the resolution (J).
     pub kinetic_before: f64,
     pub kinetic_after: f64,
-}
-
-impl From<ToiHit> for ToiEvent {
-    /// The hit's time stays the step's: the caller adds the step's start.
-    fn from(h: ToiHit) -> Self {
-        ToiEvent {
-            body1: h.body1,
-            body2: h.body2,
-            method: h.method,
-            time: h.time,
-            tests: h.tests,
-            point: h.point,
-            normal: h.normal,
-            closing: h.closing,
-            separating: h.separating,
-            kinetic_before: h.kinetic_before,
-            kinetic_after: h.kinetic_after,
-        }
-    }
 }
 
 /// What one step did.
@@ -202,18 +183,29 @@ pub fn surge_bound<T: Real>(world: &World<T>, gravity: f64, dt: f64) -> f64 {
         .filter(|b| b.movable)
         .map(|b| {
             let s = &b.state;
-            let reach = b
-                .shape
-                .as_ref()
-                .and_then(|sh| sh.bounding_radius())
-                .unwrap_or(0.0);
-            let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
-            let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
-            let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);
-            // Angular energy beyond what |ω| × radius stands for (thin bodies).
-            e + to_f64(s.kinetic_energy(&s.velocity, &s.angular_velocity))
+            body_bound(
+                b,
+                gravity,
+                dt,
+                to_f64(s.kinetic_energy(&s.velocity, &s.angular_velocity)),
+            )
         })
         .sum()
+}
+
+/// One body's term of the [`surge_bound`], its kinetic energy `kinetic` given.
+fn body_bound<T: Real>(b: &Body<T>, gravity: f64, dt: f64, kinetic: f64) -> f64 {
+    let s = &b.state;
+    let reach = b
+        .shape
+        .as_ref()
+        .and_then(|sh| sh.bounding_radius())
+        .unwrap_or(0.0);
+    let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
+    let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
+    let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);
+    // Angular energy beyond what |ω| × radius stands for (thin bodies).
+    e + kinetic
 }
 
 /// What a step's audits read at its start, in one pass over the bodies:
@@ -245,15 +237,7 @@ pub fn start_of_step<T: Real>(
         inertia.push(i);
         let energy = s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity);
         kinetic += energy;
-        let reach = b
-            .shape
-            .as_ref()
-            .and_then(|sh| sh.bounding_radius())
-            .unwrap_or(0.0);
-        let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
-        let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
-        let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);
-        bound += e + to_f64(energy);
+        bound += body_bound(b, gravity, dt, to_f64(energy));
     }
     (kinetic, bound)
 }

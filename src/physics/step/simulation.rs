@@ -260,7 +260,7 @@ impl<T: Real> Simulation<T> {
         events.extend(spent.hits.iter().map(|h| {
             Event::Toi(ToiEvent {
                 time: start + h.time,
-                ..ToiEvent::from(*h)
+                ..*h
             })
         }));
         events.extend(spent.crossed.iter().map(|t| Event::Tunnelled {

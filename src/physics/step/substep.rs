@@ -20,6 +20,7 @@ use nalgebra::Vector3;
 use super::ccd::{self, Tunnelled};
 use super::energy;
 use super::integrate::integrate_position;
+use super::report::ToiEvent;
 use super::swept::{motion_of, Earlier, MovementBound, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
@@ -33,32 +34,10 @@ use crate::physics::{c, to_f64, BodyId, Contact, ContactInput, Real, World};
 /// The most collisions continuous detection resolves inside one step.
 pub const MAX_SUBSTEPS: usize = 8;
 
-/// A collision found inside the step and resolved at its time.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ToiHit {
-    /// Body 1 moves (the contact's normal points from body 2 toward it).
-    pub body1: BodyId,
-    pub body2: BodyId,
-    pub method: ToiMethod,
-    /// Time into the step (s).
-    pub time: f64,
-    /// The search's tests (GJK calls).
-    pub tests: usize,
-    pub point: [f64; 3],
-    pub normal: [f64; 3],
-    /// Normal speeds at the contact before and after its resolution (m/s):
-    /// closing > 0 approaches, separating > 0 leaves.
-    pub closing: f64,
-    pub separating: f64,
-    /// The world's kinetic energy before and after the resolution (J).
-    pub kinetic_before: f64,
-    pub kinetic_after: f64,
-}
-
 /// What one step's continuous detection did.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Spent {
-    pub hits: Vec<ToiHit>,
+    pub hits: Vec<ToiEvent>,
     pub crossed: Vec<Tunnelled>,
     /// The cap on sub-steps was hit.
     pub capped: bool,
@@ -148,7 +127,7 @@ impl<T: Real> Substeps<T> {
                         out.woken.push(body);
                     }
                 }
-                out.hits.push(ToiHit {
+                out.hits.push(ToiEvent {
                     method,
                     time: to_f64(elapsed),
                     tests,
@@ -263,7 +242,7 @@ fn resolve_at<T: Real>(
     materials: &[Material],
     i: usize,
     j: usize,
-) -> Option<ToiHit> {
+) -> Option<ToiEvent> {
     let (i, j) = if world.bodies[i].movable {
         (i, j)
     } else {
@@ -335,7 +314,7 @@ fn resolve_at<T: Real>(
     resolver.velocity_phase(Implementation::Indexed, &mut Silent);
     resolver.write_back(world);
     world.contacts = kept;
-    Some(ToiHit {
+    Some(ToiEvent {
         body1: BodyId(i),
         body2: BodyId(j),
         method: ToiMethod::Conservative,
