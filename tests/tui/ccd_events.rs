@@ -32,32 +32,14 @@ fn the_events_list_shows_tunnelled_without_ccd_and_toi_with_it() {
     )
     .unwrap();
     let (a, shown) = after_first_step(&without);
-    let kinds: Vec<&str> = a
-        .run
-        .as_ref()
-        .unwrap()
-        .player
-        .run
-        .events
-        .iter()
-        .map(|e| e.kind)
-        .collect();
+    let kinds = event_kinds(&a);
     assert_eq!(kinds, vec!["tunnelled"]);
     assert!(
         shown.contains("tunnelled: bullet ↔ wall met at t = 0.0048 s"),
         "{shown}"
     );
     let (a, shown) = after_first_step(&with);
-    let kinds: Vec<&str> = a
-        .run
-        .as_ref()
-        .unwrap()
-        .player
-        .run
-        .events
-        .iter()
-        .map(|e| e.kind)
-        .collect();
+    let kinds = event_kinds(&a);
     assert_eq!(kinds, vec!["toi"]);
     assert!(
         shown.contains("time of collision (conservative, 2 tests): bullet ↔ wall"),
@@ -93,4 +75,10 @@ fn f_chooses_tunnelled_events_and_n_jumps_to_one() {
         run.frame as u64, event.step,
         "n jumps to the tunnelled event"
     );
+}
+
+/// The kinds of the run's events so far.
+fn event_kinds(a: &App) -> Vec<&'static str> {
+    let run = a.run.as_ref().unwrap();
+    run.player.run.events.iter().map(|e| e.kind).collect()
 }
