@@ -4,6 +4,10 @@
 //! against `parry::query::contact`). Criterion reports the time for all 64;
 //! divide by 64 for one pair.
 
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
+
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -12,39 +16,11 @@ use contact_lab::physics::detect::{
     gjk, query, Capsule, Convex, ConvexHull, GjkOptions, QueryOptions,
 };
 use criterion::{criterion_group, criterion_main, Criterion};
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{UnitQuaternion, Vector3};
 use parry3d_f64::math::{Pose as PPose, Rotation, Vector as PVec};
 use parry3d_f64::shape::{
     Ball, Capsule as PCapsule, ConvexPolyhedron, Cuboid, Cylinder, Shape as PShape,
 };
-
-/// SplitMix64.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-    fn vector(&mut self, r: f64) -> Vector3<f64> {
-        Vector3::new(self.range(-r, r), self.range(-r, r), self.range(-r, r))
-    }
-    fn rotation(&mut self) -> UnitQuaternion<f64> {
-        let q = Quaternion::new(
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-        );
-        UnitQuaternion::from_quaternion(q)
-    }
-}
 
 fn peer(shape: &Convex) -> Box<dyn PShape> {
     match shape {
