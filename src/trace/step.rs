@@ -345,6 +345,26 @@ fn grab_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Grabbed, BlowUp
     Ok((world, prepared, names))
 }
 
+impl StepTrace {
+    /// The contact between the bodies named `a` and `b` (either order)
+    /// nearest `point`: the resolver's contact for one the detection found.
+    pub fn contact_near(&self, a: &str, b: &str, point: [f64; 3]) -> Option<usize> {
+        let name = |i: usize| self.names.bodies.get(i).map(String::as_str);
+        (self.world.contacts.iter().enumerate())
+            .filter(|(_, x)| {
+                let pair = [Some(x.body1.0), x.body2.map(|b| b.0)].map(|i| i.and_then(name));
+                pair == [Some(a), Some(b)] || pair == [Some(b), Some(a)]
+            })
+            .map(|(k, x)| {
+                let q = x.input.point;
+                let d2 = (0..3).map(|i| (q[i] - point[i]).powi(2)).sum::<f64>();
+                (k, d2)
+            })
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+            .map(|(k, _)| k)
+    }
+}
+
 /// A step's resolution as `simulate --trace-step` prints it.
 pub struct Described {
     pub resolver: ResolverTrace,

@@ -50,25 +50,8 @@ impl App {
                 true,
             );
         };
-        // The same pair's contact nearest the point the detection found.
-        let names = &trace.names.bodies;
-        let name = |i: usize| names.get(i).map(String::as_str);
-        let near = trace
-            .world
-            .contacts
-            .iter()
-            .enumerate()
-            .filter(|(_, x)| {
-                let pair = [Some(x.body1.0), x.body2.map(|b| b.0)].map(|i| i.and_then(name));
-                pair == [Some(&*a), Some(&*b)] || pair == [Some(&*b), Some(&*a)]
-            })
-            .map(|(k, x)| {
-                let q = x.input.point;
-                let d2 = (0..3).map(|i| (q[i] - point[i]).powi(2)).sum::<f64>();
-                (k, d2)
-            })
-            .min_by(|x, y| x.1.total_cmp(&y.1));
-        let Some((k, _)) = near else {
+        let near = trace.contact_near(&a, &b, point);
+        let Some(k) = near else {
             return self.say(
                 format!("step {step}'s resolver has no contact of {a} – {b}"),
                 false,
