@@ -415,3 +415,18 @@ fn the_run_and_resolver_tables_dispatch_their_keys() {
         }
     }
 }
+
+/// The run screen's key bar names the detection key and all five picture
+/// toggles (m, the movement bounds, was in the help only); at 80 columns the
+/// bar drops middle entries but keeps help and quit.
+#[test]
+fn the_run_key_bar_names_detection_and_every_picture_toggle() {
+    let a = open("stack-5");
+    let rows = tui_helpers::screen(&a, 140, 30);
+    let bar = rows.last().expect("a bottom row");
+    assert!(bar.contains("d detection"), "{bar}");
+    assert!(bar.contains("cosbm show"), "{bar}");
+    let narrow = tui_helpers::screen(&a, 80, 24);
+    let bar = narrow.last().expect("a bottom row");
+    assert!(bar.contains("? help") && bar.contains("q quit"), "{bar}");
+}
