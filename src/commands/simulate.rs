@@ -185,10 +185,16 @@ fn trace_step(
             )
         }
         RunFormat::Json => {
-            let seconds = crate::render::resolve::Seconds::default();
-            let mut j = crate::render::resolve::json::to_json(&described.resolver, &seconds, true);
-            j["previous_frame_normals"] = crate::render::previous_frame::json(&described.previous);
-            serde_json::to_string_pretty(&j).map_err(|e| AppError::Runtime(e.to_string()))? + "\n"
+            // Written as it is built: a huge step's log is never held whole.
+            let previous = crate::render::previous_frame::json(&described.previous);
+            return crate::render::resolve::json::write(
+                &described.resolver,
+                &crate::render::resolve::Seconds::default(),
+                true,
+                &[("previous_frame_normals", previous)],
+                out,
+            )
+            .map_err(io);
         }
         RunFormat::Svg => {
             return Err(AppError::Usage(
