@@ -46,7 +46,7 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// List the embedded lessons: id, title, source, contacts.
-    List,
+    List(ListArgs),
     /// Print the worked solution of one contact (or all: --all-contacts).
     Solve(SolveArgs),
     /// Resolve every contact of a lesson together: position phase, then velocity phase.
@@ -113,6 +113,12 @@ pub struct WidthArg {
     /// folded.
     #[arg(long, value_name = "N")]
     pub width: Option<usize>,
+}
+
+#[derive(Debug, Clone, Copy, Args)]
+pub struct ListArgs {
+    #[command(flatten)]
+    pub fold: WidthArg,
 }
 
 /// A contact's knobs (`--friction-model`, …), from the knob table.

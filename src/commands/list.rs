@@ -6,35 +6,36 @@ use super::io;
 use crate::error::AppError;
 use crate::lesson::{embedded, Lesson};
 
-fn table(out: &mut dyn Write) -> Result<(), AppError> {
+/// The embedded lessons as a table folded to `width` (the id and contact
+/// count stay; a long title folds under itself).
+fn table(out: &mut dyn Write, width: usize) -> Result<(), AppError> {
     let lessons: Vec<Lesson> = embedded::ids()
         .into_iter()
         .map(Lesson::load)
         .collect::<Result<_, _>>()
         .map_err(|e| AppError::Runtime(format!("an embedded lesson is invalid: {e}")))?;
-    let w = lessons.iter().map(|l| l.id.len()).max().unwrap_or(2).max(2);
-    writeln!(out, "{:w$}  {:>8}  title — source", "id", "contacts").map_err(io)?;
-    for l in &lessons {
-        writeln!(
-            out,
-            "{:w$}  {:>8}  {} — {}",
-            l.id,
-            l.contacts.len(),
-            l.title,
-            l.source
-        )
-        .map_err(io)?;
-    }
-    Ok(())
+    let head = ["id", "contacts", "title — source"].map(String::from);
+    let rows: Vec<Vec<String>> = lessons
+        .iter()
+        .map(|l| {
+            vec![
+                l.id.clone(),
+                format!("{:>8}", l.contacts.len()),
+                format!("{} — {}", l.title, l.source),
+            ]
+        })
+        .collect();
+    let text = crate::render::wrap::table(0, 2, &head, &rows, width);
+    out.write_all(text.as_bytes()).map_err(io)
 }
 
-pub fn list(out: &mut dyn Write) -> Result<(), AppError> {
-    table(out)?;
-    scenes(out)
+pub fn list(out: &mut dyn Write, width: usize) -> Result<(), AppError> {
+    table(out, width)?;
+    scenes(out, width)
 }
 
 /// The scenes, which `simulate` steps in time.
-fn scenes(out: &mut dyn Write) -> Result<(), AppError> {
+fn scenes(out: &mut dyn Write, width: usize) -> Result<(), AppError> {
     let scenes: Vec<Lesson> = embedded::scene_ids()
         .into_iter()
         .map(Lesson::load)
@@ -43,7 +44,8 @@ fn scenes(out: &mut dyn Write) -> Result<(), AppError> {
     let w = scenes.iter().map(|l| l.id.len()).max().unwrap_or(2).max(2);
     writeln!(out, "\nScenes (contact-lab simulate ID):").map_err(io)?;
     for l in &scenes {
-        writeln!(out, "{:w$}  {}", l.id, l.title).map_err(io)?;
+        let line = format!("{:w$}  {}", l.id, l.title);
+        writeln!(out, "{}", crate::render::wrap::wrap(&line, width)).map_err(io)?;
     }
     Ok(())
 }
@@ -54,7 +56,7 @@ pub fn welcome(out: &mut dyn Write) -> Result<(), AppError> {
         "contact-lab — step through rigid-body contact resolution, stage by stage.\n"
     )
     .map_err(io)?;
-    table(out)?;
+    table(out, super::text_width(None))?;
     writeln!(
         out,
         "\nStart with:  contact-lab solve lecture-2      (the lecture's second worked example)\n             contact-lab glossary             (every symbol: meaning, unit, stages)\n             contact-lab solve LESSON --format json\n             contact-lab resolve box-four-corners   (a scene's contacts resolved together)\n             contact-lab --help"

@@ -34,7 +34,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
             }
             crate::tui::run(app)
         }
-        Some(Command::List) => list::list(out),
+        Some(Command::List(args)) => list::list(out, text_width(args.fold.width)),
         Some(Command::Knobs) => out
             .write_all(crate::render::knobs::markdown().as_bytes())
             .map_err(io),

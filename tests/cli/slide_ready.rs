@@ -217,3 +217,29 @@ fn a_wide_table_folds_into_blocks_that_keep_each_row_named() {
         assert!(narrow.contains(head), "no block {head:?} in:\n{narrow}");
     }
 }
+
+/// `list` folds as a table: every line within the width, each lesson's id
+/// and contact count at the start of its row, the title folded under its
+/// own column, and the same words as the unfolded list.
+#[test]
+fn list_folds_its_title_column_under_itself() {
+    let whole = stdout(&["list", "--width", "0"]);
+    assert!(widest(&whole) > 150, "{} columns", widest(&whole));
+    let folded = stdout(&["list", "--width", "80"]);
+    assert!(widest(&folded) <= 80, "{} columns", widest(&folded));
+    let words = |t: &str| t.split_whitespace().map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(words(&folded), words(&whole));
+    let title_column = folded.lines().next().unwrap().find("title").unwrap();
+    let lecture_3 = folded
+        .lines()
+        .position(|l| l.starts_with("lecture-3 "))
+        .expect("lecture-3's row");
+    let next = folded.lines().nth(lecture_3 + 1).unwrap();
+    assert_eq!(
+        next.len() - next.trim_start().len(),
+        title_column,
+        "{next:?}"
+    );
+    // Piped with no --width: 100 columns.
+    assert!(widest(&stdout(&["list"])) <= 100);
+}
