@@ -220,6 +220,19 @@ impl RunTrace {
                     cause_text(cause)
                 ),
             ),
+            Event::EnergyRise {
+                gained,
+                tolerance,
+                cause,
+            } => (
+                "energy",
+                format!(
+                    "the step raised the total energy (kinetic + potential) of the bodies in contact by {} J, over the tolerance {} J (from now on, each step, until it stops); cause: {}",
+                    f.num(gained),
+                    f.num(tolerance),
+                    cause_text(cause)
+                ),
+            ),
             Event::WhollyInside {
                 body1,
                 body2,
