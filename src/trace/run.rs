@@ -308,6 +308,7 @@ fn switch_text(s: Switch) -> &'static str {
         Switch::Projection => "projection (the position phase)",
         Switch::Friction => "friction at contacts solved together",
         Switch::Restitution => "restitution at contacts solved together",
+        Switch::OneAtATime => "the lecture's order (the contacts taken one at a time, an impulse never taken back; the same contacts by sequential impulses hold the energy)",
     }
 }
 

@@ -147,6 +147,9 @@ impl<T: Real> StepInputs<'_, T> {
         if any(&|k| k.input.restitution > T::zero()) {
             s.insert(Switch::Restitution);
         }
+        if self.params.solver == Solver::DeepestFirst && w.contacts.len() > 1 {
+            s.insert(Switch::OneAtATime);
+        }
         s
     }
 
@@ -187,6 +190,11 @@ impl<T: Real> StepInputs<'_, T> {
         if off.contains(Switch::WarmStart) {
             params.warm_start = false;
         }
+        if off.contains(Switch::OneAtATime) {
+            params.solver = Solver::SequentialImpulse;
+            params.warm_start = false;
+            world.step.speculative = false;
+        }
         let mut r = Resolver::prepare(&world, &params);
         if self.warm_starts() && params.warm_start {
             self.warm.stage(&world, &mut r);
@@ -218,8 +226,7 @@ impl<T: Real> StepInputs<'_, T> {
         ))
     }
 
-    /// The causes of a kinetic-energy gain, by experiment: each applicable
-    /// narrow switch on its own, then each broad one, then all together.
+    /// The causes of a kinetic-energy gain, by experiment (see [`Self::attribute_by`]).
     pub fn attribute(&self) -> EnergyCause {
         self.attribute_by(|off| self.gains(off))
     }
@@ -231,19 +238,19 @@ impl<T: Real> StepInputs<'_, T> {
 
     /// The causes of what `still` finds (a gain with the switches given
     /// off), by experiment: each applicable narrow switch on its own, then
-    /// each broad one, then all together.
+    /// each broad one, then the order, then all together.
     fn attribute_by(&self, still: impl Fn(Switches) -> Option<f64>) -> EnergyCause {
         let tried = self.applicable();
-        let removes = |broad: bool| -> Switches {
+        let removes = |tier: u8| -> Switches {
             tried
                 .iter()
-                .filter(|s| s.is_broad() == broad && still(Switches::one(*s)).is_none())
+                .filter(|s| s.tier() == tier && still(Switches::one(*s)).is_none())
                 .collect()
         };
-        let mut each = removes(false);
-        if each.is_empty() {
-            each = removes(true);
-        }
+        let each = (0..3)
+            .map(removes)
+            .find(|each| !each.is_empty())
+            .unwrap_or_default();
         if !each.is_empty() {
             EnergyCause::Each(each)
         } else if tried.len() > 1 && still(tried).is_none() {
