@@ -283,6 +283,15 @@ fn the_total_energy_audit_fires_on_the_rocking_box_and_names_friction() {
         );
     }
     assert!(found.len() > 5, "{} events", found.len());
+    // With the lecture's velocity limit (0: restitution 0.2 at every
+    // speed) too: the first step rises, and friction is named.
+    let mut sim = scene(BOX, 0.9, 0.5);
+    sim.params.contact.velocity_limit = 0.0;
+    let found = rises(&watch(&mut sim, 120).reports);
+    assert_eq!(
+        found.first().map(|f| (f.0, f.2)),
+        Some((1, by(Switch::Friction)))
+    );
 }
 
 #[test]
