@@ -220,6 +220,19 @@ impl RunTrace {
                     cause_text(cause)
                 ),
             ),
+            Event::EnergyRise {
+                gained,
+                tolerance,
+                cause,
+            } => (
+                "energy",
+                format!(
+                    "the step raised the total energy (kinetic + potential) of the bodies in contact by {} J, over the tolerance {} J (from now on, each step, until it stops); cause: {}",
+                    f.num(gained),
+                    f.num(tolerance),
+                    cause_text(cause)
+                ),
+            ),
             Event::WhollyInside {
                 body1,
                 body2,
@@ -295,6 +308,7 @@ fn switch_text(s: Switch) -> &'static str {
         Switch::Projection => "projection (the position phase)",
         Switch::Friction => "friction at contacts solved together",
         Switch::Restitution => "restitution at contacts solved together",
+        Switch::OneAtATime => "the lecture's order (the contacts taken one at a time, an impulse never taken back; the same contacts by sequential impulses hold the energy)",
     }
 }
 

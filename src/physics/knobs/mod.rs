@@ -671,6 +671,22 @@ pub static KNOBS: &[Knob] = &[
         get: |s| Value::Number(s.scene.contact_margin),
         set: |s, v| s.scene.contact_margin = number(v),
     },
+    Knob {
+        name: "speculative",
+        old_names: &[],
+        level: Level::World,
+        tables: &[Table::World],
+        doc: "A contact in the contact margin's gap g that does not bounce removes only the closing velocity beyond g/Δt (a speculative contact): trades a closing velocity left within the gap for a body that lands instead of hovering (resolved as touching, a gap contact stops a body up to the margin above the face, and one kicked up each step climbs there). Deepest-first only; the lecture has no margin.",
+        default: "false",
+        kind: Kind::Flag,
+        cli: Cli::Option,
+        edit: Offered::Yes,
+        study: Offered::Yes,
+        grid: &[],
+        needs: Needs::Always,
+        get: |s| Value::Flag(s.scene.speculative),
+        set: |s, v| s.scene.speculative = flag(v),
+    },
     // ---- sleep -------------------------------------------------------
     Knob {
         name: "sleep",

@@ -130,6 +130,11 @@ pub struct StepParams<T: Real> {
     /// slope. A stepper that resolves between the velocity and the position
     /// update does not need it (default: true).
     pub anticipate_planar_acceleration: bool,
+    /// A contact with a gap g > 0 (negative penetration) whose restitution
+    /// as applied is 0 removes only the closing velocity beyond g/duration
+    /// (a speculative contact); the stepper turns it on (default: false, a
+    /// lesson's contacts are resolved as the lecture does).
+    pub speculative: bool,
 }
 
 impl<T: Real> Default for StepParams<T> {
@@ -137,6 +142,7 @@ impl<T: Real> Default for StepParams<T> {
         StepParams {
             duration: c(0.01),
             anticipate_planar_acceleration: true,
+            speculative: false,
         }
     }
 }

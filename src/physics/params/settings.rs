@@ -35,6 +35,11 @@ pub struct SimParams<T: Real> {
     /// just resolved keeps it, instead of losing it for a step and falling
     /// freely (default: 0.005).
     pub contact_margin: T,
+    /// A contact in the margin's gap (g > 0, not bouncing) removes only the
+    /// closing velocity beyond g/Δt, as a speculative contact does: the body
+    /// falls through the gap instead of stopping on it (default: off, gap
+    /// contacts are resolved as touching; the deepest-first solver only).
+    pub speculative: bool,
     /// Continuous detection in the step (default: none).
     pub ccd: Ccd,
     /// Projection or rolling back time for interpenetrating pairs (default: projection).
@@ -126,6 +131,8 @@ pub struct SceneSettings {
     pub acceleration_compensation: bool,
     /// Gap below which contacts are generated (m).
     pub contact_margin: f64,
+    /// Gap contacts remove only the closing velocity beyond gap/Δt.
+    pub speculative: bool,
     pub dt: f64,
     pub steps: u64,
     pub sleep: SleepParams<f64>,
@@ -144,6 +151,7 @@ impl Default for SceneSettings {
             materials: Vec::new(),
             acceleration_compensation: true,
             contact_margin: 0.005,
+            speculative: false,
             dt: 1.0 / 60.0,
             steps: 600,
             sleep: SleepParams::default(),
@@ -192,6 +200,7 @@ impl Settings {
                 narrow_phase: p.narrow_phase,
                 acceleration_compensation: p.acceleration_compensation,
                 contact_margin: p.contact_margin,
+                speculative: p.speculative,
                 dt: p.dt,
                 sleep: p.sleep,
                 ccd: p.ccd,
@@ -225,6 +234,7 @@ impl Settings {
             narrow_phase: scene.narrow_phase,
             friction_model: self.contact.friction_model,
             contact_margin: c(scene.contact_margin),
+            speculative: scene.speculative,
             ccd: scene.ccd,
             rollback: scene.rollback,
             normal_from: scene.normal_from,

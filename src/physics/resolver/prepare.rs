@@ -80,6 +80,10 @@ pub struct ResolverContact<T: Real> {
     pub velocity_from_acceleration: T,
     pub restitution: T,
     pub velocity_limit: T,
+    /// A speculative contact's `g/Δt`: the closing speed its gap g > 0
+    /// absorbs in the step (zero when touching, or when the step does not
+    /// ask for it: `StepParams::speculative`).
+    pub gap_speed: T,
 }
 
 /// What only the contact's own resolution reads (its projection and impulse).
@@ -150,19 +154,41 @@ impl Adjacency {
     }
 }
 
-/// Desired Δv of a contact from its bookkeeping velocity (velocity limit included).
+/// Desired Δv of a contact from its bookkeeping velocity (velocity limit
+/// included). A speculative contact that does not bounce (restitution as
+/// applied 0) wants `Δv = -v_s - g/Δt`: only the closing velocity its gap
+/// cannot absorb (Box2D's speculative contact; nothing when it cannot close the gap).
 pub fn desired_of<T: Real>(c: &ResolverContact<T>, from: RestitutionFrom) -> T {
     let v = c.velocity.x;
-    match from {
+    let (desired, e) = match from {
         RestitutionFrom::Current => {
             let (e, _) = applied_restitution(v, c.restitution, c.velocity_limit);
-            desired_from(v, e, c.velocity_from_acceleration)
+            (desired_from(v, e, c.velocity_from_acceleration), e)
         }
         RestitutionFrom::Initial => {
             let v0 = c.initial_velocity;
             let (e, _) = applied_restitution(v0, c.restitution, c.velocity_limit);
-            desired_toward_bounce(v, v0, e, c.velocity_from_acceleration)
+            (
+                desired_toward_bounce(v, v0, e, c.velocity_from_acceleration),
+                e,
+            )
         }
+    };
+    if c.gap_speed > T::zero() && e == T::zero() {
+        desired - c.gap_speed
+    } else {
+        desired
+    }
+}
+
+/// `g/Δt` of a contact with a gap `g = -penetration > 0` in a step that
+/// asks for speculative contacts, else zero.
+fn gap_speed<T: Real>(world: &World<T>, penetration: T) -> T {
+    let dt = world.step.duration;
+    if world.step.speculative && penetration < T::zero() && dt > T::zero() {
+        -penetration / dt
+    } else {
+        T::zero()
     }
 }
 
@@ -319,6 +345,7 @@ pub fn prepare_into<T: Real>(
             velocity_from_acceleration,
             restitution: input.restitution,
             velocity_limit: input.settings.velocity_limit,
+            gap_speed: gap_speed(world, input.penetration),
         };
         c.desired = desired_of(&c, from);
         setups.push(ContactSetup {

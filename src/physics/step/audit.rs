@@ -4,7 +4,8 @@
 //! after the velocity update, this step's contacts, last step's warm-start
 //! cache) with one ingredient switched off at a time (see [`Switch`]). A
 //! cause is named only when switching it off removes the gain; where no
-//! narrow switch does, the broad ones (friction, restitution at all) are tried, then all of them together; where that fails
+//! narrow switch does, the broad ones (friction, restitution at all) are tried, then
+//! the lecture's order (the step by sequential impulses), then all of them together; where that fails
 //! too, the event says which switches were tried. The re-runs happen only
 //! on a step that reports a gain (`replay`), never on the fast path.
 //! The trace (`trace::run`) says the cause in words.
@@ -35,10 +36,17 @@ pub enum Switch {
     /// Restitution at all (tried likewise): Newton's law applied at
     /// contacts solved together can ask for more than the energy brought.
     Restitution,
+    /// The lecture's order: a deepest-first solver takes the contacts one
+    /// at a time and never takes an impulse back, so a corner taken first
+    /// can stop a whole body and leave the others separating (tried last,
+    /// when neither a narrow nor a broad switch explains a gain); switched
+    /// off: the same contacts by sequential impulses (accumulated impulses,
+    /// no warm start).
+    OneAtATime,
 }
 
 impl Switch {
-    pub const ALL: [Switch; 8] = [
+    pub const ALL: [Switch; 9] = [
         Switch::RestitutionWithFriction,
         Switch::VelocityScaling,
         Switch::KineticDirection,
@@ -47,6 +55,7 @@ impl Switch {
         Switch::Projection,
         Switch::Friction,
         Switch::Restitution,
+        Switch::OneAtATime,
     ];
 
     /// The broad switches, tried only when no narrow one removes a gain.
@@ -54,14 +63,24 @@ impl Switch {
         matches!(self, Switch::Friction | Switch::Restitution)
     }
 
-    fn bit(self) -> u8 {
+    /// When a switch is tried: 0 the narrow ones, 1 the broad ones (when no
+    /// narrow one removes the gain), 2 the order (when no broad one does).
+    pub fn tier(self) -> u8 {
+        match self {
+            Switch::OneAtATime => 2,
+            s if s.is_broad() => 1,
+            _ => 0,
+        }
+    }
+
+    fn bit(self) -> u16 {
         1 << Self::ALL.iter().position(|s| *s == self).unwrap_or(0)
     }
 }
 
 /// A set of switches (a bit set, so events stay `Copy`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct Switches(u8);
+pub struct Switches(u16);
 
 impl Switches {
     pub fn empty() -> Self {

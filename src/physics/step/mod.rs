@@ -19,6 +19,7 @@ pub mod substep;
 pub mod swept;
 pub mod toi_pair;
 pub mod tolerance;
+pub mod total_audit;
 mod wake_sleep;
 
 /// The `ccd` and `rollback` knobs' choices (declared with the other params).

@@ -9,6 +9,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::audit::{gain, EnergyCause, Switch, Switches};
+use super::total_audit::TotalStart;
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Resolver, Silent};
 use crate::physics::{to_f64, FrictionModel, Real, ResolverParams, Solver, World};
@@ -60,6 +61,35 @@ pub fn resolved_with<T: Real>(
         out.weight += to_f64(before.mass * gravity.norm());
     }
     out
+}
+
+/// The total energy of the bodies in `touched` at the end of the step as
+/// resolution `r` leaves them, less the projection's lift: kinetic energy
+/// after resolution, and the potential energy at the positions before
+/// projection moved on by the resolved velocity for `dt`
+/// (`Σ ½ m v'·v' + ½ ω'ᵀ I ω' − m g·(x + v' Δt)`).
+pub fn total_after<T: Real>(
+    world: &World<T>,
+    r: &Resolver<T>,
+    gravity: &Vector3<T>,
+    dt: f64,
+    touched: &[bool],
+) -> f64 {
+    let dt: T = crate::physics::c(dt);
+    let mut total = 0.0;
+    for b in r
+        .bodies
+        .iter()
+        .filter(|b| touched.get(b.id.0) == Some(&true))
+    {
+        let before = &world.body(b.id).state;
+        let mut after = before.clone();
+        after.orientation = b.orientation;
+        let kinetic = after.kinetic_energy(&b.velocity, &b.angular_velocity);
+        let end = before.position + b.velocity * dt;
+        total += to_f64(kinetic - before.mass * gravity.dot(&end));
+    }
+    total
 }
 
 /// A step's resolution inputs.
@@ -117,11 +147,21 @@ impl<T: Real> StepInputs<'_, T> {
         if any(&|k| k.input.restitution > T::zero()) {
             s.insert(Switch::Restitution);
         }
+        if self.params.solver == Solver::DeepestFirst && w.contacts.len() > 1 {
+            s.insert(Switch::OneAtATime);
+        }
         s
     }
 
     /// The step's resolution again with `off` switched off.
     pub fn replay(&self, off: Switches) -> Resolved {
+        let (world, r) = self.replayed(off);
+        resolved(&world, &r, &self.gravity)
+    }
+
+    /// The world with `off` switched off on its contacts, and the
+    /// resolution of it.
+    fn replayed(&self, off: Switches) -> (World<T>, Resolver<T>) {
         let mut world = self.world.clone();
         for k in &mut world.contacts {
             let friction = k.input.has_friction();
@@ -150,6 +190,11 @@ impl<T: Real> StepInputs<'_, T> {
         if off.contains(Switch::WarmStart) {
             params.warm_start = false;
         }
+        if off.contains(Switch::OneAtATime) {
+            params.solver = Solver::SequentialImpulse;
+            params.warm_start = false;
+            world.step.speculative = false;
+        }
         let mut r = Resolver::prepare(&world, &params);
         if self.warm_starts() && params.warm_start {
             self.warm.stage(&world, &mut r);
@@ -158,7 +203,7 @@ impl<T: Real> StepInputs<'_, T> {
             r.position_phase(Implementation::Indexed, &mut Silent);
         }
         r.velocity_phase(Implementation::Indexed, &mut Silent);
-        resolved(&world, &r, &self.gravity)
+        (world, r)
     }
 
     /// Whether the step, re-run with `off` switched off, still gains kinetic energy.
@@ -167,23 +212,48 @@ impl<T: Real> StepInputs<'_, T> {
         gain(e.kinetic_before, e.kinetic_after, self.scale)
     }
 
-    /// The causes of a kinetic-energy gain, by experiment: each applicable
-    /// narrow switch on its own, then each broad one, then all together.
+    /// Whether the step, re-run with `off` switched off, still raises the
+    /// total energy of the bodies in contact above the audit's tolerance
+    /// ([`super::total_audit`]).
+    pub fn rises(&self, off: Switches, start: &TotalStart<'_>) -> Option<f64> {
+        let (_, r) = self.replayed(off);
+        start.rise(total_after(
+            self.world,
+            &r,
+            &self.gravity,
+            start.dt,
+            start.touched,
+        ))
+    }
+
+    /// The causes of a kinetic-energy gain, by experiment (see [`Self::attribute_by`]).
     pub fn attribute(&self) -> EnergyCause {
+        self.attribute_by(|off| self.gains(off))
+    }
+
+    /// The causes of a total-energy rise, by the same experiments.
+    pub fn attribute_rise(&self, start: &TotalStart<'_>) -> EnergyCause {
+        self.attribute_by(|off| self.rises(off, start))
+    }
+
+    /// The causes of what `still` finds (a gain with the switches given
+    /// off), by experiment: each applicable narrow switch on its own, then
+    /// each broad one, then the order, then all together.
+    fn attribute_by(&self, still: impl Fn(Switches) -> Option<f64>) -> EnergyCause {
         let tried = self.applicable();
-        let removes = |broad: bool| -> Switches {
+        let removes = |tier: u8| -> Switches {
             tried
                 .iter()
-                .filter(|s| s.is_broad() == broad && self.gains(Switches::one(*s)).is_none())
+                .filter(|s| s.tier() == tier && still(Switches::one(*s)).is_none())
                 .collect()
         };
-        let mut each = removes(false);
-        if each.is_empty() {
-            each = removes(true);
-        }
+        let each = (0..3)
+            .map(removes)
+            .find(|each| !each.is_empty())
+            .unwrap_or_default();
         if !each.is_empty() {
             EnergyCause::Each(each)
-        } else if tried.len() > 1 && self.gains(tried).is_none() {
+        } else if tried.len() > 1 && still(tried).is_none() {
             EnergyCause::Together(tried)
         } else {
             EnergyCause::Unexplained { tried }

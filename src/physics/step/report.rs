@@ -54,6 +54,15 @@ pub enum Event {
         gained: f64,
         cause: super::audit::EnergyCause,
     },
+    /// The step raised the total energy (kinetic + potential) of the bodies
+    /// in contact by `gained` J, over the audit's `tolerance` J and beyond
+    /// projection's lift (reported when it starts, not again while it goes
+    /// on; [`super::total_audit`]), and the causes the replay shows.
+    EnergyRise {
+        gained: f64,
+        tolerance: f64,
+        cause: super::audit::EnergyCause,
+    },
     /// A body is wholly inside another: the contact's penetration reaches
     /// the smaller body's `width` along the normal (reported when it starts).
     WhollyInside {

@@ -14,6 +14,7 @@ pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
+use super::total_audit::TotalAudit;
 use super::{audit, energy, overlap, replay, rollback, tolerance, wake_sleep};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 pub use crate::physics::params::SimParams;
@@ -52,6 +53,8 @@ pub struct Simulation<T: Real> {
     /// Whether the last step's position phase lifted bodies (reported once
     /// when it starts).
     lifting: bool,
+    /// The total-energy audit's storage (total_audit.rs).
+    total: TotalAudit,
     /// Each body's speed at the start of the step (storage kept).
     speeds: Vec<f64>,
     /// Each body's world inertia at the start of the step (storage kept).
@@ -91,6 +94,7 @@ impl<T: Real> Simulation<T> {
             limits_hit: [false; 2],
             gaining: false,
             lifting: false,
+            total: TotalAudit::default(),
             speeds: Vec::new(),
             inertia: Vec::new(),
             size: None,
@@ -165,6 +169,7 @@ impl<T: Real> Simulation<T> {
             &mut self.inertia,
         );
         let kinetic_start = to_f64(kinetic_start);
+        self.total.begin(&self.world, &p.world.gravity);
         self.begin_step(&mut events);
         let max_penetration = self
             .world
@@ -216,6 +221,33 @@ impl<T: Real> Simulation<T> {
             _ => None,
         };
         self.lifting = lifted.is_some();
+        // The total energy of the bodies in contact (total_audit.rs).
+        let rising = self.total.rising;
+        let (sleep, enabled) = (&self.sleep, p.sleep.enabled);
+        let start = self.total.start(
+            &self.world,
+            |i| sleep[i].awake || !enabled,
+            to_f64(p.world.gravity.norm()),
+            p.resolver.velocity_epsilon,
+            to_f64(p.dt),
+        );
+        let end = replay::total_after(
+            &self.world,
+            resolver,
+            &p.world.gravity,
+            start.dt,
+            start.touched,
+        );
+        let rise = start.rise(end);
+        let rise_event = match (rise, rising) {
+            (Some(gained), false) => Some(Event::EnergyRise {
+                gained,
+                tolerance: start.tolerance,
+                cause: inputs.attribute_rise(&start),
+            }),
+            _ => None,
+        };
+        self.total.rising = rise.is_some();
         if warm {
             self.warm.store(&self.world, resolver);
         }
@@ -271,6 +303,7 @@ impl<T: Real> Simulation<T> {
         }));
         events.extend(lift_event);
         events.extend(gain_event);
+        events.extend(rise_event);
         if position.limit_reached && !self.limits_hit[0] {
             events.push(Event::PositionLimit {
                 left: to_f64(position.max_after),
@@ -356,6 +389,10 @@ impl<T: Real> Simulation<T> {
         // Resolved between the velocity and the position update, the
         // contacts see this step's build-up already: nothing to anticipate.
         self.world.step.anticipate_planar_acceleration = false;
+        // Gap contacts as speculative ones (deepest-first: sequential
+        // impulses clamp their accumulated impulses their own way).
+        self.world.step.speculative =
+            p.speculative && p.resolver.solver == crate::physics::Solver::DeepestFirst;
         // 3. Wake sleepers that an awake body presses on.
         if p.sleep.enabled {
             wake_sleep::wake_touched(&self.world, &self.params, &mut self.sleep, events);

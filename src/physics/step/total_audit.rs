@@ -1,0 +1,143 @@
+//! The total-energy audit of a step. The kinetic audit ([`super::audit`])
+//! compares kinetic energy around the resolver; a resolution that leaves a
+//! body rising with little kinetic energy (a slender box kicked up at one
+//! corner, then another) passes it, and the gain shows as potential energy
+//! once the position update has carried the body up. This audit adds the
+//! potential energy in the gravity field: for the bodies in a contact this
+//! step,
+//!
+//! `E = Σ ½ m v·v + ½ ωᵀ I ω − m g·x`
+//!
+//! at the step's start and at its end as the position update gives it
+//! (`x + v' Δt` with the resolved velocity v'), less the potential energy the
+//! position phase added (projection's lift, an event of its own). Gravity
+//! alone loses `½ m |g|² Δt²` a step (symplectic Euler) and damping loses
+//! too, so the end may exceed the start only through the resolution. A rise
+//! above the tolerance
+//!
+//! `Σ m (|g| ε_v Δt + ½ ε_v²)`
+//!
+//! (the bodies left moving at the velocity epsilon ε_v, the closing speed
+//! the velocity phase leaves alone, and lifted at it for one step) is an
+//! event, and its cause is found by the same replay as the kinetic audit's.
+
+use nalgebra::Vector3;
+
+use crate::physics::{to_f64, Real, World};
+
+/// Total energy `½ m v·v + ½ ωᵀ I ω − m g·x` of body `i` (J; 0 when immovable).
+pub fn body_total<T: Real>(world: &World<T>, i: usize, gravity: &Vector3<T>) -> f64 {
+    world.bodies[i].dynamic().map_or(0.0, |b| {
+        to_f64(
+            b.kinetic_energy(&b.velocity, &b.angular_velocity) - b.mass * gravity.dot(&b.position),
+        )
+    })
+}
+
+/// The tolerance of a step: `Σ m (|g| ε_v Δt + ½ ε_v²)` over the bodies of
+/// total mass `mass` (J).
+pub fn tolerance(mass: f64, gravity: f64, velocity_epsilon: f64, dt: f64) -> f64 {
+    mass * (gravity * velocity_epsilon * dt + 0.5 * velocity_epsilon * velocity_epsilon)
+}
+
+/// The bodies in contact this step and their energy at its start.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TotalStart<'a> {
+    /// `touched[i]`: body `i` is in one of the step's contacts.
+    pub touched: &'a [bool],
+    /// Their total energy at the step's start (J).
+    pub energy: f64,
+    /// Their mass (kg).
+    pub mass: f64,
+    pub dt: f64,
+    /// What a step may add before it is an event (J).
+    pub tolerance: f64,
+}
+
+impl TotalStart<'_> {
+    /// The rise of a step that ends with `end` J, when above the tolerance.
+    pub fn rise(&self, end: f64) -> Option<f64> {
+        let gained = end - self.energy;
+        let rounding = 1e-9 * self.energy.abs().max(1e-12);
+        (gained > self.tolerance + rounding).then_some(gained)
+    }
+}
+
+/// The audit's storage, kept from step to step (nothing is allocated once
+/// it holds a world this size), and whether the last step rose.
+#[derive(Debug, Clone, Default)]
+pub struct TotalAudit {
+    start: Vec<f64>,
+    touched: Vec<bool>,
+    /// Whether the last step rose (an event when it starts, as the kinetic audit's).
+    pub rising: bool,
+}
+
+impl TotalAudit {
+    /// Each body's total energy at the step's start.
+    pub fn begin<T: Real>(&mut self, world: &World<T>, gravity: &Vector3<T>) {
+        self.start.clear();
+        self.start
+            .extend((0..world.bodies.len()).map(|i| body_total(world, i, gravity)));
+    }
+
+    /// The moving bodies (`moving(i)`: body `i` was integrated this step;
+    /// a sleeper does not move) in `world`'s contacts (this step's), their
+    /// start energy and mass, and the step's tolerance.
+    pub fn start<T: Real>(
+        &mut self,
+        world: &World<T>,
+        moving: impl Fn(usize) -> bool,
+        gravity: f64,
+        velocity_epsilon: f64,
+        dt: f64,
+    ) -> TotalStart<'_> {
+        self.touched.clear();
+        self.touched.resize(world.bodies.len(), false);
+        for k in &world.contacts {
+            for id in k.slots().into_iter().flatten() {
+                self.touched[id.0] = world.bodies[id.0].movable && moving(id.0);
+            }
+        }
+        let (mut energy, mut mass) = (0.0, 0.0);
+        for (i, _) in self.touched.iter().enumerate().filter(|(_, t)| **t) {
+            energy += self.start.get(i).copied().unwrap_or(0.0);
+            mass += world.bodies[i].dynamic().map_or(0.0, |b| to_f64(b.mass));
+        }
+        TotalStart {
+            touched: &self.touched,
+            energy,
+            mass,
+            dt,
+            tolerance: tolerance(mass, gravity, velocity_epsilon, dt),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_tolerance_is_the_velocity_epsilon_kept_and_lifted_for_a_step() {
+        // 1 kg, |g| = 10, ε_v = 0.01 m/s, Δt = 0.1 s: 10 × 0.01 × 0.1 + ½ × 1e-4.
+        assert!((tolerance(1.0, 10.0, 0.01, 0.1) - 0.01005).abs() < 1e-15);
+        assert_eq!(tolerance(2.0, 0.0, 0.0, 0.1), 0.0);
+    }
+
+    #[test]
+    fn a_rise_is_what_the_step_added_beyond_the_tolerance() {
+        let touched = [true];
+        let start = TotalStart {
+            touched: &touched,
+            energy: 1.0,
+            mass: 1.0,
+            dt: 0.1,
+            tolerance: 0.01,
+        };
+        assert_eq!(start.rise(1.005), None);
+        assert_eq!(start.rise(0.5), None);
+        let gained = start.rise(1.02).expect("a rise");
+        assert!((gained - 0.02).abs() < 1e-12);
+    }
+}
