@@ -224,15 +224,16 @@ impl RunTrace {
                 gained,
                 tolerance,
                 cause,
-            } => (
-                "energy",
-                format!(
-                    "the step raised the total energy (kinetic + potential) of the bodies in contact by {} J, over the tolerance {} J (from now on, each step, until it stops); cause: {}",
-                    f.num(gained),
-                    f.num(tolerance),
-                    cause_text(cause)
-                ),
-            ),
+            } => {
+                let (gained, tolerance) = apart(gained, tolerance);
+                (
+                    "energy",
+                    format!(
+                        "the step raised the total energy (kinetic + potential) of the bodies in contact by {gained} J, over the tolerance {tolerance} J (from now on, each step, until it stops); cause: {}",
+                        cause_text(cause)
+                    ),
+                )
+            }
             Event::WhollyInside {
                 body1,
                 body2,
@@ -298,6 +299,19 @@ impl RunTrace {
 }
 
 /// The switches of an energy audit in words.
+/// Two numbers with three significant digits, or as many more (up to nine)
+/// as it takes for them to read differently when they differ.
+fn apart(a: f64, b: f64) -> (String, String) {
+    let pair = |d| {
+        let f = crate::format::Fmt::new(d);
+        (f.num(a), f.num(b))
+    };
+    (3..=9)
+        .map(pair)
+        .find(|(x, y)| x != y)
+        .unwrap_or_else(|| pair(3))
+}
+
 fn switch_text(s: Switch) -> &'static str {
     match s {
         Switch::RestitutionWithFriction => "restitution with friction (Newton's law with sticking friction, as in the Kane example)",
@@ -364,4 +378,23 @@ pub fn lowered_text(l: &crate::physics::step::tolerance::Lowered) -> String {
         f.num(l.given),
         f.num(l.used)
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::apart;
+
+    #[test]
+    fn a_rise_and_its_tolerance_never_read_alike() {
+        // 3 digits: 0.00169 and 0.00169; they differ at the fourth.
+        assert_eq!(
+            apart(0.0016912, 0.0016883),
+            ("0.001691".to_string(), "0.001688".to_string())
+        );
+        assert_eq!(
+            apart(0.00279, 0.00169),
+            ("0.00279".into(), "0.00169".into())
+        );
+        assert_eq!(apart(1.0, 1.0), ("1".into(), "1".into()));
+    }
 }

@@ -188,6 +188,35 @@ fn sleeping_boxes_wake_when_the_ball_arrives_and_the_floor_wakes_nobody() {
     );
 }
 
+/// A sleeper holds still: after every step each sleeping body's velocity is
+/// zero. (A sleeper the resolver changed used to keep that velocity asleep —
+/// box2 of sleep-and-wake carried 0.2 m/s for dozens of steps, read by its
+/// contacts; it is now woken, as the reference engine wakes the bodies of
+/// every contact it takes.)
+#[test]
+fn a_sleeping_body_has_no_velocity() {
+    for id in ["sleep-and-wake", "stack-5"] {
+        let mut sim = simulation(id);
+        let mut slept = 0;
+        run(&mut sim, 420, |sim, r| {
+            for (i, b) in sim.world.bodies.iter().enumerate() {
+                if b.movable && !sim.is_awake(i) {
+                    slept += 1;
+                    let s = &b.state;
+                    assert!(
+                        s.velocity.norm() == 0.0 && s.angular_velocity.norm() == 0.0,
+                        "{id} step {}: body {i} asleep with v {:?}, ω {:?}",
+                        r.step,
+                        s.velocity,
+                        s.angular_velocity
+                    );
+                }
+            }
+        });
+        assert!(slept > 100, "{id}: bodies asleep {slept} body-steps");
+    }
+}
+
 #[test]
 fn every_scene_stays_finite_and_energy_rises_only_with_a_cause() {
     use contact_lab::physics::step::audit::EnergyCause;

@@ -124,6 +124,11 @@ impl<T: Real> Simulation<T> {
             .count()
     }
 
+    /// Whether movable body `i` is awake (an immovable body never sleeps).
+    pub fn is_awake(&self, i: usize) -> bool {
+        self.sleep.get(i).is_none_or(|s| s.awake)
+    }
+
     /// Advances one step without recording the resolver.
     pub fn advance(&mut self) -> Result<StepReport, BlowUp> {
         self.advance_observed(&mut Silent)
@@ -252,6 +257,9 @@ impl<T: Real> Simulation<T> {
             self.warm.store(&self.world, resolver);
         }
         resolver.write_back(&mut self.world);
+        if p.sleep.enabled {
+            wake_sleep::wake_changed(&self.world, &mut self.sleep, p.sleep.epsilon, &mut events);
+        }
         // 5. Positions of the awake bodies with the resolved velocities,
         // through the step's collisions with continuous detection on, and
         // the tunnelling audit of each pair's swept motion (substep.rs).

@@ -67,6 +67,27 @@ pub(super) fn wake_touched<T: Real>(
     }
 }
 
+/// A sleeper the resolver changed (its velocity is no longer a sleeper's
+/// zero: a contact it shares with an awake body was taken after another
+/// contact made it close) is awake, as the reference engine wakes the
+/// bodies of every contact it takes; asleep, it would carry that velocity
+/// without moving, and its contacts would read it.
+pub(super) fn wake_changed<T: Real>(
+    world: &World<T>,
+    sleep: &mut [SleepState<T>],
+    epsilon: T,
+    events: &mut Vec<Event>,
+) {
+    for (i, (body, state)) in world.bodies.iter().zip(sleep.iter_mut()).enumerate() {
+        let moved = body.state.velocity != Vector3::zeros()
+            || body.state.angular_velocity != Vector3::zeros();
+        if body.movable && !state.awake && moved {
+            state.wake(epsilon);
+            events.push(Event::Wakes { body: BodyId(i) });
+        }
+    }
+}
+
 /// Island roots of the movable bodies, joined by this step's contacts.
 fn contact_islands<T: Real>(world: &World<T>) -> Vec<usize> {
     let links = world.contacts.iter().filter_map(|k| {
