@@ -146,7 +146,7 @@ pub fn updated_velocity<T: Real>(
 /// [`updated_velocity`] from the compact changes: `v_j += s·Cⱼᵀ(Δv + Δω × r_j)`
 /// for each slot of `c` whose body changed, slot 1 first (the same operations
 /// in the same order).
-#[inline]
+#[inline(always)]
 pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>) -> Vector3<T> {
     let mut velocity = c.velocity;
     // Body 1 of `c` gains the change, body 2 loses it (`a − b` is `a + (−b)` exactly).
@@ -161,7 +161,7 @@ pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>)
 
 /// `Cᵀ v`: a world vector in the contact's basis, each component the dot
 /// product of a basis column with `v` (as `tr_mul` forms it, unrolled).
-#[inline]
+#[inline(always)]
 fn to_contact<T: Real>(basis: &nalgebra::Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
     let dot = |k: usize| basis[(0, k)] * v.x + basis[(1, k)] * v.y + basis[(2, k)] * v.z;
     Vector3::new(dot(0), dot(1), dot(2))
