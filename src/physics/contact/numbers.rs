@@ -129,7 +129,7 @@ macro_rules! record {
 record! {
     Solution { stages, checks }
     Stages { frame, unit, desired, impulse, friction, applied, projection, orientation, exact }
-    ContactFrame { contact_to_world, guess, r, r_digits }
+    ContactFrame { contact_to_world, guess, r }
     UnitImpulse { bodies, linear, total, matrix }
     BodyUnitResponse {
         inverse_mass, inverse_inertia_world, torque_per_unit_impulse, rotation_per_unit_impulse,
