@@ -100,6 +100,10 @@ impl<T: Real> PhaseWork<T> for Velocities {
     ) -> BodyChanges<T> {
         obs.before_velocity(used, k, &r.bodies);
         let friction = r.setups[k].friction.map(|f| &r.friction[f]);
+        if !O::RECORDS {
+            // Nothing keeps the impulse record: the compact changes only.
+            return velocity::take_changes(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
+        }
         let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
         obs.velocity_taken(used, k, desired, &impulse);
         BodyChanges::of(&impulse.slots, &impulse)

@@ -24,6 +24,54 @@ pub fn take<T: Real>(
     friction: Option<&FrictionData<T>>,
     bodies: &mut [ResolverBody<T>],
 ) -> VelocityImpulse<T> {
+    let (impulse_contact, regime) = impulse_of(c, setup, friction);
+    apply_impulse(c, bodies, impulse_contact, regime)
+}
+
+/// [`take`] on the fast path (nothing records): the same impulse applied
+/// with the same operations, returning only the compact changes the
+/// neighbour updates read (no [`VelocityImpulse`] record is built).
+pub fn take_changes<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+    bodies: &mut [ResolverBody<T>],
+) -> BodyChanges<T> {
+    let (impulse_contact, _) = impulse_of(c, setup, friction);
+    let impulse_world = c.basis * impulse_contact;
+    let mut out = BodyChanges {
+        bodies: [usize::MAX; 2],
+        dv: [Vector3::zeros(); 2],
+        dw: [Vector3::zeros(); 2],
+    };
+    for (i, slot) in c.bodies.iter().enumerate() {
+        let Some(b) = *slot else { continue };
+        let body = &mut bodies[b];
+        let change = body_velocity_change(
+            body.inverse_mass,
+            &body.inverse_inertia_world,
+            &c.r[i],
+            &impulse_world,
+            Problem::<T>::sign(i),
+            (&body.velocity, &body.angular_velocity),
+        );
+        body.velocity = change.v;
+        body.angular_velocity = change.w;
+        out.bodies[i] = b;
+        out.dv[i] = change.dv;
+        out.dw[i] = change.dw;
+    }
+    out
+}
+
+/// The contact-space impulse of contact `c` (frictionless `Δv/Δq̇_t`, or the
+/// sticking impulse and its friction clamp) and the friction regime.
+#[inline(always)]
+fn impulse_of<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+) -> (Vector3<T>, Option<FrictionRegime>) {
     let sticking = friction.is_some_and(|f| f.model != FrictionModel::KineticDirection);
     let (g, _) = impulse_contact(
         c.desired,
@@ -32,7 +80,7 @@ pub fn take<T: Real>(
         friction.map(|f| &f.matrix),
         sticking,
     );
-    let (impulse_contact, regime) = match friction {
+    match friction {
         None => (g, None),
         Some(f) => {
             let clamped = clamp(ClampInputs {
@@ -50,8 +98,7 @@ pub fn take<T: Real>(
             });
             (clamped.impulse_contact, Some(clamped.regime))
         }
-    };
-    apply_impulse(c, bodies, impulse_contact, regime)
+    }
 }
 
 /// Applies the contact-space impulse `impulse_contact` of contact `c` to its
