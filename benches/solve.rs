@@ -1,11 +1,12 @@
-//! Cost of one contact: bare stage maths (f64 and f32) against the full
-//! worked solution with its trace, and the friction path against the
-//! frictionless one.
+//! Cost of one contact: bare stage maths (`solve_stages`, f64 and f32),
+//! the stages with their physical checks (`solve`), against the full worked
+//! solution with its trace, and the friction path against the frictionless
+//! one.
 
 use std::hint::black_box;
 
 use contact_lab::lesson::Lesson;
-use contact_lab::physics::solve;
+use contact_lab::physics::solve::{solve, solve_stages};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 fn bench(c: &mut Criterion) {
@@ -20,8 +21,9 @@ fn bench(c: &mut Criterion) {
         let p64 = lesson.problem::<f64>(k);
         let p32 = lesson.problem::<f32>(k);
         let mut group = c.benchmark_group(name);
-        group.bench_function("stages_f64", |b| b.iter(|| solve(black_box(&p64))));
-        group.bench_function("stages_f32", |b| b.iter(|| solve(black_box(&p32))));
+        group.bench_function("stages_f64", |b| b.iter(|| solve_stages(black_box(&p64))));
+        group.bench_function("stages_f32", |b| b.iter(|| solve_stages(black_box(&p32))));
+        group.bench_function("checked_f64", |b| b.iter(|| solve(black_box(&p64))));
         group.bench_function("trace_f64", |b| {
             b.iter(|| contact_lab::worked_solution(black_box(&lesson), k))
         });

@@ -14,7 +14,7 @@ use super::stages::{
     ContactFrame, DesiredVelocity, FrictionClamp, Impulse, MatrixSolve, OrientationUpdate,
     Projection, UnitImpulse,
 };
-use super::Solution;
+use super::{Solution, Stages};
 use crate::physics::exact::{
     ExactError, ExactImpact, ImpactInput, ImpactOutcome, Phase, PhaseKind, Sample, Tolerance,
 };
@@ -127,8 +127,9 @@ macro_rules! record {
 }
 
 record! {
-    Solution { frame, unit, desired, impulse, friction, applied, projection, orientation, exact, checks }
-    ContactFrame { contact_to_world, guess, r, r_digits }
+    Solution { stages, checks }
+    Stages { frame, unit, desired, impulse, friction, applied, projection, orientation, exact }
+    ContactFrame { contact_to_world, guess, r }
     UnitImpulse { bodies, linear, total, matrix }
     BodyUnitResponse {
         inverse_mass, inverse_inertia_world, torque_per_unit_impulse, rotation_per_unit_impulse,

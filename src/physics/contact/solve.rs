@@ -1,4 +1,7 @@
-//! Runs the stages of one contact in the lecture's order.
+//! Runs the stages of one contact in the lecture's order: [`solve_stages`]
+//! computes the stage records alone (what the resolver's maths and the
+//! `stages_f64` bench time), [`solve`] adds the physical checks (momentum,
+//! energy, …) that only the trace, the worked solution and the reports read.
 
 use nalgebra::{Quaternion, Vector3};
 
@@ -8,9 +11,9 @@ use super::{Problem, Real, StageId};
 use crate::physics::exact::{exact_impact_beside, ExactError, ExactImpact, Tolerance};
 
 /// Every stage record of one resolved contact. A stage the contact does not
-/// need is `None`; [`Solution::skip`] says why.
+/// need is `None`; [`Stages::skip`] says why.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Solution<T: Real> {
+pub struct Stages<T: Real> {
     pub frame: ContactFrame<T>,
     pub unit: UnitImpulse<T>,
     pub desired: DesiredVelocity<T>,
@@ -27,7 +30,28 @@ pub struct Solution<T: Real> {
     /// the one-shot impulse; `None` unless asked. An integration that cannot
     /// finish is an error here, never NaN.
     pub exact: Option<Result<ExactImpact<T>, ExactError>>,
+}
+
+/// One resolved contact: its stage records and the checks of its result.
+/// The stage records are read through it as its own fields
+/// (`solution.frame`, `solution.skip(..)`: it dereferences to [`Stages`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution<T: Real> {
+    pub stages: Stages<T>,
     pub checks: Checks<T>,
+}
+
+impl<T: Real> std::ops::Deref for Solution<T> {
+    type Target = Stages<T>;
+    fn deref(&self) -> &Stages<T> {
+        &self.stages
+    }
+}
+
+impl<T: Real> std::ops::DerefMut for Solution<T> {
+    fn deref_mut(&mut self) -> &mut Stages<T> {
+        &mut self.stages
+    }
 }
 
 /// Why a stage was skipped.
@@ -52,7 +76,30 @@ pub struct BodyAfter<T: Real> {
     pub angular_velocity: Vector3<T>,
 }
 
+/// The stages and their checks.
 pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
+    let stages = solve_stages(problem);
+    let checks = checks_of(problem, &stages);
+    Solution { stages, checks }
+}
+
+/// The physical checks of a contact's stage records (momentum, restitution,
+/// energy, the friction cone, slip, penetration removed, unit quaternions).
+pub fn checks_of<T: Real>(problem: &Problem<T>, s: &Stages<T>) -> Checks<T> {
+    run_checks(&CheckInputs {
+        problem,
+        frame: &s.frame,
+        desired: &s.desired,
+        impulse: s.impulse.as_ref(),
+        applied: s.applied.as_ref(),
+        friction: s.friction.as_ref(),
+        projection: s.projection.as_ref(),
+        orientation: s.orientation.as_ref(),
+    })
+}
+
+/// The stage records alone, in the lecture's order (no checks).
+pub fn solve_stages<T: Real>(problem: &Problem<T>) -> Stages<T> {
     let contact = &problem.contact;
     let frame = contact_frame(problem);
     // Each body's R I⁻¹ Rᵀ once, for every stage that reads it.
@@ -78,17 +125,7 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
         let one_shot = final_impulse.unwrap_or_else(Vector3::zeros);
         exact_impact_beside(problem, law, Tolerance::default(), one_shot)
     });
-    let checks = run_checks(&CheckInputs {
-        problem,
-        frame: &frame,
-        desired: &desired,
-        impulse: impulse.as_ref(),
-        applied: applied.as_ref(),
-        friction: friction.as_ref(),
-        projection: projection.as_ref(),
-        orientation: orientation.as_ref(),
-    });
-    Solution {
+    Stages {
         frame,
         unit,
         desired,
@@ -98,11 +135,10 @@ pub fn solve<T: Real>(problem: &Problem<T>) -> Solution<T> {
         projection,
         orientation,
         exact,
-        checks,
     }
 }
 
-impl<T: Real> Solution<T> {
+impl<T: Real> Stages<T> {
     /// The reason a stage was skipped; `None` when it ran.
     pub fn skip(&self, stage: StageId) -> Option<Skip> {
         match stage {

@@ -5,11 +5,12 @@
 use nalgebra::Vector3;
 
 use super::{integrate, ExactError, ImpactInput, ImpactOutcome, RestitutionLaw, Tolerance};
+use crate::physics::solve::solve_stages;
 use crate::physics::stages::{
     apply_impulse, contact_frame, desired_delta_velocity, unit_impulse, AppliedImpulse,
     ContactFrame,
 };
-use crate::physics::{c, solve, Problem, Real};
+use crate::physics::{c, Problem, Real};
 
 /// The integrated impact of one contact, with the one-shot answer beside it.
 #[derive(Debug, Clone, PartialEq)]
@@ -104,7 +105,7 @@ pub fn exact_impact_with<T: Real>(
 ) -> Result<ExactImpact<T>, ExactError> {
     let mut one_shot_problem = problem.clone();
     one_shot_problem.contact.settings.exact = None;
-    let one_shot_world = solve(&one_shot_problem)
+    let one_shot_world = solve_stages(&one_shot_problem)
         .final_impulse_world()
         .unwrap_or_else(Vector3::zeros);
     exact_impact_beside(problem, law, tolerance, one_shot_world)

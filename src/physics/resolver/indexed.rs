@@ -77,6 +77,7 @@ fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>, Q: Queue<T>>(
     queue: &mut Q,
 ) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(W::PHASE);
+    let from = r.params.restitution_from;
     queue.fill(r.contacts.iter().map(W::value));
     let mut used = 0;
     while used < limit {
@@ -87,17 +88,37 @@ fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>, Q: Queue<T>>(
         let change = W::take(r, used, k, value, obs);
         r.stamp += 1;
         let stamp = r.stamp;
-        let mut changed = std::mem::take(&mut r.changed);
-        changed.clear();
-        each_neighbour(r, taken, stamp, |r, j| {
-            let (before, after) = W::update(r, j, &taken, &change, obs);
-            if !(before <= epsilon && after <= epsilon) {
-                queue.set(j, after);
-                changed.push(j);
+        r.changed.clear();
+        // The neighbours, as [`each_neighbour`] visits them, with the
+        // adjacency, the stamps and the contacts borrowed apart (no closure,
+        // no lookup through the resolver per contact).
+        let Resolver {
+            adjacency,
+            stamps,
+            contacts,
+            changed,
+            ..
+        } = &mut *r;
+        for b in taken.into_iter().flatten() {
+            let row = &adjacency.contacts[adjacency.offsets[b]..adjacency.offsets[b + 1]];
+            for &j in row {
+                let seen = &mut stamps[j];
+                if *seen == stamp {
+                    continue;
+                }
+                *seen = stamp;
+                let (before, after) = W::update(&mut contacts[j], j, &taken, &change, from, obs);
+                if !(before <= epsilon && after <= epsilon) {
+                    queue.set(j, after);
+                    if Q::REPLAYS {
+                        changed.push(j);
+                    }
+                }
             }
-        });
-        queue.replay(&mut changed);
-        r.changed = changed;
+        }
+        if Q::REPLAYS {
+            queue.replay(changed);
+        }
         used += 1;
     }
     r.finish(W::PHASE, used, obs)

@@ -3,9 +3,11 @@
 //! contacts (penetration, desired Δv), taking one contact, and updating a
 //! contact that shares a body with it. The loops are written once.
 
-use super::observer::{Observer, PositionMoves};
+use super::observer::Observer;
+use super::position::BodyMoves;
 use super::velocity::BodyChanges;
 use super::{desired_of, position, velocity, Phase, Resolver, ResolverContact};
+use crate::physics::params::RestitutionFrom;
 use crate::physics::Real;
 
 pub(super) trait PhaseWork<T: Real> {
@@ -22,13 +24,16 @@ pub(super) trait PhaseWork<T: Real> {
         value: T,
         obs: &mut O,
     ) -> Self::Change;
-    /// Brings contact `j` up to date after the taken contact (slots `taken`)
-    /// made `change`; returns its value before and after.
+    /// Brings contact `j` (`c`) up to date after the taken contact (slots
+    /// `taken`) made `change`; returns its value before and after. It reads
+    /// only the contact (and the resolver's `restitution_from`), so the loops
+    /// can hold the adjacency and the contacts apart.
     fn update<O: Observer<T>>(
-        r: &mut Resolver<T>,
+        c: &mut ResolverContact<T>,
         j: usize,
         taken: &[Option<usize>; 2],
         change: &Self::Change,
+        from: RestitutionFrom,
         obs: &mut O,
     ) -> (T, T);
 }
@@ -38,7 +43,8 @@ pub(super) struct Positions;
 
 impl<T: Real> PhaseWork<T> for Positions {
     const PHASE: Phase = Phase::Position;
-    type Change = PositionMoves<T>;
+    /// The taken contact's body moves, compact (the observer has the full record).
+    type Change = BodyMoves<T>;
 
     fn value(c: &ResolverContact<T>) -> T {
         c.penetration
@@ -50,23 +56,24 @@ impl<T: Real> PhaseWork<T> for Positions {
         k: usize,
         penetration: T,
         obs: &mut O,
-    ) -> PositionMoves<T> {
+    ) -> BodyMoves<T> {
         obs.before_position(used, k, &r.bodies);
         let moves = position::take(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
         obs.position_taken(used, k, penetration, &moves);
-        moves
+        BodyMoves::of(&moves)
     }
 
+    #[inline(always)]
     fn update<O: Observer<T>>(
-        r: &mut Resolver<T>,
+        c: &mut ResolverContact<T>,
         j: usize,
-        taken: &[Option<usize>; 2],
-        moves: &PositionMoves<T>,
+        _taken: &[Option<usize>; 2],
+        moves: &BodyMoves<T>,
+        _from: RestitutionFrom,
         obs: &mut O,
     ) -> (T, T) {
-        let c = &mut r.contacts[j];
         let from = c.penetration;
-        c.penetration = position::updated_penetration(c, taken, moves);
+        c.penetration = position::penetration_after(c, moves);
         obs.penetration_updated(j, from, c.penetration);
         (from, c.penetration)
     }
@@ -93,6 +100,10 @@ impl<T: Real> PhaseWork<T> for Velocities {
     ) -> BodyChanges<T> {
         obs.before_velocity(used, k, &r.bodies);
         let friction = r.setups[k].friction.map(|f| &r.friction[f]);
+        if !O::RECORDS {
+            // Nothing keeps the impulse record: the compact changes only.
+            return velocity::take_changes(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
+        }
         let impulse = velocity::take(&r.contacts[k], &r.setups[k], friction, &mut r.bodies);
         obs.velocity_taken(used, k, desired, &impulse);
         BodyChanges::of(&impulse.slots, &impulse)
@@ -100,14 +111,13 @@ impl<T: Real> PhaseWork<T> for Velocities {
 
     #[inline(always)]
     fn update<O: Observer<T>>(
-        r: &mut Resolver<T>,
+        c: &mut ResolverContact<T>,
         j: usize,
         _taken: &[Option<usize>; 2],
         changes: &BodyChanges<T>,
+        from: RestitutionFrom,
         obs: &mut O,
     ) -> (T, T) {
-        let from = r.params.restitution_from;
-        let c = &mut r.contacts[j];
         let before = c.desired;
         c.velocity = velocity::velocity_after(c, changes);
         c.desired = desired_of(c, from);

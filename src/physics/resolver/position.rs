@@ -81,6 +81,57 @@ pub fn updated_penetration<T: Real>(
     penetration
 }
 
+/// The moves one taken contact made, by resolver body, compact for the
+/// neighbour updates (a slot that moved nothing holds `usize::MAX`, which no
+/// contact's body equals): the linear and angular change of each slot.
+#[derive(Debug, Clone, Copy)]
+pub struct BodyMoves<T: Real> {
+    pub bodies: [usize; 2],
+    pub linear: [Vector3<T>; 2],
+    pub angular: [Vector3<T>; 2],
+}
+
+impl<T: Real> BodyMoves<T> {
+    /// The moves `moves` records, by slot of the taken contact.
+    pub fn of(moves: &PositionMoves<T>) -> Self {
+        let mut out = BodyMoves {
+            bodies: [usize::MAX; 2],
+            linear: [Vector3::zeros(); 2],
+            angular: [Vector3::zeros(); 2],
+        };
+        for d in 0..2 {
+            if let (Some(b), Some(m)) = (moves.slots[d], moves.bodies[d].as_ref()) {
+                out.bodies[d] = b;
+                out.linear[d] = m.linear_change;
+                out.angular[d] = m.angular_change;
+            }
+        }
+        out
+    }
+}
+
+/// [`updated_penetration`] from the compact moves: `pen_j -= s·(Δp + Δθ × r_j)·n_j`
+/// for each slot of `c` whose body moved, slot 1 first (a body is in at most
+/// one slot of the taken contact, so the same operations in the same order).
+#[inline(always)]
+pub fn penetration_after<T: Real>(c: &ResolverContact<T>, moves: &BodyMoves<T>) -> T {
+    let mut penetration = c.penetration;
+    for (b, body) in c.bodies.iter().enumerate() {
+        let Some(body) = *body else { continue };
+        let d = if moves.bodies[0] == body {
+            0
+        } else if moves.bodies[1] == body {
+            1
+        } else {
+            continue;
+        };
+        let delta = moves.linear[d] + moves.angular[d].cross(&c.r[b]);
+        let sign = if b == 0 { -T::one() } else { T::one() };
+        penetration += delta.dot(&c.normal) * sign;
+    }
+    penetration
+}
+
 /// True when contact `c` has a movable body in common with the slots `taken`.
 pub fn shares_body<T: Real>(c: &ResolverContact<T>, taken: &[Option<usize>; 2]) -> bool {
     c.bodies

@@ -150,6 +150,9 @@ impl<T: Real> TournamentTree<T> {
 /// contact (largest value, lowest index on ties, NaN last), set a value,
 /// and bring the order up to date after a batch of sets.
 pub trait Queue<T: Real> {
+    /// Whether [`Queue::replay`] needs the changed contacts (the scan queue
+    /// does not: nothing to replay, so the loop need not list them).
+    const REPLAYS: bool = true;
     fn fill(&mut self, values: impl ExactSizeIterator<Item = T>);
     fn top(&self) -> Option<(usize, T)>;
     fn set(&mut self, k: usize, value: T);
@@ -199,6 +202,7 @@ impl<T: Real> ScanQueue<T> {
 }
 
 impl<T: Real> Queue<T> for ScanQueue<T> {
+    const REPLAYS: bool = false;
     fn fill(&mut self, values: impl ExactSizeIterator<Item = T>) {
         self.keys.clear();
         self.keys.extend(values.map(TournamentTree::key));

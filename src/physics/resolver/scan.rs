@@ -47,9 +47,10 @@ fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>>(
         };
         let taken = r.contacts[k].bodies;
         let change = W::take(r, used, k, value, obs);
-        for j in 0..r.contacts.len() {
-            if position::shares_body(&r.contacts[j], &taken) {
-                W::update(r, j, &taken, &change, obs);
+        let from = r.params.restitution_from;
+        for (j, c) in r.contacts.iter_mut().enumerate() {
+            if position::shares_body(c, &taken) {
+                W::update(c, j, &taken, &change, from, obs);
             }
         }
         used += 1;

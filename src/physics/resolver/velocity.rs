@@ -24,6 +24,54 @@ pub fn take<T: Real>(
     friction: Option<&FrictionData<T>>,
     bodies: &mut [ResolverBody<T>],
 ) -> VelocityImpulse<T> {
+    let (impulse_contact, regime) = impulse_of(c, setup, friction);
+    apply_impulse(c, bodies, impulse_contact, regime)
+}
+
+/// [`take`] on the fast path (nothing records): the same impulse applied
+/// with the same operations, returning only the compact changes the
+/// neighbour updates read (no [`VelocityImpulse`] record is built).
+pub fn take_changes<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+    bodies: &mut [ResolverBody<T>],
+) -> BodyChanges<T> {
+    let (impulse_contact, _) = impulse_of(c, setup, friction);
+    let impulse_world = c.basis * impulse_contact;
+    let mut out = BodyChanges {
+        bodies: [usize::MAX; 2],
+        dv: [Vector3::zeros(); 2],
+        dw: [Vector3::zeros(); 2],
+    };
+    for (i, slot) in c.bodies.iter().enumerate() {
+        let Some(b) = *slot else { continue };
+        let body = &mut bodies[b];
+        let change = body_velocity_change(
+            body.inverse_mass,
+            &body.inverse_inertia_world,
+            &c.r[i],
+            &impulse_world,
+            Problem::<T>::sign(i),
+            (&body.velocity, &body.angular_velocity),
+        );
+        body.velocity = change.v;
+        body.angular_velocity = change.w;
+        out.bodies[i] = b;
+        out.dv[i] = change.dv;
+        out.dw[i] = change.dw;
+    }
+    out
+}
+
+/// The contact-space impulse of contact `c` (frictionless `Δv/Δq̇_t`, or the
+/// sticking impulse and its friction clamp) and the friction regime.
+#[inline(always)]
+fn impulse_of<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+) -> (Vector3<T>, Option<FrictionRegime>) {
     let sticking = friction.is_some_and(|f| f.model != FrictionModel::KineticDirection);
     let (g, _) = impulse_contact(
         c.desired,
@@ -32,7 +80,7 @@ pub fn take<T: Real>(
         friction.map(|f| &f.matrix),
         sticking,
     );
-    let (impulse_contact, regime) = match friction {
+    match friction {
         None => (g, None),
         Some(f) => {
             let clamped = clamp(ClampInputs {
@@ -50,8 +98,7 @@ pub fn take<T: Real>(
             });
             (clamped.impulse_contact, Some(clamped.regime))
         }
-    };
-    apply_impulse(c, bodies, impulse_contact, regime)
+    }
 }
 
 /// Applies the contact-space impulse `impulse_contact` of contact `c` to its
@@ -146,7 +193,7 @@ pub fn updated_velocity<T: Real>(
 /// [`updated_velocity`] from the compact changes: `v_j += s·Cⱼᵀ(Δv + Δω × r_j)`
 /// for each slot of `c` whose body changed, slot 1 first (the same operations
 /// in the same order).
-#[inline]
+#[inline(always)]
 pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>) -> Vector3<T> {
     let mut velocity = c.velocity;
     // Body 1 of `c` gains the change, body 2 loses it (`a − b` is `a + (−b)` exactly).
@@ -161,7 +208,7 @@ pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>)
 
 /// `Cᵀ v`: a world vector in the contact's basis, each component the dot
 /// product of a basis column with `v` (as `tr_mul` forms it, unrolled).
-#[inline]
+#[inline(always)]
 fn to_contact<T: Real>(basis: &nalgebra::Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
     let dot = |k: usize| basis[(0, k)] * v.x + basis[(1, k)] * v.y + basis[(2, k)] * v.z;
     Vector3::new(dot(0), dot(1), dot(2))

@@ -58,7 +58,7 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
     }
     for i in c.movable() {
         let n = i + 1;
-        if let Some(digits) = f.r_digits[i].filter(|d| *d < 12.0) {
+        if let Some(digits) = f.r_digits(c.problem, i).filter(|d| *d < 12.0) {
             b.input(format!("r{n}_digits"), digits.floor());
             b.note(format!(
                 "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q - p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",

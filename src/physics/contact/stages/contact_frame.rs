@@ -12,8 +12,6 @@ pub struct ContactFrame<T: Real> {
     pub guess: GuessAxis,
     /// `r_i = q - p_i` for each movable body.
     pub r: [Option<Vector3<T>>; 2],
-    /// Significant digits each `r_i` keeps, given how far q and p_i are from the origin.
-    pub r_digits: [Option<T>; 2],
 }
 
 impl<T: Real> ContactFrame<T> {
@@ -30,20 +28,23 @@ impl<T: Real> ContactFrame<T> {
     pub fn to_world(&self, v: &Vector3<T>) -> Vector3<T> {
         self.contact_to_world * v
     }
+
+    /// Significant digits `r_i` keeps, given how far q and p_i are from the
+    /// origin (`None` for an empty slot). Only the trace's note reads it, so
+    /// it is computed there, not with the stage.
+    pub fn r_digits(&self, problem: &Problem<T>, i: usize) -> Option<T> {
+        let p = problem.bodies[i].as_ref()?.position;
+        Some(difference_digits(&self.r[i]?, &problem.contact.point, &p))
+    }
 }
 
 pub fn contact_frame<T: Real>(problem: &Problem<T>) -> ContactFrame<T> {
     let (contact_to_world, guess) = contact_basis(&problem.contact.normal);
     let q = problem.contact.point;
     let r = [0, 1].map(|i| problem.bodies[i].as_ref().map(|b| q - b.position));
-    let r_digits = [0, 1].map(|i| {
-        let p = problem.bodies[i].as_ref()?.position;
-        Some(difference_digits(&r[i]?, &q, &p))
-    });
     ContactFrame {
         contact_to_world,
         guess,
         r,
-        r_digits,
     }
 }

@@ -138,6 +138,24 @@ pub fn combine_unit_responses<T: Real>(
     contact_to_world: &Matrix3<T>,
     with_matrix: bool,
 ) -> UnitImpulse<T> {
+    let mut unit = UnitImpulse {
+        bodies,
+        linear: T::zero(),
+        total: T::zero(),
+        matrix: None,
+    };
+    sum_unit_responses(&mut unit, contact_to_world, with_matrix);
+    unit
+}
+
+/// [`combine_unit_responses`] on the responses already in `unit.bodies`
+/// (nothing is moved: the sums are written beside them).
+fn sum_unit_responses<T: Real>(
+    unit: &mut UnitImpulse<T>,
+    contact_to_world: &Matrix3<T>,
+    with_matrix: bool,
+) {
+    let bodies = &unit.bodies;
     let (linear, total) = total_per_unit_impulse(
         &bodies
             .each_ref()
@@ -151,12 +169,9 @@ pub fn combine_unit_responses<T: Real>(
             .fold(Matrix3::zeros(), |s, m| s + m);
         contact_matrix(&world, contact_to_world, linear)
     });
-    UnitImpulse {
-        bodies,
-        linear,
-        total,
-        matrix,
-    }
+    unit.linear = linear;
+    unit.total = total;
+    unit.matrix = matrix;
 }
 
 pub fn unit_impulse<T: Real>(
@@ -175,16 +190,28 @@ pub fn unit_impulse_with<T: Real>(
     with_matrix: bool,
 ) -> UnitImpulse<T> {
     let d = frame.normal();
-    let bodies = [0, 1].map(|i| {
-        let body = problem.bodies[i].as_ref()?;
-        let r = frame.r[i]?;
-        Some(body_unit_response(
+    // Each response is written into its slot where it stays (no array of
+    // records built and moved).
+    let mut unit = UnitImpulse {
+        bodies: [None, None],
+        linear: T::zero(),
+        total: T::zero(),
+        matrix: None,
+    };
+    for (i, slot) in unit.bodies.iter_mut().enumerate() {
+        let (Some(body), Some(r), Some(inverse_inertia)) =
+            (problem.bodies[i].as_ref(), frame.r[i], inverse_inertias[i])
+        else {
+            continue;
+        };
+        *slot = Some(body_unit_response(
             body.inverse_mass,
-            inverse_inertias[i]?,
+            inverse_inertia,
             r,
             &d,
             with_matrix,
-        ))
-    });
-    combine_unit_responses(bodies, &frame.contact_to_world, with_matrix)
+        ));
+    }
+    sum_unit_responses(&mut unit, &frame.contact_to_world, with_matrix);
+    unit
 }
