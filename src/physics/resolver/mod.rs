@@ -179,7 +179,7 @@ impl<T: Real> Resolver<T> {
                 &self.contacts,
                 &self.setups,
                 &self.bodies,
-                &self.friction,
+                &mut self.friction,
                 c(params.slip()),
             );
         }

@@ -61,7 +61,7 @@ impl<T: Real> State<T> {
         contacts: &[ResolverContact<T>],
         setups: &[ContactSetup<T>],
         bodies: &[ResolverBody<T>],
-        friction: &[super::FrictionData<T>],
+        friction: &mut [super::FrictionData<T>],
         slip_speed: T,
     ) {
         let n = contacts.len();

@@ -17,6 +17,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
 use crate::physics::stages::desired_velocity::applied_restitution;
+use crate::physics::stages::impulse::FactoredMatrix;
 use crate::physics::Real;
 
 /// A body's velocities as the velocity phase changes them.
@@ -104,12 +105,13 @@ pub fn solver_bodies<T: Real>(bodies: &[ResolverBody<T>], out: &mut Vec<SolverBo
 }
 
 /// Builds the rows of every prepared contact into `out` (`slip_speed`: the
-/// stick/slip threshold), each offset from the solver bodies `solver`.
+/// stick/slip threshold), each offset from the solver bodies `solver`; each
+/// friction matrix `M` (left zero by a sequential prepare) from the rows.
 pub fn build<T: Real>(
     contacts: &[ResolverContact<T>],
     setups: &[ContactSetup<T>],
     bodies: &[ResolverBody<T>],
-    friction: &[FrictionData<T>],
+    friction: &mut [FrictionData<T>],
     solver: &[SolverBody<T>],
     slip_speed: T,
     out: &mut Vec<Rows<T>>,
@@ -148,7 +150,13 @@ pub fn build<T: Real>(
         }
         rows.inverse[(0, 0)] = T::one() / setup.unit_total;
         if let Some(f) = setup.friction {
-            let data = &friction[f];
+            // M = Σ A_iᵀ T_i + Σ m_i⁻¹ 𝟙 (= Cᵀ(Σ -[r_i]× I_i⁻¹ [r_i]×)C + Σ m_i⁻¹ 𝟙).
+            let linear = rows.inverse_mass[0] - rows.inverse_mass[1];
+            let m = rows.angular[0].tr_mul(&rows.turn[0])
+                + rows.angular[1].tr_mul(&rows.turn[1])
+                + Matrix3::from_diagonal_element(linear);
+            let data = &mut friction[f];
+            data.matrix = FactoredMatrix::for_inverse(m);
             rows.friction = true;
             rows.sliding = setup.slip > slip_speed;
             rows.mu = if rows.sliding {
