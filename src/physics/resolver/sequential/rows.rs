@@ -17,7 +17,6 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
 use crate::physics::stages::desired_velocity::applied_restitution;
-use crate::physics::stages::impulse::FactoredMatrix;
 use crate::physics::Real;
 
 /// A body's velocities as the velocity phase changes them.
@@ -91,6 +90,28 @@ fn arm_rows<T: Real>(r: &Vector3<T>, basis: &Matrix3<T>) -> Matrix3<T> {
     ])
 }
 
+/// `M⁻¹` of a symmetric 3×3 `M` (its lower triangle read) by cofactors,
+/// `None` unless `M` is positive definite (Sylvester: `M₀₀`, the leading
+/// 2×2 minor and `det M` positive), as a Cholesky factor would fail.
+pub fn symmetric_inverse<T: Real>(m: &Matrix3<T>) -> Option<Matrix3<T>> {
+    let (a, b, c) = (m[(0, 0)], m[(1, 0)], m[(2, 0)]);
+    let (d, e, f) = (m[(1, 1)], m[(2, 1)], m[(2, 2)]);
+    // Cofactors of [[a b c] [b d e] [c e f]].
+    let c00 = d * f - e * e;
+    let c01 = c * e - b * f;
+    let c02 = b * e - c * d;
+    let c11 = a * f - c * c;
+    let c12 = b * c - a * e;
+    let c22 = a * d - b * b;
+    let det = a * c00 + b * c01 + c * c02;
+    let definite = a > T::zero() && c22 > T::zero() && det > T::zero();
+    definite.then(|| {
+        let s = T::one() / det;
+        let (c00, c01, c02, c11, c12, c22) = (c00 * s, c01 * s, c02 * s, c11 * s, c12 * s, c22 * s);
+        Matrix3::new(c00, c01, c02, c01, c11, c12, c02, c12, c22)
+    })
+}
+
 /// The solver bodies for `bodies` (and the world's entry, last).
 pub fn solver_bodies<T: Real>(bodies: &[ResolverBody<T>], out: &mut Vec<SolverBody<T>>) {
     out.clear();
@@ -156,7 +177,8 @@ pub fn build<T: Real>(
                 + rows.angular[1].tr_mul(&rows.turn[1])
                 + Matrix3::from_diagonal_element(linear);
             let data = &mut friction[f];
-            data.matrix = FactoredMatrix::for_inverse(m);
+            // Kept for the reports; not factored (the rows hold M⁻¹).
+            data.matrix.matrix = m;
             rows.friction = true;
             rows.sliding = setup.slip > slip_speed;
             rows.mu = if rows.sliding {
@@ -165,7 +187,7 @@ pub fn build<T: Real>(
                 data.static_friction
             };
             rows.normal_row = data.matrix.matrix.row(0).transpose();
-            if let Some(m_inv) = data.matrix.cholesky_inverse() {
+            if let Some(m_inv) = symmetric_inverse(&m) {
                 rows.inverse = m_inv;
             }
         }
@@ -174,4 +196,22 @@ pub fn build<T: Real>(
         rows.offset = k.velocity - rows.velocity(solver);
         rows
     }));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_symmetric_inverse_inverts_and_refuses_what_cholesky_refuses() {
+        let m: Matrix3<f64> = Matrix3::new(2.0, 0.5, 0.1, 0.5, 3.0, 0.2, 0.1, 0.2, 2.5);
+        let inv = symmetric_inverse(&m).unwrap();
+        assert!((m * inv - Matrix3::identity()).norm() < 1e-15, "{inv}");
+        assert!((inv - m.cholesky().unwrap().inverse()).norm() < 1e-15);
+        // Indefinite (a negative eigenvalue) and singular: no inverse.
+        let indefinite = Matrix3::new(1.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0, 0.0, 1.0);
+        assert_eq!(symmetric_inverse(&indefinite), None);
+        assert!(indefinite.cholesky().is_none());
+        assert_eq!(symmetric_inverse(&Matrix3::<f64>::zeros()), None);
+    }
 }
