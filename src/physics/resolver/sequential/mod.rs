@@ -82,9 +82,7 @@ impl<T: Real> State<T> {
             &mut self.rows,
         );
     }
-}
 
-impl<T: Real> State<T> {
     /// The solver bodies' velocities into the resolver's bodies.
     pub fn write_velocities(&self, bodies: &mut [ResolverBody<T>]) {
         for (body, s) in bodies.iter_mut().zip(&self.solver) {
@@ -94,8 +92,10 @@ impl<T: Real> State<T> {
     }
 }
 
-/// The contact velocity the bodies give now, contact space:
-/// `Cᵀ Σ s_i (v_i + ω_i × r_i)` (s = +1 for body 1, -1 for body 2).
+/// The contact velocity the bodies give now, contact space, as the stage
+/// maths write it: `Cᵀ Σ s_i (v_i + ω_i × r_i)` (s = +1 for body 1, -1 for
+/// body 2). The visits read [`Rows::velocity`] instead; this is the
+/// reference the rows are checked against.
 pub fn body_velocity<T: Real>(k: &ResolverContact<T>, bodies: &[ResolverBody<T>]) -> Vector3<T> {
     let mut v = Vector3::zeros();
     for (i, slot) in k.bodies.iter().enumerate() {
