@@ -238,3 +238,138 @@ fn the_stack_the_benches_time_stands_under_two_solvers_and_falls_under_one() {
     );
     assert!(cold < 1.0, "cold sequential impulses: top box at {cold} m");
 }
+
+/// Relative closeness for the rows' checks (the rows reorder the stage
+/// maths' arithmetic: equal to the last bits, not to the bit).
+fn near(a: f64, b: f64, scale: f64) -> bool {
+    (a - b).abs() <= 1e-12 * scale.max(1.0)
+}
+
+#[test]
+fn the_solver_rows_give_the_stage_maths_velocities_matrices_and_impulses() {
+    use contact_lab::physics::resolver::sequential::body_velocity;
+    use contact_lab::physics::resolver::velocity::apply_impulse;
+    // Two-body contacts (two-boxes, box-stack, the cradle) and one-body ones.
+    for id in [
+        "two-boxes",
+        "box-stack",
+        "friction-cube",
+        "newtons-cradle",
+        "box-four-corners",
+    ] {
+        let w = Lesson::load(id).unwrap().world::<f64>();
+        let si = Resolver::prepare(&w, &params(Solver::SequentialImpulse));
+        let df = Resolver::prepare(&w, &params(Solver::DeepestFirst));
+        let (rows, solver) = (&si.sequential.rows, &si.sequential.solver);
+        assert_eq!(rows.len(), w.contacts.len(), "{id}");
+        if id == "two-boxes" {
+            assert!(
+                w.contacts.iter().any(|c| c.body2.is_some()),
+                "a two-body contact"
+            );
+        }
+        for (k, row) in rows.iter().enumerate() {
+            let contact = &df.contacts[k];
+            // Contact velocity: the rows against Cᵀ Σ s (v + ω × r), with the
+            // bodies given a made-up motion so every row is read.
+            let mut moved = si.bodies.clone();
+            for (b, body) in moved.iter_mut().enumerate() {
+                let t = b as f64 + 1.0;
+                body.velocity = Vector3::new(0.3 * t, -1.1, 0.7 / t);
+                body.angular_velocity = Vector3::new(-0.4, 0.9 * t, 0.25);
+            }
+            let mut arrays = solver.clone();
+            for (s, b) in arrays.iter_mut().zip(&moved) {
+                s.v = b.velocity;
+                s.w = b.angular_velocity;
+            }
+            let stage = body_velocity(contact, &moved);
+            let from_rows = row.velocity(&arrays) - row.offset;
+            for a in 0..3 {
+                assert!(
+                    near(from_rows[a], stage[a], stage.norm()),
+                    "{id} contact {k} axis {a}: {from_rows:?} against {stage:?}"
+                );
+            }
+            // M from the rows against the lecture's Cᵀ W C + Σ m⁻¹ 𝟙.
+            if let (Some(fs), Some(fd)) = (si.setups[k].friction, df.setups[k].friction) {
+                let (m_si, m_df) = (
+                    &si.friction[fs].matrix.matrix,
+                    &df.friction[fd].matrix.matrix,
+                );
+                for (x, y) in m_si.iter().zip(m_df.iter()) {
+                    assert!(
+                        near(*x, *y, m_df.norm()),
+                        "{id} contact {k}: M {m_si} against {m_df}"
+                    );
+                }
+            }
+            // One impulse through the rows against the stage maths' velocity change.
+            let g = Vector3::new(2.5, -0.75, 1.25);
+            let mut stage_bodies = moved.clone();
+            apply_impulse(contact, &mut stage_bodies, g, None);
+            row.apply(&mut arrays, &g);
+            for (b, body) in stage_bodies.iter().enumerate() {
+                for (x, y) in [
+                    (arrays[b].v, body.velocity),
+                    (arrays[b].w, body.angular_velocity),
+                ] {
+                    assert!(
+                        (x - y).norm() <= 1e-12 * y.norm().max(1.0),
+                        "{id} contact {k} body {b}: {x:?} against {y:?}"
+                    );
+                }
+            }
+            // The world's entry never moves.
+            assert_eq!(
+                arrays.last().unwrap().v,
+                Vector3::zeros(),
+                "{id} contact {k}"
+            );
+        }
+    }
+}
+
+#[test]
+fn sequential_impulses_on_the_rows_end_where_the_stage_maths_do() {
+    // A resolution's every visit, replayed with the stage maths (the old
+    // path: contact velocity from the bodies, M⁻¹ of the lecture's M, the
+    // lecture's velocity change), ends at the same body velocities.
+    for id in ["two-boxes", "box-stack", "newtons-cradle"] {
+        let w = Lesson::load(id).unwrap().world::<f64>();
+        let (r, _) = Resolver::resolve(
+            &w,
+            &params(Solver::SequentialImpulse),
+            Implementation::Indexed,
+            &mut Silent,
+        );
+        // Replay the accumulated impulses with the stage maths from the
+        // prepared velocities: the result is the same linear map.
+        let df = Resolver::prepare(&w, &params(Solver::DeepestFirst));
+        let mut bodies = df.bodies.clone();
+        for (k, g) in r.sequential.accumulated.iter().enumerate() {
+            apply_impulse_of(&df, k, &mut bodies, *g);
+        }
+        for (b, body) in bodies.iter().enumerate() {
+            let got = &r.bodies[b];
+            for (x, y) in [
+                (got.velocity, body.velocity),
+                (got.angular_velocity, body.angular_velocity),
+            ] {
+                assert!(
+                    (x - y).norm() <= 1e-12 * y.norm().max(1.0),
+                    "{id} body {b}: {x:?} against {y:?}"
+                );
+            }
+        }
+    }
+}
+
+fn apply_impulse_of(
+    r: &Resolver<f64>,
+    k: usize,
+    bodies: &mut [contact_lab::physics::resolver::ResolverBody<f64>],
+    g: Vector3<f64>,
+) {
+    contact_lab::physics::resolver::velocity::apply_impulse(&r.contacts[k], bodies, g, None);
+}

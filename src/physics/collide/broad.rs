@@ -129,11 +129,18 @@ impl BroadPhase {
             self.entries.extend(finite);
             self.axis = axis;
         }
-        self.entries.sort_unstable_by(|p, q| {
+        let order = |p: &Entry, q: &Entry| {
             p.min[axis]
                 .total_cmp(&q.min[axis])
                 .then(p.index.cmp(&q.index))
-        });
+        };
+        // Last step's order is almost this one's: an insertion sort costs
+        // O(n + swaps) (the order is total, so the result is the same).
+        // A scene that scattered (more than 8 moves per box) sorts anew.
+        let limit = 8 * self.entries.len();
+        if !(coherent && insertion_sort_by(&mut self.entries, order, limit)) {
+            self.entries.sort_unstable_by(order);
+        }
         // Sweep: each box meets the later boxes that start before it ends;
         // of those, the ones that overlap on the other two axes too.
         let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
@@ -185,6 +192,31 @@ fn sort_pairs(
     }
     std::mem::swap(pairs, scratch);
     pairs.dedup();
+}
+
+/// Sorts `items` by `order` moving each item left past the larger ones:
+/// O(n + inversions), for short or almost sorted slices. False (the slice
+/// left a permutation, not sorted) once more than `limit` moves were made.
+fn insertion_sort_by<E: Copy>(
+    items: &mut [E],
+    order: impl Fn(&E, &E) -> std::cmp::Ordering,
+    limit: usize,
+) -> bool {
+    let mut moves = 0;
+    for i in 1..items.len() {
+        let item = items[i];
+        let mut j = i;
+        while j > 0 && order(&items[j - 1], &item) == std::cmp::Ordering::Greater {
+            items[j] = items[j - 1];
+            j -= 1;
+        }
+        items[j] = item;
+        moves += i - j;
+        if moves > limit {
+            return false;
+        }
+    }
+    true
 }
 
 /// [`BroadPhase::candidate_pairs`] with a fresh state (allocates).
@@ -276,6 +308,35 @@ mod tests {
         let mut reference = Vec::new();
         all_pairs(&bounds, &[5], &mut reference);
         assert_eq!(out, reference);
+    }
+
+    #[test]
+    fn a_kept_order_sorted_again_finds_the_same_pairs_as_all_against_all() {
+        // A row of boxes, then the same row moved a little (a few swap
+        // places: the insertion sort), then scattered (too many moves: sorted anew).
+        let row = |shift: &dyn Fn(usize) -> f64| -> Vec<_> {
+            (0..40)
+                .map(|i| cube(i as f64 * 0.7 + shift(i), (i % 3) as f64 * 0.4))
+                .collect()
+        };
+        let mut broad = BroadPhase::new();
+        let (mut out, mut reference) = (Vec::new(), Vec::new());
+        let shifts: [&dyn Fn(usize) -> f64; 3] =
+            [&|_| 0.0, &|i| if i % 5 == 0 { 0.9 } else { 0.0 }, &|i| {
+                ((i * 17) % 40) as f64 * 0.9 - i as f64 * 0.7
+            }];
+        for shift in shifts {
+            let bounds = row(shift);
+            broad.candidate_pairs(&bounds, &[], &mut out);
+            all_pairs(&bounds, &[], &mut reference);
+            assert_eq!(out, reference);
+            assert!(!out.is_empty());
+        }
+        let mut items = [5, 1, 4, 1, 3];
+        assert!(insertion_sort_by(&mut items, |a, b| a.cmp(b), 10));
+        assert_eq!(items, [1, 1, 3, 4, 5]);
+        let mut backwards: Vec<usize> = (0..10).rev().collect();
+        assert!(!insertion_sort_by(&mut backwards, |a, b| a.cmp(b), 8));
     }
 
     #[test]

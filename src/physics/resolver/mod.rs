@@ -175,8 +175,13 @@ impl<T: Real> Resolver<T> {
         self.stamp = 0;
         self.before = [T::zero(); 2];
         if params.solver == Solver::SequentialImpulse {
-            self.sequential
-                .prepare(&self.contacts, &self.bodies, &self.friction);
+            self.sequential.prepare(
+                &self.contacts,
+                &self.setups,
+                &self.bodies,
+                &mut self.friction,
+                c(params.slip()),
+            );
         }
     }
 

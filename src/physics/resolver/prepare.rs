@@ -222,9 +222,11 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> 
 /// when it already holds a world this size (as an engine resolving every
 /// frame would use it).
 ///
-/// `inverse_only`: the friction matrices are factored for `M⁻¹` only
-/// ([`FactoredMatrix::for_inverse`], what sequential impulses read), not for
-/// solving with a condition number (what the deepest-first order reports).
+/// `inverse_only` (sequential impulses): the friction matrices are left
+/// zero here and built, with `M⁻¹` only ([`FactoredMatrix::for_inverse`]),
+/// from the contacts' Jacobian rows by `sequential::rows::build`; otherwise
+/// they are factored for solving with a condition number (what the
+/// deepest-first order reports).
 pub fn prepare_into<T: Real>(
     world: &World<T>,
     from: RestitutionFrom,
@@ -289,7 +291,7 @@ pub fn prepare_into<T: Real>(
                 &input.settings,
             ));
             unit[i] = Some((body.inverse_mass, response.angular));
-            if with_friction {
+            if with_friction && !inverse_only {
                 angular_world += angular_matrix(&skew(&arm), &body.inverse_inertia_world);
             }
             // Contact velocity and the acceleration terms (stage 3).
@@ -298,7 +300,15 @@ pub fn prepare_into<T: Real>(
             r[i] = Some(arm);
         }
         let (linear, unit_total) = total_per_unit_impulse(&unit);
-        let matrix = with_friction.then(|| contact_matrix(&angular_world, &basis, linear));
+        // Sequential impulses build `M` from the contact's Jacobian rows
+        // instead (`sequential::rows`, `M = Σ A_iᵀ I_i⁻¹ A_i + Σ m⁻¹ 𝟙`).
+        let matrix = with_friction.then(|| {
+            if inverse_only {
+                Matrix3::zeros()
+            } else {
+                contact_matrix(&angular_world, &basis, linear)
+            }
+        });
         let acceleration = relative_acceleration(acceleration);
         let duration = contact.duration.unwrap_or(world.step.duration);
         let (velocity_from_acceleration, mut planar) =

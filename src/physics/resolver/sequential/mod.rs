@@ -12,15 +12,17 @@
 //! whole sweep changes nothing by more than its epsilon.
 
 pub mod position;
+pub mod rows;
 pub mod velocity;
 pub mod warm;
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
 use super::observer::Observer;
-use super::{Phase, PhaseOutcome, Resolver, ResolverBody, ResolverContact};
+use super::{ContactSetup, Phase, PhaseOutcome, Resolver, ResolverBody, ResolverContact};
 use crate::physics::Real;
 
+pub use rows::{Rows, SolverBody};
 pub use warm::WarmCache;
 
 /// What sequential impulses keep per contact beside the resolver's own
@@ -31,11 +33,10 @@ pub struct State<T: Real> {
     pub accumulated: Vec<Vector3<T>>,
     /// Accumulated projection per contact (depth moved apart so far).
     pub pushed: Vec<T>,
-    /// `M⁻¹` of each contact with friction (indexed like the friction data).
-    pub inverse: Vec<Option<Matrix3<T>>>,
-    /// The part of the prepared contact velocity the bodies do not give
-    /// (the anticipated planar acceleration).
-    pub offset: Vec<Vector3<T>>,
+    /// Each contact's Jacobian rows and constants for the velocity visits.
+    pub rows: Vec<Rows<T>>,
+    /// The bodies' velocities while the velocity phase runs (the world last).
+    pub solver: Vec<SolverBody<T>>,
     /// Impulses (world space) to start from, set by [`Resolver::warm_start`].
     pub warm: Vec<Option<Vector3<T>>>,
 }
@@ -45,20 +46,23 @@ impl<T: Real> Default for State<T> {
         State {
             accumulated: Vec::new(),
             pushed: Vec::new(),
-            inverse: Vec::new(),
-            offset: Vec::new(),
+            rows: Vec::new(),
+            solver: Vec::new(),
             warm: Vec::new(),
         }
     }
 }
 
 impl<T: Real> State<T> {
-    /// Sets the state up for the prepared contacts of `r`.
+    /// Sets the state up for the prepared contacts of `r` (`slip_speed`:
+    /// the stick/slip threshold).
     pub fn prepare(
         &mut self,
         contacts: &[ResolverContact<T>],
+        setups: &[ContactSetup<T>],
         bodies: &[ResolverBody<T>],
-        friction: &[super::FrictionData<T>],
+        friction: &mut [super::FrictionData<T>],
+        slip_speed: T,
     ) {
         let n = contacts.len();
         self.accumulated.clear();
@@ -67,20 +71,31 @@ impl<T: Real> State<T> {
         self.pushed.resize(n, T::zero());
         self.warm.clear();
         self.warm.resize(n, None);
-        self.offset.clear();
-        self.offset.extend(
-            contacts
-                .iter()
-                .map(|k| k.velocity - body_velocity(k, bodies)),
+        rows::solver_bodies(bodies, &mut self.solver);
+        rows::build(
+            contacts,
+            setups,
+            bodies,
+            friction,
+            &self.solver,
+            slip_speed,
+            &mut self.rows,
         );
-        self.inverse.clear();
-        self.inverse
-            .extend(friction.iter().map(|f| f.matrix.cholesky_inverse()));
+    }
+
+    /// The solver bodies' velocities into the resolver's bodies.
+    pub fn write_velocities(&self, bodies: &mut [ResolverBody<T>]) {
+        for (body, s) in bodies.iter_mut().zip(&self.solver) {
+            body.velocity = s.v;
+            body.angular_velocity = s.w;
+        }
     }
 }
 
-/// The contact velocity the bodies give now, contact space:
-/// `Cᵀ Σ s_i (v_i + ω_i × r_i)` (s = +1 for body 1, -1 for body 2).
+/// The contact velocity the bodies give now, contact space, as the stage
+/// maths write it: `Cᵀ Σ s_i (v_i + ω_i × r_i)` (s = +1 for body 1, -1 for
+/// body 2). The visits read [`Rows::velocity`] instead; this is the
+/// reference the rows are checked against.
 pub fn body_velocity<T: Real>(k: &ResolverContact<T>, bodies: &[ResolverBody<T>]) -> Vector3<T> {
     let mut v = Vector3::zeros();
     for (i, slot) in k.bodies.iter().enumerate() {
@@ -123,8 +138,12 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
     obs: &mut O,
 ) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(Phase::Velocity);
+    rows::solver_bodies(&r.bodies, &mut r.sequential.solver);
     if r.params.warm_start {
         velocity::apply_warm_start(r);
+        if O::RECORDS {
+            r.sequential.write_velocities(&mut r.bodies);
+        }
     }
     let n = r.contacts.len();
     let mut used = 0;
@@ -141,10 +160,12 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
             break;
         }
     }
+    r.sequential.write_velocities(&mut r.bodies);
+    let State { rows, solver, .. } = &r.sequential;
     // The bookkeeping velocities and desired Δv, from the bodies as they are now.
     let from = r.params.restitution_from;
-    for (k, contact) in r.contacts.iter_mut().enumerate() {
-        contact.velocity = body_velocity(contact, &r.bodies) + r.sequential.offset[k];
+    for (contact, rows) in r.contacts.iter_mut().zip(rows) {
+        contact.velocity = rows.velocity(solver);
         contact.desired = super::desired_of(contact, from);
     }
     r.finish(Phase::Velocity, used, obs)

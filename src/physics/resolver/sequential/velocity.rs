@@ -18,17 +18,16 @@
 //!   ([`on_the_rim`], the lecture's dynamic impulse accumulated): friction
 //!   then opposes the slip (Coulomb) and does not push the bodies apart.
 //!
-//! The first visit of a contact therefore applies exactly the lecture's impulse.
+//! The first visit of a contact therefore applies the lecture's impulse (its
+//! arithmetic reordered through the contact's Jacobian rows, [`super::rows`]:
+//! equal to the last bits).
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
 use super::super::observer::{Observer, VelocityImpulse};
-use super::super::velocity::apply_impulse;
 use super::super::Resolver;
-use super::body_velocity;
-use crate::physics::stages::desired_velocity::{applied_restitution, desired_toward_bounce};
-use crate::physics::stages::FrictionRegime;
-use crate::physics::{c, Real};
+use crate::physics::stages::{BodyVelocityChange, FrictionRegime};
+use crate::physics::{Problem, Real};
 
 /// Clamps an accumulated contact-space impulse: normal ≥ 0, tangential inside
 /// the cone of radius `mu` (`|g_t| ≤ μ g_n`, else scaled to `μ g_n`). The
@@ -55,7 +54,8 @@ pub fn clamp_accumulated<T: Real>(
 
 /// The accumulated impulse of a clamped visit with the friction on the rim
 /// in the direction `u` of `along`'s tangential part (`g_t = μ g_n u`) and the normal part that
-/// meets the Δv wanted along the normal: row 0 of `M (g - g_old) = Δv` gives
+/// meets the Δv wanted along the normal: row 0 of `M (g - g_old) = Δv`
+/// (`m0` is that row) gives
 /// `g_n = (Δv + M₀·g_old) / (M₀₀ + μ (M₀₁ u_y + M₀₂ u_z))` (the lecture's
 /// dynamic friction for `g_old = 0`). `None` where the denominator or `g_n`
 /// is not positive (jamming): the plain clamp stands.
@@ -63,7 +63,7 @@ pub fn on_the_rim<T: Real>(
     old: &Vector3<T>,
     along: &Vector3<T>,
     mu: T,
-    m: &Matrix3<T>,
+    m0: &Vector3<T>,
     desired: T,
 ) -> Option<Vector3<T>> {
     let planar = (along.y * along.y + along.z * along.z).sqrt();
@@ -71,8 +71,8 @@ pub fn on_the_rim<T: Real>(
         return None;
     }
     let (uy, uz) = (along.y / planar, along.z / planar);
-    let per_unit = m[(0, 0)] + mu * (m[(0, 1)] * uy + m[(0, 2)] * uz);
-    let gn = (desired + m.row(0).dot(&old.transpose())) / per_unit;
+    let per_unit = m0.x + mu * (m0.y * uy + m0.z * uz);
+    let gn = (desired + m0.dot(old)) / per_unit;
     (per_unit > T::zero() && gn > T::zero() && gn.is_finite())
         .then(|| Vector3::new(gn, mu * gn * uy, mu * gn * uz))
 }
@@ -81,92 +81,115 @@ pub fn on_the_rim<T: Real>(
 /// its slip before this step's accelerations is within `slip_speed`,
 /// else `μ_d`; `None` without friction.
 pub fn cone<T: Real>(r: &Resolver<T>, k: usize) -> Option<T> {
-    let setup = &r.setups[k];
-    let f = &r.friction[setup.friction?];
-    if sliding(r, k) {
-        Some(f.dynamic_friction)
-    } else {
-        Some(f.static_friction)
-    }
+    let rows = &r.sequential.rows[k];
+    rows.friction.then_some(rows.mu)
 }
 
 /// Whether contact `k` slides when the step begins: its slip before this
 /// step's accelerations exceeds `slip_speed` (the stick/slip threshold).
 pub fn sliding<T: Real>(r: &Resolver<T>, k: usize) -> bool {
-    r.setups[k].slip > c::<T>(r.params.slip())
+    r.sequential.rows[k].sliding
 }
 
-/// Applies the contact-space impulse `delta` of contact `k` to its bodies.
-fn apply<T: Real>(r: &mut Resolver<T>, k: usize, delta: &Vector3<T>) -> VelocityImpulse<T> {
-    apply_impulse(&r.contacts[k], &mut r.bodies, *delta, None)
+/// What a recording observer is told of an impulse `g` (contact space,
+/// world `p`) the rows of contact `k` applied; the bodies' velocities after
+/// it are copied into the resolver's bodies.
+fn recorded<T: Real>(
+    r: &mut Resolver<T>,
+    k: usize,
+    g: &Vector3<T>,
+    p: &Vector3<T>,
+) -> VelocityImpulse<T> {
+    let slots = r.contacts[k].bodies;
+    let rows = &r.sequential.rows[k];
+    let mut changes = [None, None];
+    for (i, slot) in slots.iter().enumerate() {
+        let Some(b) = *slot else { continue };
+        let s = r.sequential.solver[b];
+        let impulse = p * Problem::<T>::sign(i);
+        changes[i] = Some(BodyVelocityChange {
+            impulse,
+            impulsive_torque: r.contacts[k].r[i].cross(&impulse),
+            dv: p * rows.inverse_mass[i],
+            dw: rows.turn[i] * g,
+            v: s.v,
+            w: s.w,
+        });
+        r.bodies[b].velocity = s.v;
+        r.bodies[b].angular_velocity = s.w;
+    }
+    VelocityImpulse {
+        slots,
+        impulse_contact: *g,
+        impulse_world: *p,
+        regime: None,
+        bodies: changes,
+    }
 }
 
 /// Visits contact `k` (visit number `visit`): returns how much it changed the
-/// contact's velocity, `|Δg| Δq̇_t`.
+/// contact's velocity, `|Δg| Δq̇_t`. Straight-line on the contact's rows
+/// and the solver bodies (`g ← clamp(g + M⁻¹ (Δv, -v_t0, -v_t1))`).
+#[inline]
 pub fn visit<T: Real, O: Observer<T>>(
     r: &mut Resolver<T>,
     k: usize,
     visit: usize,
     obs: &mut O,
 ) -> T {
-    let contact = &r.contacts[k];
-    let setup = &r.setups[k];
-    let v = body_velocity(contact, &r.bodies) + r.sequential.offset[k];
-    let v0 = contact.initial_velocity;
-    let (e, _) = applied_restitution(v0, contact.restitution, contact.velocity_limit);
-    let desired = desired_toward_bounce(v.x, v0, e, contact.velocity_from_acceleration);
-    let old = r.sequential.accumulated[k];
-    let mu = cone(r, k);
-    let inverse = setup.friction.and_then(|f| r.sequential.inverse[f]);
-    let step = match inverse {
-        Some(m_inv) => m_inv * Vector3::new(desired, -v.y, -v.z),
-        // Frictionless (or an M that cannot be inverted): along the normal only.
-        None => Vector3::new(desired / setup.unit_total, T::zero(), T::zero()),
-    };
-    let (mut total, regime) = clamp_accumulated(old + step, mu);
+    let state = &mut r.sequential;
+    let rows = &state.rows[k];
+    let v = rows.velocity(&state.solver);
+    let desired = -v.x - rows.bounce;
+    let old = state.accumulated[k];
+    let step = rows.inverse * Vector3::new(desired, -v.y, -v.z);
+    let (mut total, regime) = clamp_accumulated(old + step, rows.friction.then_some(rows.mu));
     // A sliding contact pushed off its cone: friction on the rim against the
     // slip now, the normal part solved again so the normal target holds.
-    if let (Some(FrictionRegime::Dynamic), Some(mu), Some(f)) = (regime, mu, setup.friction) {
-        if sliding(r, k) {
-            let against = Vector3::new(T::zero(), -v.y, -v.z);
-            let m = &r.friction[f].matrix.matrix;
-            if let Some(g) = on_the_rim(&old, &against, mu, m, desired) {
-                total = g;
-            }
+    if rows.sliding && regime == Some(FrictionRegime::Dynamic) {
+        let against = Vector3::new(T::zero(), -v.y, -v.z);
+        if let Some(g) = on_the_rim(&old, &against, rows.mu, &rows.normal_row, desired) {
+            total = g;
         }
     }
     let delta = total - old;
     if delta == Vector3::zeros() {
         return T::zero();
     }
-    obs.before_velocity(visit, k, &r.bodies);
-    r.sequential.accumulated[k] = total;
-    let mut impulse = apply(r, k, &delta);
-    impulse.regime = regime;
-    obs.velocity_taken(visit, k, desired, &impulse);
-    // The visited contact's own Δv wanted after the visit (≈ 0 unless
-    // clamped): for the reports only.
+    let change = delta.norm() * rows.unit_total;
     if O::RECORDS {
-        let after = body_velocity(&r.contacts[k], &r.bodies).x + r.sequential.offset[k].x;
+        obs.before_velocity(visit, k, &r.bodies);
+    }
+    let state = &mut r.sequential;
+    state.accumulated[k] = total;
+    let p = state.rows[k].apply(&mut state.solver, &delta);
+    if O::RECORDS {
+        let mut impulse = recorded(r, k, &delta, &p);
+        impulse.regime = regime;
+        obs.velocity_taken(visit, k, desired, &impulse);
+        // The visited contact's own Δv wanted after the visit (≈ 0 unless
+        // clamped): for the reports only.
+        let after = r.sequential.rows[k].velocity(&r.sequential.solver).x;
         obs.desired_updated(k, desired, desired - (after - v.x));
     }
-    delta.norm() * r.setups[k].unit_total
+    change
 }
 
 /// Applies the warm-start impulses (world space, set by
 /// [`Resolver::warm_start`]) as the contacts' starting accumulated impulses,
-/// clamped to the contact's cone in its new basis.
+/// clamped to the contact's cone in its new basis, through the contacts' rows.
 pub fn apply_warm_start<T: Real>(r: &mut Resolver<T>) {
-    for k in 0..r.contacts.len() {
-        let Some(world) = r.sequential.warm[k].take() else {
+    let state = &mut r.sequential;
+    for (k, rows) in state.rows.iter().enumerate() {
+        let Some(world) = state.warm[k].take() else {
             continue;
         };
-        let (g, _) = clamp_accumulated(r.contacts[k].basis.tr_mul(&world), cone(r, k));
+        let (g, _) = clamp_accumulated(rows.basis.tr_mul(&world), rows.friction.then_some(rows.mu));
         if g == Vector3::zeros() {
             continue;
         }
-        r.sequential.accumulated[k] = g;
-        apply(r, k, &g);
+        state.accumulated[k] = g;
+        rows.apply(&mut state.solver, &g);
     }
 }
 
@@ -190,17 +213,21 @@ mod tests {
 
     #[test]
     fn on_the_rim_meets_the_normal_target_with_friction_against_the_slip() {
+        use nalgebra::Matrix3;
         let m: Matrix3<f64> = Matrix3::new(2.0, 0.5, 0.1, 0.5, 3.0, 0.2, 0.1, 0.2, 2.5);
         let old = Vector3::new(0.3, -0.1, 0.05);
         let (mu, desired): (f64, f64) = (0.4, 0.7);
         let against = Vector3::new(0.0, -3.0, 4.0);
-        let g = on_the_rim(&old, &against, mu, &m, desired).unwrap();
+        let g = on_the_rim(&old, &against, mu, &m.row(0).transpose(), desired).unwrap();
         // Row 0 of M (g - g_old) is the Δv wanted along the normal.
         assert!((m.row(0).dot(&(g - old).transpose()) - desired).abs() < 1e-12);
         // The tangential part is μ g_n along (-3, 4)/5.
         let t = Vector3::new(0.0, -0.6 * mu * g.x, 0.8 * mu * g.x);
         assert!((Vector3::new(0.0, g.y, g.z) - t).norm() < 1e-12, "{g:?}");
         // No slip direction: no rim.
-        assert_eq!(on_the_rim(&old, &Vector3::x(), mu, &m, desired), None);
+        assert_eq!(
+            on_the_rim(&old, &Vector3::x(), mu, &m.row(0).transpose(), desired),
+            None
+        );
     }
 }
