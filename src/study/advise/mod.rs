@@ -109,6 +109,10 @@ pub struct Advice {
     pub escapes: usize,
     pub pairs: usize,
     pub wall_seconds: f64,
+    /// Asks the cache answered, and configurations run a second time (first
+    /// stopped at a lower cap): of `runs`, `reruns` were repeats.
+    pub hits: usize,
+    pub reruns: usize,
     /// A descent stopped at [`MAX_PASSES`] while still improving.
     pub capped: bool,
     /// What the reference run exercised (the evidence).
@@ -252,6 +256,9 @@ pub fn advise(
         stop_over: None,
         steps: reference_run.steps * if per == Per::Step { 2 } else { 1 },
         runs: if per == Per::Step { 2 } else { 1 },
+        hits: 0,
+        reruns: 0,
+        finished: Vec::new(),
     };
     let reference_eval = Eval {
         config: reference_config,
@@ -275,10 +282,21 @@ pub fn advise(
             stop_over: Some(target),
             steps: reference_run.steps,
             runs: 1,
+            hits: 0,
+            reruns: 0,
+            finished: Vec::new(),
         };
         let (seed, _, _) = search::descend(&mut by_step, &dims, reference_config, target);
         ev.runs += by_step.runs;
         ev.steps += by_step.steps;
+        ev.hits += by_step.hits;
+        ev.reruns += by_step.reruns;
+        // The runs it finished, measured against the run's error as well.
+        for e in by_step.finished {
+            if !ev.cache.iter().any(|(x, _)| x.config == e.config) {
+                ev.cache.push((e, None));
+            }
+        }
         seeds.push(seed);
     }
     let searched = search::search(&mut ev, &dims, &seeds, target);
@@ -324,6 +342,8 @@ pub fn advise(
         escapes: searched.escapes,
         pairs: searched.pairs,
         wall_seconds: started.elapsed().as_secs_f64(),
+        hits: ev.hits,
+        reruns: ev.reruns,
         capped: searched.capped,
         exercised,
     })

@@ -49,6 +49,15 @@ pub(super) struct Evaluator<'a> {
     pub stop_over: Option<f64>,
     pub steps: usize,
     pub runs: usize,
+    /// Asks answered from the cache, and configurations run again (first
+    /// stopped at a cap, then asked with a higher one).
+    pub hits: usize,
+    pub reruns: usize,
+    /// Every run that went to its end, with the run's error (final
+    /// positions against `reference`) whatever this evaluator measures: a
+    /// search against the per-step error hands them to the one against the
+    /// run's, which then need not run them again.
+    pub finished: Vec<Eval>,
 }
 
 impl Evaluator<'_> {
@@ -57,8 +66,10 @@ impl Evaluator<'_> {
     pub fn eval(&mut self, config: &Config, cap: f64) -> Eval {
         if let Some((e, stopped)) = self.cache.iter().find(|(e, _)| e.config == *config) {
             if stopped.is_none_or(|c| cap <= c) {
+                self.hits += 1;
                 return *e;
             }
+            self.reruns += 1;
         }
         let work = cap * self.seconds;
         let limit = if work.is_finite() && work < 1e18 {
@@ -76,6 +87,17 @@ impl Evaluator<'_> {
         );
         self.runs += 1;
         self.steps += m.steps;
+        if !(m.capped || m.over) {
+            self.finished.push(Eval {
+                config: *config,
+                cost: work_cost(m.work, m.steps, self.seconds),
+                error: if m.failed {
+                    f64::NAN
+                } else {
+                    run::rms_distance(&m.positions, &self.reference)
+                },
+            });
+        }
         let e = if m.capped || m.over {
             Eval {
                 config: *config,
