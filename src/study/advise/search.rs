@@ -7,9 +7,10 @@
 //! value of another dimension; the cheapest pair within the target, if it is
 //! cheaper than where the descent stopped, starts a new descent. The search
 //! ends when no pair move improves (or after [`MAX_ESCAPES`] of them). The
-//! descent runs from each seed the caller gives (the reference; for a
-//! per-run target also the per-step descent's choice), and the pair moves
-//! from the cheapest place they stop.
+//! descent runs from each seed the caller gives that meets the target (the
+//! reference; for a per-run target also the per-step descent's choice), and
+//! the pair moves from the cheapest place they stop; the caller runs it
+//! again from the reference with the other solver ([`super::advise`]).
 //!
 //! Every configuration is measured once (a cache), and a run stops as soon
 //! as its work passes the cost it would have to beat (the current
@@ -134,7 +135,7 @@ fn work_cost(work: usize, steps: usize, seconds: f64) -> f64 {
 }
 
 /// `a` cheaper than `b` beyond a tie.
-fn cheaper(a: f64, b: f64) -> bool {
+pub(super) fn cheaper(a: f64, b: f64) -> bool {
     a < b * (1.0 - COST_TIE)
 }
 
@@ -273,7 +274,12 @@ fn pair_move(
 /// A descent from each seed that meets the target (the first is the
 /// reference), then, from the cheapest configuration they stop at (ties: the
 /// earlier seed's), pair moves while one improves (module docs).
-pub fn search(ev: &mut Evaluator, dims: &[Dimension], seeds: &[Config], target: f64) -> Searched {
+pub(super) fn search(
+    ev: &mut Evaluator,
+    dims: &[Dimension],
+    seeds: &[Config],
+    target: f64,
+) -> Searched {
     let (mut passes, mut capped) = (0, false);
     let mut current: Option<Config> = None;
     for seed in seeds {
@@ -288,7 +294,16 @@ pub fn search(ev: &mut Evaluator, dims: &[Dimension], seeds: &[Config], target: 
             current = Some(end);
         }
     }
-    let mut current = current.unwrap_or(seeds[0]);
+    // No seed meets the target: nothing to descend from, nor to move from.
+    let Some(mut current) = current else {
+        return Searched {
+            config: seeds[0],
+            passes,
+            capped,
+            escapes: 0,
+            pairs: 0,
+        };
+    };
     let (mut escapes, mut pairs) = (0, 0);
     while escapes < MAX_ESCAPES {
         let (found, tried) = pair_move(ev, dims, &current, target);
