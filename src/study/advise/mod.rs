@@ -306,13 +306,14 @@ pub fn advise(
     // sequential impulses). The cheaper of the two ends wins (a tie: the
     // first's), so no scene does worse than from the first seeds alone.
     let mut searched = search::search(&mut ev, &dims, &seeds, target);
+    // (The other solver: every value of a dimension that changes it.)
     let others: Vec<Config> = dims
         .iter()
-        .filter(|d| d.name == "solver")
-        .flat_map(|d| d.values.iter())
-        .filter_map(|v| {
+        .flat_map(|d| d.values.iter().map(move |v| (d.name, v)))
+        .filter_map(|(name, v)| {
             let mut c = reference_config;
-            (grid::set(&mut c, "solver", v).is_ok() && c != reference_config).then_some(c)
+            (grid::set(&mut c, name, v).is_ok() && c.solver() != reference_config.solver())
+                .then_some(c)
         })
         .collect();
     if !others.is_empty() {
