@@ -15,6 +15,9 @@ use contact_lab::lesson::Lesson;
 use contact_lab::study::advise::{cost, run_of};
 use contact_lab::study::{grid, run};
 
+/// One value of a scanned dimension: the knobs it sets.
+type Setting = &'static [(&'static str, &'static str)];
+
 fn main() {
     let arg = |i: usize| std::env::args().nth(i);
     let id = arg(1).unwrap_or_else(|| "mass-ratio-stack".into());
@@ -25,7 +28,7 @@ fn main() {
     let reference = grid::reference(&grid::default_config(&l).unwrap(), solver);
     let trajectory = run::trajectory(&l, &reference, seconds);
     let end = run::measure(&l, &reference, seconds).positions;
-    let dims: [(&str, &[&[(&str, &str)]]); 10] = [
+    let dims: [(&str, &[Setting]); 10] = [
         (
             "dt",
             &[
