@@ -322,7 +322,7 @@ pub fn advise(
             ev.eval(&other.config, f64::INFINITY),
             ev.eval(&searched.config, f64::INFINITY),
         );
-        // (When no other seed meets the target, that search ends where it began.)
+        // (From a seed that misses the target, only a pair move can reach one that meets it.)
         let better = there.error <= target && search::cheaper(there.cost, here.cost);
         searched = search::Searched {
             config: if better {
