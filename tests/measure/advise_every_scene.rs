@@ -48,31 +48,80 @@ fn dear_setting_buys(a: &Advice, solver: contact_lab::physics::Solver) -> (f64, 
     most
 }
 
+/// The choice's per-step error (the largest over the run), printed beside
+/// the run's: where it is far above the target, the run's error meets the
+/// target by a coincidence of the end time (as mass-ratio-stack's 1523 would).
+fn step_error(
+    l: &contact_lab::lesson::Lesson,
+    a: &Advice,
+    solver: contact_lab::physics::Solver,
+) -> f64 {
+    let reference = grid::reference(&grid::default_config(l).unwrap(), solver);
+    let trajectory = run::trajectory(l, &reference, a.seconds);
+    run::measure_against(
+        l,
+        &a.choice.config,
+        a.seconds,
+        usize::MAX,
+        Some(&trajectory),
+    )
+    .step_error
+}
+
 /// The error target, m (per run).
 const TARGET: f64 = 0.01;
 
 /// mass-ratio-stack at 1 cm per run: the one-knob descent from the
-/// reference stopped at cost 2745 (dt = 1/120 s, converged, island sleep),
+/// reference stops at cost 2745 (dt = 1/120 s, converged, island sleep),
 /// a local optimum; the per-step advice (dt = 1/60 s, converged,
 /// position_epsilon 10⁻⁴, rollback, no sleep) costs 1744 with a run's error
-/// of 1.1 mm. The search must do at least as well. The best reachable, by an
-/// exhaustive scan offline of dt (1/30 … 1/240) × budget (1 … converged) ×
-/// both epsilons (0.1 … 10⁻⁴) × rollback × sleep (off, body, island) × the
-/// three solvers × ccd (none, conservative), 13,824 configurations with the
-/// other knobs at the reference's, is 1523: dt = 1/60 s, sequential
-/// impulses warm-started at 2 visits per contact, both epsilons 10⁻³,
-/// rollback (error 5.9 mm). The search reaches 1744 exactly, so the bound
-/// is that (any step back fails): 1523 differs from where it stops in the
-/// budget, both epsilons and relaxation, no pair of which meets 1 cm, and
-/// the search never runs it (docs/study.md, "Its cost").
+/// of 1.1 mm, and the search reaches exactly that. An exhaustive scan
+/// offline of dt (1/30 … 1/240) × budget (1 … converged) × both epsilons
+/// (0.1 … 10⁻⁴) × rollback × sleep (off, body, island) × the three solvers
+/// × ccd (none, conservative), 13,824 configurations with the other knobs
+/// at the reference's, finds 1523: dt = 1/60 s, sequential impulses
+/// warm-started at 2 visits per contact, both epsilons 10⁻³, rollback
+/// (error 5.9 mm). The bound is 1744, not 1523, because 1523 meets the
+/// target only by a coincidence of the run's end time
+/// ([`mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end`]).
 const MASS_RATIO_PER_STEP_CHOICE: f64 = 1744.0;
+
+/// Each scene's cost at 1 cm before the second search (from the reference
+/// with the other solver): no scene may do worse. That search brought
+/// sliding-box 1080 → 440, ramp-stick 272 → 46, stack-5 3180 → 1140,
+/// sleep-modes 6759 → 3762, hull-stack 984 → 396.
+const BEFORE: [(&str, f64); 23] = [
+    ("ball-drop", 63.0),
+    ("resting-box", 38.0),
+    ("sliding-box", 1080.0),
+    ("ramp-stick", 272.0),
+    ("ramp-slide", 1108.0),
+    ("stack-5", 3180.0),
+    ("cradle-over-time", 34.0),
+    ("sleep-and-wake", 672.0),
+    ("sleep-modes", 6759.0),
+    ("kane-rod-bounce", 1930.0),
+    ("sphere-row-20", 5302.0),
+    ("mass-ratio-stack", 1744.0),
+    ("overlap-recovery", 62.0),
+    ("hull-stack", 984.0),
+    ("gjk-separated", 30.0),
+    ("gjk-touching", 30.0),
+    ("epa-edge-edge", 31.0),
+    ("cylinder-on-box", 4173.0),
+    ("bullet-wall", 34.0),
+    ("spinning-edge", 550.0),
+    ("plate-drop", 122.0),
+    ("tetra-on-floor", 30.0),
+    ("capsule-on-slope", 46.0),
+];
 const MASS_RATIO_BEST_SCANNED: f64 = 1523.0;
 
 #[test]
 fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says() {
     println!(
-        "{:<18} {:>4} {:>7} {:>7} {:>9} {:>9} {:>6} {:>5} {:>6}  {:<34} choice: budget, float (knobs above their cheap setting)",
-        "scene", "s", "cost", "ref", "error", "pasted", "search", "runs", "p/e/pairs", "not needed: the dear setting buys"
+        "{:<18} {:>4} {:>7} {:>7} {:>9} {:>9} {:>9} {:>6} {:>5} {:>9} {:>6}  {:<34} choice: budget, float (knobs above their cheap setting)",
+        "scene", "s", "cost", "ref", "error", "step err", "pasted", "search", "runs", "hit/rerun", "p/e/pairs", "not needed: the dear setting buys"
     );
     let mut failures = Vec::new();
     let ids = embedded::scene_ids();
@@ -90,17 +139,19 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
             .map(|n| format!("{}={}", n.knob, n.value))
             .collect();
         println!(
-            "{:<18} {:>4} {:>7.0} {:>7.0} {:>9.2e} {:>9} {:>5.1}s {:>5} {:>9}  {:<34} budget {}, {} ({})",
+            "{:<18} {:>4} {:>7.0} {:>7.0} {:>9.2e} {:>9.2e} {:>9} {:>5.1}s {:>5} {:>9} {:>9}  {:<34} budget {}, {} ({})",
             id,
             seconds,
             a.choice.cost,
             a.reference_cost,
             a.choice.error,
+            step_error(&l, &a, solver),
             checked
                 .as_ref()
                 .map_or("FAILED".to_string(), |c| format!("{:.2e}", c.pasted_error)),
             wall,
             a.runs,
+            format!("{}/{}", a.hits, a.reruns),
             format!("{}/{}/{}", a.passes, a.escapes, a.pairs),
             format!("{:.1e} ({})", buys.0, buys.1),
             a.choice.config.budget.per_contact(),
@@ -114,6 +165,15 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
                 "mass-ratio-stack: cost {} over the per-step choice's {MASS_RATIO_PER_STEP_CHOICE} (the best scanned is {MASS_RATIO_BEST_SCANNED})",
                 a.choice.cost
             ));
+        }
+        match BEFORE.iter().find(|(s, _)| s == id) {
+            // (Before: the printed cost, to the nearest unit.)
+            Some((_, before)) if a.choice.cost > *before + 0.5 => failures.push(format!(
+                "{id}: cost {} over its {before} before",
+                a.choice.cost
+            )),
+            Some(_) => {}
+            None => failures.push(format!("{id}: no cost recorded before (add it to BEFORE)")),
         }
         if a.capped {
             failures.push(format!("{id}: a descent stopped at {MAX_PASSES} passes"));
@@ -139,4 +199,70 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
     advised.sort();
     assert_eq!(advised, files, "every scene file is advised on");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Why the search stops at 1744 on mass-ratio-stack and not at the scan's
+/// 1523: 1523 meets 1 cm only at the run's end. Its stack, two visits per
+/// contact at dt = 1/60 s, wobbles 3–4 cm off the reference through the run
+/// (12 cm at worst), passes within 6 mm of it at 2 s, and is 4 cm off again
+/// by 2.5 s; every change of its budget or of either epsilon (each of which,
+/// but the budget, makes the model more accurate) misses 1 cm by 2.6 to 38
+/// cm. An isolated point that a coincidence of the end time puts within the
+/// target is not reachable one or two knobs at a time from anywhere, nor
+/// worth advising; the search's 1744 stays within 2 mm at every step.
+#[test]
+fn mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end() {
+    let l = lesson("mass-ratio-stack");
+    let (seconds, solver) = run_of(&l).unwrap();
+    let reference = grid::reference(&grid::default_config(&l).unwrap(), solver);
+    let mut scanned = reference;
+    for (k, v) in [
+        ("dt", "1/60"),
+        ("budget", "2"),
+        ("position_epsilon", "0.001"),
+        ("velocity_epsilon", "0.001"),
+        ("rollback", "rollback"),
+        ("ccd", "none"),
+    ] {
+        grid::set(&mut scanned, k, v).unwrap();
+    }
+    let trajectory = run::trajectory(&l, &reference, seconds);
+    let end = run::measure(&l, &reference, seconds).positions;
+    let m = run::measure_against(&l, &scanned, seconds, usize::MAX, Some(&trajectory));
+    let cost = contact_lab::study::advise::cost(&m, seconds);
+    let error = run::rms_distance(&m.positions, &end);
+    println!(
+        "scanned: cost {cost:.0}, error {error:.2e} at the end, {:.2e} at worst",
+        m.step_error
+    );
+    assert_eq!(cost.round(), MASS_RATIO_BEST_SCANNED);
+    assert!(error <= TARGET, "{error}");
+    assert!(m.step_error > 10.0 * TARGET, "{}", m.step_error);
+    // Half a second later it is off by more than the target again.
+    let later = |c| run::measure(&l, c, seconds + 0.5).positions;
+    let off_later = run::rms_distance(&later(&scanned), &later(&reference));
+    assert!(off_later > TARGET, "{off_later}");
+    // Every other budget (but converged) and every other epsilon misses.
+    for (k, values) in [
+        ("budget", &["1", "4", "8", "16"][..]),
+        ("position_epsilon", &["0.1", "0.01", "0.0001"][..]),
+        ("velocity_epsilon", &["0.1", "0.01", "0.0001"][..]),
+    ] {
+        for v in values {
+            let mut c = scanned;
+            grid::set(&mut c, k, v).unwrap();
+            let e = run::rms_distance(&run::measure(&l, &c, seconds).positions, &end);
+            println!("  {k} = {v}: {e:.2e}");
+            assert!(e > 2.0 * TARGET, "{k} = {v}: {e}");
+        }
+    }
+    // The search's choice keeps within the target at every step.
+    let a = advise(&l, seconds, solver, TARGET, Per::Run).unwrap();
+    assert_eq!(a.choice.cost.round(), MASS_RATIO_PER_STEP_CHOICE);
+    let m = run::measure_against(&l, &a.choice.config, seconds, usize::MAX, Some(&trajectory));
+    println!(
+        "advised: cost {:.0}, {:.2e} at worst",
+        a.choice.cost, m.step_error
+    );
+    assert!(m.step_error <= TARGET, "{}", m.step_error);
 }

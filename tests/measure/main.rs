@@ -16,3 +16,4 @@ mod exact_accuracy;
 mod exact_energy;
 mod exact_study;
 mod slide_angle;
+mod study_quick_full;

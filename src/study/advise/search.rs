@@ -7,9 +7,10 @@
 //! value of another dimension; the cheapest pair within the target, if it is
 //! cheaper than where the descent stopped, starts a new descent. The search
 //! ends when no pair move improves (or after [`MAX_ESCAPES`] of them). The
-//! descent runs from each seed the caller gives (the reference; for a
-//! per-run target also the per-step descent's choice), and the pair moves
-//! from the cheapest place they stop.
+//! descent runs from each seed the caller gives that meets the target (the
+//! reference; for a per-run target also the per-step descent's choice), and
+//! the pair moves from the cheapest place they stop; the caller runs it
+//! again from the reference with the other solver ([`super::advise`]).
 //!
 //! Every configuration is measured once (a cache), and a run stops as soon
 //! as its work passes the cost it would have to beat (the current
@@ -49,6 +50,15 @@ pub(super) struct Evaluator<'a> {
     pub stop_over: Option<f64>,
     pub steps: usize,
     pub runs: usize,
+    /// Asks answered from the cache, and configurations run again (first
+    /// stopped at a cap, then asked with a higher one).
+    pub hits: usize,
+    pub reruns: usize,
+    /// Every run that went to its end, with the run's error (final
+    /// positions against `reference`) whatever this evaluator measures: a
+    /// search against the per-step error hands them to the one against the
+    /// run's, which then need not run them again.
+    pub finished: Vec<Eval>,
 }
 
 impl Evaluator<'_> {
@@ -57,8 +67,10 @@ impl Evaluator<'_> {
     pub fn eval(&mut self, config: &Config, cap: f64) -> Eval {
         if let Some((e, stopped)) = self.cache.iter().find(|(e, _)| e.config == *config) {
             if stopped.is_none_or(|c| cap <= c) {
+                self.hits += 1;
                 return *e;
             }
+            self.reruns += 1;
         }
         let work = cap * self.seconds;
         let limit = if work.is_finite() && work < 1e18 {
@@ -76,6 +88,17 @@ impl Evaluator<'_> {
         );
         self.runs += 1;
         self.steps += m.steps;
+        if !(m.capped || m.over) {
+            self.finished.push(Eval {
+                config: *config,
+                cost: work_cost(m.work, m.steps, self.seconds),
+                error: if m.failed {
+                    f64::NAN
+                } else {
+                    run::rms_distance(&m.positions, &self.reference)
+                },
+            });
+        }
         let e = if m.capped || m.over {
             Eval {
                 config: *config,
@@ -112,7 +135,7 @@ fn work_cost(work: usize, steps: usize, seconds: f64) -> f64 {
 }
 
 /// `a` cheaper than `b` beyond a tie.
-fn cheaper(a: f64, b: f64) -> bool {
+pub(super) fn cheaper(a: f64, b: f64) -> bool {
     a < b * (1.0 - COST_TIE)
 }
 
@@ -251,7 +274,12 @@ fn pair_move(
 /// A descent from each seed that meets the target (the first is the
 /// reference), then, from the cheapest configuration they stop at (ties: the
 /// earlier seed's), pair moves while one improves (module docs).
-pub fn search(ev: &mut Evaluator, dims: &[Dimension], seeds: &[Config], target: f64) -> Searched {
+pub(super) fn search(
+    ev: &mut Evaluator,
+    dims: &[Dimension],
+    seeds: &[Config],
+    target: f64,
+) -> Searched {
     let (mut passes, mut capped) = (0, false);
     let mut current: Option<Config> = None;
     for seed in seeds {
@@ -266,6 +294,9 @@ pub fn search(ev: &mut Evaluator, dims: &[Dimension], seeds: &[Config], target: 
             current = Some(end);
         }
     }
+    // No seed meets the target: pair moves from the first can still reach
+    // one that does (ramp-stick at 1 cm from the lecture's order, which
+    // creeps half a metre: 272 → 46); without one the search ends there.
     let mut current = current.unwrap_or(seeds[0]);
     let (mut escapes, mut pairs) = (0, 0);
     while escapes < MAX_ESCAPES {
