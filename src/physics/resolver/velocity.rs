@@ -10,7 +10,7 @@ use nalgebra::Vector3;
 
 use super::observer::VelocityImpulse;
 use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
-use crate::physics::stages::apply_impulse::body_velocity_change;
+use crate::physics::stages::apply_impulse::{body_velocity_change, BodyVelocityChange};
 use crate::physics::stages::friction::{clamp, ClampInputs};
 use crate::physics::stages::impulse::impulse_contact;
 use crate::physics::stages::FrictionRegime;
@@ -44,6 +44,24 @@ pub fn take_changes<T: Real>(
         dv: [Vector3::zeros(); 2],
         dw: [Vector3::zeros(); 2],
     };
+    apply_world(c, bodies, &impulse_world, |i, b, change| {
+        out.bodies[i] = b;
+        out.dv[i] = change.dv;
+        out.dw[i] = change.dw;
+    });
+    out
+}
+
+/// Applies `impulse_world` of contact `c` to each of its bodies (body 2
+/// the negated impulse), handing `record` the slot, the resolver body and
+/// its change.
+#[inline(always)]
+fn apply_world<T: Real>(
+    c: &ResolverContact<T>,
+    bodies: &mut [ResolverBody<T>],
+    impulse_world: &Vector3<T>,
+    mut record: impl FnMut(usize, usize, BodyVelocityChange<T>),
+) {
     for (i, slot) in c.bodies.iter().enumerate() {
         let Some(b) = *slot else { continue };
         let body = &mut bodies[b];
@@ -51,17 +69,14 @@ pub fn take_changes<T: Real>(
             body.inverse_mass,
             &body.inverse_inertia_world,
             &c.r[i],
-            &impulse_world,
+            impulse_world,
             Problem::<T>::sign(i),
             (&body.velocity, &body.angular_velocity),
         );
         body.velocity = change.v;
         body.angular_velocity = change.w;
-        out.bodies[i] = b;
-        out.dv[i] = change.dv;
-        out.dw[i] = change.dw;
+        record(i, b, change);
     }
-    out
 }
 
 /// The contact-space impulse of contact `c` (frictionless `Δv/Δq̇_t`, or the
@@ -112,21 +127,9 @@ pub fn apply_impulse<T: Real>(
 ) -> VelocityImpulse<T> {
     let impulse_world = c.basis * impulse_contact;
     let mut changes = [None, None];
-    for (i, slot) in c.bodies.iter().enumerate() {
-        let Some(b) = *slot else { continue };
-        let body = &mut bodies[b];
-        let change = body_velocity_change(
-            body.inverse_mass,
-            &body.inverse_inertia_world,
-            &c.r[i],
-            &impulse_world,
-            Problem::<T>::sign(i),
-            (&body.velocity, &body.angular_velocity),
-        );
-        body.velocity = change.v;
-        body.angular_velocity = change.w;
-        changes[i] = Some(change);
-    }
+    apply_world(c, bodies, &impulse_world, |i, _, change| {
+        changes[i] = Some(change)
+    });
     VelocityImpulse {
         slots: c.bodies,
         impulse_contact,
