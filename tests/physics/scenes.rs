@@ -364,8 +364,14 @@ fn the_one_pass_start_audit_gives_the_separate_audits_bit_for_bit() {
             Implementation::Indexed,
             &mut Silent,
         );
-        let with = replay::resolved_with(w, &r, &g, Some(&inertia));
+        let mut kinetic_after = Vec::new();
+        let with = replay::resolved_with(w, &r, &g, Some(&inertia), &mut kinetic_after);
         assert_eq!(with, resolved(w, &r, &g));
+        // The total-energy audit's end from those kinetic energies: the same bits.
+        let touched = vec![true; w.bodies.len()];
+        let shared = replay::total_after(w, &r, &g, dt, &touched, Some(&kinetic_after));
+        let fresh = replay::total_after(w, &r, &g, dt, &touched, None);
+        assert_eq!(shared.to_bits(), fresh.to_bits());
     }
 }
 

@@ -30,17 +30,21 @@ pub struct Resolved {
 /// Energy of `r`'s bodies before (as in `world`) and after resolution
 /// (`½ m v·v + ½ ωᵀ I ω`, with I in the orientation after projection).
 pub fn resolved<T: Real>(world: &World<T>, r: &Resolver<T>, gravity: &Vector3<T>) -> Resolved {
-    resolved_with(world, r, gravity, None)
+    resolved_with(world, r, gravity, None, &mut Vec::new())
 }
 
 /// [`resolved`] with each world body's inertia `R I Rᵀ` as `world` holds
-/// it already at hand (`inertia[i]` for body `i`), the same numbers.
+/// it already at hand (`inertia[i]` for body `i`), the same numbers; each
+/// resolver body's kinetic energy after is left in `kinetic_after` (by
+/// resolver body), for [`total_after`].
 pub fn resolved_with<T: Real>(
     world: &World<T>,
     r: &Resolver<T>,
     gravity: &Vector3<T>,
     inertia: Option<&[Matrix3<T>]>,
+    kinetic_after: &mut Vec<T>,
 ) -> Resolved {
+    kinetic_after.clear();
     let mut out = Resolved {
         kinetic_before: 0.0,
         kinetic_after: 0.0,
@@ -54,9 +58,19 @@ pub fn resolved_with<T: Real>(
             Some(inertia) => before.kinetic_energy_with(&inertia[b.id.0], v, w),
             None => before.kinetic_energy(v, w),
         });
-        let mut after = before.clone();
-        after.orientation = b.orientation;
-        out.kinetic_after += to_f64(after.kinetic_energy(&b.velocity, &b.angular_velocity));
+        // Unturned by the position phase, the body's inertia is the one at hand.
+        let kinetic = match inertia {
+            Some(inertia) if b.orientation == before.orientation => {
+                before.kinetic_energy_with(&inertia[b.id.0], &b.velocity, &b.angular_velocity)
+            }
+            _ => {
+                let mut after = before.clone();
+                after.orientation = b.orientation;
+                after.kinetic_energy(&b.velocity, &b.angular_velocity)
+            }
+        };
+        kinetic_after.push(kinetic);
+        out.kinetic_after += to_f64(kinetic);
         out.potential_rise -= to_f64(before.mass * gravity.dot(&(b.position - before.position)));
         out.weight += to_f64(before.mass * gravity.norm());
     }
@@ -67,25 +81,33 @@ pub fn resolved_with<T: Real>(
 /// resolution `r` leaves them, less the projection's lift: kinetic energy
 /// after resolution, and the potential energy at the positions before
 /// projection moved on by the resolved velocity for `dt`
-/// (`Σ ½ m v'·v' + ½ ω'ᵀ I ω' − m g·(x + v' Δt)`).
+/// (`Σ ½ m v'·v' + ½ ω'ᵀ I ω' − m g·(x + v' Δt)`); the kinetic energies
+/// after are `kinetic_after`'s when [`resolved_with`] left them for `r`.
 pub fn total_after<T: Real>(
     world: &World<T>,
     r: &Resolver<T>,
     gravity: &Vector3<T>,
     dt: f64,
     touched: &[bool],
+    kinetic_after: Option<&[T]>,
 ) -> f64 {
     let dt: T = crate::physics::c(dt);
     let mut total = 0.0;
-    for b in r
+    for (k, b) in r
         .bodies
         .iter()
-        .filter(|b| touched.get(b.id.0) == Some(&true))
+        .enumerate()
+        .filter(|(_, b)| touched.get(b.id.0) == Some(&true))
     {
         let before = &world.body(b.id).state;
-        let mut after = before.clone();
-        after.orientation = b.orientation;
-        let kinetic = after.kinetic_energy(&b.velocity, &b.angular_velocity);
+        let kinetic = match kinetic_after.and_then(|e| e.get(k)) {
+            Some(kinetic) => *kinetic,
+            None => {
+                let mut after = before.clone();
+                after.orientation = b.orientation;
+                after.kinetic_energy(&b.velocity, &b.angular_velocity)
+            }
+        };
         let end = before.position + b.velocity * dt;
         total += to_f64(kinetic - before.mass * gravity.dot(&end));
     }
@@ -223,6 +245,7 @@ impl<T: Real> StepInputs<'_, T> {
             &self.gravity,
             start.dt,
             start.touched,
+            None,
         ))
     }
 

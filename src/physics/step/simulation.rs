@@ -59,6 +59,9 @@ pub struct Simulation<T: Real> {
     speeds: Vec<f64>,
     /// Each body's world inertia at the start of the step (storage kept).
     inertia: Vec<nalgebra::Matrix3<T>>,
+    /// Each resolver body's kinetic energy after this step's resolution,
+    /// shared by the kinetic and the total-energy audits.
+    kinetic_after: Vec<T>,
     /// The smallest half-width of a movable body (the tolerances' scale).
     size: Option<f64>,
     /// The parameters the scaled ones were made from, and the scaled ones.
@@ -97,6 +100,7 @@ impl<T: Real> Simulation<T> {
             total: TotalAudit::default(),
             speeds: Vec::new(),
             inertia: Vec::new(),
+            kinetic_after: Vec::new(),
             size: None,
             scaled_for: None,
             scaled: SimParams::default(),
@@ -174,7 +178,8 @@ impl<T: Real> Simulation<T> {
             &mut self.inertia,
         );
         let kinetic_start = to_f64(kinetic_start);
-        self.total.begin(&self.world, &p.world.gravity);
+        self.total
+            .begin(&self.world, &p.world.gravity, &self.inertia);
         self.begin_step(&mut events);
         let max_penetration = self
             .world
@@ -198,8 +203,13 @@ impl<T: Real> Simulation<T> {
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         // The audits, while the world still holds the step's inputs.
-        let energy =
-            replay::resolved_with(&self.world, resolver, &p.world.gravity, Some(&self.inertia));
+        let energy = replay::resolved_with(
+            &self.world,
+            resolver,
+            &p.world.gravity,
+            Some(&self.inertia),
+            &mut self.kinetic_after,
+        );
         let gained = audit::gain(
             energy.kinetic_before,
             energy.kinetic_after,
@@ -242,6 +252,7 @@ impl<T: Real> Simulation<T> {
             &p.world.gravity,
             start.dt,
             start.touched,
+            Some(&self.kinetic_after),
         );
         let rise = start.rise(end);
         let rise_event = match (rise, rising) {

@@ -21,16 +21,25 @@
 //! the velocity phase leaves alone, and lifted at it for one step) is an
 //! event, and its cause is found by the same replay as the kinetic audit's.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use crate::physics::{to_f64, Real, World};
 
-/// Total energy `½ m v·v + ½ ωᵀ I ω − m g·x` of body `i` (J; 0 when immovable).
-pub fn body_total<T: Real>(world: &World<T>, i: usize, gravity: &Vector3<T>) -> f64 {
+/// Total energy `½ m v·v + ½ ωᵀ I ω − m g·x` of body `i` (J; 0 when
+/// immovable), with its world inertia `R I Rᵀ` when the step holds it.
+pub fn body_total<T: Real>(
+    world: &World<T>,
+    i: usize,
+    gravity: &Vector3<T>,
+    inertia: Option<&Matrix3<T>>,
+) -> f64 {
     world.bodies[i].dynamic().map_or(0.0, |b| {
-        to_f64(
-            b.kinetic_energy(&b.velocity, &b.angular_velocity) - b.mass * gravity.dot(&b.position),
-        )
+        let (v, w) = (&b.velocity, &b.angular_velocity);
+        let kinetic = match inertia {
+            Some(inertia) => b.kinetic_energy_with(inertia, v, w),
+            None => b.kinetic_energy(v, w),
+        };
+        to_f64(kinetic - b.mass * gravity.dot(&b.position))
     })
 }
 
@@ -74,11 +83,17 @@ pub struct TotalAudit {
 }
 
 impl TotalAudit {
-    /// Each body's total energy at the step's start.
-    pub fn begin<T: Real>(&mut self, world: &World<T>, gravity: &Vector3<T>) {
+    /// Each body's total energy at the step's start; `inertia[i]` is body
+    /// `i`'s world inertia as `world` holds it (the step's, the same numbers).
+    pub fn begin<T: Real>(
+        &mut self,
+        world: &World<T>,
+        gravity: &Vector3<T>,
+        inertia: &[Matrix3<T>],
+    ) {
         self.start.clear();
         self.start
-            .extend((0..world.bodies.len()).map(|i| body_total(world, i, gravity)));
+            .extend((0..world.bodies.len()).map(|i| body_total(world, i, gravity, inertia.get(i))));
     }
 
     /// The moving bodies (`moving(i)`: body `i` was integrated this step;
