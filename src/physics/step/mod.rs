@@ -4,6 +4,7 @@
 //! bookkeeping, [`energy`] of the world.
 
 pub mod audit;
+mod audits;
 pub mod ccd;
 pub mod contact_events;
 pub mod energy;

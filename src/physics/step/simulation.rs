@@ -6,6 +6,7 @@
 use nalgebra::Vector3;
 
 use super::audit::Switches;
+use super::audits::{Audits, StepAudit};
 use super::ccd_mode::Rollback;
 use super::contact_events::{self, PairSet, Touching};
 use super::integrate::{integrate_velocity, Loads};
@@ -14,8 +15,7 @@ pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
-use super::total_audit::TotalAudit;
-use super::{audit, energy, overlap, replay, rollback, tolerance, wake_sleep};
+use super::{energy, overlap, replay, rollback, tolerance, wake_sleep};
 use crate::physics::collide::{BodyContact, ContactGenerator, Options};
 pub use crate::physics::params::SimParams;
 use crate::physics::params::{Material, NormalFrom};
@@ -47,21 +47,12 @@ pub struct Simulation<T: Real> {
     /// Whether the position and velocity phases hit their limits last step
     /// (a limit is an event when it starts being hit).
     limits_hit: [bool; 2],
-    /// Whether the last step's velocity phase added energy (reported once
-    /// when it starts).
-    gaining: bool,
-    /// Whether the last step's position phase lifted bodies (reported once
-    /// when it starts).
-    lifting: bool,
-    /// The total-energy audit's storage (total_audit.rs).
-    total: TotalAudit,
+    /// The energy audits' state and storage (audits.rs).
+    audits: Audits<T>,
     /// Each body's speed at the start of the step (storage kept).
     speeds: Vec<f64>,
     /// Each body's world inertia at the start of the step (storage kept).
     inertia: Vec<nalgebra::Matrix3<T>>,
-    /// Each resolver body's kinetic energy after this step's resolution,
-    /// shared by the kinetic and the total-energy audits.
-    kinetic_after: Vec<T>,
     /// The smallest half-width of a movable body (the tolerances' scale).
     size: Option<f64>,
     /// The parameters the scaled ones were made from, and the scaled ones.
@@ -95,12 +86,9 @@ impl<T: Real> Simulation<T> {
             touching: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
-            gaining: false,
-            lifting: false,
-            total: TotalAudit::default(),
+            audits: Audits::default(),
             speeds: Vec::new(),
             inertia: Vec::new(),
-            kinetic_after: Vec::new(),
             size: None,
             scaled_for: None,
             scaled: SimParams::default(),
@@ -178,7 +166,8 @@ impl<T: Real> Simulation<T> {
             &mut self.inertia,
         );
         let kinetic_start = to_f64(kinetic_start);
-        self.total
+        self.audits
+            .total
             .begin(&self.world, &p.world.gravity, &self.inertia);
         self.begin_step(&mut events);
         let max_penetration = self
@@ -203,67 +192,15 @@ impl<T: Real> Simulation<T> {
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         // The audits, while the world still holds the step's inputs.
-        let energy = replay::resolved_with(
-            &self.world,
-            resolver,
-            &p.world.gravity,
-            Some(&self.inertia),
-            &mut self.kinetic_after,
-        );
-        let gained = audit::gain(
-            energy.kinetic_before,
-            energy.kinetic_after,
-            self.energy_scale,
-        );
-        let inputs = replay::StepInputs {
+        let [lift_event, gain_event, rise_event] = self.audits.run(StepAudit {
             world: &self.world,
-            params: &p.resolver,
-            warm: &self.warm,
-            gravity: p.world.gravity,
-            scale: self.energy_scale,
-        };
-        let gain_event = match (gained, self.gaining) {
-            (Some(gained), false) => Some(Event::EnergyGain {
-                gained,
-                cause: inputs.attribute(),
-            }),
-            _ => None,
-        };
-        self.gaining = gained.is_some();
-        let lifted = projection_lift(&energy, p.resolver.position_epsilon, self.energy_scale);
-        let lift_event = match (lifted, self.lifting) {
-            (Some(gained), false) => Some(Event::ProjectionLift { gained }),
-            _ => None,
-        };
-        self.lifting = lifted.is_some();
-        // The total energy of the bodies in contact (total_audit.rs).
-        let rising = self.total.rising;
-        let (sleep, enabled) = (&self.sleep, p.sleep.enabled);
-        let start = self.total.start(
-            &self.world,
-            |i| sleep[i].awake || !enabled,
-            to_f64(p.world.gravity.norm()),
-            p.resolver.velocity_epsilon,
-            to_f64(p.dt),
-        );
-        let end = replay::total_after(
-            &self.world,
             resolver,
-            &p.world.gravity,
-            start.dt,
-            start.touched,
-            Some(&self.kinetic_after),
-        );
-        let rise = start.rise(end);
-        let rise_event = match (rise, rising) {
-            (Some(gained), false) => Some(Event::EnergyRise {
-                gained,
-                tolerance: start.tolerance,
-                cause: inputs.attribute_rise(&start),
-            }),
-            _ => None,
-        };
-        self.total.rising = rise.is_some();
+            params: &p,
+            warm: &self.warm,
+            sleep: &self.sleep,
+            inertia: &self.inertia,
+            scale: self.energy_scale,
+        });
         if warm {
             self.warm.store(&self.world, resolver);
         }
@@ -568,15 +505,6 @@ impl<T: Real> Simulation<T> {
         let contacts = &self.world.contacts;
         contact_events::report(contacts, before, &after, limit, &mut self.touching, events);
     }
-}
-
-/// The potential energy the position phase added, when it is worth an
-/// event: more than rounding, and more than lifting every resolved body by
-/// the position epsilon (the settling of resting contacts, which the
-/// position phase leaves up to that depth and then resolves).
-fn projection_lift(e: &replay::Resolved, position_epsilon: f64, scale: f64) -> Option<f64> {
-    let settling = e.weight * position_epsilon;
-    audit::gain(0.0, e.potential_rise, scale).filter(|rise| *rise > settling)
 }
 
 /// A potential-energy scale: m |g| (the body's height above the lowest body + 1).
