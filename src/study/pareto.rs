@@ -198,7 +198,11 @@ pub fn verdict(study: &SceneStudy) -> String {
         s.push_str(&format!(
             "; at equal work (8 visits per contact) the lecture's order leaves error {} m and {} {} m: {winner}",
             fmt.num(a),
-            si.config.solver_label().replace('-', " "),
+            if si.config.solver_label().ends_with("+warm") {
+                "warm-started sequential impulses leave"
+            } else {
+                "sequential impulses leave"
+            },
             fmt.num(b),
         ));
     }
