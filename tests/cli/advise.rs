@@ -163,37 +163,21 @@ fn the_study_svg_keeps_its_legend_inside_one_style_per_row_front_and_reference()
     };
     let st = sweep::study(&specs(&["stack-5"], 0.25), &o, &mut |_, _| {});
     let svg = contact_lab::render::study::svg::render(&st);
-    let width: f64 = svg
-        .split("width=\"")
-        .nth(1)
-        .unwrap()
-        .split('"')
-        .next()
-        .unwrap()
-        .parse()
-        .unwrap();
-    let height: f64 = svg
-        .split("height=\"")
-        .nth(1)
-        .unwrap()
-        .split('"')
-        .next()
-        .unwrap()
-        .parse()
-        .unwrap();
+    // A number attribute of the first tag in `tag` (` name="…"`).
+    let attr = |tag: &str, name: &str| -> Option<f64> {
+        let head = tag.split('>').next().unwrap();
+        (" ".to_string() + head)
+            .split(&format!(" {name}=\""))
+            .nth(1)
+            .map(|v| v.split('"').next().unwrap().parse().unwrap())
+    };
+    let width = attr(&svg, "width").unwrap();
+    let height = attr(&svg, "height").unwrap();
     // Every text's baseline lies inside the canvas, below its own type size
     // from the top.
     for t in svg.split("<text ").skip(1) {
-        let attr = |name: &str| -> Option<f64> {
-            t.split('>')
-                .next()
-                .unwrap()
-                .split(&format!(" {name}=\""))
-                .nth(1)
-                .map(|v| v.split('"').next().unwrap().parse().unwrap())
-        };
-        let y = attr("y").unwrap();
-        let size = attr("font-size").unwrap_or(12.0);
+        let y = attr(t, "y").unwrap();
+        let size = attr(t, "font-size").unwrap_or(12.0);
         assert!(
             y >= size * 0.7 && y <= height,
             "text outside the canvas at y {y} of {height}: {t}"
@@ -201,21 +185,9 @@ fn the_study_svg_keeps_its_legend_inside_one_style_per_row_front_and_reference()
     }
     // Every text ends inside the canvas (11–14 px type: at most 0.62 em a character).
     for t in svg.split("<text ").skip(1) {
-        let x: f64 = t
-            .split("x=\"")
-            .nth(1)
-            .unwrap()
-            .split('"')
-            .next()
-            .unwrap()
-            .parse()
-            .unwrap();
+        let x = attr(t, "x").unwrap();
         let body = t.split('>').nth(1).unwrap().split('<').next().unwrap();
-        let tag = t.split('>').next().unwrap();
-        let size: f64 = tag
-            .split("font-size=\"")
-            .nth(1)
-            .map_or(12.0, |v| v.split('"').next().unwrap().parse().unwrap());
+        let size = attr(t, "font-size").unwrap_or(12.0);
         let anchor_end = t.contains("text-anchor=\"end\"") || t.contains("text-anchor=\"middle\"");
         let end = if anchor_end {
             x
