@@ -12,7 +12,7 @@ use ratatui::style::{Color, Style};
 use ratatui::text::Span;
 use ratatui::widgets::{Block, Widget};
 
-use super::picture::{draw, fit};
+use super::picture::{draw, extent, fit, UNIT};
 use super::DetectView;
 use crate::render::detect::minkowski::minkowski;
 use crate::render::figure::P;
@@ -52,7 +52,11 @@ pub fn render(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     if inner.width < 2 || inner.height < 2 {
         return;
     }
-    let b = fit(bounds(&m.points()), inner.width, inner.height);
+    let b = fit(
+        extent(m.points()).unwrap_or(UNIT),
+        inner.width,
+        inner.height,
+    );
     let size = (b[1] - b[0]).max(b[3] - b[2]);
     let mut segs: Vec<(P, P, Color)> = vec![];
     let n = m.hull.len();
@@ -94,28 +98,6 @@ fn stop_name(d: &DetectView, p: &crate::trace::detect::PairTrace) -> String {
         Some(Stop::Epa(k)) => format!("EPA iteration {}", k + 1),
         None => "result".into(),
     }
-}
-
-/// Bounds (x0, x1, y0, y1) of the finite points (the unit box when none).
-fn bounds(pts: &[P]) -> [f64; 4] {
-    let mut b = [
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-    ];
-    for p in pts.iter().filter(|p| p[0].is_finite() && p[1].is_finite()) {
-        b = [
-            b[0].min(p[0]),
-            b[1].max(p[0]),
-            b[2].min(p[1]),
-            b[3].max(p[1]),
-        ];
-    }
-    if b[0] > b[1] {
-        return [-1.0, 1.0, -1.0, 1.0];
-    }
-    b
 }
 
 /// A line from `from` to `to` with a head of two short strokes.

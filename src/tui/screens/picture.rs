@@ -41,36 +41,44 @@ fn flat(plane: Plane, v: [f64; 3]) -> P {
     [v[a], v[b]]
 }
 
-/// Bounds (x0, x1, y0, y1) of the finite bodies' outlines, or the unit box.
-fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
-    let mut b = [
+/// `b` (x0, x1, y0, y1) grown to hold `p` when it is finite.
+fn grow(b: [f64; 4], p: [f64; 2]) -> [f64; 4] {
+    if !(p[0].is_finite() && p[1].is_finite()) {
+        return b;
+    }
+    [
+        b[0].min(p[0]),
+        b[1].max(p[0]),
+        b[2].min(p[1]),
+        b[3].max(p[1]),
+    ]
+}
+
+/// Bounds (x0, x1, y0, y1) of the finite points, `None` when none is.
+pub(super) fn extent(points: impl IntoIterator<Item = [f64; 2]>) -> Option<[f64; 4]> {
+    let empty = [
         f64::INFINITY,
         f64::NEG_INFINITY,
         f64::INFINITY,
         f64::NEG_INFINITY,
     ];
-    for v in bodies {
-        let Some(o) = v
-            .shape
+    let b = points.into_iter().fold(empty, grow);
+    (b[0] <= b[1]).then_some(b)
+}
+
+/// The bounds drawn when there is nothing finite to draw.
+pub(super) const UNIT: [f64; 4] = [-1.0, 1.0, -1.0, 1.0];
+
+/// Bounds (x0, x1, y0, y1) of the finite bodies' outlines, or the unit box.
+fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
+    let outlines = bodies.iter().filter_map(|v| {
+        v.shape
             .as_ref()
             .and_then(|s| outline(s, v.position, v.orientation, plane))
-        else {
-            continue;
-        };
-        for p in o.silhouette.points() {
-            if p[0].is_finite() && p[1].is_finite() {
-                b = [
-                    b[0].min(p[0]),
-                    b[1].max(p[0]),
-                    b[2].min(p[1]),
-                    b[3].max(p[1]),
-                ];
-            }
-        }
-    }
-    if b[0] > b[1] {
-        return [-1.0, 1.0, -1.0, 1.0];
-    }
+    });
+    let Some(mut b) = extent(outlines.flat_map(|o| o.silhouette.points())) else {
+        return UNIT;
+    };
     // A half-space in view too (a ball dropped from high above its floor,
     // up to 10 times the bodies' extent away):
     // the point of its line nearest the bodies, and a little of its solid
@@ -100,16 +108,7 @@ fn bounds(bodies: &[&BodyView], plane: Plane) -> [f64; 4] {
             continue;
         }
         let below = [p[0] - 0.05 * size * n[0], p[1] - 0.05 * size * n[1]];
-        for p in [p, below] {
-            if p[0].is_finite() && p[1].is_finite() {
-                b = [
-                    b[0].min(p[0]),
-                    b[1].max(p[0]),
-                    b[2].min(p[1]),
-                    b[3].max(p[1]),
-                ];
-            }
-        }
+        b = grow(grow(b, p), below);
     }
     b
 }
