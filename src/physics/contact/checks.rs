@@ -94,15 +94,14 @@ impl<T: Real> CheckItem<T> {
     /// The check's values by their JSON names, in the order the `checks`
     /// stage lists them (suffix 1 or 2 is the body slot): identifiers, as
     /// stage ids are, from this one place.
-    pub fn named_values(&self) -> Vec<(String, T)> {
+    pub fn named_values(&self) -> Vec<(&'static str, T)> {
         let item = self;
-        let named = |pairs: &[(&str, T)]| -> Vec<(String, T)> {
-            pairs.iter().map(|(n, v)| (n.to_string(), *v)).collect()
-        };
+        let named = |pairs: &[(&'static str, T)]| -> Vec<(&'static str, T)> { pairs.to_vec() };
         match item.measured {
             Measured::LinearMomentum { error } => named(&[("linear_momentum_error", error)]),
             Measured::AngularMomentum { body, error } => {
-                vec![(format!("angular_momentum_error{}", body + 1), error)]
+                let names = ["angular_momentum_error1", "angular_momentum_error2"];
+                vec![(names[body], error)]
             }
             Measured::Restitution {
                 before,
@@ -144,7 +143,8 @@ impl<T: Real> CheckItem<T> {
                 ("residual_penetration", residual),
             ]),
             Measured::UnitQuaternion { body, error } => {
-                vec![(format!("orientation_norm_error{}", body + 1), error)]
+                let names = ["orientation_norm_error1", "orientation_norm_error2"];
+                vec![(names[body], error)]
             }
         }
     }

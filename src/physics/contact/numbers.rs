@@ -218,7 +218,7 @@ impl<T: Real + Numbers> Numbers for Checks<T> {
 impl<T: Real + Numbers> Numbers for CheckItem<T> {
     fn numbers(&self, _: &str, visit: &mut dyn FnMut(&str, f64)) {
         for (name, x) in self.named_values() {
-            x.numbers(&name, visit);
+            x.numbers(name, visit);
         }
         self.cause.numbers("cause", visit);
     }

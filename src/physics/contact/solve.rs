@@ -102,9 +102,8 @@ pub fn checks_of<T: Real>(problem: &Problem<T>, s: &Stages<T>) -> Checks<T> {
 
 /// The stage records alone, in the lecture's order (no checks).
 ///
-/// The result is built in place: the first three records make the
-/// `Stages`, each later one is written into its own field where it stays,
-/// and the stages after read it there (no record is moved twice).
+/// The first three records make the `Stages`; each later one is written
+/// into its own field, and the stages after it read it there.
 pub fn solve_stages<T: Real>(problem: &Problem<T>) -> Stages<T> {
     let contact = &problem.contact;
     let frame = contact_frame(problem);

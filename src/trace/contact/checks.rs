@@ -7,7 +7,7 @@ use crate::physics::StageId;
 use crate::trace::{Step, Verdict};
 
 /// The named values of one check (`CheckItem::named_values`).
-pub fn check_values(item: &CheckItem<f64>) -> Vec<(String, f64)> {
+pub fn check_values(item: &CheckItem<f64>) -> Vec<(&'static str, f64)> {
     item.named_values()
 }
 
