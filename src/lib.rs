@@ -27,8 +27,9 @@ pub mod tui;
 
 /// Solves contact `k` of `lesson` in f64 and describes it.
 pub fn worked_solution(lesson: &lesson::Lesson, k: usize) -> trace::Trace {
-    let solution = physics::solve(&lesson.problem::<f64>(k));
-    let mut trace = trace::build(lesson, k, &solution);
+    let problem = lesson.problem::<f64>(k);
+    let solution = physics::solve(&problem);
+    let mut trace = trace::build_of(lesson, k, &problem, &solution);
     trace::note_planar_acceleration(&mut trace, &solution);
     trace
 }

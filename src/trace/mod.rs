@@ -30,6 +30,8 @@ pub mod symbols;
 pub mod toi;
 mod worked;
 
+use std::borrow::Cow;
+
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::physics::StageId;
@@ -38,7 +40,7 @@ pub use acceleration::note_planar_acceleration;
 pub use contact::impact_curves;
 pub use plane::Plane;
 pub use scene::{BodyView, ContactView, SceneView};
-pub use worked::build;
+pub use worked::{build, build_of};
 
 /// A value a stage takes in or produces.
 #[derive(Debug, Clone, PartialEq)]
@@ -92,17 +94,22 @@ impl Value {
     }
 }
 
+/// A trace's text: borrowed where it is fixed (formula sides, value names,
+/// notes written out in the source), owned where a body's number or name is
+/// put into it. It reads as a `&str` either way.
+pub type Text = Cow<'static, str>;
+
 /// One formula: symbols, then the numbers put into it, then the result.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Formula {
     /// Left-hand side, e.g. `Δv`.
-    pub lhs: String,
+    pub lhs: Text,
     /// Symbolic right-hand side, e.g. `-(1 + c)·v_s`.
-    pub rhs: String,
+    pub rhs: Text,
     /// The right-hand side with `{name}` placeholders for numbers.
-    pub substituted: Option<String>,
+    pub substituted: Option<Text>,
     /// Name of the value (in `values` or `inputs`) that is the result.
-    pub result: Option<String>,
+    pub result: Option<Text>,
 }
 
 /// One stage of the worked solution.
@@ -111,13 +118,13 @@ pub struct Step {
     pub id: StageId,
     pub title: &'static str,
     /// Why the stage did not run, when it did not.
-    pub skipped: Option<String>,
+    pub skipped: Option<Text>,
     pub formulas: Vec<Formula>,
     /// Numbers the formulas take in (not part of the JSON contract).
-    pub inputs: Vec<(String, Value)>,
+    pub inputs: Vec<(Text, Value)>,
     /// Named results (the JSON contract, `docs/json.md`).
-    pub values: Vec<(String, Value)>,
-    pub notes: Vec<String>,
+    pub values: Vec<(Text, Value)>,
+    pub notes: Vec<Text>,
 }
 
 impl Step {

@@ -4,7 +4,7 @@
 
 use crate::lesson::{FigureDef, Lesson};
 use crate::physics::solve::Solution;
-use crate::physics::Shape;
+use crate::physics::{Problem, Shape};
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyView {
@@ -78,9 +78,13 @@ fn quat(q: nalgebra::Quaternion<f64>) -> [f64; 4] {
     [q.w, q.i, q.j, q.k]
 }
 
-pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> SceneView {
+pub(super) fn scene(
+    lesson: &Lesson,
+    k: usize,
+    problem: &Problem<f64>,
+    solution: &Solution<f64>,
+) -> SceneView {
     let contact = &lesson.contacts[k];
-    let problem = lesson.problem::<f64>(k);
     let slots = lesson.slots(k);
     let bodies = lesson
         .bodies
@@ -88,7 +92,7 @@ pub(super) fn scene(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Scen
         .enumerate()
         .map(|(index, b)| {
             let slot = slots.iter().position(|s| *s == Some(index));
-            let after = slot.and_then(|s| solution.after(&problem, s));
+            let after = slot.and_then(|s| solution.after(problem, s));
             BodyView {
                 name: b.name.clone(),
                 movable: b.movable(),

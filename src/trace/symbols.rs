@@ -28,7 +28,7 @@ impl Trace {
             s.formulas
                 .iter()
                 .find(|f| f.result.as_deref() == Some(value))
-                .map(|f| f.lhs.clone())
+                .map(|f| f.lhs.to_string())
         });
         from_formula.or_else(|| {
             NAMED

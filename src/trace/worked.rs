@@ -7,6 +7,7 @@ use super::scene::scene;
 use super::Trace;
 use crate::lesson::Lesson;
 use crate::physics::solve::Solution;
+use crate::physics::Problem;
 
 impl ContactNames {
     /// The names lesson contact `k` shows: its bodies, its label, and the
@@ -28,9 +29,19 @@ impl ContactNames {
 
 /// Builds the trace of contact `k` of `lesson`, solved as `solution`.
 pub fn build(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Trace {
-    let problem = lesson.problem::<f64>(k);
+    build_of(lesson, k, &lesson.problem::<f64>(k), solution)
+}
+
+/// [`build`] with contact `k`'s problem already at hand (the one `solution`
+/// solved), so it is not taken from the lesson twice.
+pub fn build_of(
+    lesson: &Lesson,
+    k: usize,
+    problem: &Problem<f64>,
+    solution: &Solution<f64>,
+) -> Trace {
     let names = ContactNames::of_lesson(lesson, k);
-    let solved = SolvedContact::new(&problem, solution, &names);
+    let solved = SolvedContact::new(problem, solution, &names);
     Trace {
         lesson: lesson.id.clone(),
         title: lesson.title.clone(),
@@ -39,11 +50,11 @@ pub fn build(lesson: &Lesson, k: usize, solution: &Solution<f64>) -> Trace {
         contact: k,
         contact_label: names.label.clone(),
         bodies: names.slot_names(),
-        stages: contact::build(&problem, solution, &names),
-        after: contact::after(&problem, solution, &names),
+        stages: contact::build(problem, solution, &names),
+        after: contact::after(problem, solution, &names),
         verdicts: contact::verdicts(&solved),
         warnings: lesson.warnings.iter().map(|w| w.to_string()).collect(),
-        scene: scene(lesson, k, solution),
+        scene: scene(lesson, k, problem, solution),
         impact: contact::impact_curves(solution),
     }
 }

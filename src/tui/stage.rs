@@ -203,7 +203,7 @@ fn formula_rows(app: &App, step: &Step, f: &Formula, hide_result: bool) -> Vec<R
         });
     };
     if !f.rhs.is_empty() {
-        push(f.rhs.clone(), t.formula(), false);
+        push(f.rhs.to_string(), t.formula(), false);
     }
     let mut last = None;
     if let Some(s) = &f.substituted {

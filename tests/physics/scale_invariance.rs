@@ -95,7 +95,10 @@ fn signature(l: &Lesson, k: usize) -> Vec<String> {
         .orientation
         .iter()
         .flat_map(|o| o.bodies.iter().enumerate())
-        .filter(|(_, b)| b.as_ref().is_some_and(|b| b.rotation_vector_degrees > 1e-9))
+        .filter(|(_, b)| {
+            b.as_ref()
+                .is_some_and(|b| b.turn().rotation_vector_degrees > 1e-9)
+        })
         .map(|(i, _)| i)
         .collect();
     out.push(format!("turns {:?}", turning));

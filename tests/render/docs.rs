@@ -63,7 +63,7 @@ fn produced() -> BTreeMap<String, BTreeSet<String>> {
             for k in 0..l.contacts.len() {
                 for step in contact_lab::worked_solution(&l, k).stages {
                     let set = names.entry(step.id.json_name().to_string()).or_default();
-                    set.extend(step.values.into_iter().map(|(n, _)| n));
+                    set.extend(step.values.into_iter().map(|(n, _)| n.into_owned()));
                 }
             }
         }

@@ -11,9 +11,11 @@
 
 use super::stages::friction::FrictionIssue;
 use super::stages::{
-    apply_impulse, contact_frame, desired_delta_velocity, friction_clamp, impulse, unit_impulse,
-    Impulse, MatrixSolve,
+    apply_impulse, condition_number, contact_frame, desired_delta_velocity, friction_clamp,
+    impulse, unit_impulse, Impulse, MatrixSolve,
 };
+use nalgebra::Matrix3;
+
 use super::{Problem, Real};
 
 /// The cause a check's note names.
@@ -88,16 +90,22 @@ pub fn rose<T: Real>(before: T, after: T) -> bool {
 /// The 3×3 solves behind the applied impulse (if any): the largest κ and
 /// whether one failed. A solve loses about log₁₀ κ digits whether or not it
 /// is flagged ILL-CONDITIONED (κ·ε > 10⁻³), so every one counts.
+///
+/// Every solve is of the same `M` (the unit-impulse stage's `matrix`), so its
+/// exact κ is computed here, once, from `M` itself: the stage path stores only
+/// the factor's bound when that shows M well-conditioned.
 fn conditioning<'a, T: Real>(
     impulse: Option<&'a Impulse<T>>,
     friction: Option<&'a MatrixSolve<T>>,
+    matrix: Option<&Matrix3<T>>,
 ) -> Option<(T, bool)> {
     let solves = impulse
         .and_then(|g| g.solve.as_ref())
         .into_iter()
         .chain(friction);
+    let kappa = matrix.map(condition_number);
     solves
-        .map(|s| (s.condition_number, s.singular))
+        .map(|s| (kappa.unwrap_or(s.condition_number), s.singular))
         .reduce(|a, b| (a.0.max(b.0), a.1 || b.1))
 }
 
@@ -119,9 +127,10 @@ pub fn energy_rise<T: Real>(
     problem: &Problem<T>,
     impulse: Option<&Impulse<T>>,
     friction_solve: Option<&MatrixSolve<T>>,
+    matrix: Option<&Matrix3<T>>,
     (before, after): (T, T),
 ) -> Cause<T> {
-    if let Some((condition, singular)) = conditioning(impulse, friction_solve) {
+    if let Some((condition, singular)) = conditioning(impulse, friction_solve, matrix) {
         let allowance = allowance(condition, singular, before.abs() + after.abs());
         if after - before <= allowance {
             return Cause::RoundOff {
@@ -173,10 +182,11 @@ pub fn restitution_miss<T: Real>(
     problem: &Problem<T>,
     impulse: Option<&Impulse<T>>,
     friction_solve: Option<&MatrixSolve<T>>,
+    matrix: Option<&Matrix3<T>>,
     error: T,
     size: T,
 ) -> Cause<T> {
-    if let Some((condition, singular)) = conditioning(impulse, friction_solve) {
+    if let Some((condition, singular)) = conditioning(impulse, friction_solve, matrix) {
         let allowance = allowance(condition, singular, size);
         if error <= allowance {
             return Cause::RoundOff {
@@ -200,6 +210,7 @@ pub fn restitution_miss<T: Real>(
 pub fn slip_rise<T: Real>(
     impulse: Option<&Impulse<T>>,
     friction_solve: Option<&MatrixSolve<T>>,
+    matrix: Option<&Matrix3<T>>,
     (issue, planar_slip): (Option<FrictionIssue>, Option<T>),
     slip_after: T,
     size: T,
@@ -216,7 +227,7 @@ pub fn slip_rise<T: Real>(
     if let Some(planar) = planar_slip {
         return Some(Cause::PlanarAcceleration { planar });
     }
-    let (condition, singular) = conditioning(impulse, friction_solve)?;
+    let (condition, singular) = conditioning(impulse, friction_solve, matrix)?;
     let allowance = allowance(condition, singular, size);
     (slip_after <= allowance).then_some(Cause::RoundOff {
         condition,
@@ -229,6 +240,7 @@ pub fn cone_miss<T: Real>(
     problem: &Problem<T>,
     impulse: Option<&Impulse<T>>,
     friction_solve: Option<&MatrixSolve<T>>,
+    matrix: Option<&Matrix3<T>>,
     error: T,
     size: T,
 ) -> Cause<T> {
@@ -238,7 +250,7 @@ pub fn cone_miss<T: Real>(
         crate::physics::FrictionModel::KineticDirection => return Cause::KineticDirectionNormal,
         crate::physics::FrictionModel::Millington => {}
     }
-    match conditioning(impulse, friction_solve) {
+    match conditioning(impulse, friction_solve, matrix) {
         Some((condition, singular)) if error <= allowance(condition, singular, size) => {
             Cause::RoundOff {
                 condition,

@@ -94,15 +94,14 @@ impl<T: Real> CheckItem<T> {
     /// The check's values by their JSON names, in the order the `checks`
     /// stage lists them (suffix 1 or 2 is the body slot): identifiers, as
     /// stage ids are, from this one place.
-    pub fn named_values(&self) -> Vec<(String, T)> {
+    pub fn named_values(&self) -> Vec<(&'static str, T)> {
         let item = self;
-        let named = |pairs: &[(&str, T)]| -> Vec<(String, T)> {
-            pairs.iter().map(|(n, v)| (n.to_string(), *v)).collect()
-        };
+        let named = |pairs: &[(&'static str, T)]| -> Vec<(&'static str, T)> { pairs.to_vec() };
         match item.measured {
             Measured::LinearMomentum { error } => named(&[("linear_momentum_error", error)]),
             Measured::AngularMomentum { body, error } => {
-                vec![(format!("angular_momentum_error{}", body + 1), error)]
+                let names = ["angular_momentum_error1", "angular_momentum_error2"];
+                vec![(names[body], error)]
             }
             Measured::Restitution {
                 before,
@@ -144,7 +143,8 @@ impl<T: Real> CheckItem<T> {
                 ("residual_penetration", residual),
             ]),
             Measured::UnitQuaternion { body, error } => {
-                vec![(format!("orientation_norm_error{}", body + 1), error)]
+                let names = ["orientation_norm_error1", "orientation_norm_error2"];
+                vec![(names[body], error)]
             }
         }
     }
@@ -169,6 +169,8 @@ impl<T: Real> Checks<T> {
 pub struct CheckInputs<'a, T: Real> {
     pub problem: &'a Problem<T>,
     pub frame: &'a ContactFrame<T>,
+    /// The friction matrix `M` (the unit-impulse stage's), for κ(M) in the causes.
+    pub matrix: Option<&'a nalgebra::Matrix3<T>>,
     pub desired: &'a DesiredVelocity<T>,
     pub impulse: Option<&'a Impulse<T>>,
     pub applied: Option<&'a AppliedImpulse<T>>,
@@ -273,8 +275,16 @@ fn velocity_checks<T: Real>(
     let expected = input.desired.separating() + input.desired.desired;
     let error = (separating - expected).abs();
     let friction_solve = input.friction.and_then(|f| f.solve.as_ref());
-    let missed = (error > tol * scale)
-        .then(|| causes::restitution_miss(problem, input.impulse, friction_solve, error, scale));
+    let missed = (error > tol * scale).then(|| {
+        causes::restitution_miss(
+            problem,
+            input.impulse,
+            friction_solve,
+            input.matrix,
+            error,
+            scale,
+        )
+    });
     items.push(explained(
         missed,
         Measured::Restitution {
@@ -289,8 +299,15 @@ fn velocity_checks<T: Real>(
         e_before += b.kinetic_energy_with(inertia, &b.velocity, &b.angular_velocity);
         e_after += b.kinetic_energy_with(inertia, &a.v, &a.w);
     }
-    let rise = causes::rose(e_before, e_after)
-        .then(|| causes::energy_rise(problem, input.impulse, friction_solve, (e_before, e_after)));
+    let rise = causes::rose(e_before, e_after).then(|| {
+        causes::energy_rise(
+            problem,
+            input.impulse,
+            friction_solve,
+            input.matrix,
+            (e_before, e_after),
+        )
+    });
     items.push(explained(
         rise,
         Measured::Energy {
@@ -311,7 +328,14 @@ fn velocity_checks<T: Real>(
             g.x >= -tol * norm(&g) && tangential <= mu * g.x * (T::one() + tol) + tol * norm(&g);
         let outside = (!ok).then(|| {
             let error = (tangential - mu * g.x).max(-g.x);
-            causes::cone_miss(problem, input.impulse, friction_solve, error, norm(&g))
+            causes::cone_miss(
+                problem,
+                input.impulse,
+                friction_solve,
+                input.matrix,
+                error,
+                norm(&g),
+            )
         });
         items.push(explained(
             outside,
@@ -354,7 +378,14 @@ fn velocity_checks<T: Real>(
             (true, super::stages::FrictionRegime::Dynamic) => item(None, measured),
             (true, super::stages::FrictionRegime::Static) => {
                 let why = (f.issue, planar_slip);
-                match causes::slip_rise(input.impulse, friction_solve, why, after, scale) {
+                match causes::slip_rise(
+                    input.impulse,
+                    friction_solve,
+                    input.matrix,
+                    why,
+                    after,
+                    scale,
+                ) {
                     // A limit of the arithmetic informs, a defect of the model fails.
                     Some(cause) => explained(Some(cause), measured),
                     // Unexplained: fails.

@@ -105,6 +105,12 @@ impl<X: Numbers> Numbers for Vec<X> {
     }
 }
 
+impl<X: Numbers> Numbers for Box<X> {
+    fn numbers(&self, field: &str, visit: &mut dyn FnMut(&str, f64)) {
+        (**self).numbers(field, visit)
+    }
+}
+
 impl<X: Numbers, E: Numbers> Numbers for Result<X, E> {
     fn numbers(&self, field: &str, visit: &mut dyn FnMut(&str, f64)) {
         match self {
@@ -132,8 +138,8 @@ record! {
     ContactFrame { contact_to_world, guess, r }
     UnitImpulse { bodies, linear, total, matrix }
     BodyUnitResponse {
-        inverse_mass, inverse_inertia_world, torque_per_unit_impulse, rotation_per_unit_impulse,
-        velocity_per_unit_impulse, angular, skew_r, angular_matrix_world,
+        inverse_mass, torque_per_unit_impulse, rotation_per_unit_impulse,
+        velocity_per_unit_impulse, angular,
     }
     DesiredVelocity {
         point_velocity, contact_velocity_world, contact_velocity, planar_from_acceleration,
@@ -154,10 +160,7 @@ record! {
         rotation_per_unit, angular_change, position,
     }
     OrientationUpdate { bodies }
-    BodyOrientation {
-        before, rotation, unnormalised, normalised, angle_degrees, axis, rotation_vector_degrees,
-        euler_zyx_degrees,
-    }
+    BodyOrientation { before, rotation, unnormalised, normalised }
     ExactImpact {
         input, outcome, frame, impulse_world, applied, one_shot_world, one_shot_contact,
         energy_before, energy_after, energy_after_one_shot,
@@ -215,7 +218,7 @@ impl<T: Real + Numbers> Numbers for Checks<T> {
 impl<T: Real + Numbers> Numbers for CheckItem<T> {
     fn numbers(&self, _: &str, visit: &mut dyn FnMut(&str, f64)) {
         for (name, x) in self.named_values() {
-            x.numbers(&name, visit);
+            x.numbers(name, visit);
         }
         self.cause.numbers("cause", visit);
     }

@@ -28,8 +28,9 @@ pub struct Stages<T: Real> {
     pub orientation: Option<OrientationUpdate<T>>,
     /// The impact integrated under the contact's `settings.exact` law beside
     /// the one-shot impulse; `None` unless asked. An integration that cannot
-    /// finish is an error here, never NaN.
-    pub exact: Option<Result<ExactImpact<T>, ExactError>>,
+    /// finish is an error here, never NaN. Boxed: the record is large
+    /// (about 0.9 kB) and rarely asked for, and `Stages` is moved whole.
+    pub exact: Option<Result<Box<ExactImpact<T>>, ExactError>>,
 }
 
 /// One resolved contact: its stage records and the checks of its result.
@@ -89,6 +90,7 @@ pub fn checks_of<T: Real>(problem: &Problem<T>, s: &Stages<T>) -> Checks<T> {
     run_checks(&CheckInputs {
         problem,
         frame: &s.frame,
+        matrix: s.unit.matrix.as_ref(),
         desired: &s.desired,
         impulse: s.impulse.as_ref(),
         applied: s.applied.as_ref(),
@@ -99,6 +101,9 @@ pub fn checks_of<T: Real>(problem: &Problem<T>, s: &Stages<T>) -> Checks<T> {
 }
 
 /// The stage records alone, in the lecture's order (no checks).
+///
+/// The first three records make the `Stages`; each later one is written
+/// into its own field, and the stages after it read it there.
 pub fn solve_stages<T: Real>(problem: &Problem<T>) -> Stages<T> {
     let contact = &problem.contact;
     let frame = contact_frame(problem);
@@ -106,36 +111,61 @@ pub fn solve_stages<T: Real>(problem: &Problem<T>) -> Stages<T> {
     let inverse_inertias = problem.inverse_inertias();
     let unit = unit_impulse_with(problem, &inverse_inertias, &frame, contact.has_friction());
     let desired = desired_delta_velocity(problem, &frame);
-    let closing = desired.desired > T::zero();
-    let impulse =
-        closing.then(|| impulse_with(problem, &inverse_inertias, &frame, &unit, &desired));
-    let friction = impulse
-        .as_ref()
-        .filter(|_| contact.has_friction())
-        .map(|g| friction_clamp(problem, &frame, &unit, &desired, g));
-    let final_impulse = final_impulse_world(impulse.as_ref(), friction.as_ref());
-    let applied = final_impulse.map(|g| apply_impulse_with(problem, &inverse_inertias, &frame, &g));
-    let projection = (contact.penetration > T::zero())
-        .then(|| nonlinear_projection_with(problem, &inverse_inertias, &frame));
-    let orientation = projection
-        .as_ref()
-        .map(|p| orientation_update(problem, p))
-        .filter(|o| o.bodies.iter().any(Option::is_some));
-    let exact = contact.settings.exact.map(|law| {
-        let one_shot = final_impulse.unwrap_or_else(Vector3::zeros);
-        exact_impact_beside(problem, law, Tolerance::default(), one_shot)
-    });
-    Stages {
+    let mut s = Stages {
         frame,
         unit,
         desired,
-        impulse,
-        friction,
-        applied,
-        projection,
-        orientation,
-        exact,
+        impulse: None,
+        friction: None,
+        applied: None,
+        projection: None,
+        orientation: None,
+        exact: None,
+    };
+    if s.desired.desired > T::zero() {
+        // M factored once, for the impulse and the clamp; no eigenvalues
+        // here (κ(M) is computed where it is shown: `Stages::condition_number`).
+        let factored = s.unit.matrix.map(FactoredMatrix::new);
+        let g = s.impulse.insert(impulse_factored(
+            problem,
+            &inverse_inertias,
+            &s.frame,
+            &s.unit,
+            &s.desired,
+            factored.as_ref(),
+        ));
+        if contact.has_friction() {
+            s.friction = Some(friction_clamp_factored(
+                problem,
+                &s.frame,
+                &s.unit,
+                &s.desired,
+                g,
+                factored.as_ref(),
+            ));
+        }
     }
+    let final_impulse = s.final_impulse_world();
+    if let Some(g) = &final_impulse {
+        s.applied = Some(apply_impulse_with(problem, &inverse_inertias, &s.frame, g));
+    }
+    if contact.penetration > T::zero() {
+        let p = s.projection.insert(nonlinear_projection_with(
+            problem,
+            &inverse_inertias,
+            &s.frame,
+        ));
+        let o = orientation_update(problem, p);
+        if o.bodies.iter().any(Option::is_some) {
+            s.orientation = Some(o);
+        }
+    }
+    if let Some(law) = contact.settings.exact {
+        let one_shot = final_impulse.unwrap_or_else(Vector3::zeros);
+        s.exact =
+            Some(exact_impact_beside(problem, law, Tolerance::default(), one_shot).map(Box::new));
+    }
+    s
 }
 
 impl<T: Real> Stages<T> {
@@ -190,12 +220,12 @@ impl<T: Real> Stages<T> {
         self.impulse.is_some()
     }
 
-    /// κ(M) of the friction matrix, when the 3×3 system was solved.
+    /// κ(M) of the friction matrix (exact: its symmetric eigenvalues), when
+    /// the 3×3 system was solved. Computed here, for whoever shows it: the
+    /// stage path factors M without it.
     pub fn condition_number(&self) -> Option<T> {
-        self.impulse
-            .as_ref()
-            .and_then(|g| g.solve.as_ref())
-            .map(|s| s.condition_number)
+        self.impulse.as_ref()?.solve.as_ref()?;
+        self.unit.matrix.as_ref().map(condition_number)
     }
 
     /// State of body slot `i` after velocity and position resolution.

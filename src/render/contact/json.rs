@@ -31,7 +31,7 @@ pub fn to_json(trace: &Trace) -> J {
         .stages
         .iter()
         .map(|s| {
-            let values: Map<String, J> = s.values.iter().map(|(n, v)| (n.clone(), value(v))).collect();
+            let values: Map<String, J> = s.values.iter().map(|(n, v)| (n.to_string(), value(v))).collect();
             let notes: Vec<J> = s.notes.iter().map(|n| J::String(fmt.fill_units(n, s))).collect();
             json!({ "id": s.id.json_name(), "title": s.title, "skipped": s.skipped, "values": values, "notes": notes })
         })

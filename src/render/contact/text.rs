@@ -12,7 +12,7 @@ use crate::trace::{glossary, Formula, Step, Trace};
 pub fn formula_lines(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
     let mut rhs = Vec::new();
     if !f.rhs.is_empty() {
-        rhs.push(f.rhs.clone());
+        rhs.push(f.rhs.to_string());
     }
     if let Some(s) = &f.substituted {
         rhs.push(fmt.fill(s, step, false));

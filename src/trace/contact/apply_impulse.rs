@@ -19,56 +19,53 @@ pub fn apply_impulse(c: &SolvedContact) -> Step {
         let s = SUB[i];
         let body = c.body(i);
         let change = a.bodies[i].as_ref().expect("movable");
-        b.input(format!("m{n}"), body.mass);
-        b.input(format!("r{n}"), c.r(i));
-        b.input(format!("v{n}_before"), body.velocity);
-        b.input(format!("w{n}_before"), body.angular_velocity);
+        b.input(slot!(i => "m" N), body.mass);
+        b.input(slot!(i => "r" N), c.r(i));
+        b.input(slot!(i => "v" N "_before"), body.velocity);
+        b.input(slot!(i => "w" N "_before"), body.angular_velocity);
         b.input(
-            format!("inverse_inertia_world{n}"),
+            slot!(i => "inverse_inertia_world" N),
             body.inverse_inertia_world(),
         );
-        b.value(format!("impulse{n}"), change.impulse);
-        b.value(format!("impulsive_torque{n}"), change.impulsive_torque);
-        b.value(format!("dv{n}"), change.dv);
-        b.value(format!("dw{n}"), change.dw);
-        b.value(format!("v{n}"), change.v);
-        b.value(format!("w{n}"), change.w);
+        b.value(slot!(i => "impulse" N), change.impulse);
+        b.value(slot!(i => "impulsive_torque" N), change.impulsive_torque);
+        b.value(slot!(i => "dv" N), change.dv);
+        b.value(slot!(i => "dw" N), change.dw);
+        b.value(slot!(i => "v" N), change.v);
+        b.value(slot!(i => "w" N), change.w);
         b.value(
-            format!("dw{n}_degrees_per_second"),
+            slot!(i => "dw" N "_degrees_per_second"),
             crate::physics::scale::stable_norm(&change.dw).to_degrees(),
         );
-        let g = if i == 0 { "g" } else { "-g" };
         b.f(
-            &format!("Δṗ{s}"),
-            &format!("{g} / m{s}"),
-            Some(&format!("{{impulse{n}}} / {{m{n}}}")),
-            Some(&format!("dv{n}")),
+            slot!(i => "Δṗ" S),
+            slot!(i => MINUS "g / m" S),
+            Some(slot!(i => "{impulse" N "} / {m" N "}")),
+            Some(slot!(i => "dv" N)),
         );
         b.f(
-            &format!("u{s}"),
-            &format!("r{s} × {}", if i == 0 { "g" } else { "(-g)" }),
-            Some(&format!("{{r{n}}} × {{impulse{n}}}")),
-            Some(&format!("impulsive_torque{n}")),
+            slot!(i => "u" S),
+            [slot!(i => "r" S " × g"), slot!(i => "r" S " × (-g)")][i],
+            Some(slot!(i => "{r" N "} × {impulse" N "}")),
+            Some(slot!(i => "impulsive_torque" N)),
         );
         b.f(
-            &format!("Δθ̇{s}"),
-            &format!("I{s}⁻¹ u{s}"),
-            Some(&format!(
-                "{{inverse_inertia_world{n}}} {{impulsive_torque{n}}}"
-            )),
-            Some(&format!("dw{n}")),
+            slot!(i => "Δθ̇" S),
+            slot!(i => "I" S "⁻¹ u" S),
+            Some(slot!(i => "{inverse_inertia_world" N "} {impulsive_torque" N "}")),
+            Some(slot!(i => "dw" N)),
         );
         b.f(
-            &format!("v{s}′"),
-            &format!("v{s} + Δṗ{s}"),
-            Some(&format!("{{v{n}_before}} + {{dv{n}}}")),
-            Some(&format!("v{n}")),
+            slot!(i => "v" S "′"),
+            slot!(i => "v" S " + Δṗ" S),
+            Some(slot!(i => "{v" N "_before} + {dv" N "}")),
+            Some(slot!(i => "v" N)),
         );
         b.f(
-            &format!("ω{s}′"),
-            &format!("ω{s} + Δθ̇{s}"),
-            Some(&format!("{{w{n}_before}} + {{dw{n}}}")),
-            Some(&format!("w{n}")),
+            slot!(i => "ω" S "′"),
+            slot!(i => "ω" S " + Δθ̇" S),
+            Some(slot!(i => "{w" N "_before} + {dw" N "}")),
+            Some(slot!(i => "w" N)),
         );
         // The impulse (with friction, not only its normal part) passes
         // through the centre: any spin left is the data's rounding.
@@ -86,7 +83,7 @@ pub fn apply_impulse(c: &SolvedContact) -> Step {
             ));
         }
     }
-    if c.movable().len() == 2 {
+    if c.movable().count() == 2 {
         b.note("Both bodies receive the same impulse in opposite directions: body 2 gets -g.");
     }
     b.done()

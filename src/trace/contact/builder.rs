@@ -8,7 +8,7 @@ use super::ContactNames;
 use crate::physics::scale::stable_norm;
 use crate::physics::solve::{Skip, Solution};
 use crate::physics::{Problem, RigidBody, StageId};
-use crate::trace::{Formula, Step, Value};
+use crate::trace::{Formula, Step, Text, Value};
 
 /// Subscripts of body 1 and body 2.
 pub(super) const SUB: [&str; 2] = ["₁", "₂"];
@@ -36,17 +36,14 @@ impl<'a> SolvedContact<'a> {
     }
 
     /// The name of the body in slot `i`; "the world" for an empty slot.
-    pub(super) fn name(&self, i: usize) -> String {
-        self.names.bodies[i]
-            .clone()
-            .unwrap_or_else(|| "the world".to_string())
+    pub(super) fn name(&self, i: usize) -> &'a str {
+        self.names.bodies[i].as_deref().unwrap_or("the world")
     }
 
     /// Slots holding a movable body.
-    pub(super) fn movable(&self) -> Vec<usize> {
-        (0..2)
-            .filter(|&i| self.problem.bodies[i].is_some())
-            .collect()
+    pub(super) fn movable(&self) -> impl Iterator<Item = usize> + 'a {
+        let bodies = &self.problem.bodies;
+        (0..2).filter(move |&i| bodies[i].is_some())
     }
 
     pub(super) fn body(&self, i: usize) -> &'a RigidBody<f64> {
@@ -54,10 +51,9 @@ impl<'a> SolvedContact<'a> {
     }
 
     /// Slots that name a body which is immovable (an empty slot names none).
-    pub(super) fn immovable_named(&self) -> Vec<usize> {
-        (0..2)
-            .filter(|&i| self.names.bodies[i].is_some() && self.problem.bodies[i].is_none())
-            .collect()
+    pub(super) fn immovable_named(&self) -> impl Iterator<Item = usize> + 'a {
+        let (names, bodies) = (&self.names.bodies, &self.problem.bodies);
+        (0..2).filter(move |&i| names[i].is_some() && bodies[i].is_none())
     }
 
     /// Body slot `i`'s arm r = q - p (zero for an empty slot).
@@ -78,6 +74,8 @@ impl B {
                 id,
                 title: id.title(),
                 skipped: None,
+                // Nothing allocated until something is pushed (a skipped
+                // stage allocates nothing); see `push`.
                 formulas: vec![],
                 inputs: vec![],
                 values: vec![],
@@ -85,37 +83,51 @@ impl B {
             },
         }
     }
-    pub(super) fn input(&mut self, name: impl Into<String>, v: impl Into<Value>) {
-        self.step.inputs.push((name.into(), v.into()));
+    pub(super) fn input(&mut self, name: impl Into<Text>, v: impl Into<Value>) {
+        push(&mut self.step.inputs, (name.into(), v.into()));
     }
-    pub(super) fn value(&mut self, name: impl Into<String>, v: impl Into<Value>) {
-        self.step.values.push((name.into(), v.into()));
+    pub(super) fn value(&mut self, name: impl Into<Text>, v: impl Into<Value>) {
+        push(&mut self.step.values, (name.into(), v.into()));
     }
-    /// `lhs = rhs = substituted = {result}`; the LaTeX forms are made when rendered.
+    /// `lhs = rhs = substituted = {result}`; the LaTeX forms are made when
+    /// rendered. Fixed text is borrowed (`&'static str`), built text owned.
     pub(super) fn f(
         &mut self,
-        lhs: &str,
-        rhs: &str,
-        substituted: Option<&str>,
-        result: Option<&str>,
+        lhs: impl Into<Text>,
+        rhs: impl Into<Text>,
+        substituted: Option<impl Into<Text>>,
+        result: Option<impl Into<Text>>,
     ) {
-        self.step.formulas.push(Formula {
-            lhs: lhs.to_string(),
-            rhs: rhs.to_string(),
-            substituted: substituted.map(str::to_string),
-            result: result.map(str::to_string),
-        });
+        push(
+            &mut self.step.formulas,
+            Formula {
+                lhs: lhs.into(),
+                rhs: rhs.into(),
+                substituted: substituted.map(Into::into),
+                result: result.map(Into::into),
+            },
+        );
     }
-    pub(super) fn note(&mut self, text: impl Into<String>) {
-        self.step.notes.push(text.into());
+    pub(super) fn note(&mut self, text: impl Into<Text>) {
+        push(&mut self.step.notes, text.into());
     }
-    pub(super) fn skipped(mut self, why: &str) -> Step {
-        self.step.skipped = Some(why.to_string());
+    pub(super) fn skipped(mut self, why: impl Into<Text>) -> Step {
+        self.step.skipped = Some(why.into());
         self.step
     }
     pub(super) fn done(self) -> Step {
         self.step
     }
+}
+
+/// Pushes onto one of a step's lists, making room for 8 at the first push: a
+/// stage's lists hold a few to a few dozen entries, and growing from 4 by
+/// doubling would reallocate each list two or three times.
+fn push<X>(list: &mut Vec<X>, x: X) {
+    if list.capacity() == 0 {
+        list.reserve_exact(8);
+    }
+    list.push(x);
 }
 
 pub(super) fn skip_reason(skip: Skip) -> &'static str {

@@ -7,7 +7,7 @@ use crate::physics::StageId;
 use crate::trace::{Step, Verdict};
 
 /// The named values of one check (`CheckItem::named_values`).
-pub fn check_values(item: &CheckItem<f64>) -> Vec<(String, f64)> {
+pub fn check_values(item: &CheckItem<f64>) -> Vec<(&'static str, f64)> {
     item.named_values()
 }
 
@@ -31,16 +31,15 @@ pub fn checks(c: &SolvedContact) -> Step {
         let mut diff = Vec::new();
         if let Some(applied) = &c.solution.applied {
             for i in c.movable() {
-                let n = i + 1;
                 let change = applied.bodies[i].as_ref().expect("movable");
                 b.input(
-                    format!("point_velocity_after{n}"),
+                    slot!(i => "point_velocity_after" N),
                     change.w.cross(&c.r(i)) + change.v,
                 );
-                diff.push(format!("{{point_velocity_after{n}}}"));
+                diff.push(slot!(i => "{point_velocity_after" N "}"));
             }
         }
-        let substituted = match (diff.len(), c.movable().first()) {
+        let substituted = match (diff.len(), c.movable().next()) {
             (2, _) => Some(format!("({} - {}) · {{d}}", diff[0], diff[1])),
             (1, Some(1)) => Some(format!("(-{}) · {{d}}", diff[0])),
             (1, _) => Some(format!("{} · {{d}}", diff[0])),
@@ -49,7 +48,7 @@ pub fn checks(c: &SolvedContact) -> Step {
         b.f(
             "v_s′",
             "(q̇₁′ - q̇₂′) · d̂",
-            substituted.as_deref(),
+            substituted,
             Some("separating_velocity"),
         );
         b.f(
@@ -89,7 +88,7 @@ pub fn checks(c: &SolvedContact) -> Step {
         };
         b.f(
             "d_left",
-            &format!("{depth_symbol} - Σ (-1)^(i+1) (qᵢ′ - q) · d̂"),
+            format!("{depth_symbol} - Σ (-1)^(i+1) (qᵢ′ - q) · d̂"),
             Some("{depth_to_resolve} - {separation_gained}"),
             Some("residual_penetration"),
         );

@@ -31,16 +31,15 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
         Some("tangent0"),
     );
     b.f("t₁", "d̂ × t₀", Some("{d} × {tangent0}"), Some("tangent1"));
-    b.f("C", "[d̂ t₀ t₁]", None, Some("contact_to_world"));
+    b.f("C", "[d̂ t₀ t₁]", None::<&str>, Some("contact_to_world"));
     for i in c.movable() {
-        let n = i + 1;
-        b.input(format!("p{n}"), c.body(i).position);
-        b.value(format!("r{n}"), c.r(i));
+        b.input(slot!(i => "p" N), c.body(i).position);
+        b.value(slot!(i => "r" N), c.r(i));
         b.f(
-            &format!("r{}", SUB[i]),
-            &format!("q - p{}", SUB[i]),
-            Some(&format!("{{q}} - {{p{n}}}")),
-            Some(&format!("r{n}")),
+            slot!(i => "r" S),
+            slot!(i => "q - p" S),
+            Some(slot!(i => "{q} - {p" N "}")),
+            Some(slot!(i => "r" N)),
         );
     }
     b.note(format!(
@@ -59,7 +58,7 @@ pub fn contact_frame(c: &SolvedContact) -> Step {
     for i in c.movable() {
         let n = i + 1;
         if let Some(digits) = f.r_digits(c.problem, i).filter(|d| *d < 12.0) {
-            b.input(format!("r{n}_digits"), digits.floor());
+            b.input(slot!(i => "r" N "_digits"), digits.floor());
             b.note(format!(
                 "q and p{s} lie far from the origin compared with r{s}: each is stored to about ε·|x|, so r{s} = q - p{s} keeps only about {{r{n}_digits}} significant digits of f64's 16 (the subtraction itself is exact).",
                 s = SUB[i]

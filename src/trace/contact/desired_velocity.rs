@@ -1,7 +1,7 @@
 //! The `desired_delta_velocity` stage described: the contact velocity, the
 //! separating velocity and the change Δv the impulse must make.
 
-use super::builder::{SolvedContact, B, SUB};
+use super::builder::{SolvedContact, B};
 use crate::physics::StageId;
 use crate::trace::Step;
 
@@ -13,45 +13,38 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
     b.input("d", d);
     let mut diff = Vec::new();
     for i in c.movable() {
-        let n = i + 1;
-        let s = SUB[i];
         let body = c.body(i);
-        b.input(format!("r{n}"), c.r(i));
-        b.input(format!("v{n}"), body.velocity);
-        b.input(format!("w{n}"), body.angular_velocity);
+        b.input(slot!(i => "r" N), c.r(i));
+        b.input(slot!(i => "v" N), body.velocity);
+        b.input(slot!(i => "w" N), body.angular_velocity);
         let pv = dv.point_velocity[i].unwrap_or_default();
-        b.value(format!("point_velocity{n}"), pv);
-        b.value(format!("normal_velocity{n}"), pv.dot(&d));
+        b.value(slot!(i => "point_velocity" N), pv);
+        b.value(slot!(i => "normal_velocity" N), pv.dot(&d));
         b.f(
-            &format!("q̇{s}"),
-            &format!("ω{s} × r{s} + v{s}"),
-            Some(&format!("{{w{n}}} × {{r{n}}} + {{v{n}}}")),
-            Some(&format!("point_velocity{n}")),
+            slot!(i => "q̇" S),
+            slot!(i => "ω" S " × r" S " + v" S),
+            Some(slot!(i => "{w" N "} × {r" N "} + {v" N "}")),
+            Some(slot!(i => "point_velocity" N)),
         );
         b.f(
-            &format!("q̇{s} · d̂"),
+            slot!(i => "q̇" S " · d̂"),
             "",
-            Some(&format!("{{point_velocity{n}}} · {{d}}")),
-            Some(&format!("normal_velocity{n}")),
+            Some(slot!(i => "{point_velocity" N "} · {d}")),
+            Some(slot!(i => "normal_velocity" N)),
         );
-        diff.push(format!("{{point_velocity{n}}}"));
+        diff.push(slot!(i => "{point_velocity" N "}"));
     }
     b.value("contact_velocity", dv.contact_velocity);
     b.value("separating_velocity", dv.separating());
     b.value("closing_velocity", -dv.separating());
     let world = if diff.len() == 2 {
         format!("Cᵀ ({} - {})", diff[0], diff[1])
-    } else if c.movable() == vec![1] {
+    } else if c.movable().eq([1]) {
         format!("Cᵀ (-{})", diff[0])
     } else {
         format!("Cᵀ {}", diff[0])
     };
-    b.f(
-        "v_c",
-        "Cᵀ (q̇₁ - q̇₂)",
-        Some(&world),
-        Some("contact_velocity"),
-    );
+    b.f("v_c", "Cᵀ (q̇₁ - q̇₂)", Some(world), Some("contact_velocity"));
     b.f(
         "v_s",
         "v_c · x̂",
@@ -65,14 +58,14 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
         let mut acc = Vec::new();
         for i in c.movable() {
             let n = i + 1;
-            b.input(format!("a{n}"), c.body(i).acceleration);
+            b.input(slot!(i => "a" N), c.body(i).acceleration);
             acc.push(format!("{}{{a{n}}}", if i == 1 { "- " } else { "" }));
         }
         b.input("duration", c.problem.duration);
         b.f(
             "v_acc",
             "(a₁ - a₂)·d̂ Δt",
-            Some(&format!("({})·{{d}} × {{duration}}", acc.join(" "))),
+            Some(format!("({})·{{d}} × {{duration}}", acc.join(" "))),
             Some("velocity_from_acceleration"),
         );
         b.f("Δv", "-v_acc - (1 + c)(v_s - v_acc)", Some("-{velocity_from_acceleration} - (1 + {restitution})({separating_velocity} - {velocity_from_acceleration})"), Some("desired"));

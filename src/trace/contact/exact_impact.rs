@@ -4,7 +4,7 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::builder::{skip_reason, SolvedContact, B, SUB};
+use super::builder::{skip_reason, SolvedContact, B};
 use crate::physics::exact::{ExactImpact, Phase, PhaseKind, RestitutionLaw};
 use crate::physics::solve::Skip;
 use crate::physics::StageId;
@@ -83,7 +83,7 @@ fn direction(kind: &PhaseKind<f64>) -> Option<Vector2<f64>> {
 pub fn exact_impact(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::ExactImpact);
     if let Some(Err(e)) = &c.solution.exact {
-        return b.skipped(&format!("the integration failed: {e}"));
+        return b.skipped(format!("the integration failed: {e}"));
     }
     if let Some(skip) = c.solution.skip(StageId::ExactImpact) {
         return b.skipped(skip_reason(skip));
@@ -110,32 +110,45 @@ pub fn exact_impact(c: &SolvedContact) -> Step {
     b.value("impulse_contact", o.impulse);
     b.value("impulse_world", x.impulse_world);
     b.value("velocity_contact", o.velocity);
-    b.f("law", "", Some("{law_name}"), None);
-    b.f("v_c(P)", "v_c + M P", Some("{u0} + {matrix} P"), None);
-    b.f("dP_t", "-μ_d s dP_n", None, None);
-    b.f(end_lhs, end_rhs, None, None);
+    b.f("law", "", Some("{law_name}"), None::<&str>);
+    b.f(
+        "v_c(P)",
+        "v_c + M P",
+        Some("{u0} + {matrix} P"),
+        None::<&str>,
+    );
+    b.f("dP_t", "-μ_d s dP_n", None::<&str>, None::<&str>);
+    b.f(end_lhs, end_rhs, None::<&str>, None::<&str>);
     b.f(
         "P_c",
         "P_n where v_n = 0",
-        None,
+        None::<&str>,
         Some("compression_normal_impulse"),
     );
-    b.f("P", "∫ dP", None, Some("impulse_contact"));
+    b.f("P", "∫ dP", None::<&str>, Some("impulse_contact"));
     b.f(
         "P_world",
         "C P",
         Some("{contact_to_world} {impulse_contact}"),
         Some("impulse_world"),
     );
-    b.f("v_c′", "v_c + M P", None, Some("velocity_contact"));
+    b.f("v_c′", "v_c + M P", None::<&str>, Some("velocity_contact"));
     for i in c.movable() {
-        let n = i + 1;
-        let s = SUB[i];
         let after = x.applied.bodies[i].as_ref().expect("movable");
-        b.value(format!("v{n}"), after.v);
-        b.value(format!("w{n}"), after.w);
-        b.f(&format!("v{s}′"), "", None, Some(&format!("v{n}")));
-        b.f(&format!("ω{s}′"), "", None, Some(&format!("w{n}")));
+        b.value(slot!(i => "v" N), after.v);
+        b.value(slot!(i => "w" N), after.w);
+        b.f(
+            slot!(i => "v" S "′"),
+            "",
+            None::<&str>,
+            Some(slot!(i => "v" N)),
+        );
+        b.f(
+            slot!(i => "ω" S "′"),
+            "",
+            None::<&str>,
+            Some(slot!(i => "w" N)),
+        );
     }
     energies(&mut b, x);
     one_shot(&mut b, x);
@@ -171,8 +184,8 @@ fn energies(b: &mut B, x: &ExactImpact<f64>) {
     b.value("work_compression", o.work_compression);
     b.value("work_restitution", o.work_restitution);
     b.value("work_friction", o.work_friction);
-    b.f("E", "", None, Some("energy_before"));
-    b.f("E′", "", None, Some("energy_after"));
+    b.f("E", "", None::<&str>, Some("energy_before"));
+    b.f("E′", "", None::<&str>, Some("energy_after"));
     b.f(
         "E′ - E",
         "W_c + W_r + W_t",
@@ -193,21 +206,31 @@ fn one_shot(b: &mut B, x: &ExactImpact<f64>) {
     );
     b.value("energy_after_one_shot", x.energy_after_one_shot);
     b.value("energy_difference", x.energy_difference());
-    b.f("g_contact", "", None, Some("impulse_one_shot_contact"));
+    b.f(
+        "g_contact",
+        "",
+        None::<&str>,
+        Some("impulse_one_shot_contact"),
+    );
     b.f(
         "P - g_contact",
         "",
         Some("{impulse_contact} - {impulse_one_shot_contact}"),
         Some("impulse_difference"),
     );
-    b.f("|P - g_contact|", "", None, Some("impulse_difference_abs"));
+    b.f(
+        "|P - g_contact|",
+        "",
+        None::<&str>,
+        Some("impulse_difference_abs"),
+    );
     b.f(
         "|P - g_contact| / |P|",
         "",
-        None,
+        None::<&str>,
         Some("impulse_difference_relative"),
     );
-    b.f("E′_clamp", "", None, Some("energy_after_one_shot"));
+    b.f("E′_clamp", "", None::<&str>, Some("energy_after_one_shot"));
     b.f(
         "E′_clamp - E′",
         "",

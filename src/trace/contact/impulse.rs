@@ -39,7 +39,12 @@ pub fn impulse(c: &SolvedContact) -> Step {
         Some(solve) => {
             b.input("matrix", c.solution.unit.matrix.unwrap_or_default());
             b.input("rhs", solve.rhs);
-            b.value("condition_number", solve.condition_number);
+            // κ(M) exactly (the stage path kept only the factor's bound).
+            let kappa = c
+                .solution
+                .condition_number()
+                .unwrap_or(solve.condition_number);
+            b.value("condition_number", kappa);
             b.f(
                 "g_contact",
                 "M⁻¹ (Δv, -v_y, -v_z)",
@@ -71,20 +76,19 @@ pub fn impulse(c: &SolvedContact) -> Step {
     );
     b.input("restitution", c.solution.desired.restitution);
     b.input("separating_velocity", c.solution.desired.separating());
-    let mut denominator = vec!["{linear}".to_string()];
+    let mut denominator = vec!["{linear}"];
     b.input("linear", c.solution.unit.linear);
     for i in c.movable() {
-        let n = i + 1;
         b.input(
-            format!("angular{n}"),
+            slot!(i => "angular" N),
             c.solution.unit.bodies[i].as_ref().expect("movable").angular,
         );
-        denominator.push(format!("{{angular{n}}}"));
+        denominator.push(slot!(i => "{angular" N "}"));
     }
     b.f(
         "g_closed",
         "-(1 + c) v_s / (Σ 1/mᵢ + Σ (rᵢ × d̂)ᵀ Iᵢ⁻¹ (rᵢ × d̂))",
-        Some(&format!(
+        Some(format!(
             "-(1 + {{restitution}})({{separating_velocity}}) / ({})",
             denominator.join(" + ")
         )),

@@ -6,6 +6,27 @@
 //! to show, never a lesson: a resolver trace can describe "contact 3,
 //! iteration 7" with the same builders.
 
+/// A text naming body slot `i` (0 or 1), fixed at compile time: `N`
+/// stands for the body's number (1, 2), `S` for its subscript (₁, ₂),
+/// `MINUS` for body 2's sign (`-`; nothing for body 1), e.g.
+/// `slot!(i => "{m" N "}")` is `"{m1}"` or `"{m2}"`: a `&'static str`, no
+/// allocation (the names and formulas of a body are the same text each time).
+macro_rules! slot {
+    (@1 N) => { "1" };
+    (@2 N) => { "2" };
+    (@1 S) => { "₁" };
+    (@2 S) => { "₂" };
+    (@1 MINUS) => { "" };
+    (@2 MINUS) => { "-" };
+    (@$k:tt $lit:literal) => { $lit };
+    ($i:expr => $($part:tt)+) => {
+        [
+            concat!($(slot!(@1 $part)),+),
+            concat!($(slot!(@2 $part)),+),
+        ][$i]
+    };
+}
+
 mod apply_impulse;
 mod builder;
 mod causes;

@@ -21,47 +21,49 @@ pub fn orientation(c: &SolvedContact) -> Step {
         let Some(u) = &o.bodies[i] else { continue };
         let n = i + 1;
         let s = SUB[i];
-        b.input(format!("before{n}"), u.before);
-        b.input(format!("rotation{n}"), u.rotation);
-        b.value(format!("orientation{n}_unnormalised"), u.unnormalised);
-        b.value(format!("orientation{n}"), u.normalised);
-        b.value(format!("rotation_degrees{n}"), u.angle_degrees);
-        b.value(format!("rotation_axis{n}"), u.axis);
+        let turn = u.turn();
+        b.input(slot!(i => "before" N), u.before);
+        b.input(slot!(i => "rotation" N), u.rotation);
+        b.value(slot!(i => "orientation" N "_unnormalised"), u.unnormalised);
+        b.value(slot!(i => "orientation" N), u.normalised);
+        b.value(slot!(i => "rotation_degrees" N), turn.angle_degrees);
+        b.value(slot!(i => "rotation_axis" N), turn.axis);
         b.value(
-            format!("rotation_vector_degrees{n}"),
-            u.rotation_vector_degrees,
+            slot!(i => "rotation_vector_degrees" N),
+            turn.rotation_vector_degrees,
         );
-        b.value(format!("euler_zyx_degrees{n}"), u.euler_zyx_degrees);
+        b.value(slot!(i => "euler_zyx_degrees" N), turn.euler_zyx_degrees);
         b.f(
-            &format!("θ{s}′"),
-            &format!("θ{s} + ½ [0, Δθ{s}] θ{s}"),
-            Some(&format!(
-                "{{before{n}}} + ½ [0, {{rotation{n}}}] {{before{n}}}"
-            )),
-            Some(&format!("orientation{n}_unnormalised")),
+            slot!(i => "θ" S "′"),
+            slot!(i => "θ" S " + ½ [0, Δθ" S "] θ" S),
+            Some(slot!(i => "{before" N "} + ½ [0, {rotation" N "}] {before" N "}")),
+            Some(slot!(i => "orientation" N "_unnormalised")),
         );
-        b.input(format!("norm{n}"), u.unnormalised.norm());
+        b.input(slot!(i => "norm" N), u.unnormalised.norm());
         b.f(
-            &format!("θ{s}′ / |θ{s}′|"),
+            slot!(i => "θ" S "′ / |θ" S "′|"),
             "",
-            Some(&format!("{{orientation{n}_unnormalised}} / {{norm{n}}}")),
-            Some(&format!("orientation{n}")),
+            Some(slot!(i => "{orientation" N "_unnormalised} / {norm" N "}")),
+            Some(slot!(i => "orientation" N)),
         );
         b.f(
-            &format!("φ{s}"),
-            &format!("2 atan2(|δ_xyz|, δ_w), δ = (θ{s}′ / |θ{s}′|) θ{s}⁻¹"),
-            None,
-            Some(&format!("rotation_degrees{n}")),
+            slot!(i => "φ" S),
+            slot!(i => "2 atan2(|δ_xyz|, δ_w), δ = (θ" S "′ / |θ" S "′|) θ" S "⁻¹"),
+            None::<&str>,
+            Some(slot!(i => "rotation_degrees" N)),
         );
         let name = c.name(i);
         if let Some((axis, ccw)) = about_one_axis(&u.rotation) {
             let signed = if ccw {
-                u.angle_degrees
+                turn.angle_degrees
             } else {
-                -u.angle_degrees
+                -turn.angle_degrees
             };
-            b.value(format!("rotation_signed_degrees{n}"), signed);
-            b.value(format!("rotation_world_axis{n}"), axis.to_string().as_str());
+            b.value(slot!(i => "rotation_signed_degrees" N), signed);
+            b.value(
+                slot!(i => "rotation_world_axis" N),
+                axis.to_string().as_str(),
+            );
         }
         let rounding = through_centre(&c.r(i), &c.solution.frame.normal());
         match about_one_axis(&u.rotation) {
@@ -74,7 +76,7 @@ pub fn orientation(c: &SolvedContact) -> Step {
             )),
             None => b.note(format!("{name} turns φ{s} = {{rotation_degrees{n}}}° about the axis {{rotation_axis{n}}}.")),
         }
-        b.note(format!("Euler angles of the new orientation, intrinsic z-y′-x″ (yaw, pitch, roll): {{euler_zyx_degrees{n}}}°."));
+        b.note(slot!(i => "Euler angles of the new orientation, intrinsic z-y′-x″ (yaw, pitch, roll): {euler_zyx_degrees" N "}°."));
     }
     b.note("Adding ½[0, Δθ]θ is a first-order step: the sum is not unit length, so it is normalised; the turn it represents is slightly smaller than |Δθ|.");
     b.done()

@@ -33,39 +33,37 @@ pub fn projection(c: &SolvedContact) -> Step {
     let nonlinear = p.method == ProjectionMethod::Nonlinear;
     let mut total = Vec::new();
     for i in c.movable() {
-        let n = i + 1;
-        let s = SUB[i];
         let m = p.bodies[i].as_ref().expect("movable");
-        b.input(format!("m{n}"), c.body(i).mass);
-        b.input(format!("r{n}"), c.r(i));
+        b.input(slot!(i => "m" N), c.body(i).mass);
+        b.input(slot!(i => "r" N), c.r(i));
         b.input(
-            format!("inverse_inertia_world{n}"),
+            slot!(i => "inverse_inertia_world" N),
             c.body(i).inverse_inertia_world(),
         );
-        b.value(format!("linear_inertia{n}"), m.linear_inertia);
-        b.value(format!("angular_inertia{n}"), m.angular_inertia);
+        b.value(slot!(i => "linear_inertia" N), m.linear_inertia);
+        b.value(slot!(i => "angular_inertia" N), m.angular_inertia);
         b.f(
-            &format!("I_l{s}"),
-            &format!("1/m{s}"),
-            Some(&format!("1/{{m{n}}}")),
-            Some(&format!("linear_inertia{n}")),
+            slot!(i => "I_l" S),
+            slot!(i => "1/m" S),
+            Some(slot!(i => "1/{m" N "}")),
+            Some(slot!(i => "linear_inertia" N)),
         );
         if nonlinear {
             b.f(
-                &format!("Δθ̇_d{s}"),
-                &format!("I{s}⁻¹(r{s} × d̂)"),
-                Some(&format!("{{inverse_inertia_world{n}}} ({{r{n}}} × {{d}})")),
-                Some(&format!("rotation_per_unit{n}")),
+                slot!(i => "Δθ̇_d" S),
+                slot!(i => "I" S "⁻¹(r" S " × d̂)"),
+                Some(slot!(i => "{inverse_inertia_world" N "} ({r" N "} × {d})")),
+                Some(slot!(i => "rotation_per_unit" N)),
             );
             b.f(
-                &format!("I_a{s}"),
-                &format!("(Δθ̇_d{s} × r{s}) · d̂"),
-                Some(&format!("({{rotation_per_unit{n}}} × {{r{n}}}) · {{d}}")),
-                Some(&format!("angular_inertia{n}")),
+                slot!(i => "I_a" S),
+                slot!(i => "(Δθ̇_d" S " × r" S ") · d̂"),
+                Some(slot!(i => "({rotation_per_unit" N "} × {r" N "}) · {d}")),
+                Some(slot!(i => "angular_inertia" N)),
             );
-            total.push(format!("{{linear_inertia{n}}} + {{angular_inertia{n}}}"));
+            total.push(slot!(i => "{linear_inertia" N "} + {angular_inertia" N "}"));
         } else {
-            total.push(format!("{{linear_inertia{n}}}"));
+            total.push(slot!(i => "{linear_inertia" N "}"));
         }
     }
     b.value("total_inertia", p.total_inertia);
@@ -76,7 +74,7 @@ pub fn projection(c: &SolvedContact) -> Step {
         } else {
             "Σ I_lᵢ"
         },
-        Some(&total.join(" + ")),
+        Some(total.join(" + ")),
         Some("total_inertia"),
     );
     let depth = if relaxed {
@@ -87,90 +85,103 @@ pub fn projection(c: &SolvedContact) -> Step {
     for i in c.movable() {
         let n = i + 1;
         let s = SUB[i];
-        let sign = if i == 0 { "" } else { "-" };
         let m = p.bodies[i].as_ref().expect("movable");
-        b.input(format!("p{n}"), c.body(i).position);
-        b.value(format!("linear_move{n}"), m.linear_move);
-        b.value(format!("angular_move{n}"), m.angular_move);
+        b.input(slot!(i => "p" N), c.body(i).position);
+        b.value(slot!(i => "linear_move" N), m.linear_move);
+        b.value(slot!(i => "angular_move" N), m.angular_move);
         if m.angular_limit.is_finite() {
-            b.value(format!("angular_limit{n}"), m.angular_limit);
+            b.value(slot!(i => "angular_limit" N), m.angular_limit);
         } else {
-            b.value(format!("angular_limit{n}"), "none");
+            b.value(slot!(i => "angular_limit" N), "none");
         }
-        b.input(format!("r_perp_length{n}"), m.r_perp_length);
-        b.value(format!("linear_change{n}"), m.linear_change);
-        b.value(format!("rotation_per_unit{n}"), m.rotation_per_unit);
-        b.value(format!("angular_change{n}"), m.angular_change);
-        b.value(format!("position{n}"), m.position);
-        let e = format!("(-1)^({n}+1)");
+        b.input(slot!(i => "r_perp_length" N), m.r_perp_length);
+        b.value(slot!(i => "linear_change" N), m.linear_change);
+        b.value(slot!(i => "rotation_per_unit" N), m.rotation_per_unit);
+        b.value(slot!(i => "angular_change" N), m.angular_change);
+        b.value(slot!(i => "position" N), m.position);
         // Before the limit; when it acts, the clamped moves follow below.
         b.input(
-            format!("angular_move_unlimited{n}"),
+            slot!(i => "angular_move_unlimited" N),
             m.angular_move_unlimited,
         );
-        b.input(format!("linear_move_unlimited{n}"), m.linear_move_unlimited);
+        b.input(
+            slot!(i => "linear_move_unlimited" N),
+            m.linear_move_unlimited,
+        );
         let (lin, ang) = if m.limited {
             (
-                format!("linear_move_unlimited{n}"),
-                format!("angular_move_unlimited{n}"),
+                slot!(i => "linear_move_unlimited" N),
+                slot!(i => "angular_move_unlimited" N),
             )
         } else {
-            (format!("linear_move{n}"), format!("angular_move{n}"))
+            (slot!(i => "linear_move" N), slot!(i => "angular_move" N))
         };
         b.f(
-            &format!("Δ_l{s}"),
-            &format!("{e} {depth_symbol} I_l{s} / I_t"),
-            Some(&format!(
-                "{sign}{depth} · {{linear_inertia{n}}} / {{total_inertia}}"
-            )),
-            Some(&lin),
+            slot!(i => "Δ_l" S),
+            if relaxed {
+                slot!(i => "(-1)^(" N "+1) d_res I_l" S " / I_t")
+            } else {
+                slot!(i => "(-1)^(" N "+1) d_pen I_l" S " / I_t")
+            },
+            Some(if relaxed {
+                slot!(i => MINUS "{resolved_depth} · {linear_inertia" N "} / {total_inertia}")
+            } else {
+                slot!(i => MINUS "{d_pen} · {linear_inertia" N "} / {total_inertia}")
+            }),
+            Some(lin),
         );
         if !nonlinear {
             // Linear projection: no angular share, no limit, no turn.
             b.f(
-                &format!("Δp{s}"),
-                &format!("Δ_l{s} d̂"),
-                Some(&format!("{{linear_move{n}}} {{d}}")),
-                Some(&format!("linear_change{n}")),
+                slot!(i => "Δp" S),
+                slot!(i => "Δ_l" S " d̂"),
+                Some(slot!(i => "{linear_move" N "} {d}")),
+                Some(slot!(i => "linear_change" N)),
             );
             b.f(
-                &format!("p{s}′"),
-                &format!("p{s} + Δp{s}"),
-                Some(&format!("{{p{n}}} + {{linear_change{n}}}")),
-                Some(&format!("position{n}")),
+                slot!(i => "p" S "′"),
+                slot!(i => "p" S " + Δp" S),
+                Some(slot!(i => "{p" N "} + {linear_change" N "}")),
+                Some(slot!(i => "position" N)),
             );
             continue;
         }
         b.f(
-            &format!("Δ_a{s}"),
-            &format!("{e} {depth_symbol} I_a{s} / I_t"),
-            Some(&format!(
-                "{sign}{depth} · {{angular_inertia{n}}} / {{total_inertia}}"
-            )),
-            Some(&ang),
+            slot!(i => "Δ_a" S),
+            if relaxed {
+                slot!(i => "(-1)^(" N "+1) d_res I_a" S " / I_t")
+            } else {
+                slot!(i => "(-1)^(" N "+1) d_pen I_a" S " / I_t")
+            },
+            Some(if relaxed {
+                slot!(i => MINUS "{resolved_depth} · {angular_inertia" N "} / {total_inertia}")
+            } else {
+                slot!(i => MINUS "{d_pen} · {angular_inertia" N "} / {total_inertia}")
+            }),
+            Some(ang),
         );
         if !m.angular_limit.is_finite() {
             b.note("angular_limit = inf: the angular move is not limited.");
         } else {
             b.f(
-                &format!("Δ_max{s}"),
-                &format!("angular_limit · |r{s} - (r{s} · d̂) d̂|"),
-                Some(&format!("{{angular_limit_setting}} · {{r_perp_length{n}}}")),
-                Some(&format!("angular_limit{n}")),
+                slot!(i => "Δ_max" S),
+                slot!(i => "angular_limit · |r" S " - (r" S " · d̂) d̂|"),
+                Some(slot!(i => "{angular_limit_setting} · {r_perp_length" N "}")),
+                Some(slot!(i => "angular_limit" N)),
             );
         }
         if m.limited {
             b.f(
-                &format!("Δ_a{s} (limited)"),
-                &format!("±Δ_max{s}"),
-                None,
-                Some(&format!("angular_move{n}")),
+                slot!(i => "Δ_a" S " (limited)"),
+                slot!(i => "±Δ_max" S),
+                None::<&str>,
+                Some(slot!(i => "angular_move" N)),
             );
             b.f(
-                &format!("Δ_l{s} (limited)"),
-                &format!("Δ_l{s} + (Δ_a{s} - Δ_a{s} (limited))"),
-                Some(&format!("{{linear_move_unlimited{n}}} + ({{angular_move_unlimited{n}}} - {{angular_move{n}}})")),
-                Some(&format!("linear_move{n}")),
+                slot!(i => "Δ_l" S " (limited)"),
+                slot!(i => "Δ_l" S " + (Δ_a" S " - Δ_a" S " (limited))"),
+                Some(slot!(i => "{linear_move_unlimited" N "} + ({angular_move_unlimited" N "} - {angular_move" N "})")),
+                Some(slot!(i => "linear_move" N)),
             );
             b.note(format!(
                 "Excessive rotation: {}'s angular move {{angular_move_unlimited{n}}} exceeds the limit Δ_max{s} = {{angular_limit{n}}}; it is cut to the limit and the excess moves to the linear share ({{linear_move_unlimited{n}}} → {{linear_move{n}}}).",
@@ -178,18 +189,18 @@ pub fn projection(c: &SolvedContact) -> Step {
             ));
         }
         b.f(
-            &format!("Δp{s}"),
-            &format!("Δ_l{s} d̂"),
-            Some(&format!("{{linear_move{n}}} {{d}}")),
-            Some(&format!("linear_change{n}")),
+            slot!(i => "Δp" S),
+            slot!(i => "Δ_l" S " d̂"),
+            Some(slot!(i => "{linear_move" N "} {d}")),
+            Some(slot!(i => "linear_change" N)),
         );
         if m.angular_inertia == 0.0 || m.angular_move == 0.0 {
             // Δ_a / I_a would be 0 / 0 or 0: no turn, said rather than divided.
             b.f(
-                &format!("Δθ{s}"),
+                slot!(i => "Δθ" S),
                 "0",
-                None,
-                Some(&format!("angular_change{n}")),
+                None::<&str>,
+                Some(slot!(i => "angular_change" N)),
             );
             b.note(format!(
                 "{} takes no angular share (Δ_a{s} = 0), so it does not turn: Δθ{s} = 0.",
@@ -197,19 +208,17 @@ pub fn projection(c: &SolvedContact) -> Step {
             ));
         } else {
             b.f(
-                &format!("Δθ{s}"),
-                &format!("(Δ_a{s} / I_a{s}) Δθ̇_d{s}"),
-                Some(&format!(
-                    "({{angular_move{n}}} / {{angular_inertia{n}}}) {{rotation_per_unit{n}}}"
-                )),
-                Some(&format!("angular_change{n}")),
+                slot!(i => "Δθ" S),
+                slot!(i => "(Δ_a" S " / I_a" S ") Δθ̇_d" S),
+                Some(slot!(i => "({angular_move" N "} / {angular_inertia" N "}) {rotation_per_unit" N "}")),
+                Some(slot!(i => "angular_change" N)),
             );
         }
         b.f(
-            &format!("p{s}′"),
-            &format!("p{s} + Δp{s}"),
-            Some(&format!("{{p{n}}} + {{linear_change{n}}}")),
-            Some(&format!("position{n}")),
+            slot!(i => "p" S "′"),
+            slot!(i => "p" S " + Δp" S),
+            Some(slot!(i => "{p" N "} + {linear_change" N "}")),
+            Some(slot!(i => "position" N)),
         );
         let d = c.solution.frame.normal();
         if through_centre(&c.r(i), &d) {

@@ -1,7 +1,9 @@
 //! The `unit_impulse` stage described: the velocity change per unit impulse
 //! along the normal, and with friction the 3×3 matrix M in contact space.
 
-use super::builder::{through_centre, SolvedContact, B, SUB};
+use super::builder::{through_centre, SolvedContact, B};
+use crate::physics::contact::stages::unit_impulse::angular_matrix;
+use crate::physics::frame::skew;
 use crate::physics::StageId;
 use crate::trace::Step;
 
@@ -13,56 +15,56 @@ pub fn unit_impulse(c: &SolvedContact) -> Step {
     b.input("d", d);
     let mut parts = Vec::new();
     for i in 0..2 {
-        let n = i + 1;
         if let Some(body) = &c.problem.bodies[i] {
-            b.input(format!("m{n}"), body.mass);
-            parts.push(format!("1/{{m{n}}}"));
+            b.input(slot!(i => "m" N), body.mass);
+            parts.push(slot!(i => "1/{m" N "}"));
         } else if c.names.bodies[i].is_some() {
-            parts.push("1/∞".to_string());
+            parts.push("1/∞");
         }
     }
     b.value("linear", u.linear);
-    b.f("Δṗ_d", "Σ 1/mᵢ", Some(&parts.join(" + ")), Some("linear"));
-    let mut total_parts = vec!["{linear}".to_string()];
+    b.f("Δṗ_d", "Σ 1/mᵢ", Some(parts.join(" + ")), Some("linear"));
+    let mut total_parts = vec!["{linear}"];
     for i in c.movable() {
-        let n = i + 1;
-        let s = SUB[i];
         let r = u.bodies[i].as_ref().expect("movable");
-        b.input(format!("r{n}"), c.r(i));
-        b.value(format!("inertia{n}"), c.body(i).inertia_body);
+        b.input(slot!(i => "r" N), c.r(i));
+        b.value(slot!(i => "inertia" N), c.body(i).inertia_body);
         if let Some(t) = c.names.written.shape_inertia[i] {
-            b.value(format!("shape_inertia{n}"), t);
+            b.value(slot!(i => "shape_inertia" N), t);
         }
-        b.value(format!("inverse_inertia_world{n}"), r.inverse_inertia_world);
-        b.value(format!("torque{n}"), r.torque_per_unit_impulse);
-        b.value(format!("rotation{n}"), r.rotation_per_unit_impulse);
-        b.value(format!("velocity{n}"), r.velocity_per_unit_impulse);
-        b.value(format!("angular{n}"), r.angular);
+        b.value(
+            slot!(i => "inverse_inertia_world" N),
+            c.body(i).inverse_inertia_world(),
+        );
+        b.value(slot!(i => "torque" N), r.torque_per_unit_impulse);
+        b.value(slot!(i => "rotation" N), r.rotation_per_unit_impulse);
+        b.value(slot!(i => "velocity" N), r.velocity_per_unit_impulse);
+        b.value(slot!(i => "angular" N), r.angular);
         b.f(
-            &format!("u_d{s}"),
-            &format!("r{s} × d̂"),
-            Some(&format!("{{r{n}}} × {{d}}")),
-            Some(&format!("torque{n}")),
+            slot!(i => "u_d" S),
+            slot!(i => "r" S " × d̂"),
+            Some(slot!(i => "{r" N "} × {d}")),
+            Some(slot!(i => "torque" N)),
         );
         b.f(
-            &format!("Δθ̇_d{s}"),
-            &format!("I{s}⁻¹ u_d{s}"),
-            Some(&format!("{{inverse_inertia_world{n}}} {{torque{n}}}")),
-            Some(&format!("rotation{n}")),
+            slot!(i => "Δθ̇_d" S),
+            slot!(i => "I" S "⁻¹ u_d" S),
+            Some(slot!(i => "{inverse_inertia_world" N "} {torque" N "}")),
+            Some(slot!(i => "rotation" N)),
         );
         b.f(
-            &format!("Δq̇{s}"),
-            &format!("Δθ̇_d{s} × r{s}"),
-            Some(&format!("{{rotation{n}}} × {{r{n}}}")),
-            Some(&format!("velocity{n}")),
+            slot!(i => "Δq̇" S),
+            slot!(i => "Δθ̇_d" S " × r" S),
+            Some(slot!(i => "{rotation" N "} × {r" N "}")),
+            Some(slot!(i => "velocity" N)),
         );
         b.f(
-            &format!("Δq̇_d{s}"),
-            &format!("Δq̇{s} · d̂"),
-            Some(&format!("{{velocity{n}}} · {{d}}")),
-            Some(&format!("angular{n}")),
+            slot!(i => "Δq̇_d" S),
+            slot!(i => "Δq̇" S " · d̂"),
+            Some(slot!(i => "{velocity" N "} · {d}")),
+            Some(slot!(i => "angular" N)),
         );
-        total_parts.push(format!("{{angular{n}}}"));
+        total_parts.push(slot!(i => "{angular" N "}"));
         if through_centre(&c.r(i), &d) {
             b.note(format!(
                 "For {} the normal passes through the centre of mass (r × d̂ ≈ 0), so the angular term is zero: only the linear term resists the impulse.",
@@ -74,7 +76,7 @@ pub fn unit_impulse(c: &SolvedContact) -> Step {
     b.f(
         "Δq̇_t",
         "Δṗ_d + Σ Δq̇_dᵢ",
-        Some(&total_parts.join(" + ")),
+        Some(total_parts.join(" + ")),
         Some("total"),
     );
     for i in c.immovable_named() {
@@ -92,40 +94,37 @@ pub fn unit_impulse(c: &SolvedContact) -> Step {
 /// The friction matrix M = Cᵀ (Σ -[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙.
 fn matrix(c: &SolvedContact, b: &mut B, m: nalgebra::Matrix3<f64>) {
     for i in c.movable() {
-        let n = i + 1;
-        let r = c.solution.unit.bodies[i].as_ref().expect("movable");
-        let s = SUB[i];
-        b.value(format!("skew_r{n}"), r.skew_r);
-        b.f(&format!("[r{s}]×"), "", None, Some(&format!("skew_r{n}")));
-        if let Some(a) = r.angular_matrix_world {
-            b.value(format!("angular_matrix_world{n}"), a);
-            b.f(
-                &format!("-[r{s}]× I{s}⁻¹ [r{s}]×"),
-                "",
-                Some(&format!(
-                    "-{{skew_r{n}}} {{inverse_inertia_world{n}}} {{skew_r{n}}}"
-                )),
-                Some(&format!("angular_matrix_world{n}")),
-            );
-        }
+        // `[r]×` and `-[r]× I⁻¹ [r]×` from the body, by the functions the
+        // stage summed into M (the record keeps only M).
+        let skew_r = skew(&c.r(i));
+        let angular = angular_matrix(&skew_r, &c.body(i).inverse_inertia_world());
+        b.value(slot!(i => "skew_r" N), skew_r);
+        b.f(
+            slot!(i => "[r" S "]×"),
+            "",
+            None::<&str>,
+            Some(slot!(i => "skew_r" N)),
+        );
+        b.value(slot!(i => "angular_matrix_world" N), angular);
+        b.f(
+            slot!(i => "-[r" S "]× I" S "⁻¹ [r" S "]×"),
+            "",
+            Some(slot!(i => "-{skew_r" N "} {inverse_inertia_world" N "} {skew_r" N "}")),
+            Some(slot!(i => "angular_matrix_world" N)),
+        );
     }
     b.value("matrix", m);
     b.input("contact_to_world", c.solution.frame.contact_to_world);
     let sum = c
         .movable()
-        .into_iter()
-        .filter(|&i| {
-            let r = c.solution.unit.bodies[i].as_ref().expect("movable");
-            r.angular_matrix_world.is_some()
-        })
-        .map(|i| format!("{{angular_matrix_world{}}}", i + 1))
+        .map(|i| slot!(i => "{angular_matrix_world" N "}"))
         .collect::<Vec<_>>()
         .join(" + ");
     let sum = if sum.is_empty() { "0".to_string() } else { sum };
     b.f(
         "M",
         "Cᵀ (Σ -[rᵢ]× Iᵢ⁻¹ [rᵢ]×) C + (Σ 1/mᵢ) 𝟙",
-        Some(&format!(
+        Some(format!(
             "{{contact_to_world}}ᵀ ({sum}) {{contact_to_world}} + {{linear}} 𝟙"
         )),
         Some("matrix"),

@@ -79,6 +79,20 @@ pub fn friction_clamp<T: Real>(
     desired: &DesiredVelocity<T>,
     impulse: &Impulse<T>,
 ) -> FrictionClamp<T> {
+    let factored = unit.matrix.map(FactoredMatrix::new);
+    friction_clamp_factored(problem, frame, unit, desired, impulse, factored.as_ref())
+}
+
+/// [`friction_clamp`] with `M` already factored (the stage path factors it
+/// once for the impulse and the clamp).
+pub fn friction_clamp_factored<T: Real>(
+    problem: &Problem<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    impulse: &Impulse<T>,
+    factored: Option<&FactoredMatrix<T>>,
+) -> FrictionClamp<T> {
     let contact = &problem.contact;
     clamp(ClampInputs {
         model: contact.friction_model,
@@ -88,7 +102,7 @@ pub fn friction_clamp<T: Real>(
         contact_velocity: desired.contact_velocity,
         desired: desired.desired,
         total: unit.total,
-        matrix: unit.matrix.map(FactoredMatrix::with_condition).as_ref(),
+        matrix: factored,
         closed_form_j: impulse.closed_form_j,
         contact_to_world: &frame.contact_to_world,
     })

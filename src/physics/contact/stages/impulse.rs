@@ -15,7 +15,10 @@ use crate::physics::{c, FrictionModel, Problem, Real};
 #[derive(Debug, Clone, PartialEq)]
 pub struct MatrixSolve<T: Real> {
     pub rhs: Vector3<T>,
-    /// κ(M) = λ_max / λ_min (M is symmetric positive-definite).
+    /// The factor's κ(M): the upper bound `‖M‖_F ‖M⁻¹‖_F` (at most 3κ) where
+    /// it already shows κ·ε < 1e-3, else the exact λ_max / λ_min. The
+    /// exact κ that the trace and the causes show is [`condition_number`]
+    /// of M, computed where it is shown (the stage path skips the eigenvalues).
     pub condition_number: T,
     /// True when κ·ε exceeds 1e-3: fewer than three digits of g can be trusted.
     pub ill_conditioned: bool,
@@ -76,17 +79,22 @@ impl<T: Real> PartialEq for FactoredMatrix<T> {
     }
 }
 
+/// κ(M) = λ_max / λ_min of a symmetric `M` (its symmetric eigenvalues; the
+/// largest float when λ_min ≤ 0).
+pub fn condition_number<T: Real>(m: &Matrix3<T>) -> T {
+    let eig = m.symmetric_eigenvalues();
+    let (lo, hi) = (eig.min(), eig.max());
+    if lo > T::zero() {
+        hi / lo
+    } else {
+        T::max_value().unwrap_or(hi)
+    }
+}
+
 impl<T: Real> FactoredMatrix<T> {
     /// Factors `m` with its exact condition number (symmetric eigenvalues).
     pub fn with_condition(m: Matrix3<T>) -> Self {
-        let eig = m.symmetric_eigenvalues();
-        let (lo, hi) = (eig.min(), eig.max());
-        let condition_number = if lo > T::zero() {
-            hi / lo
-        } else {
-            T::max_value().unwrap_or(hi)
-        };
-        Self::factor(m, condition_number)
+        Self::factor(m, condition_number(&m))
     }
 
     /// Factors `m` for solving only: when `‖M‖_F ‖M⁻¹‖_F` (at most 3κ for a
@@ -250,12 +258,33 @@ pub fn impulse_with<T: Real>(
     unit: &UnitImpulse<T>,
     desired: &DesiredVelocity<T>,
 ) -> Impulse<T> {
+    let factored = unit.matrix.map(FactoredMatrix::new);
+    impulse_factored(
+        problem,
+        inverse_inertias,
+        frame,
+        unit,
+        desired,
+        factored.as_ref(),
+    )
+}
+
+/// [`impulse_with`] with `M` already factored (the stage path factors it
+/// once for the impulse and the friction clamp).
+pub fn impulse_factored<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    factored: Option<&FactoredMatrix<T>>,
+) -> Impulse<T> {
     let normal_only = Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
     let (impulse_contact, solve) = impulse_contact(
         desired.desired,
         &desired.contact_velocity,
         unit.total,
-        unit.matrix.map(FactoredMatrix::with_condition).as_ref(),
+        factored,
         sticking_model(&problem.contact),
     );
     let closed_form_j = closed_form_j_with(problem, inverse_inertias, frame, desired);

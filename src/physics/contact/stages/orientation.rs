@@ -13,6 +13,12 @@ pub struct BodyOrientation<T: Real> {
     pub rotation: Vector3<T>,
     pub unnormalised: Quaternion<T>,
     pub normalised: Quaternion<T>,
+}
+
+/// The turn an orientation update makes, in degrees: what the trace shows
+/// of it (computed there, from the record, never on the stage path).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Turn<T: Real> {
     /// Angle of the rotation from `before` to `normalised`, in degrees (≥ 0).
     pub angle_degrees: T,
     /// Unit axis of that rotation (zero when there is none).
@@ -21,6 +27,27 @@ pub struct BodyOrientation<T: Real> {
     pub rotation_vector_degrees: T,
     /// Tait–Bryan angles of the new orientation, intrinsic z-y′-x″ (yaw, pitch, roll), degrees.
     pub euler_zyx_degrees: Vector3<T>,
+}
+
+impl<T: Real> BodyOrientation<T> {
+    /// The turn from `before` to `normalised`: `δ = θ′ θ⁻¹` as angle and
+    /// axis, `|Δθ|`, and the new orientation's Euler angles, in degrees.
+    pub fn turn(&self) -> Turn<T> {
+        let degrees = c::<T>(180.0) / T::pi();
+        let unit = UnitQuaternion::new_unchecked(self.normalised);
+        let delta = unit * UnitQuaternion::new_normalize(self.before).inverse();
+        let (axis, angle) = delta
+            .axis_angle()
+            .map(|(a, ang)| (a.into_inner(), ang))
+            .unwrap_or((Vector3::zeros(), T::zero()));
+        let (roll, pitch, yaw) = unit.euler_angles();
+        Turn {
+            angle_degrees: angle * degrees,
+            axis,
+            rotation_vector_degrees: stable_norm(&self.rotation) * degrees,
+            euler_zyx_degrees: Vector3::new(yaw, pitch, roll) * degrees,
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -38,7 +65,6 @@ pub fn orientation_update<T: Real>(
     problem: &Problem<T>,
     projection: &Projection<T>,
 ) -> OrientationUpdate<T> {
-    let degrees = c::<T>(180.0) / T::pi();
     let bodies = [0, 1].map(|i| {
         let body = problem.bodies[i].as_ref()?;
         let moved = projection.bodies[i].as_ref()?;
@@ -47,22 +73,11 @@ pub fn orientation_update<T: Real>(
         }
         let before = body.orientation;
         let unnormalised = add_scaled_rotation(&before, &moved.angular_change);
-        let unit = UnitQuaternion::new_normalize(unnormalised);
-        let delta = unit * UnitQuaternion::new_normalize(before).inverse();
-        let (axis, angle) = delta
-            .axis_angle()
-            .map(|(a, ang)| (a.into_inner(), ang))
-            .unwrap_or((Vector3::zeros(), T::zero()));
-        let (roll, pitch, yaw) = unit.euler_angles();
         Some(BodyOrientation {
             before,
             rotation: moved.angular_change,
             unnormalised,
-            normalised: unit.into_inner(),
-            angle_degrees: angle * degrees,
-            axis,
-            rotation_vector_degrees: stable_norm(&moved.angular_change) * degrees,
-            euler_zyx_degrees: Vector3::new(yaw, pitch, roll) * degrees,
+            normalised: UnitQuaternion::new_normalize(unnormalised).into_inner(),
         })
     });
     OrientationUpdate { bodies }

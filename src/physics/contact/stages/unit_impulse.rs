@@ -9,12 +9,13 @@ use crate::physics::contact::problem::InverseInertias;
 use crate::physics::frame::skew;
 use crate::physics::{Problem, Real};
 
-/// One body's response to a unit impulse along d.
+/// One body's response to a unit impulse along d. Its world inverse inertia
+/// `R I_b⁻¹ Rᵀ` and its part `-[r]× I⁻¹ [r]×` of the friction matrix are not
+/// kept: the trace, which shows them, takes them from the body (the same
+/// functions, the same numbers); only their sum `M` is kept.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyUnitResponse<T: Real> {
     pub inverse_mass: T,
-    /// World inverse inertia `R I_b⁻¹ Rᵀ`.
-    pub inverse_inertia_world: Matrix3<T>,
     /// `u = r × d`, impulsive torque per unit impulse.
     pub torque_per_unit_impulse: Vector3<T>,
     /// `Δθ̇ = I⁻¹ u`, rotation per unit impulse.
@@ -23,10 +24,6 @@ pub struct BodyUnitResponse<T: Real> {
     pub velocity_per_unit_impulse: Vector3<T>,
     /// `Δq̇ · d`, the angular component along the normal.
     pub angular: T,
-    /// `[r]×`, shown with the friction matrix.
-    pub skew_r: Matrix3<T>,
-    /// `-[r]× I⁻¹ [r]×` in world space (friction only).
-    pub angular_matrix_world: Option<Matrix3<T>>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -83,32 +80,25 @@ pub fn total_per_unit_impulse<T: Real>(bodies: &[Option<(T, T)>; 2]) -> (T, T) {
 }
 
 /// One body's response to a unit impulse along `d`, from its inverse mass,
-/// world inverse inertia and arm `r` (the resolver calls this with the values
-/// it prepared).
+/// world inverse inertia and arm `r`.
 pub fn body_unit_response<T: Real>(
     inverse_mass: T,
-    inverse_inertia_world: Matrix3<T>,
-    r: Vector3<T>,
+    inverse_inertia_world: &Matrix3<T>,
+    r: &Vector3<T>,
     d: &Vector3<T>,
-    with_matrix: bool,
 ) -> BodyUnitResponse<T> {
     let AngularResponse {
         torque,
         rotation,
         velocity,
         angular,
-    } = angular_response(&inverse_inertia_world, &r, d);
-    let skew_r = skew(&r);
-    let angular_matrix_world = with_matrix.then(|| angular_matrix(&skew_r, &inverse_inertia_world));
+    } = angular_response(inverse_inertia_world, r, d);
     BodyUnitResponse {
         inverse_mass,
-        inverse_inertia_world,
         torque_per_unit_impulse: torque,
         rotation_per_unit_impulse: rotation,
         velocity_per_unit_impulse: velocity,
         angular,
-        skew_r,
-        angular_matrix_world,
     }
 }
 
@@ -129,49 +119,6 @@ pub fn contact_matrix<T: Real>(
 ) -> Matrix3<T> {
     let c = contact_to_world;
     c.transpose() * angular_world * c + Matrix3::identity() * linear
-}
-
-/// The two bodies' responses summed: `Δq̇_t` and, with friction, the
-/// contact-space matrix `M = Cᵀ(Σ -[r]× I⁻¹ [r]×)C + (Σ 1/m)·𝟙`.
-pub fn combine_unit_responses<T: Real>(
-    bodies: [Option<BodyUnitResponse<T>>; 2],
-    contact_to_world: &Matrix3<T>,
-    with_matrix: bool,
-) -> UnitImpulse<T> {
-    let mut unit = UnitImpulse {
-        bodies,
-        linear: T::zero(),
-        total: T::zero(),
-        matrix: None,
-    };
-    sum_unit_responses(&mut unit, contact_to_world, with_matrix);
-    unit
-}
-
-/// [`combine_unit_responses`] on the responses already in `unit.bodies`
-/// (nothing is moved: the sums are written beside them).
-fn sum_unit_responses<T: Real>(
-    unit: &mut UnitImpulse<T>,
-    contact_to_world: &Matrix3<T>,
-    with_matrix: bool,
-) {
-    let bodies = &unit.bodies;
-    let (linear, total) = total_per_unit_impulse(
-        &bodies
-            .each_ref()
-            .map(|b| b.as_ref().map(|b| (b.inverse_mass, b.angular))),
-    );
-    let matrix = with_matrix.then(|| {
-        let world = bodies
-            .iter()
-            .flatten()
-            .filter_map(|b| b.angular_matrix_world)
-            .fold(Matrix3::zeros(), |s, m| s + m);
-        contact_matrix(&world, contact_to_world, linear)
-    });
-    unit.linear = linear;
-    unit.total = total;
-    unit.matrix = matrix;
 }
 
 pub fn unit_impulse<T: Real>(
@@ -198,20 +145,35 @@ pub fn unit_impulse_with<T: Real>(
         total: T::zero(),
         matrix: None,
     };
+    // Σ -[rᵢ]× Iᵢ⁻¹ [rᵢ]× in world space, body 1 first (friction only).
+    let mut angular_world = Matrix3::zeros();
     for (i, slot) in unit.bodies.iter_mut().enumerate() {
-        let (Some(body), Some(r), Some(inverse_inertia)) =
-            (problem.bodies[i].as_ref(), frame.r[i], inverse_inertias[i])
-        else {
+        let (Some(body), Some(r), Some(inverse_inertia)) = (
+            problem.bodies[i].as_ref(),
+            frame.r[i],
+            inverse_inertias[i].as_ref(),
+        ) else {
             continue;
         };
         *slot = Some(body_unit_response(
             body.inverse_mass,
             inverse_inertia,
-            r,
+            &r,
             &d,
-            with_matrix,
         ));
+        if with_matrix {
+            angular_world += angular_matrix(&skew(&r), inverse_inertia);
+        }
     }
-    sum_unit_responses(&mut unit, &frame.contact_to_world, with_matrix);
+    let (linear, total) = total_per_unit_impulse(
+        &unit
+            .bodies
+            .each_ref()
+            .map(|b| b.as_ref().map(|b| (b.inverse_mass, b.angular))),
+    );
+    unit.linear = linear;
+    unit.total = total;
+    unit.matrix =
+        with_matrix.then(|| contact_matrix(&angular_world, &frame.contact_to_world, linear));
     unit
 }
