@@ -36,10 +36,13 @@ fn close_m(a: &Matrix3<f64>, b: &Matrix3<f64>, what: &str, k: usize) {
 /// Returns (contacts, contacts with friction, sliding contacts).
 fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize) {
     let full = Resolver::prepare(world, params);
-    // `prepare_again` on a resolver that held another world: the lean path.
-    let mut empty = world.clone();
-    empty.contacts.clear();
-    let mut lean = Resolver::prepare(&empty, params);
+    // `prepare_again` (the lean path) on a resolver that held this world
+    // under deepest-first (friction matrices factored, storage this size).
+    let deepest_first = ResolverParams {
+        solver: Solver::DeepestFirst,
+        ..*params
+    };
+    let mut lean = Resolver::prepare(world, &deepest_first);
     lean.prepare_again(world, params);
     assert_eq!(lean.bodies, full.bodies);
     assert_eq!(lean.contacts.len(), full.contacts.len());

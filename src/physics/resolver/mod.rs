@@ -145,6 +145,10 @@ impl<T: Real> Resolver<T> {
         if params.solver != Solver::SequentialImpulse {
             return self.prepare_full_again(world, params);
         }
+        if self.params.solver != Solver::SequentialImpulse {
+            // Factored by a deepest-first prepare: the lean one keeps only unfactored entries.
+            self.friction.clear();
+        }
         let mut prepared = self.take_prepared();
         sequential::lean::prepare(
             world,

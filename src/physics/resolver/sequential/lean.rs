@@ -70,13 +70,12 @@ pub fn prepare<T: Real>(
     solver_bodies(bodies, solver);
     let world_slot = bodies.len();
     let n = world.contacts.len();
-    friction.clear();
+    // Friction entries of the last prepare are overwritten where they lie
+    // (the caller clears entries a deepest-first prepare factored).
+    let mut frictions = 0;
     setups.clear();
     contacts.clear();
     all_rows.resize(n, Rows::empty());
-    // Sequential impulses never factor `M` (the rows hold `M⁻¹`): one
-    // unfactored value, cloned for each contact with friction.
-    let unfactored = FactoredMatrix::for_inverse(Matrix3::zeros());
     contacts.reserve(n);
     setups.reserve(n);
     for (contact, rows) in world.contacts.iter().zip(all_rows.iter_mut()) {
@@ -167,9 +166,6 @@ pub fn prepare<T: Real>(
             let m = rows.angular[0].tr_mul(&rows.turn[0])
                 + rows.angular[1].tr_mul(&rows.turn[1])
                 + Matrix3::from_diagonal_element(linear);
-            // Kept for the reports; not factored (the rows hold M⁻¹).
-            let mut matrix = unfactored.clone();
-            matrix.matrix = m;
             rows.friction = true;
             rows.sliding = slip > slip_speed;
             rows.mu = if rows.sliding {
@@ -181,13 +177,23 @@ pub fn prepare<T: Real>(
             if let Some(m_inv) = symmetric_inverse(&m) {
                 rows.inverse = m_inv;
             }
-            friction.push(FrictionData {
-                model: input.friction_model,
-                static_friction: input.static_friction,
-                dynamic_friction: input.dynamic_friction,
-                matrix,
-            });
-            friction.len() - 1
+            // `M` kept for the reports; never factored (the rows hold `M⁻¹`).
+            let f = frictions;
+            frictions += 1;
+            if f == friction.len() {
+                friction.push(FrictionData {
+                    model: input.friction_model,
+                    static_friction: input.static_friction,
+                    dynamic_friction: input.dynamic_friction,
+                    matrix: FactoredMatrix::for_inverse(Matrix3::zeros()),
+                });
+            }
+            let data = &mut friction[f];
+            data.model = input.friction_model;
+            data.static_friction = input.static_friction;
+            data.dynamic_friction = input.dynamic_friction;
+            data.matrix.matrix = m;
+            f
         });
         let mut c = ResolverContact {
             penetration: input.penetration,
@@ -217,6 +223,7 @@ pub fn prepare<T: Real>(
         });
         contacts.push(c);
     }
+    friction.truncate(frictions);
     adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
     accumulated.clear();
     accumulated.resize(n, Vector3::zeros());
