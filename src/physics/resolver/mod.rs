@@ -132,24 +132,68 @@ impl<T: Real> Resolver<T> {
             before: [T::zero(); 2],
             sequential: sequential::State::default(),
         };
-        r.prepare_again(world, params);
+        r.prepare_full_again(world, params);
         r
     }
 
     /// Prepares `world` again in this resolver's storage: once it has held a
     /// world this size, nothing is allocated (as an engine resolving every
-    /// frame would run it).
+    /// frame would run it). Sequential impulses take the lean prepare
+    /// ([`sequential::lean`]: contacts and rows in one pass, the same bits as
+    /// [`Resolver::prepare_full_again`]).
     pub fn prepare_again(&mut self, world: &World<T>, params: &ResolverParams) {
-        let mut prepared = prepare::Prepared {
+        if params.solver != Solver::SequentialImpulse {
+            return self.prepare_full_again(world, params);
+        }
+        if self.params.solver != Solver::SequentialImpulse {
+            // Factored by a deepest-first prepare: the lean one keeps only unfactored entries.
+            self.friction.clear();
+        }
+        let mut prepared = self.take_prepared();
+        sequential::lean::prepare(
+            world,
+            params.restitution_from,
+            c(params.slip()),
+            &mut prepared,
+            &mut self.sequential,
+        );
+        self.put_prepared(prepared, params);
+    }
+
+    /// [`Resolver::prepare_again`] the full way for either solver: every
+    /// contact with the single-contact stages' functions, then (sequential
+    /// impulses) the rows from the prepared contacts. What [`Resolver::prepare`]
+    /// (the lessons' traces) builds.
+    pub fn prepare_full_again(&mut self, world: &World<T>, params: &ResolverParams) {
+        let mut prepared = self.take_prepared();
+        let inverse_only = params.solver == Solver::SequentialImpulse;
+        prepare::prepare_into(world, params.restitution_from, inverse_only, &mut prepared);
+        self.put_prepared(prepared, params);
+        if params.solver == Solver::SequentialImpulse {
+            self.sequential.prepare(
+                &self.contacts,
+                &self.setups,
+                &self.bodies,
+                &mut self.friction,
+                c(params.slip()),
+            );
+        }
+    }
+
+    /// The prepared storage, taken to be filled again.
+    fn take_prepared(&mut self) -> prepare::Prepared<T> {
+        prepare::Prepared {
             bodies: std::mem::take(&mut self.bodies),
             contacts: std::mem::take(&mut self.contacts),
             setups: std::mem::take(&mut self.setups),
             friction: std::mem::take(&mut self.friction),
             adjacency: std::mem::take(&mut self.adjacency),
             index: std::mem::take(&mut self.index),
-        };
-        let inverse_only = params.solver == Solver::SequentialImpulse;
-        prepare::prepare_into(world, params.restitution_from, inverse_only, &mut prepared);
+        }
+    }
+
+    /// Puts `prepared` back and sizes the phases' scratch for it.
+    fn put_prepared(&mut self, prepared: prepare::Prepared<T>, params: &ResolverParams) {
         let n = prepared.contacts.len();
         self.bodies = prepared.bodies;
         self.contacts = prepared.contacts;
@@ -174,15 +218,6 @@ impl<T: Real> Resolver<T> {
         self.stamps.resize(n, 0);
         self.stamp = 0;
         self.before = [T::zero(); 2];
-        if params.solver == Solver::SequentialImpulse {
-            self.sequential.prepare(
-                &self.contacts,
-                &self.setups,
-                &self.bodies,
-                &mut self.friction,
-                c(params.slip()),
-            );
-        }
     }
 
     /// Runs the position phase (the solver of the params; `implementation`

@@ -183,7 +183,7 @@ pub fn desired_of<T: Real>(c: &ResolverContact<T>, from: RestitutionFrom) -> T {
 
 /// `g/Δt` of a contact with a gap `g = -penetration > 0` in a step that
 /// asks for speculative contacts, else zero.
-fn gap_speed<T: Real>(world: &World<T>, penetration: T) -> T {
+pub(crate) fn gap_speed<T: Real>(world: &World<T>, penetration: T) -> T {
     let dt = world.step.duration;
     if world.step.speculative && penetration < T::zero() && dt > T::zero() {
         -penetration / dt
@@ -218,6 +218,33 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom) -> Prepared<T> 
     prepared
 }
 
+/// The movable bodies of `world` into `bodies` (each body's world inverse
+/// inertia `R I_b⁻¹ Rᵀ` once, shared by all its contacts) and the world body
+/// → resolver body map into `index`.
+pub fn prepare_bodies<T: Real>(
+    world: &World<T>,
+    bodies: &mut Vec<ResolverBody<T>>,
+    index: &mut Vec<Option<usize>>,
+) {
+    index.clear();
+    index.resize(world.bodies.len(), None);
+    bodies.clear();
+    for (i, body) in world.bodies.iter().enumerate() {
+        if let Some(b) = body.dynamic() {
+            index[i] = Some(bodies.len());
+            bodies.push(ResolverBody {
+                id: BodyId(i),
+                inverse_mass: b.inverse_mass,
+                inverse_inertia_world: b.inverse_inertia_world(),
+                position: b.position,
+                orientation: b.orientation,
+                velocity: b.velocity,
+                angular_velocity: b.angular_velocity,
+            });
+        }
+    }
+}
+
 /// Prepares `world` into `out`, reusing its storage: nothing is allocated
 /// when it already holds a world this size (as an engine resolving every
 /// frame would use it).
@@ -241,23 +268,7 @@ pub fn prepare_into<T: Real>(
         adjacency,
         index,
     } = out;
-    index.clear();
-    index.resize(world.bodies.len(), None);
-    bodies.clear();
-    for (i, body) in world.bodies.iter().enumerate() {
-        if let Some(b) = body.dynamic() {
-            index[i] = Some(bodies.len());
-            bodies.push(ResolverBody {
-                id: BodyId(i),
-                inverse_mass: b.inverse_mass,
-                inverse_inertia_world: b.inverse_inertia_world(),
-                position: b.position,
-                orientation: b.orientation,
-                velocity: b.velocity,
-                angular_velocity: b.angular_velocity,
-            });
-        }
-    }
+    prepare_bodies(world, bodies, index);
     friction.clear();
     setups.clear();
     contacts.clear();

@@ -11,6 +11,7 @@
 //! iterations: a limit of 8 × contacts is 8 sweeps. A phase stops early when a
 //! whole sweep changes nothing by more than its epsilon.
 
+pub mod lean;
 pub mod position;
 pub mod rows;
 pub mod velocity;

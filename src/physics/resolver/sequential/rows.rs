@@ -58,6 +58,44 @@ pub struct Rows<T: Real> {
 }
 
 impl<T: Real> Rows<T> {
+    /// Rows of nothing (both slots the world's entry 0, every number zero).
+    pub fn empty() -> Self {
+        Rows {
+            bodies: [0; 2],
+            basis: Matrix3::zeros(),
+            angular: [Matrix3::zeros(); 2],
+            inverse_mass: [T::zero(); 2],
+            turn: [Matrix3::zeros(); 2],
+            inverse: Matrix3::zeros(),
+            normal_row: Vector3::zeros(),
+            offset: Vector3::zeros(),
+            bounce: T::zero(),
+            mu: T::zero(),
+            friction: false,
+            sliding: false,
+            unit_total: T::zero(),
+        }
+    }
+
+    /// Sets every field in place for a contact with basis `basis` and no
+    /// bodies yet (`world`: the world's solver body).
+    #[inline(always)]
+    pub fn reset(&mut self, world: usize, basis: Matrix3<T>) {
+        self.bodies = [world; 2];
+        self.basis = basis;
+        self.angular = [Matrix3::zeros(); 2];
+        self.inverse_mass = [T::zero(); 2];
+        self.turn = [Matrix3::zeros(); 2];
+        self.inverse = Matrix3::zeros();
+        self.normal_row = Vector3::zeros();
+        self.offset = Vector3::zeros();
+        self.bounce = T::zero();
+        self.mu = T::zero();
+        self.friction = false;
+        self.sliding = false;
+        self.unit_total = T::zero();
+    }
+
     /// The contact velocity the solver bodies give now, contact space.
     #[inline(always)]
     pub fn velocity(&self, bodies: &[SolverBody<T>]) -> Vector3<T> {

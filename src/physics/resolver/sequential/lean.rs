@@ -1,0 +1,234 @@
+//! The lean prepare of sequential impulses: every contact's bookkeeping
+//! ([`ResolverContact`]), what its projection reads ([`ContactSetup`]) and
+//! its Jacobian rows ([`Rows`]) in ONE pass per contact, from the contact
+//! and its bodies' world inverse inertia (computed once per body per step).
+//!
+//! The full path ([`super::super::prepare::prepare_into`], then
+//! [`super::rows::build`]) builds the contact first and its rows after,
+//! partly from the contact: `r × d` twice, `I⁻¹(r × d)` twice, and the
+//! stages' optional per-slot arrays. Here each slot's arm rows
+//! `A = [r × d, r × t₀, r × t₁]` are built once; the projection's
+//! `I⁻¹(r × d)` is the first column of `T = I⁻¹ A` and its angular inertia
+//! `((I⁻¹(r × d)) × r)·d` (the lecture's nonlinear projection) is read from
+//! it. The operations on every number are those of the full path, in the
+//! same order, so both give the same bits (`tests/physics/lean_prepare.rs`).
+//!
+//! What only the deepest-first order reads (the friction matrix factored
+//! with a condition number) is not built.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::super::prepare::{desired_of, gap_speed, prepare_bodies, Prepared};
+use super::super::{ContactSetup, FrictionData, ResolverContact};
+use super::rows::{solver_bodies, symmetric_inverse, Rows};
+use super::State;
+use crate::physics::params::RestitutionFrom;
+use crate::physics::stages::desired_velocity::{
+    acceleration_terms, applied_restitution, relative_acceleration,
+};
+use crate::physics::stages::impulse::FactoredMatrix;
+use crate::physics::stages::projection::{projection_inertia_from, total_projection_inertia};
+use crate::physics::stages::unit_impulse::{total_per_unit_impulse, AngularResponse};
+use crate::physics::{Real, World};
+
+/// `[r × d, r × t₀, r × t₁]`, each column `r ×` the basis column.
+#[inline(always)]
+fn arm_rows<T: Real>(r: &Vector3<T>, basis: &Matrix3<T>) -> Matrix3<T> {
+    Matrix3::from_columns(&[
+        r.cross(&basis.column(0).into_owned()),
+        r.cross(&basis.column(1).into_owned()),
+        r.cross(&basis.column(2).into_owned()),
+    ])
+}
+
+/// Prepares `world` for sequential impulses into `out` and `state` (storage
+/// reused; nothing allocated once it has held a world this size).
+/// `slip_speed`: the stick/slip threshold.
+pub fn prepare<T: Real>(
+    world: &World<T>,
+    from: RestitutionFrom,
+    slip_speed: T,
+    out: &mut Prepared<T>,
+    state: &mut State<T>,
+) {
+    let Prepared {
+        bodies,
+        contacts,
+        setups,
+        friction,
+        adjacency,
+        index,
+    } = out;
+    prepare_bodies(world, bodies, index);
+    let State {
+        accumulated,
+        pushed,
+        rows: all_rows,
+        solver,
+        warm,
+    } = state;
+    solver_bodies(bodies, solver);
+    let world_slot = bodies.len();
+    let n = world.contacts.len();
+    // Friction entries of the last prepare are overwritten where they lie
+    // (the caller clears entries a deepest-first prepare factored).
+    let mut frictions = 0;
+    setups.clear();
+    contacts.clear();
+    all_rows.resize(n, Rows::empty());
+    contacts.reserve(n);
+    setups.reserve(n);
+    for (contact, rows) in world.contacts.iter().zip(all_rows.iter_mut()) {
+        let input = &contact.input;
+        let slots = contact.slots().map(|id| index[id?.0]);
+        // Contact frame (stage 1): basis and arms.
+        let (basis, _) = crate::physics::frame::contact_basis(&input.normal);
+        let d = input.normal;
+        let with_friction = input.has_friction();
+        // Written field by field where it lies (no 500-byte copy per contact).
+        rows.reset(world_slot, basis);
+        let mut r = [Vector3::zeros(); 2];
+        let mut projection = [None, None];
+        let mut unit = [None; 2];
+        let mut point_velocity = Vector3::zeros();
+        let mut acceleration = [None; 2];
+        for (i, slot) in slots.iter().enumerate() {
+            let Some(b) = *slot else { continue };
+            let body = &bodies[b];
+            let arm = input.point - body.position;
+            // The Jacobian's angular rows and Δω per unit impulse, once.
+            let rows_of_arm = arm_rows(&arm, &basis);
+            let turn = body.inverse_inertia_world * rows_of_arm;
+            // Velocity change per unit impulse along d (stage 2): I⁻¹(r × d)
+            // is T's first column; the projection's angular inertia is the same.
+            let torque = rows_of_arm.column(0).into_owned();
+            let rotation = turn.column(0).into_owned();
+            let velocity = rotation.cross(&arm);
+            let response = AngularResponse {
+                torque,
+                rotation,
+                velocity,
+                angular: velocity.dot(&d),
+            };
+            projection[i] = Some(projection_inertia_from(
+                body.inverse_mass,
+                &response,
+                &arm,
+                &d,
+                &input.settings,
+            ));
+            unit[i] = Some((body.inverse_mass, response.angular));
+            // v + ω × r (stage 3), body 2's subtracted.
+            let state = &world.bodies[body.id.0].state;
+            let point = state.point_velocity(&arm);
+            acceleration[i] = Some(state.acceleration);
+            rows.bodies[i] = b;
+            if i == 0 {
+                point_velocity = point;
+                rows.inverse_mass[0] = body.inverse_mass;
+                rows.angular[0] = rows_of_arm;
+                rows.turn[0] = turn;
+            } else {
+                point_velocity -= point;
+                rows.inverse_mass[1] = -body.inverse_mass;
+                rows.angular[1] = -rows_of_arm;
+                rows.turn[1] = -turn;
+            }
+            r[i] = arm;
+        }
+        let (_, unit_total) = total_per_unit_impulse(&unit);
+        rows.unit_total = unit_total;
+        rows.inverse[(0, 0)] = T::one() / unit_total;
+        let acceleration = relative_acceleration(acceleration);
+        let duration = contact.duration.unwrap_or(world.step.duration);
+        let (velocity_from_acceleration, mut planar) =
+            acceleration_terms(&acceleration, &basis, duration);
+        // `Cᵀ(q̇₁ - q̇₂)`: the slip reads it as it is, the bookkeeping
+        // velocity with the planar term added.
+        let bodies_velocity = basis.transpose() * point_velocity;
+        let slip = if with_friction {
+            let (y, z) = (bodies_velocity.y - planar.y, bodies_velocity.z - planar.z);
+            (y * y + z * z).sqrt()
+        } else {
+            T::zero()
+        };
+        if !world.step.anticipate_planar_acceleration {
+            planar = Vector3::zeros();
+        }
+        let velocity = if planar != Vector3::zeros() {
+            bodies_velocity + planar
+        } else {
+            bodies_velocity
+        };
+        let friction_index = with_friction.then(|| {
+            // M = Σ A_iᵀ T_i + Σ m_i⁻¹ 𝟙 (= Cᵀ(Σ -[r_i]× I_i⁻¹ [r_i]×)C + Σ m_i⁻¹ 𝟙).
+            let linear = rows.inverse_mass[0] - rows.inverse_mass[1];
+            let m = rows.angular[0].tr_mul(&rows.turn[0])
+                + rows.angular[1].tr_mul(&rows.turn[1])
+                + Matrix3::from_diagonal_element(linear);
+            rows.friction = true;
+            rows.sliding = slip > slip_speed;
+            rows.mu = if rows.sliding {
+                input.dynamic_friction
+            } else {
+                input.static_friction
+            };
+            rows.normal_row = m.row(0).transpose();
+            if let Some(m_inv) = symmetric_inverse(&m) {
+                rows.inverse = m_inv;
+            }
+            // `M` kept for the reports; never factored (the rows hold `M⁻¹`).
+            let f = frictions;
+            frictions += 1;
+            if f == friction.len() {
+                friction.push(FrictionData {
+                    model: input.friction_model,
+                    static_friction: input.static_friction,
+                    dynamic_friction: input.dynamic_friction,
+                    matrix: FactoredMatrix::for_inverse(Matrix3::zeros()),
+                });
+            }
+            let data = &mut friction[f];
+            data.model = input.friction_model;
+            data.static_friction = input.static_friction;
+            data.dynamic_friction = input.dynamic_friction;
+            data.matrix.matrix = m;
+            f
+        });
+        let mut c = ResolverContact {
+            penetration: input.penetration,
+            desired: T::zero(),
+            bodies: slots,
+            normal: d,
+            r,
+            velocity,
+            basis,
+            initial_velocity: velocity.x,
+            velocity_from_acceleration,
+            restitution: input.restitution,
+            velocity_limit: input.settings.velocity_limit,
+            gap_speed: gap_speed(world, input.penetration),
+        };
+        c.desired = desired_of(&c, from);
+        let (e, _) = applied_restitution(c.initial_velocity, c.restitution, c.velocity_limit);
+        rows.bounce = e * (c.initial_velocity - c.velocity_from_acceleration);
+        rows.offset = c.velocity - rows.velocity(solver);
+        setups.push(ContactSetup {
+            relaxation: input.settings.relaxation,
+            total_inertia: total_projection_inertia(&projection),
+            projection,
+            unit_total,
+            friction: friction_index,
+            slip,
+        });
+        contacts.push(c);
+    }
+    friction.truncate(frictions);
+    adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
+    accumulated.clear();
+    accumulated.resize(n, Vector3::zeros());
+    pushed.clear();
+    pushed.resize(n, T::zero());
+    warm.clear();
+    warm.resize(n, None);
+}

@@ -1,0 +1,159 @@
+//! Sequential impulses' lean prepare (contacts and Jacobian rows in one pass)
+//! against the full path (the single-contact stages, then the rows from the
+//! prepared contacts): every number a phase reads agrees to 1e-12 (and, as
+//! the operations are the same, bit for bit) on lessons and on stepped scenes
+//! (rotated bodies, friction, sliding and sticking contacts, the world).
+
+use contact_lab::lesson::Lesson;
+use contact_lab::physics::resolver::{Implementation, Resolver, Silent};
+use contact_lab::physics::step::Simulation;
+use contact_lab::physics::{ResolverParams, Solver, World};
+use nalgebra::{Matrix3, Vector3};
+
+fn si() -> ResolverParams {
+    ResolverParams {
+        solver: Solver::SequentialImpulse,
+        ..ResolverParams::default()
+    }
+}
+
+fn close(a: f64, b: f64, what: &str, k: usize) {
+    assert!(
+        (a - b).abs() <= 1e-12 * b.abs().max(1.0) || (a.is_nan() && b.is_nan()),
+        "contact {k}, {what}: lean {a:e} against full {b:e}"
+    );
+}
+
+fn close_v(a: &Vector3<f64>, b: &Vector3<f64>, what: &str, k: usize) {
+    a.iter().zip(b).for_each(|(x, y)| close(*x, *y, what, k));
+}
+
+fn close_m(a: &Matrix3<f64>, b: &Matrix3<f64>, what: &str, k: usize) {
+    a.iter().zip(b).for_each(|(x, y)| close(*x, *y, what, k));
+}
+
+/// Prepares `world` both ways; every field the phases and reports read agrees.
+/// Returns (contacts, contacts with friction, sliding contacts).
+fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize) {
+    let full = Resolver::prepare(world, params);
+    // `prepare_again` (the lean path) on a resolver that held this world
+    // under deepest-first (friction matrices factored, storage this size).
+    let deepest_first = ResolverParams {
+        solver: Solver::DeepestFirst,
+        ..*params
+    };
+    let mut lean = Resolver::prepare(world, &deepest_first);
+    lean.prepare_again(world, params);
+    assert_eq!(lean.bodies, full.bodies);
+    assert_eq!(lean.contacts.len(), full.contacts.len());
+    assert_eq!(lean.adjacency, full.adjacency);
+    let (mut with_friction, mut sliding) = (0, 0);
+    for k in 0..full.contacts.len() {
+        let (a, b) = (&lean.contacts[k], &full.contacts[k]);
+        assert_eq!(a.bodies, b.bodies, "contact {k}");
+        close(a.penetration, b.penetration, "penetration", k);
+        close(a.desired, b.desired, "desired", k);
+        close_v(&a.velocity, &b.velocity, "velocity", k);
+        close_m(&a.basis, &b.basis, "basis", k);
+        close(a.initial_velocity, b.initial_velocity, "v0", k);
+        close(a.gap_speed, b.gap_speed, "gap speed", k);
+        for i in 0..2 {
+            close_v(&a.r[i], &b.r[i], "r", k);
+        }
+        let (s, t) = (&lean.setups[k], &full.setups[k]);
+        close(s.total_inertia, t.total_inertia, "total inertia", k);
+        close(s.unit_total, t.unit_total, "Δq̇_t", k);
+        close(s.slip, t.slip, "slip", k);
+        assert_eq!(s.friction, t.friction, "contact {k}");
+        for i in 0..2 {
+            assert_eq!(s.projection[i].is_some(), t.projection[i].is_some());
+            if let (Some(p), Some(q)) = (&s.projection[i], &t.projection[i]) {
+                close(p.angular, q.angular, "angular inertia", k);
+                close(p.linear, q.linear, "linear inertia", k);
+                close_v(&p.rotation_per_unit, &q.rotation_per_unit, "I⁻¹(r×d)", k);
+                close(p.angular_limit, q.angular_limit, "angular limit", k);
+            }
+        }
+        let (x, y) = (&lean.sequential.rows[k], &full.sequential.rows[k]);
+        assert_eq!(x.bodies, y.bodies, "contact {k}");
+        assert_eq!((x.friction, x.sliding), (y.friction, y.sliding));
+        close(x.mu, y.mu, "μ", k);
+        close(x.bounce, y.bounce, "bounce", k);
+        close(x.unit_total, y.unit_total, "rows Δq̇_t", k);
+        close_v(&x.offset, &y.offset, "offset", k);
+        close_v(&x.normal_row, &y.normal_row, "M row 0", k);
+        close_m(&x.inverse, &y.inverse, "M⁻¹", k);
+        for i in 0..2 {
+            close(x.inverse_mass[i], y.inverse_mass[i], "s m⁻¹", k);
+            close_m(&x.angular[i], &y.angular[i], "A", k);
+            close_m(&x.turn[i], &y.turn[i], "I⁻¹A", k);
+        }
+        with_friction += usize::from(y.friction);
+        sliding += usize::from(y.sliding);
+        // The same operations in the same order: the same bits.
+        assert_eq!(x, y, "contact {k}: rows not bit for bit");
+        assert_eq!(a, b, "contact {k}: contact not bit for bit");
+    }
+    for (f, g) in lean.friction.iter().zip(&full.friction) {
+        assert_eq!(f.matrix.matrix, g.matrix.matrix);
+    }
+    // Both resolve to the same bodies.
+    let mut full = full;
+    for r in [&mut lean, &mut full] {
+        r.position_phase(Implementation::Indexed, &mut Silent);
+        r.velocity_phase(Implementation::Indexed, &mut Silent);
+    }
+    assert_eq!(lean.bodies, full.bodies);
+    (full.contacts.len(), with_friction, sliding)
+}
+
+#[test]
+fn the_lean_rows_are_the_full_paths_on_lessons() {
+    let mut totals = (0, 0);
+    for id in [
+        "lecture-1",
+        "lecture-2",
+        "lecture-3",
+        "friction-cube",
+        "two-boxes",
+        "box-stack",
+        "box-four-corners",
+        "spinning-ball",
+    ] {
+        let world = Lesson::load(id).unwrap().world::<f64>();
+        let (n, f, _) = compare(&world, &si());
+        totals = (totals.0 + n, totals.1 + f);
+    }
+    assert!(totals.0 > 10 && totals.1 > 0, "{totals:?}");
+}
+
+#[test]
+fn the_lean_rows_are_the_full_paths_on_stepped_scenes() {
+    let (mut contacts, mut friction, mut sliding) = (0, 0, 0);
+    for id in [
+        "stack-5",
+        "ramp-slide",
+        "ramp-stick",
+        "spinning-edge",
+        "hull-stack",
+    ] {
+        let lesson = Lesson::load(id).unwrap();
+        let mut p = lesson.sim_params().unwrap();
+        p.resolver.solver = Solver::SequentialImpulse;
+        p.resolver.warm_start = true;
+        p.sleep.enabled = false;
+        let mut world = lesson.world::<f64>();
+        world.contacts.clear();
+        let mut sim = Simulation::new(world, p, lesson.simulation.unwrap().materials);
+        for _ in 0..25 {
+            sim.advance().unwrap();
+            let (n, f, s) = compare(&sim.world, &p.resolver);
+            (contacts, friction, sliding) = (contacts + n, friction + f, sliding + s);
+        }
+    }
+    // The scenes gave contacts with friction, and some slid.
+    assert!(
+        contacts > 500 && friction > 100 && sliding > 0,
+        "{contacts} {friction} {sliding}"
+    );
+}
