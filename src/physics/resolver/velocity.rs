@@ -10,7 +10,11 @@ use nalgebra::Vector3;
 
 use super::observer::VelocityImpulse;
 use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
+use crate::physics::params::RestitutionFrom;
 use crate::physics::stages::apply_impulse::{body_velocity_change, BodyVelocityChange};
+use crate::physics::stages::desired_velocity::{
+    applied_restitution, desired_from, desired_toward_bounce,
+};
 use crate::physics::stages::friction::{clamp, ClampInputs};
 use crate::physics::stages::impulse::impulse_contact;
 use crate::physics::stages::FrictionRegime;
@@ -215,4 +219,98 @@ pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>)
 fn to_contact<T: Real>(basis: &nalgebra::Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
     let dot = |k: usize| basis[(0, k)] * v.x + basis[(1, k)] * v.y + basis[(2, k)] * v.z;
     Vector3::new(dot(0), dot(1), dot(2))
+}
+
+/// A neighbour's slot that the taken contact did not change.
+pub const UNCHANGED: u8 = u8::MAX;
+
+/// What a velocity-phase neighbour update reads and writes of one contact,
+/// side by side (the indexed loop's hot data, copied from the contacts at
+/// the phase's start, written back at its end): none of the contact's
+/// other fields, and no body to match (the neighbour table has the slots).
+#[derive(Debug, Clone, Copy)]
+#[repr(C)]
+pub struct VelocityRow<T: Real> {
+    pub velocity: Vector3<T>,
+    pub desired: T,
+    basis: nalgebra::Matrix3<T>,
+    r: [Vector3<T>; 2],
+    velocity_from_acceleration: T,
+    restitution: T,
+    velocity_limit: T,
+    gap_speed: T,
+    initial_velocity: T,
+}
+
+impl<T: Real> VelocityRow<T> {
+    pub fn of(c: &ResolverContact<T>) -> Self {
+        VelocityRow {
+            velocity: c.velocity,
+            desired: c.desired,
+            basis: c.basis,
+            r: c.r,
+            velocity_from_acceleration: c.velocity_from_acceleration,
+            restitution: c.restitution,
+            velocity_limit: c.velocity_limit,
+            gap_speed: c.gap_speed,
+            initial_velocity: c.initial_velocity,
+        }
+    }
+
+    /// [`velocity_after`] and [`super::desired_of`] on the row: the same
+    /// operations in the same order. `slots[s]`: the taken contact's slot
+    /// that changed this contact's slot `s` ([`UNCHANGED`] for none).
+    /// Returns the desired Δv before and after.
+    #[inline(always)]
+    pub fn update(
+        &mut self,
+        slots: [u8; 2],
+        changes: &BodyChanges<T>,
+        from: RestitutionFrom,
+    ) -> (T, T) {
+        let before = self.desired;
+        let mut velocity = self.velocity;
+        if slots[0] != UNCHANGED {
+            let d = usize::from(slots[0] & 1);
+            velocity += to_contact(
+                &self.basis,
+                &(changes.dv[d] + changes.dw[d].cross(&self.r[0])),
+            );
+        }
+        if slots[1] != UNCHANGED {
+            let d = usize::from(slots[1] & 1);
+            velocity -= to_contact(
+                &self.basis,
+                &(changes.dv[d] + changes.dw[d].cross(&self.r[1])),
+            );
+        }
+        self.velocity = velocity;
+        self.desired = self.desired_now(from);
+        (before, self.desired)
+    }
+
+    /// [`super::desired_of`] of the row (velocity limit and speculative gap included).
+    #[inline(always)]
+    fn desired_now(&self, from: RestitutionFrom) -> T {
+        let v = self.velocity.x;
+        let (desired, e) = match from {
+            RestitutionFrom::Current => {
+                let (e, _) = applied_restitution(v, self.restitution, self.velocity_limit);
+                (desired_from(v, e, self.velocity_from_acceleration), e)
+            }
+            RestitutionFrom::Initial => {
+                let v0 = self.initial_velocity;
+                let (e, _) = applied_restitution(v0, self.restitution, self.velocity_limit);
+                (
+                    desired_toward_bounce(v, v0, e, self.velocity_from_acceleration),
+                    e,
+                )
+            }
+        };
+        if self.gap_speed > T::zero() && e == T::zero() {
+            desired - self.gap_speed
+        } else {
+            desired
+        }
+    }
 }
