@@ -151,7 +151,7 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
     let from = r.params.restitution_from;
     let mut rows = std::mem::take(&mut r.velocity_rows);
     rows.clear();
-    rows.extend(r.contacts.iter().map(VelocityRow::of));
+    rows.extend(r.contacts.iter().map(|c| VelocityRow::of(c, from)));
     let mut table = std::mem::take(&mut r.neighbours);
     table.build(r);
     queue.fill(rows.iter().map(|w| w.desired));
@@ -168,7 +168,7 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
         r.changed.clear();
         for n in table.of(k) {
             let j = n.contact as usize;
-            let (before, after) = rows[j].update(n.slots, &change, from);
+            let (before, after) = rows[j].update(n.slots, &change);
             obs.desired_updated(j, before, after);
             if !(before <= epsilon && after <= epsilon) {
                 queue.set(j, after);
