@@ -105,6 +105,10 @@ pub struct Resolver<T: Real> {
     scan_queue: ScanQueue<T>,
     /// The contacts one iteration changed (scratch, sized at prepare).
     changed: Vec<usize>,
+    /// The indexed velocity phase's hot rows (sized at prepare).
+    velocity_rows: Vec<velocity::VelocityRow<T>>,
+    /// Each contact's neighbours, for the indexed velocity phase (sized at prepare).
+    neighbours: indexed::Neighbours,
     stamps: Vec<usize>,
     stamp: usize,
     /// The largest value of each phase before it ran.
@@ -127,6 +131,8 @@ impl<T: Real> Resolver<T> {
             queue: TournamentTree::default(),
             scan_queue: ScanQueue::default(),
             changed: Vec::new(),
+            velocity_rows: Vec::new(),
+            neighbours: indexed::Neighbours::default(),
             stamps: Vec::new(),
             stamp: 0,
             before: [T::zero(); 2],
@@ -202,6 +208,11 @@ impl<T: Real> Resolver<T> {
         self.adjacency = prepared.adjacency;
         self.index = prepared.index;
         self.params = *params;
+        self.velocity_rows.clear();
+        self.velocity_rows.reserve(n);
+        let mut neighbours = std::mem::take(&mut self.neighbours);
+        neighbours.reserve(self);
+        self.neighbours = neighbours;
         if n < queue::SCAN_BELOW {
             self.scan_queue.reserve(n);
         } else {

@@ -10,7 +10,9 @@ use nalgebra::Vector3;
 
 use super::observer::VelocityImpulse;
 use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
+use crate::physics::params::RestitutionFrom;
 use crate::physics::stages::apply_impulse::{body_velocity_change, BodyVelocityChange};
+use crate::physics::stages::desired_velocity::{applied_restitution, desired_from};
 use crate::physics::stages::friction::{clamp, ClampInputs};
 use crate::physics::stages::impulse::impulse_contact;
 use crate::physics::stages::FrictionRegime;
@@ -215,4 +217,134 @@ pub fn velocity_after<T: Real>(c: &ResolverContact<T>, changes: &BodyChanges<T>)
 fn to_contact<T: Real>(basis: &nalgebra::Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
     let dot = |k: usize| basis[(0, k)] * v.x + basis[(1, k)] * v.y + basis[(2, k)] * v.z;
     Vector3::new(dot(0), dot(1), dot(2))
+}
+
+/// A neighbour's slot that the taken contact did not change.
+pub const UNCHANGED: u8 = u8::MAX;
+
+/// What a velocity-phase neighbour update reads and writes of one contact,
+/// side by side (the indexed loop's hot data, copied from the contacts at
+/// the phase's start, written back at its end): none of the contact's
+/// other fields, no body to match (the neighbour table has the slots), and
+/// the desired Δv's terms that do not change during the phase worked out
+/// once ([`DesiredRule`]).
+#[derive(Debug, Clone, Copy)]
+#[repr(C)]
+pub struct VelocityRow<T: Real> {
+    pub velocity: Vector3<T>,
+    pub desired: T,
+    basis: nalgebra::Matrix3<T>,
+    r: [Vector3<T>; 2],
+    rule: DesiredRule<T>,
+}
+
+/// [`super::desired_of`] for one contact during the velocity phase, with
+/// what does not depend on the contact velocity worked out at its start
+/// (each form performs the operations `desired_of` performs, in its order).
+#[derive(Debug, Clone, Copy)]
+enum DesiredRule<T: Real> {
+    /// Restitution 0, from the current velocity: `e = 0` whatever the
+    /// velocity, so `Δv = -v_acc - (1 + 0)(v - v_acc)` (`(1 + 0)·x` is `x`
+    /// exactly), less the gap speed where there is one.
+    NoBounce { acceleration: T, gap: Option<T> },
+    /// From the initial velocity: `e` is fixed, so is `e(v₀ - v_acc)`;
+    /// `Δv = -v - e(v₀ - v_acc)`, less the gap speed where `e = 0`.
+    Initial { bounce: T, gap: Option<T> },
+    /// From the current velocity with restitution: `desired_of` as it is.
+    Current {
+        acceleration: T,
+        restitution: T,
+        velocity_limit: T,
+        gap_speed: T,
+    },
+}
+
+impl<T: Real> DesiredRule<T> {
+    fn of(c: &ResolverContact<T>, from: RestitutionFrom) -> Self {
+        let gap = |e: T| (c.gap_speed > T::zero() && e == T::zero()).then_some(c.gap_speed);
+        match from {
+            RestitutionFrom::Current if c.restitution == T::zero() => DesiredRule::NoBounce {
+                acceleration: c.velocity_from_acceleration,
+                gap: gap(T::zero()),
+            },
+            RestitutionFrom::Current => DesiredRule::Current {
+                acceleration: c.velocity_from_acceleration,
+                restitution: c.restitution,
+                velocity_limit: c.velocity_limit,
+                gap_speed: c.gap_speed,
+            },
+            RestitutionFrom::Initial => {
+                let v0 = c.initial_velocity;
+                let (e, _) = applied_restitution(v0, c.restitution, c.velocity_limit);
+                DesiredRule::Initial {
+                    bounce: e * (v0 - c.velocity_from_acceleration),
+                    gap: gap(e),
+                }
+            }
+        }
+    }
+
+    /// The desired Δv at contact velocity `v` (along the normal).
+    #[inline(always)]
+    fn desired(&self, v: T) -> T {
+        let (desired, gap) = match *self {
+            DesiredRule::NoBounce { acceleration, gap } => {
+                (desired_from(v, T::zero(), acceleration), gap)
+            }
+            DesiredRule::Initial { bounce, gap } => (-v - bounce, gap),
+            DesiredRule::Current {
+                acceleration,
+                restitution,
+                velocity_limit,
+                gap_speed,
+            } => {
+                let (e, _) = applied_restitution(v, restitution, velocity_limit);
+                let gap = (gap_speed > T::zero() && e == T::zero()).then_some(gap_speed);
+                (desired_from(v, e, acceleration), gap)
+            }
+        };
+        match gap {
+            Some(g) => desired - g,
+            None => desired,
+        }
+    }
+}
+
+impl<T: Real> VelocityRow<T> {
+    pub fn of(c: &ResolverContact<T>, from: RestitutionFrom) -> Self {
+        VelocityRow {
+            velocity: c.velocity,
+            desired: c.desired,
+            basis: c.basis,
+            r: c.r,
+            rule: DesiredRule::of(c, from),
+        }
+    }
+
+    /// [`velocity_after`] and [`super::desired_of`] on the row: the same
+    /// operations in the same order. `slots[s]`: the taken contact's slot
+    /// that changed this contact's slot `s` ([`UNCHANGED`] for none).
+    /// Returns the desired Δv before and after.
+    #[inline(always)]
+    pub fn update(&mut self, slots: [u8; 2], changes: &BodyChanges<T>) -> (T, T) {
+        let before = self.desired;
+        let mut velocity = self.velocity;
+        if slots[0] != UNCHANGED {
+            let d = usize::from(slots[0] & 1);
+            velocity += to_contact(
+                &self.basis,
+                &(changes.dv[d] + changes.dw[d].cross(&self.r[0])),
+            );
+        }
+        if slots[1] != UNCHANGED {
+            let d = usize::from(slots[1] & 1);
+            velocity -= to_contact(
+                &self.basis,
+                &(changes.dv[d] + changes.dw[d].cross(&self.r[1])),
+            );
+        }
+        self.velocity = velocity;
+        self.desired = self.rule.desired(velocity.x);
+        (before, self.desired)
+    }
 }
