@@ -108,11 +108,13 @@ impl Bounds {
     }
 
     /// Overlap or touch on every axis.
+    #[inline]
     fn overlaps(&self, o: &Bounds) -> bool {
         (0..3).all(|k| self.min[k] <= o.max[k] && o.min[k] <= self.max[k])
     }
 
     /// Whether `inner` lies inside (false for a non-finite one).
+    #[inline]
     fn holds(&self, inner: &Bounds) -> bool {
         (0..3).all(|k| self.min[k] <= inner.min[k] && inner.max[k] <= self.max[k])
     }
@@ -160,12 +162,19 @@ impl BroadPhase {
             return self.sweep.pairs(&self.exact, half_spaces, out);
         }
         let (exact, is_half) = (&self.exact, &self.kept.is_half);
-        let half_pair = |h: usize, o: usize| is_half[h] && exact[o].is_some();
-        out.extend(self.kept.pairs.iter().copied().filter(|&(i, j)| {
-            half_pair(i, j)
-                || half_pair(j, i)
-                || matches!((&exact[i], &exact[j]), (Some(a), Some(b)) if a.overlaps(b))
-        }));
+        out.reserve(self.kept.pairs.len());
+        for &(i, j) in &self.kept.pairs {
+            // Boxes that overlap, or a body with bounds and a half-space.
+            let keep = match (&exact[i], &exact[j]) {
+                (Some(a), Some(b)) => is_half[i] || is_half[j] || a.overlaps(b),
+                (Some(_), None) => is_half[j],
+                (None, Some(_)) => is_half[i],
+                (None, None) => false,
+            };
+            if keep {
+                out.push((i, j));
+            }
+        }
     }
 
     /// Whether the kept pairs serve this call: the same bodies with bounds,
