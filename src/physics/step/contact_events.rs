@@ -219,12 +219,15 @@ mod tests {
         }
     }
 
+    /// A contact's (normal, tangential) speeds before and after.
+    type Speeds = ((f64, f64), (f64, f64));
+
     /// The events by linear search (the definition the maps must match):
     /// pairs in the order of first appearance, last step's pairs looked up
     /// one by one.
     fn by_search(
         contacts: &[Contact<f64>],
-        speeds: &[((f64, f64), (f64, f64))],
+        speeds: &[Speeds],
         last: &Touching,
     ) -> (Vec<Event>, Touching) {
         let mut pairs: Touching = Vec::new();
