@@ -3,6 +3,7 @@
 
 use nalgebra::Vector3;
 
+use super::sweep::Sweep;
 use super::{c, Pose, Real, Shape};
 use crate::physics::to_f64;
 
@@ -60,33 +61,76 @@ impl<T: Real> Aabb<T> {
     }
 }
 
-/// Sort-and-sweep state. The order of the last sweep is kept, so that a
-/// scene that moved a little sorts an almost sorted list; the buffers are
-/// reused from call to call.
+/// Sort-and-sweep state, kept from call to call so that a scene that moved
+/// a little costs little:
+///
+/// - the pairs are kept between calls for boxes grown by a margin (5 % of
+///   each box's smallest half extent): while every box stays inside its
+///   grown box, two boxes that overlap had grown boxes that overlap, so the
+///   kept pairs whose boxes overlap now are exactly the sweep's pairs, in
+///   the same (sorted) order — O(n + kept pairs), nothing sorted;
+/// - when a box leaves its grown box, the grown boxes are made anew and
+///   swept, the order of the last sweep kept (an almost sorted list sorts
+///   in O(n + swaps)); the buffers are reused.
 #[derive(Debug, Clone, Default)]
 pub struct BroadPhase {
-    /// The bounds (as f64, side by side for the sweep), sorted by `min[axis]`.
-    entries: Vec<Entry>,
-    axis: usize,
-    /// Scratch for sorting the pairs.
-    counts: Vec<usize>,
-    scratch: Vec<(usize, usize)>,
+    sweep: Sweep,
+    /// This call's boxes as f64 (what the sweep compares).
+    exact: Vec<Option<Bounds>>,
+    /// The grown boxes and their pairs (`valid` false: none kept).
+    kept: Kept,
 }
 
-#[derive(Debug, Clone, Copy)]
-struct Entry {
-    min: [f64; 3],
-    max: [f64; 3],
-    index: usize,
+/// The grown boxes of the last sweep and its pairs.
+#[derive(Debug, Clone, Default)]
+struct Kept {
+    valid: bool,
+    grown: Vec<Option<Bounds>>,
+    half_spaces: Vec<usize>,
+    /// Whether body i is one of `half_spaces`.
+    is_half: Vec<bool>,
+    pairs: Vec<(usize, usize)>,
 }
 
-impl Entry {
-    fn new<T: Real>(index: usize, b: &Aabb<T>) -> Self {
-        Entry {
+/// A box as f64.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Bounds {
+    pub(super) min: [f64; 3],
+    pub(super) max: [f64; 3],
+}
+
+impl Bounds {
+    fn of<T: Real>(b: &Aabb<T>) -> Self {
+        Bounds {
             min: [0, 1, 2].map(|k| to_f64(b.min[k])),
             max: [0, 1, 2].map(|k| to_f64(b.max[k])),
-            index,
         }
+    }
+
+    /// Overlap or touch on every axis.
+    #[inline]
+    fn overlaps(&self, o: &Bounds) -> bool {
+        (0..3).all(|k| self.min[k] <= o.max[k] && o.min[k] <= self.max[k])
+    }
+
+    /// Whether `inner` lies inside (false for a non-finite one).
+    #[inline]
+    fn holds(&self, inner: &Bounds) -> bool {
+        (0..3).all(|k| self.min[k] <= inner.min[k] && inner.max[k] <= self.max[k])
+    }
+
+    /// Grown by 5 % of the smallest half extent on every side; `None` when
+    /// not finite.
+    fn grown(&self) -> Option<Bounds> {
+        let half = (0..3).fold(f64::INFINITY, |m, k| {
+            m.min(0.5 * (self.max[k] - self.min[k]))
+        });
+        let m = 0.05 * half.max(0.0);
+        let g = Bounds {
+            min: self.min.map(|x| x - m),
+            max: self.max.map(|x| x + m),
+        };
+        (g.min.iter().chain(&g.max).all(|x| x.is_finite()) && m.is_finite()).then_some(g)
     }
 }
 
@@ -106,117 +150,75 @@ impl BroadPhase {
         half_spaces: &[usize],
         out: &mut Vec<(usize, usize)>,
     ) {
+        self.exact.clear();
+        self.exact
+            .extend(bounds.iter().map(|b| b.as_ref().map(Bounds::of)));
+        if !self.kept_holds(half_spaces) {
+            self.keep(half_spaces);
+        }
         out.clear();
-        let axis = spread_axis(bounds);
-        let count = bounds.iter().flatten().count();
-        let coherent = axis == self.axis
-            && self.entries.len() == count
-            && self
-                .entries
-                .iter()
-                .all(|e| bounds.get(e.index).is_some_and(Option::is_some));
-        if coherent {
-            for entry in &mut self.entries {
-                let b = bounds[entry.index].as_ref().expect("checked above");
-                *entry = Entry::new(entry.index, b);
-            }
-        } else {
-            self.entries.clear();
-            let finite = bounds
-                .iter()
-                .enumerate()
-                .filter_map(|(i, b)| Some(Entry::new(i, b.as_ref()?)));
-            self.entries.extend(finite);
-            self.axis = axis;
+        if !self.kept.valid {
+            // Not finite: the sweep over the boxes themselves.
+            return self.sweep.pairs(&self.exact, half_spaces, out);
         }
-        let order = |p: &Entry, q: &Entry| {
-            p.min[axis]
-                .total_cmp(&q.min[axis])
-                .then(p.index.cmp(&q.index))
-        };
-        // Last step's order is almost this one's: an insertion sort costs
-        // O(n + swaps) (the order is total, so the result is the same).
-        // A scene that scattered (more than 8 moves per box) sorts anew.
-        let limit = 8 * self.entries.len();
-        if !(coherent && insertion_sort_by(&mut self.entries, order, limit)) {
-            self.entries.sort_unstable_by(order);
-        }
-        // Sweep: each box meets the later boxes that start before it ends;
-        // of those, the ones that overlap on the other two axes too.
-        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
-        for (k, a) in self.entries.iter().enumerate() {
-            for b in &self.entries[k + 1..] {
-                if b.min[axis] > a.max[axis] {
-                    break;
-                }
-                let across = |w: usize| a.min[w] <= b.max[w] && b.min[w] <= a.max[w];
-                if across(u) && across(v) {
-                    out.push((a.index.min(b.index), a.index.max(b.index)));
-                }
+        let (exact, is_half) = (&self.exact, &self.kept.is_half);
+        out.reserve(self.kept.pairs.len());
+        for &(i, j) in &self.kept.pairs {
+            // Boxes that overlap, or a body with bounds and a half-space.
+            let keep = match (&exact[i], &exact[j]) {
+                (Some(a), Some(b)) => is_half[i] || is_half[j] || a.overlaps(b),
+                (Some(_), None) => is_half[j],
+                (None, Some(_)) => is_half[i],
+                (None, None) => false,
+            };
+            if keep {
+                out.push((i, j));
             }
         }
-        push_half_space_pairs(bounds, half_spaces, out);
-        sort_pairs(out, bounds.len(), &mut self.counts, &mut self.scratch);
     }
-}
 
-/// Sorts pairs (i, j), i < `bodies`, by i then j and drops repeats: a
-/// counting sort on i, O(pairs + bodies), then each run of one i by j (a
-/// comparison sort of all the pairs cost a third of the sweep for 2,000
-/// bodies).
-fn sort_pairs(
-    pairs: &mut Vec<(usize, usize)>,
-    bodies: usize,
-    counts: &mut Vec<usize>,
-    scratch: &mut Vec<(usize, usize)>,
-) {
-    counts.clear();
-    counts.resize(bodies + 1, 0);
-    for &(i, _) in pairs.iter() {
-        counts[i + 1] += 1;
+    /// Whether the kept pairs serve this call: the same bodies with bounds,
+    /// the same half-spaces, every box inside its grown box.
+    fn kept_holds(&self, half_spaces: &[usize]) -> bool {
+        let kept = &self.kept;
+        kept.valid
+            && kept.grown.len() == self.exact.len()
+            && kept.half_spaces == half_spaces
+            && (kept.grown.iter().zip(&self.exact)).all(|(g, e)| match (g, e) {
+                (Some(g), Some(e)) => g.holds(e),
+                (None, None) => true,
+                _ => false,
+            })
     }
-    for k in 1..=bodies {
-        counts[k] += counts[k - 1];
-    }
-    // counts[i] is where the run of i starts; after the scatter, where it ends.
-    scratch.clear();
-    scratch.resize(pairs.len(), (0, 0));
-    for &pair in pairs.iter() {
-        scratch[counts[pair.0]] = pair;
-        counts[pair.0] += 1;
-    }
-    let mut start = 0;
-    for &end in &counts[..bodies] {
-        scratch[start..end].sort_unstable();
-        start = end;
-    }
-    std::mem::swap(pairs, scratch);
-    pairs.dedup();
-}
 
-/// Sorts `items` by `order` moving each item left past the larger ones:
-/// O(n + inversions), for short or almost sorted slices. False (the slice
-/// left a permutation, not sorted) once more than `limit` moves were made.
-fn insertion_sort_by<E: Copy>(
-    items: &mut [E],
-    order: impl Fn(&E, &E) -> std::cmp::Ordering,
-    limit: usize,
-) -> bool {
-    let mut moves = 0;
-    for i in 1..items.len() {
-        let item = items[i];
-        let mut j = i;
-        while j > 0 && order(&items[j - 1], &item) == std::cmp::Ordering::Greater {
-            items[j] = items[j - 1];
-            j -= 1;
+    /// Grows this call's boxes and sweeps them: the kept pairs (invalid
+    /// when a box is not finite).
+    fn keep(&mut self, half_spaces: &[usize]) {
+        let kept = &mut self.kept;
+        kept.grown.clear();
+        kept.valid = true;
+        for e in &self.exact {
+            let g = match e {
+                Some(e) => e.grown(),
+                None => None,
+            };
+            kept.valid &= g.is_some() == e.is_some();
+            kept.grown.push(g);
         }
-        items[j] = item;
-        moves += i - j;
-        if moves > limit {
-            return false;
+        kept.half_spaces.clear();
+        kept.half_spaces.extend_from_slice(half_spaces);
+        kept.is_half.clear();
+        kept.is_half.resize(self.exact.len(), false);
+        for &h in half_spaces {
+            kept.valid &= h < self.exact.len();
+            if let Some(flag) = kept.is_half.get_mut(h) {
+                *flag = true;
+            }
+        }
+        if kept.valid {
+            self.sweep.pairs(&kept.grown, half_spaces, &mut kept.pairs);
         }
     }
-    true
 }
 
 /// [`BroadPhase::candidate_pairs`] with a fresh state (allocates).
@@ -252,8 +254,8 @@ fn overlap<T: Real>(bounds: &[Option<Aabb<T>>], i: usize, j: usize) -> bool {
 }
 
 /// Adds (body, half-space) for every body with bounds.
-fn push_half_space_pairs<T: Real>(
-    bounds: &[Option<Aabb<T>>],
+pub(super) fn push_half_space_pairs<B>(
+    bounds: &[Option<B>],
     half_spaces: &[usize],
     out: &mut Vec<(usize, usize)>,
 ) {
@@ -264,23 +266,9 @@ fn push_half_space_pairs<T: Real>(
     }
 }
 
-/// World axis along which the box centres spread most (first on ties).
-fn spread_axis<T: Real>(bounds: &[Option<Aabb<T>>]) -> usize {
-    let mut low = [f64::INFINITY; 3];
-    let mut high = [f64::NEG_INFINITY; 3];
-    for b in bounds.iter().flatten() {
-        for k in 0..3 {
-            let centre = to_f64(b.min[k]) + to_f64(b.max[k]);
-            low[k] = low[k].min(centre);
-            high[k] = high[k].max(centre);
-        }
-    }
-    let spread = |k: usize| high[k] - low[k];
-    (1..3).fold(0, |best, k| if spread(k) > spread(best) { k } else { best })
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::sweep::insertion_sort_by;
     use super::*;
     use nalgebra::UnitQuaternion;
 
@@ -337,6 +325,50 @@ mod tests {
         assert_eq!(items, [1, 1, 3, 4, 5]);
         let mut backwards: Vec<usize> = (0..10).rev().collect();
         assert!(!insertion_sort_by(&mut backwards, |a, b| a.cmp(b), 8));
+    }
+
+    #[test]
+    fn kept_pairs_of_grown_boxes_are_the_sweeps_pairs_while_boxes_jitter_leave_and_break() {
+        // A 6 × 6 grid of touching cubes and a floor (36), jittered a little
+        // each call (inside the grown boxes: the kept pairs are filtered),
+        // then one cube moved away (a box leaves: grown and swept anew),
+        // then a non-finite box (swept as given, nothing kept).
+        let grid = |jitter: f64, call: usize| -> Vec<Option<Aabb<f64>>> {
+            let mut b: Vec<_> = (0..36)
+                .map(|i| {
+                    let wobble = jitter * (((i * 7 + call * 3) % 5) as f64 - 2.0);
+                    cube((i % 6) as f64 + wobble, (i / 6) as f64 - wobble)
+                })
+                .collect();
+            b.push(None);
+            b
+        };
+        let mut broad = BroadPhase::new();
+        let (mut out, mut reference) = (Vec::new(), Vec::new());
+        let check = |broad: &mut BroadPhase, bounds: &[Option<Aabb<f64>>], out: &mut Vec<_>| {
+            let mut reference = Vec::new();
+            broad.candidate_pairs(bounds, &[36], out);
+            all_pairs(bounds, &[36], &mut reference);
+            assert_eq!(*out, reference);
+        };
+        for call in 0..6 {
+            check(&mut broad, &grid(0.002 * call as f64, call), &mut out);
+            assert!(broad.kept.valid);
+        }
+        // Touching neighbours come and go with the jitter; the floor pairs stay.
+        assert!(out.contains(&(0, 36)) && out.contains(&(35, 36)));
+        let mut moved = grid(0.0, 0);
+        moved[14] = cube(20.0, 20.0);
+        check(&mut broad, &moved, &mut out);
+        assert!(!out.iter().any(|&(i, j)| (i == 14 || j == 14) && j != 36));
+        assert!(broad.kept.valid && broad.kept.grown[14].unwrap().min[0] > 19.0);
+        let mut broken = grid(0.0, 0);
+        broken[3] = cube(f64::NAN, 0.0);
+        broad.candidate_pairs(&broken, &[36], &mut out);
+        assert!(!broad.kept.valid);
+        all_pairs(&grid(0.0, 0), &[36], &mut reference);
+        check(&mut broad, &grid(0.0, 0), &mut out);
+        assert_eq!(out, reference);
     }
 
     #[test]

@@ -49,6 +49,7 @@ mod plane;
 pub mod record;
 pub mod scene;
 mod sphere;
+mod sweep;
 
 pub use broad::{all_pairs, candidate_pairs, Aabb, BroadPhase};
 pub use scene::{BodyContact, ContactGenerator};

@@ -51,7 +51,8 @@ pub fn tunnelled<T: Real>(
     if swept.pairs.is_empty() {
         return;
     }
-    let touching = contact_pairs(world);
+    let mut touching = std::mem::take(&mut swept.touching);
+    contact_pairs_into(world, &mut touching);
     let from = out.len();
     for &(i, j) in &swept.pairs {
         if touching.contains(&key(i, j)) {
@@ -61,21 +62,30 @@ pub fn tunnelled<T: Real>(
             out.push(t);
         }
     }
+    swept.touching = touching;
     // In the order of the bodies, whatever order the sweep found them in.
     out[from..].sort_by_key(|t| (t.body1, t.body2));
 }
 
 /// The pairs of bodies that have a contact this step, by [`key`].
 pub fn contact_pairs<T: Real>(world: &World<T>) -> ContactPairs {
-    let mut keys: Vec<_> = world
-        .contacts
-        .iter()
-        .filter_map(|k| Some(key(k.body1.0, k.body2?.0)))
-        .collect();
-    // Generated contacts come pair by pair in sorted order: this sort only checks.
-    keys.sort_unstable();
+    let mut pairs = ContactPairs::default();
+    contact_pairs_into(world, &mut pairs);
+    pairs
+}
+
+/// [`contact_pairs`] into `pairs` (its storage reused).
+pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
+    let keys = &mut pairs.0;
+    keys.clear();
+    let contacts = world.contacts.iter();
+    keys.extend(contacts.filter_map(|k| Some(key(k.body1.0, k.body2?.0))));
+    // Generated contacts come pair by pair in sorted order: sorted only
+    // when they are not (contacts given otherwise).
+    if !keys.is_sorted() {
+        keys.sort_unstable();
+    }
     keys.dedup();
-    ContactPairs(keys)
 }
 
 /// A set of body pairs, sorted (building it hashes nothing; a step's

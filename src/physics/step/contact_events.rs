@@ -12,93 +12,156 @@ use crate::physics::{to_f64, BodyId, Contact, Real};
 /// Touching pairs of a step and whether they slid.
 pub type Touching = Vec<(BodyId, Option<BodyId>, bool)>;
 
-/// Contact made or lost, bounces, sticking and sliding, per touching pair:
-/// `before` and `after` are each contact's (normal, tangential) speeds
-/// across the step, `limit` the speed below which a closing is a resting
-/// micro-collision; `touching` holds last step's pairs and becomes this
-/// step's.
-pub fn report<T: Real>(
-    contacts: &[Contact<T>],
-    before: &[(T, T)],
-    after: &[(T, T)],
-    limit: f64,
-    touching: &mut Touching,
-    events: &mut Vec<Event>,
-) {
-    // Per touching pair: whether any point slides, the fastest closing
-    // before and the fastest separating after.
-    let mut pairs: Vec<(BodyId, Option<BodyId>, bool)> = Vec::new();
-    let mut speeds: Vec<(f64, f64, bool)> = Vec::new();
-    // Pair → its index in `pairs` (the order of first appearance, so the
-    // events come out as a linear search would give them, in O(pairs)).
-    let mut index: PairMap<usize> =
-        PairMap::with_capacity_and_hasher(contacts.len(), Default::default());
-    for (i, k) in contacts.iter().enumerate() {
-        let vn0 = to_f64(before[i].0);
-        let (vn1, vt1) = (to_f64(after[i].0), to_f64(after[i].1));
-        // Sliding: faster than residual jitter of resting contacts (5 cm/s).
-        let slides = vt1 > 0.05;
-        let bouncy = k.input.restitution > T::zero();
-        match index.entry((k.body1, k.body2)) {
-            Entry::Occupied(j) => {
-                let j = *j.get();
-                pairs[j].2 |= slides;
-                speeds[j] = (
-                    speeds[j].0.max(-vn0),
-                    speeds[j].1.max(vn1),
-                    speeds[j].2 || bouncy,
-                );
+/// The contact events' state from step to step: last step's touching pairs
+/// and their index by pair, and this step's buffers (kept, so that a step
+/// allocates nothing once the scene's pairs have been seen).
+#[derive(Debug, Clone, Default)]
+pub struct ContactEvents {
+    /// Last step's touching pairs, in the order of first appearance, and
+    /// whether they slid; `last` maps each to its index there.
+    touching: Touching,
+    last: PairMap<usize>,
+    /// This step's pairs, their speeds and their index (become the above).
+    pairs: Touching,
+    speeds: Vec<(f64, f64, bool)>,
+    index: PairMap<usize>,
+    bounces: Vec<Event>,
+}
+
+impl ContactEvents {
+    /// Contact made or lost, bounces, sticking and sliding, per touching
+    /// pair: `before` and `after` are each contact's (normal, tangential)
+    /// speeds across the step, `limit` the speed below which a closing is a
+    /// resting micro-collision; this step's pairs become the next step's
+    /// last ones.
+    pub fn report<T: Real>(
+        &mut self,
+        contacts: &[Contact<T>],
+        before: &[(T, T)],
+        after: &[(T, T)],
+        limit: f64,
+        events: &mut Vec<Event>,
+    ) {
+        let Self {
+            touching,
+            last,
+            pairs,
+            speeds,
+            index,
+            bounces,
+        } = self;
+        // Per touching pair: whether any point slides, the fastest closing
+        // before and the fastest separating after. A pair's points come one
+        // after another (contact generation runs pair by pair): merged here
+        // without a map; a pair met again later is the map's case below.
+        pairs.clear();
+        speeds.clear();
+        for (i, k) in contacts.iter().enumerate() {
+            let (vn0, slides, vn1, bouncy) = speeds_of(k, before[i], after[i]);
+            match pairs.last_mut() {
+                Some(p) if (p.0, p.1) == (k.body1, k.body2) => {
+                    p.2 |= slides;
+                    let s = speeds.last_mut().expect("one per pair");
+                    *s = (s.0.max(-vn0), s.1.max(vn1), s.2 || bouncy);
+                }
+                _ => {
+                    pairs.push((k.body1, k.body2, slides));
+                    speeds.push((-vn0, vn1, bouncy));
+                }
             }
-            Entry::Vacant(slot) => {
-                slot.insert(pairs.len());
-                pairs.push((k.body1, k.body2, slides));
-                speeds.push((-vn0, vn1, bouncy));
+        }
+        // The same pairs as last step, in the same order (a resting scene):
+        // nothing made or lost, and last step's index serves this step.
+        let same = pairs.len() == touching.len()
+            && (pairs.iter().zip(touching.iter())).all(|(p, q)| (p.0, p.1) == (q.0, q.1));
+        if !same {
+            // Pair → its index in `pairs` (the order of first appearance,
+            // so the events come out as a linear search would give them,
+            // in O(pairs)).
+            pairs.clear();
+            speeds.clear();
+            index.clear();
+            for (i, k) in contacts.iter().enumerate() {
+                let (vn0, slides, vn1, bouncy) = speeds_of(k, before[i], after[i]);
+                match index.entry((k.body1, k.body2)) {
+                    Entry::Occupied(j) => {
+                        let j = *j.get();
+                        pairs[j].2 |= slides;
+                        speeds[j] = (
+                            speeds[j].0.max(-vn0),
+                            speeds[j].1.max(vn1),
+                            speeds[j].2 || bouncy,
+                        );
+                    }
+                    Entry::Vacant(slot) => {
+                        slot.insert(pairs.len());
+                        pairs.push((k.body1, k.body2, slides));
+                        speeds.push((-vn0, vn1, bouncy));
+                    }
+                }
             }
         }
-    }
-    let mut bounces = Vec::new();
-    for (p, (closing, separating, bouncy)) in pairs.iter().zip(&speeds) {
-        // A bounce: closing faster than the velocity limit, leaving at a
-        // speed worth naming (not round-off, not a resting micro-collision).
-        if *bouncy && *closing > limit && *separating > (0.05 * closing).max(1e-3) {
-            bounces.push(Event::Bounce {
-                body1: p.0,
-                body2: p.1,
-                closing: *closing,
-                separating: *separating,
-            });
+        bounces.clear();
+        for (p, (closing, separating, bouncy)) in pairs.iter().zip(speeds.iter()) {
+            // A bounce: closing faster than the velocity limit, leaving at a
+            // speed worth naming (not round-off, not a resting micro-collision).
+            if *bouncy && *closing > limit && *separating > (0.05 * closing).max(1e-3) {
+                bounces.push(Event::Bounce {
+                    body1: p.0,
+                    body2: p.1,
+                    closing: *closing,
+                    separating: *separating,
+                });
+            }
+        }
+        // Last step's pairs by key: a pair is in it at most once.
+        for (n, p) in pairs.iter().enumerate() {
+            let slid = if same {
+                Some(touching[n].2)
+            } else {
+                last.get(&(p.0, p.1)).map(|&j| touching[j].2)
+            };
+            match slid {
+                None => events.push(Event::ContactMade {
+                    body1: p.0,
+                    body2: p.1,
+                }),
+                Some(slid) if slid && !p.2 => events.push(Event::Sticks {
+                    body1: p.0,
+                    body2: p.1,
+                }),
+                Some(slid) if !slid && p.2 => events.push(Event::Slides {
+                    body1: p.0,
+                    body2: p.1,
+                    speed: 0.0,
+                }),
+                _ => {}
+            }
+        }
+        for q in touching.iter().filter(|_| !same) {
+            if !index.contains_key(&(q.0, q.1)) {
+                events.push(Event::ContactLost {
+                    body1: q.0,
+                    body2: q.1,
+                });
+            }
+        }
+        events.append(bounces);
+        std::mem::swap(touching, pairs);
+        if !same {
+            // (The same pairs: `last` already indexes them.)
+            std::mem::swap(last, index);
         }
     }
-    // Last step's pairs by key: a pair is in it at most once.
-    let last: PairMap<bool> = touching.iter().map(|q| ((q.0, q.1), q.2)).collect();
-    for p in &pairs {
-        match last.get(&(p.0, p.1)).copied() {
-            None => events.push(Event::ContactMade {
-                body1: p.0,
-                body2: p.1,
-            }),
-            Some(slid) if slid && !p.2 => events.push(Event::Sticks {
-                body1: p.0,
-                body2: p.1,
-            }),
-            Some(slid) if !slid && p.2 => events.push(Event::Slides {
-                body1: p.0,
-                body2: p.1,
-                speed: 0.0,
-            }),
-            _ => {}
-        }
-    }
-    for q in touching.iter() {
-        if !index.contains_key(&(q.0, q.1)) {
-            events.push(Event::ContactLost {
-                body1: q.0,
-                body2: q.1,
-            });
-        }
-    }
-    events.append(&mut bounces);
-    *touching = pairs;
+}
+
+/// A contact's speeds as the events read them: the normal speed before,
+/// whether it slides after (faster than residual jitter of resting
+/// contacts, 5 cm/s), the normal speed after, whether it can bounce.
+fn speeds_of<T: Real>(k: &Contact<T>, before: (T, T), after: (T, T)) -> (f64, bool, f64, bool) {
+    let vn0 = to_f64(before.0);
+    let (vn1, vt1) = (to_f64(after.0), to_f64(after.1));
+    (vn0, vt1 > 0.05, vn1, k.input.restitution > T::zero())
 }
 
 /// A set of body pairs (the pairs wholly inside one another).
@@ -129,5 +192,144 @@ impl Hasher for PairHasher {
     }
     fn finish(&self) -> u64 {
         self.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::{ContactInput, ContactParams, FrictionModel};
+    use nalgebra::Vector3;
+
+    fn contact(b1: usize, b2: Option<usize>, restitution: f64) -> Contact<f64> {
+        Contact {
+            body1: BodyId(b1),
+            body2: b2.map(BodyId),
+            input: ContactInput {
+                point: Vector3::zeros(),
+                normal: Vector3::y(),
+                penetration: 0.0,
+                restitution,
+                static_friction: 0.5,
+                dynamic_friction: 0.5,
+                friction_model: FrictionModel::default(),
+                settings: ContactParams::default(),
+            },
+            duration: None,
+        }
+    }
+
+    /// A contact's (normal, tangential) speeds before and after.
+    type Speeds = ((f64, f64), (f64, f64));
+
+    /// The events by linear search (the definition the maps must match):
+    /// pairs in the order of first appearance, last step's pairs looked up
+    /// one by one.
+    fn by_search(
+        contacts: &[Contact<f64>],
+        speeds: &[Speeds],
+        last: &Touching,
+    ) -> (Vec<Event>, Touching) {
+        let mut pairs: Touching = Vec::new();
+        let mut fast: Vec<(f64, f64, bool)> = Vec::new();
+        for (k, ((vn0, _), (vn1, vt1))) in contacts.iter().zip(speeds) {
+            let bouncy = k.input.restitution > 0.0;
+            match pairs.iter().position(|p| (p.0, p.1) == (k.body1, k.body2)) {
+                Some(j) => {
+                    pairs[j].2 |= *vt1 > 0.05;
+                    fast[j] = (
+                        fast[j].0.max(-vn0),
+                        fast[j].1.max(*vn1),
+                        fast[j].2 || bouncy,
+                    );
+                }
+                None => {
+                    pairs.push((k.body1, k.body2, *vt1 > 0.05));
+                    fast.push((-vn0, *vn1, bouncy));
+                }
+            }
+        }
+        let mut events = Vec::new();
+        for p in &pairs {
+            match last.iter().find(|q| (q.0, q.1) == (p.0, p.1)).map(|q| q.2) {
+                None => events.push(Event::ContactMade {
+                    body1: p.0,
+                    body2: p.1,
+                }),
+                Some(true) if !p.2 => events.push(Event::Sticks {
+                    body1: p.0,
+                    body2: p.1,
+                }),
+                Some(false) if p.2 => events.push(Event::Slides {
+                    body1: p.0,
+                    body2: p.1,
+                    speed: 0.0,
+                }),
+                _ => {}
+            }
+        }
+        for q in last
+            .iter()
+            .filter(|q| !pairs.iter().any(|p| (p.0, p.1) == (q.0, q.1)))
+        {
+            events.push(Event::ContactLost {
+                body1: q.0,
+                body2: q.1,
+            });
+        }
+        for (p, (closing, separating, bouncy)) in pairs.iter().zip(&fast) {
+            if *bouncy && *closing > 1.0 && *separating > (0.05 * closing).max(1e-3) {
+                events.push(Event::Bounce {
+                    body1: p.0,
+                    body2: p.1,
+                    closing: *closing,
+                    separating: *separating,
+                });
+            }
+        }
+        (events, pairs)
+    }
+
+    #[test]
+    fn kept_maps_and_the_same_pairs_shortcut_give_the_linear_searchs_events() {
+        // Steps: made; the same pairs resting, then sliding, then sticking;
+        // a pair lost and one made; a pair's points apart in the list (the
+        // map's case); a bounce; nothing.
+        let rest = ((0.0, 0.0), (0.0, 0.0));
+        let slide = ((0.0, 0.0), (0.0, 0.2));
+        let bounce = ((-3.0, 0.0), (1.0, 0.0));
+        let a = || contact(0, Some(1), 0.0);
+        let b = || contact(2, None, 0.5);
+        let c = || contact(3, Some(1), 0.0);
+        let steps: Vec<(Vec<Contact<f64>>, Vec<_>)> = vec![
+            (vec![a(), a(), b()], vec![rest, rest, rest]),
+            (vec![a(), a(), b()], vec![rest, rest, rest]),
+            (vec![a(), a(), b()], vec![rest, slide, rest]),
+            (vec![a(), a(), b()], vec![rest, rest, rest]),
+            (vec![a(), c()], vec![rest, rest]),
+            (vec![a(), c(), a()], vec![slide, rest, rest]),
+            (vec![a(), c(), b()], vec![rest, rest, bounce]),
+            (vec![a(), c(), b()], vec![rest, rest, rest]),
+            (vec![], vec![]),
+        ];
+        let mut state = ContactEvents::default();
+        let mut last: Touching = Vec::new();
+        let mut seen = Vec::new();
+        for (contacts, speeds) in &steps {
+            let (before, after): (Vec<_>, Vec<_>) = speeds.iter().copied().unzip();
+            let mut events = Vec::new();
+            state.report(contacts, &before, &after, 1.0, &mut events);
+            let (expected, pairs) = by_search(contacts, speeds, &last);
+            assert_eq!(events, expected);
+            seen.extend(events);
+            last = pairs;
+        }
+        // Every kind was met.
+        let kind = |f: fn(&Event) -> bool| seen.iter().any(f);
+        assert!(kind(|e| matches!(e, Event::ContactMade { .. })));
+        assert!(kind(|e| matches!(e, Event::ContactLost { .. })));
+        assert!(kind(|e| matches!(e, Event::Slides { .. })));
+        assert!(kind(|e| matches!(e, Event::Sticks { .. })));
+        assert!(kind(|e| matches!(e, Event::Bounce { .. })));
     }
 }

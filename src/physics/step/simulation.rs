@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use super::audit::Switches;
 use super::audits::{Audits, StepAudit};
 use super::ccd_mode::Rollback;
-use super::contact_events::{self, PairSet, Touching};
+use super::contact_events::{ContactEvents, PairSet};
 use super::integrate::{integrate_velocity, Loads};
 use super::previous_frame::{self, PoseOf};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
@@ -40,8 +40,13 @@ pub struct Simulation<T: Real> {
     resolver: Option<Resolver<T>>,
     /// Sequential impulses with warm start: last step's accumulated impulses.
     warm: WarmCache<T>,
-    /// Touching pairs of the last step and whether they slid.
-    touching: Touching,
+    /// Touching pairs of the last step and whether they slid (and the
+    /// events' buffers).
+    touching: ContactEvents,
+    /// Each contact's (normal, tangential) relative speed before and
+    /// after the resolution (storage kept).
+    closing_before: Vec<(T, T)>,
+    closing_after: Vec<(T, T)>,
     /// The energy scale blow-ups are measured against.
     energy_scale: f64,
     /// Whether the position and velocity phases hit their limits last step
@@ -83,7 +88,9 @@ impl<T: Real> Simulation<T> {
             generated: Vec::new(),
             resolver: None,
             warm: WarmCache::default(),
-            touching: Vec::new(),
+            touching: ContactEvents::default(),
+            closing_before: Vec::new(),
+            closing_after: Vec::new(),
             energy_scale: 0.0,
             limits_hit: [false; 2],
             audits: Audits::default(),
@@ -175,7 +182,8 @@ impl<T: Real> Simulation<T> {
             .contacts
             .iter()
             .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
-        let closing_before = self.normal_velocities();
+        let mut closing_before = std::mem::take(&mut self.closing_before);
+        self.normal_velocities(&mut closing_before);
         // 4. Resolve the contacts together.
         let resolver = match &mut self.resolver {
             Some(r) => {
@@ -244,6 +252,7 @@ impl<T: Real> Simulation<T> {
         self.step += 1;
         self.time += to_f64(p.dt);
         self.contact_events(&closing_before, &mut events);
+        self.closing_before = closing_before;
         let start = self.time - to_f64(p.dt);
         events.extend(spent.hits.iter().map(|h| {
             Event::Toi(ToiEvent {
@@ -479,19 +488,17 @@ impl<T: Real> Simulation<T> {
         }
     }
 
-    /// Relative normal velocity at each contact (negative when closing).
-    fn normal_velocities(&self) -> Vec<(T, T)> {
-        self.world
-            .contacts
-            .iter()
-            .map(|k| {
-                let v = self.point_velocity(k);
-                let n = k.input.normal;
-                let normal = v.dot(&n);
-                let tangential = (v - n * normal).norm();
-                (normal, tangential)
-            })
-            .collect()
+    /// Relative normal velocity at each contact (negative when closing),
+    /// and the tangential speed, into `out`.
+    fn normal_velocities(&self, out: &mut Vec<(T, T)>) {
+        out.clear();
+        out.extend(self.world.contacts.iter().map(|k| {
+            let v = self.point_velocity(k);
+            let n = k.input.normal;
+            let normal = v.dot(&n);
+            let tangential = (v - n * normal).norm();
+            (normal, tangential)
+        }));
     }
 
     fn point_velocity(&self, k: &Contact<T>) -> Vector3<T> {
@@ -500,10 +507,13 @@ impl<T: Real> Simulation<T> {
 
     /// Contact made or lost, bounces, sticking and sliding, per touching pair.
     fn contact_events(&mut self, before: &[(T, T)], events: &mut Vec<Event>) {
-        let after = self.normal_velocities();
+        let mut after = std::mem::take(&mut self.closing_after);
+        self.normal_velocities(&mut after);
         let limit = to_f64(self.params.contact.velocity_limit).max(0.05);
         let contacts = &self.world.contacts;
-        contact_events::report(contacts, before, &after, limit, &mut self.touching, events);
+        self.touching
+            .report(contacts, before, &after, limit, events);
+        self.closing_after = after;
     }
 }
 

@@ -103,6 +103,8 @@ pub struct SweptPairs<T: Real> {
     pub pairs: Vec<(usize, usize)>,
     /// Whether the last call took the earlier pairs instead of sweeping.
     pub reused: bool,
+    /// The step's contact pairs (the tunnelling audit's storage, kept).
+    pub touching: super::ccd::ContactPairs,
 }
 
 impl<T: Real> Default for SweptPairs<T> {
@@ -114,6 +116,7 @@ impl<T: Real> Default for SweptPairs<T> {
             outside: Vec::new(),
             pairs: Vec::new(),
             reused: false,
+            touching: Default::default(),
         }
     }
 }
