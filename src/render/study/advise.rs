@@ -17,29 +17,43 @@ fn num(fmt: &Fmt, x: f64) -> String {
 fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     let c = &a.choice;
     let mut out = Vec::new();
-    out.push((
-        "The cheapest configuration found".to_string(),
-        vec![
-            format!(
-                "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m (per {}: {})",
-                num(fmt, c.cost),
-                num(fmt, c.error),
-                num(fmt, a.target),
-                a.per.name(),
-                a.per.describe()
-            ),
-            format!(
-                "the reference costs {} ({}× this)",
-                num(fmt, a.reference_cost),
-                num(fmt, a.reference_cost / c.cost)
-            ),
-            a.values
-                .iter()
-                .map(|(k, v)| format!("{k} = {v}"))
-                .collect::<Vec<_>>()
-                .join(", "),
-        ],
-    ));
+    let mut found = vec![
+        format!(
+            "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m (per {}: {})",
+            num(fmt, c.cost),
+            num(fmt, c.error),
+            num(fmt, a.target),
+            a.per.name(),
+            a.per.describe()
+        ),
+        format!(
+            "error at the run's end {} m, at its worst step {} m",
+            num(fmt, a.end_error),
+            num(fmt, a.worst_step_error)
+        ),
+    ];
+    if let Some(times) = a.strays() {
+        found.push(format!(
+            "The run meets the target only as it ends: on the way it strays up to {} m from the reference ({}× the target); if the path matters, run `contact-lab advise {} --error {} --per step`.",
+            num(fmt, a.worst_step_error),
+            num(fmt, times),
+            a.scene,
+            a.target
+        ));
+    }
+    found.extend([
+        format!(
+            "the reference costs {} ({}× this)",
+            num(fmt, a.reference_cost),
+            num(fmt, a.reference_cost / c.cost)
+        ),
+        a.values
+            .iter()
+            .map(|(k, v)| format!("{k} = {v}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+    ]);
+    out.push(("The cheapest configuration found".to_string(), found));
     out.push((
         "What each knob kept buys (the error with that knob alone at its cheap setting)".into(),
         if a.needed.is_empty() {
@@ -158,7 +172,8 @@ pub fn json(a: &Advice) -> String {
         "seconds": a.seconds,
         "reference": a.reference,
         "reference_cost": a.reference_cost,
-        "choice": { "config": config, "cost": a.choice.cost, "error": number(a.choice.error) },
+        "choice": { "config": config, "cost": a.choice.cost, "error": number(a.choice.error),
+                    "end_error": number(a.end_error), "worst_step_error": number(a.worst_step_error) },
         "settings": settings_snippet(a),
         "needed": a.needed.iter().map(|n| json!({
             "knob": n.knob, "value": n.value, "cheap": n.cheap, "error_without": number(n.error_without),
