@@ -104,7 +104,7 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     out.push((
         "The search".into(),
         vec![format!(
-            "searched {} configurations in {} s: coordinate descent from the reference ({}){}, each pass trying every value of one dimension with the others held and keeping the cheapest within the target; where no single change helps, pair moves (each value that alone cuts the cost with every value of another dimension) restart it from the cheapest pair within the target; then all of it again from the reference with the other solver, the cheaper end kept; {} passes, {} pair moves taken of {} pairs tried, {} steps simulated ({} s each)",
+            "searched {} configurations in {} s: coordinate descent from the reference ({}){}, each pass trying every value of one dimension with the others held and keeping the cheapest within the target; where no single change helps, pair moves (each value that alone cuts the cost with every value of another dimension) restart it from the cheapest pair within the target; then from the reference at each time step (a pair move, free moves included, and descents), and all of it again from the reference with the other solver, the cheapest end kept; {} passes, {} pair moves taken of {} pairs tried, {} steps simulated ({} s each)",
             a.runs,
             num(fmt, a.wall_seconds),
             a.reference,
@@ -184,9 +184,9 @@ pub fn json(a: &Advice) -> String {
             "feature": f.feature, "present": f.present, "evidence": f.evidence, "calls_for": f.calls_for,
         })).collect::<Vec<_>>(),
         "search": { "method": if a.per == crate::study::advise::Per::Run {
-                        "coordinate descent from the reference and from the per-step descent's stop, with pair moves out of local optima; then again from the reference with the other solver, the cheaper end kept"
+                        "coordinate descent from the reference and from the per-step descent's stop, with pair moves out of local optima; then from the reference at each time step (a pair move, free moves included, and descents); then again from the reference with the other solver; the cheapest end kept"
                     } else {
-                        "coordinate descent from the reference, with pair moves out of local optima; then again from the reference with the other solver, the cheaper end kept"
+                        "coordinate descent from the reference, with pair moves out of local optima; then from the reference at each time step (a pair move, free moves included, and descents); then again from the reference with the other solver; the cheapest end kept"
                     },
                     "passes": a.passes, "pair_moves": a.escapes, "pairs_tried": a.pairs,
                     "configurations": a.runs, "steps": a.steps, "seconds": a.wall_seconds },

@@ -2,8 +2,10 @@
 //! study's dimensions (the budget, the float type, and every knob of the
 //! table offered to the study) searched from the scene's reference (error 0,
 //! the dearest configuration) by coordinate descent with pair moves to leave
-//! local optima ([`search`]), and again from the reference with the other
-//! solver, the cheaper end kept.
+//! local optima ([`search`]), from the reference at each time step (a pair
+//! move with free moves, then descents: the time-step starts), and again
+//! from the reference with the other solver, the cheapest end kept. The
+//! per-run target bounds the settled error (`Per::Run`).
 //!
 //! Cost: (contact visits + continuous detection's tests + 1) per step ×
 //! steps per simulated second — the resolver's visits of both phases, the
