@@ -18,7 +18,9 @@
 //!   movable bodies of the distance to the reference's final positions, m);
 //! - given the reference's [`Trajectory`], the per-step error: the largest,
 //!   over the run's steps, of the RMS distance to the reference at the same
-//!   time (the reference linearly interpolated between its steps).
+//!   time (the reference linearly interpolated between its steps), and the
+//!   settled error: the same, largest over the run's last tenth
+//!   ([`settle_from`]), what advise's per-run target bounds.
 
 use std::time::Instant;
 
@@ -52,6 +54,9 @@ pub struct Measured {
     /// Max over steps of the RMS distance to the reference's trajectory at
     /// the same time, m (0 when no trajectory was given).
     pub step_error: f64,
+    /// Max of the same over the run's last tenth of steps (from
+    /// [`settle_from`]), m (0 when no trajectory was given).
+    pub settle_error: f64,
 }
 
 /// A run's movable bodies' positions after every step (index 0: the start),
@@ -109,6 +114,15 @@ pub fn trajectory(lesson: &Lesson, config: &Config, seconds: f64) -> Trajectory 
         dt: config.params.dt,
         positions,
     }
+}
+
+/// The first step (0-based, the step's end at (step + 1) × dt) of a run of
+/// `n` steps whose error counts as settled: the run's last tenth, at least
+/// its last step. A state the run only passes through (a bouncing ball at
+/// the floor, a wobbling stack within reach of the reference's) at its
+/// end does not stay within a target over a tenth of the run (docs/study.md).
+pub fn settle_from(n: usize) -> usize {
+    n - n.div_ceil(10).max(1).min(n)
 }
 
 /// The number of steps `seconds` takes at `dt`.
@@ -237,7 +251,9 @@ fn measure_in<T: Real>(
         failure: None,
         capped: false,
         step_error: 0.0,
+        settle_error: 0.0,
     };
+    let settled = settle_from(n);
     // Work so far (contact visits and continuous detection's tests, for
     // the cap) and continuous detection's share of it.
     let mut visits = 0usize;
@@ -290,7 +306,11 @@ fn measure_in<T: Real>(
             // The step's time as the reference counts it: (step + 1) × dt.
             let here: Vec<Vector3<f64>> = movable.iter().map(|&i| position(&sim, i)).collect();
             let there = r.at((step + 1) as f64 * config.params.dt);
-            m.step_error = m.step_error.max(rms_distance(&here, &there));
+            let e = rms_distance(&here, &there);
+            m.step_error = m.step_error.max(e);
+            if step >= settled {
+                m.settle_error = m.settle_error.max(e);
+            }
         }
     }
     m.visits_per_step = (visits - ccd_tests) as f64 / n as f64;
@@ -303,6 +323,7 @@ fn measure_in<T: Real>(
             .get_or_insert_with(|| "a position is not finite".into());
         for x in [
             &mut m.step_error,
+            &mut m.settle_error,
             &mut m.max_penetration,
             &mut m.max_closing_velocity,
             &mut m.energy_gain,

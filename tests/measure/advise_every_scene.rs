@@ -48,9 +48,9 @@ fn dear_setting_buys(a: &Advice, solver: contact_lab::physics::Solver) -> (f64, 
     most
 }
 
-/// The choice's per-step error (the largest over the run), printed beside
-/// the run's: where it is far above the target, the run's error meets the
-/// target by a coincidence of the end time (as mass-ratio-stack's 1523 would).
+/// The choice's per-step error (the largest over the run), measured by the
+/// study's run (not advise's lean runner): the advice's `worst_step_error`
+/// must be the same.
 fn step_error(
     l: &contact_lab::lesson::Lesson,
     a: &Advice,
@@ -71,44 +71,48 @@ fn step_error(
 /// The error target, m (per run).
 const TARGET: f64 = 0.01;
 
-/// mass-ratio-stack at 1 cm per run. With sequential impulses on
-/// solver-body arrays (issue 26: the same maths, reordered, so the last bits
-/// of every visit moved) this chaotic stack's landscape moved: the search
-/// now reaches 2414 (it reached 1744 before, a configuration that now
-/// misses). An exhaustive scan (`examples/advise_scan.rs`, 55,296
-/// configurations, capped at 2414, 54 s) finds only two cheaper that meet
-/// 1 cm by the run: 1523 (dt = 1/60 s, sequential impulses warm-started at
-/// 2 visits per contact, both epsilons 10⁻³, rollback), which meets it only
-/// by a coincidence of the run's end time
-/// ([`mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end`]),
-/// and 2120 (dt = 1/60 s, warm sequential impulses converged,
-/// position_epsilon 10⁻³, velocity_epsilon 0.1, rollback), within 1 cm at
-/// every step. The search's 2414 is 1.14× that; the bound is what it reaches.
-const MASS_RATIO_SEARCH: f64 = 2414.0;
+/// mass-ratio-stack at 1 cm per run, under the settled rule (the error
+/// within the target at the run's end and over its last tenth,
+/// docs/study.md). An exhaustive scan (`examples/advise_scan.rs`, 55,296
+/// configurations, capped at 2492, 389 s at a load of 12) finds one
+/// configuration cheaper that meets 1 cm at the end: 1523 (dt = 1/60 s,
+/// sequential impulses warm-started at 2 visits per contact, both epsilons
+/// 10⁻³, rollback), which is 3 cm off a tenth of the run before its end
+/// (and 12 cm at worst): a coincidence of the end time, not settled
+/// ([`mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end`]).
+/// The cheapest settled is 2120 (dt = 1/60 s, warm sequential impulses
+/// converged, `position_epsilon` 10⁻³, `velocity_epsilon` 0.1, rollback),
+/// within 1 cm at every step too, and the search reaches it from its
+/// time-step starts (before them, 2492; before the rule, 2414, 4 cm at its
+/// worst step and 2.2 cm a tenth before the end).
+const MASS_RATIO_SEARCH: f64 = 2120.0;
 
-/// The scan's cheapest configuration within 1 cm at every step (above).
+/// The scan's cheapest configuration within 1 cm settled and at every step (above).
 const MASS_RATIO_BEST_EVERY_STEP: f64 = 2120.0;
 
-/// Each scene's cost at 1 cm before the second search (from the reference
-/// with the other solver): no scene may do worse. That search brought
-/// sliding-box 1080 → 440, ramp-stick 272 → 46, stack-5 3180 → 1140,
-/// sleep-modes 6759 → 3762, hull-stack 984 → 396.
+/// Each scene's cost at 1 cm per run: no scene may do worse. Under the
+/// settled rule, a choice that met the target only at the run's end costs
+/// more: ball-drop 63 → 242 (its bouncing ball 1.6 mm off at 2 s, 16 cm
+/// 0.1 s before and after), mass-ratio-stack 2414 → 2120 (above; cheaper:
+/// the time-step starts). The time-step starts brought sliding-box 440 →
+/// 194. ramp-stick costs 48 where it cost 46 before the rule (its 46 is
+/// settled too, but the descent's path changed with the measure; see
+/// docs/study.md).
 const BEFORE: [(&str, f64); 23] = [
-    ("ball-drop", 63.0),
+    ("ball-drop", 242.0),
     ("resting-box", 38.0),
-    ("sliding-box", 1080.0),
-    ("ramp-stick", 272.0),
+    ("sliding-box", 194.0),
+    ("ramp-stick", 48.0),
     ("ramp-slide", 1108.0),
-    ("stack-5", 3180.0),
+    ("stack-5", 1140.0),
     ("cradle-over-time", 34.0),
     ("sleep-and-wake", 672.0),
-    ("sleep-modes", 6759.0),
+    ("sleep-modes", 3762.0),
     ("kane-rod-bounce", 1930.0),
     ("sphere-row-20", 5302.0),
-    // 1744 before the solver-body arrays moved the stack's last bits (above).
     ("mass-ratio-stack", MASS_RATIO_SEARCH),
     ("overlap-recovery", 62.0),
-    ("hull-stack", 984.0),
+    ("hull-stack", 396.0),
     ("gjk-separated", 30.0),
     ("gjk-touching", 30.0),
     ("epa-edge-edge", 31.0),
@@ -149,7 +153,7 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
             a.choice.cost,
             a.reference_cost,
             a.choice.error,
-            step_error(&l, &a, solver),
+            a.worst_step_error,
             checked
                 .as_ref()
                 .map_or("FAILED".to_string(), |c| format!("{:.2e}", c.pasted_error)),
@@ -162,11 +166,34 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
             a.choice.config.precision.name(),
             needed.join(", ")
         );
+        // The worst step the advice states is the study's run's.
+        let worst = step_error(&l, &a, solver);
+        if worst != a.worst_step_error {
+            failures.push(format!(
+                "{id}: worst step {} stated, {worst} measured",
+                a.worst_step_error
+            ));
+        }
+        // The sentence that the run strays on the way: where the worst step
+        // is over 10× the target (sphere-row-20: 18 cm, its row settling
+        // back within 1 cm by the end), and nowhere else.
+        let text = contact_lab::render::study::advise::text(&a, &contact_lab::format::Fmt::new(3));
+        let says = text.contains(&format!("--error {TARGET} --per step"));
+        if says != (a.worst_step_error > 10.0 * TARGET) || says != a.strays().is_some() {
+            failures.push(format!(
+                "{id}: worst step {} against the target {TARGET}; the sentence {}",
+                a.worst_step_error,
+                if says { "said" } else { "not said" }
+            ));
+        }
+        if *id == "sphere-row-20" && !says {
+            failures.push(format!("{id}: no sentence that the row strays on the way"));
+        }
         // The descent ended on a pass that changed nothing, not at the cap
         // (mass-ratio-stack was still moving at the 4th pass when 4 was it).
         if *id == "mass-ratio-stack" && a.choice.cost > MASS_RATIO_SEARCH + 0.5 {
             failures.push(format!(
-                "mass-ratio-stack: cost {} over the {MASS_RATIO_SEARCH} it reached (the best scanned within the target at every step is {MASS_RATIO_BEST_EVERY_STEP}, by the run's end {MASS_RATIO_BEST_SCANNED})",
+                "mass-ratio-stack: cost {} over the {MASS_RATIO_SEARCH} it reached (the best scanned settled is {MASS_RATIO_BEST_EVERY_STEP}, at the run's end only {MASS_RATIO_BEST_SCANNED})",
                 a.choice.cost
             ));
         }
@@ -205,7 +232,9 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// Why the search does not stop at the scan's 1523 on mass-ratio-stack: 1523 meets 1 cm only at the run's end. Its stack, two visits per
+/// Why the search does not stop at the scan's 1523 on mass-ratio-stack: 1523
+/// meets 1 cm only at the run's end, and the settled rule (docs/study.md)
+/// leaves it out: it is 3 cm off within the run's last tenth. Its stack, two visits per
 /// contact at dt = 1/60 s, wobbles 3–4 cm off the reference through the run
 /// (12 cm at worst), passes within 6 mm of it at 2 s, and is 4 cm off again
 /// by 2.5 s; every change of its budget or of either epsilon (each of which,
@@ -213,7 +242,7 @@ fn advise_on_every_scene_meets_the_target_pasted_and_each_knob_is_what_it_says()
 /// cm. An isolated point that a coincidence of the end time puts within the
 /// target is not reachable one or two knobs at a time from anywhere, nor
 /// worth advising. The scan's 2120 stays within the target at every step,
-/// and the search's choice is within 15 % of it.
+/// and the search reaches it.
 #[test]
 fn mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end() {
     let l = lesson("mass-ratio-stack");
@@ -242,6 +271,8 @@ fn mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end() {
     assert_eq!(cost.round(), MASS_RATIO_BEST_SCANNED);
     assert!(error <= TARGET, "{error}");
     assert!(m.step_error > 10.0 * TARGET, "{}", m.step_error);
+    // Not settled: over the target within the run's last tenth.
+    assert!(m.settle_error > 2.0 * TARGET, "{}", m.settle_error);
     // Half a second later it is off by more than the target again.
     let later = |c| run::measure(&l, c, seconds + 0.5).positions;
     let off_later = run::rms_distance(&later(&scanned), &later(&reference));
@@ -281,12 +312,12 @@ fn mass_ratio_stacks_best_scanned_meets_the_target_only_at_the_runs_end() {
     );
     assert_eq!(cost.round(), MASS_RATIO_BEST_EVERY_STEP);
     assert!(
-        error <= TARGET && m.step_error <= TARGET,
+        error <= TARGET && m.step_error <= TARGET && m.settle_error <= TARGET,
         "{error}, {}",
         m.step_error
     );
     let a = advise(&l, seconds, solver, TARGET, Per::Run).unwrap();
     println!("advised: cost {:.0}", a.choice.cost);
     assert_eq!(a.choice.cost.round(), MASS_RATIO_SEARCH);
-    assert!(a.choice.cost <= 1.15 * MASS_RATIO_BEST_EVERY_STEP);
+    assert!(a.worst_step_error <= TARGET, "{}", a.worst_step_error);
 }

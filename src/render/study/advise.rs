@@ -17,29 +17,43 @@ fn num(fmt: &Fmt, x: f64) -> String {
 fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     let c = &a.choice;
     let mut out = Vec::new();
-    out.push((
-        "The cheapest configuration found".to_string(),
-        vec![
-            format!(
-                "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m (per {}: {})",
-                num(fmt, c.cost),
-                num(fmt, c.error),
-                num(fmt, a.target),
-                a.per.name(),
-                a.per.describe()
-            ),
-            format!(
-                "the reference costs {} ({}× this)",
-                num(fmt, a.reference_cost),
-                num(fmt, a.reference_cost / c.cost)
-            ),
-            a.values
-                .iter()
-                .map(|(k, v)| format!("{k} = {v}"))
-                .collect::<Vec<_>>()
-                .join(", "),
-        ],
-    ));
+    let mut found = vec![
+        format!(
+            "cost {} (work per simulated second: contact visits + 1 per step), error {} m against the target {} m (per {}: {})",
+            num(fmt, c.cost),
+            num(fmt, c.error),
+            num(fmt, a.target),
+            a.per.name(),
+            a.per.describe()
+        ),
+        format!(
+            "error at the run's end {} m, at its worst step {} m",
+            num(fmt, a.end_error),
+            num(fmt, a.worst_step_error)
+        ),
+    ];
+    if let Some(times) = a.strays() {
+        found.push(format!(
+            "The run meets the target only as it ends: on the way it strays up to {} m from the reference ({}× the target); if the path matters, run `contact-lab advise {} --error {} --per step`.",
+            num(fmt, a.worst_step_error),
+            num(fmt, times),
+            a.scene,
+            a.target
+        ));
+    }
+    found.extend([
+        format!(
+            "the reference costs {} ({}× this)",
+            num(fmt, a.reference_cost),
+            num(fmt, a.reference_cost / c.cost)
+        ),
+        a.values
+            .iter()
+            .map(|(k, v)| format!("{k} = {v}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+    ]);
+    out.push(("The cheapest configuration found".to_string(), found));
     out.push((
         "What each knob kept buys (the error with that knob alone at its cheap setting)".into(),
         if a.needed.is_empty() {
@@ -90,7 +104,7 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
     out.push((
         "The search".into(),
         vec![format!(
-            "searched {} configurations in {} s: coordinate descent from the reference ({}){}, each pass trying every value of one dimension with the others held and keeping the cheapest within the target; where no single change helps, pair moves (each value that alone cuts the cost with every value of another dimension) restart it from the cheapest pair within the target; then all of it again from the reference with the other solver, the cheaper end kept; {} passes, {} pair moves taken of {} pairs tried, {} steps simulated ({} s each)",
+            "searched {} configurations in {} s: coordinate descent from the reference ({}){}, each pass trying every value of one dimension with the others held and keeping the cheapest within the target; where no single change helps, pair moves (each value that alone cuts the cost with every value of another dimension) restart it from the cheapest pair within the target; then from the reference at each time step (a pair move, free moves included, and descents), and all of it again from the reference with the other solver, the cheapest end kept; {} passes, {} pair moves taken of {} pairs tried, {} steps simulated ({} s each)",
             a.runs,
             num(fmt, a.wall_seconds),
             a.reference,
@@ -158,7 +172,8 @@ pub fn json(a: &Advice) -> String {
         "seconds": a.seconds,
         "reference": a.reference,
         "reference_cost": a.reference_cost,
-        "choice": { "config": config, "cost": a.choice.cost, "error": number(a.choice.error) },
+        "choice": { "config": config, "cost": a.choice.cost, "error": number(a.choice.error),
+                    "end_error": number(a.end_error), "worst_step_error": number(a.worst_step_error) },
         "settings": settings_snippet(a),
         "needed": a.needed.iter().map(|n| json!({
             "knob": n.knob, "value": n.value, "cheap": n.cheap, "error_without": number(n.error_without),
@@ -169,9 +184,9 @@ pub fn json(a: &Advice) -> String {
             "feature": f.feature, "present": f.present, "evidence": f.evidence, "calls_for": f.calls_for,
         })).collect::<Vec<_>>(),
         "search": { "method": if a.per == crate::study::advise::Per::Run {
-                        "coordinate descent from the reference and from the per-step descent's stop, with pair moves out of local optima; then again from the reference with the other solver, the cheaper end kept"
+                        "coordinate descent from the reference and from the per-step descent's stop, with pair moves out of local optima; then from the reference at each time step (a pair move, free moves included, and descents); then again from the reference with the other solver; the cheapest end kept"
                     } else {
-                        "coordinate descent from the reference, with pair moves out of local optima; then again from the reference with the other solver, the cheaper end kept"
+                        "coordinate descent from the reference, with pair moves out of local optima; then from the reference at each time step (a pair move, free moves included, and descents); then again from the reference with the other solver; the cheapest end kept"
                     },
                     "passes": a.passes, "pair_moves": a.escapes, "pairs_tried": a.pairs,
                     "configurations": a.runs, "steps": a.steps, "seconds": a.wall_seconds },

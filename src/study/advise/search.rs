@@ -20,7 +20,7 @@
 //! search reads ([`runner`]). The cost is deterministic work, not time, so
 //! the same scene and target always give the same advice.
 
-use super::{runner, Dimension, Eval};
+use super::{runner, Dimension, Eval, Per};
 use crate::lesson::Lesson;
 use crate::study::{grid, run, Config};
 
@@ -41,8 +41,12 @@ pub(super) struct Evaluator<'a> {
     pub lesson: &'a Lesson,
     pub seconds: f64,
     pub reference: Vec<nalgebra::Vector3<f64>>,
-    /// The reference's positions at every step, for [`super::Per::Step`].
-    pub trajectory: Option<run::Trajectory>,
+    /// The reference's positions at every step.
+    pub trajectory: run::Trajectory,
+    /// The error measured: per run, the settled error (the largest over the
+    /// run's last tenth, its end's included); per step, the largest over
+    /// every step.
+    pub per: Per,
     /// Each configuration's evaluation, and the cap it was stopped at.
     pub cache: Vec<(Eval, Option<f64>)>,
     /// Against a per-step target: stop a run at the first step whose error
@@ -54,8 +58,8 @@ pub(super) struct Evaluator<'a> {
     /// stopped at a cap, then asked with a higher one).
     pub hits: usize,
     pub reruns: usize,
-    /// Every run that went to its end, with the run's error (final
-    /// positions against `reference`) whatever this evaluator measures: a
+    /// Every run that went to its end, with the run's settled error (the
+    /// per-run measure) whatever this evaluator measures: a
     /// search against the per-step error hands them to the one against the
     /// run's, which then need not run them again.
     pub finished: Vec<Eval>,
@@ -78,25 +82,35 @@ impl Evaluator<'_> {
         } else {
             usize::MAX
         };
+        let from = match self.per {
+            Per::Step => 0,
+            Per::Run => run::settle_from(run::steps(self.seconds, config.params.dt)),
+        };
         let m = runner::run(
             self.lesson,
             config,
             self.seconds,
             limit,
-            self.trajectory.as_ref(),
-            self.stop_over,
+            Some(runner::Against {
+                reference: &self.trajectory,
+                from,
+                stop_over: self.stop_over,
+            }),
         );
         self.runs += 1;
         self.steps += m.steps;
+        // The run's settled error: the end's (against the reference's final
+        // positions) or the last tenth's, the larger.
+        let settled = if m.failed {
+            f64::NAN
+        } else {
+            run::rms_distance(&m.positions, &self.reference).max(m.settle_error)
+        };
         if !(m.capped || m.over) {
             self.finished.push(Eval {
                 config: *config,
                 cost: work_cost(m.work, m.steps, self.seconds),
-                error: if m.failed {
-                    f64::NAN
-                } else {
-                    run::rms_distance(&m.positions, &self.reference)
-                },
+                error: settled,
             });
         }
         let e = if m.capped || m.over {
@@ -109,18 +123,44 @@ impl Evaluator<'_> {
             Eval {
                 config: *config,
                 cost: work_cost(m.work, m.steps, self.seconds),
-                error: if m.failed {
-                    f64::NAN
-                } else if self.trajectory.is_some() {
-                    m.step_error
-                } else {
-                    run::rms_distance(&m.positions, &self.reference)
+                error: match self.per {
+                    _ if m.failed => f64::NAN,
+                    Per::Step => m.step_error,
+                    Per::Run => settled,
                 },
             }
         };
         self.cache.retain(|(x, _)| x.config != *config);
         self.cache.push((e, m.capped.then_some(cap)));
         e
+    }
+}
+
+impl Evaluator<'_> {
+    /// `config` run to its end with every step compared with the
+    /// reference: its error at the end and at its worst step (m; NaN: it
+    /// blew up).
+    pub fn both_errors(&mut self, config: &Config) -> (f64, f64) {
+        let m = runner::run(
+            self.lesson,
+            config,
+            self.seconds,
+            usize::MAX,
+            Some(runner::Against {
+                reference: &self.trajectory,
+                from: 0,
+                stop_over: None,
+            }),
+        );
+        self.runs += 1;
+        self.steps += m.steps;
+        if m.failed {
+            return (f64::NAN, f64::NAN);
+        }
+        (
+            run::rms_distance(&m.positions, &self.reference),
+            m.step_error,
+        )
     }
 }
 
@@ -227,12 +267,16 @@ pub(super) fn descend(
 }
 
 /// The cheapest pair move from `current` within `target` that is cheaper
-/// than `current` (module docs), and the pair configurations tried.
-fn pair_move(
+/// than `current` (module docs), and the pair configurations tried. With
+/// `free`, a move that costs the same (a tie: it changes nothing the cost
+/// sees, as rollback at a tight velocity epsilon) pairs with every value of
+/// another dimension too, as a cut does.
+pub(super) fn pair_move(
     ev: &mut Evaluator,
     dims: &[Dimension],
     current: &Config,
     target: f64,
+    free: bool,
 ) -> (Option<Eval>, usize) {
     let here = ev.eval(current, f64::INFINITY).cost;
     let cap = |c: f64| c * (1.0 + 2.0 * COST_TIE);
@@ -242,7 +286,8 @@ fn pair_move(
     for (d, dim) in dims.iter().enumerate() {
         for v in &dim.values {
             let c = with(current, dim.name, v);
-            if c != *current && cheaper(ev.eval(&c, cap(here)).cost, here) {
+            let cost = ev.eval(&c, cap(here)).cost;
+            if c != *current && (cheaper(cost, here) || (free && !cheaper(here, cost))) {
                 cuts.push((d, c));
             }
         }
@@ -300,7 +345,7 @@ pub(super) fn search(
     let mut current = current.unwrap_or(seeds[0]);
     let (mut escapes, mut pairs) = (0, 0);
     while escapes < MAX_ESCAPES {
-        let (found, tried) = pair_move(ev, dims, &current, target);
+        let (found, tried) = pair_move(ev, dims, &current, target, false);
         pairs += tried;
         let Some(e) = found else {
             break;
