@@ -181,6 +181,30 @@ pub fn desired_of<T: Real>(c: &ResolverContact<T>, from: RestitutionFrom) -> T {
     }
 }
 
+/// The slip speed (the tangential part of `Cᵀ(q̇₁ - q̇₂)` less the planar
+/// acceleration term; zero without friction) and the contact's bookkeeping
+/// velocity (`Cᵀ(q̇₁ - q̇₂)` with the planar term added where it is
+/// anticipated). Both prepares call it: the same operations on the same bits.
+pub(crate) fn slip_and_velocity<T: Real>(
+    bodies_velocity: &Vector3<T>,
+    planar: Vector3<T>,
+    with_friction: bool,
+    anticipate_planar: bool,
+) -> (T, Vector3<T>) {
+    let slip = if with_friction {
+        let (y, z) = (bodies_velocity.y - planar.y, bodies_velocity.z - planar.z);
+        (y * y + z * z).sqrt()
+    } else {
+        T::zero()
+    };
+    let velocity = if anticipate_planar && planar != Vector3::zeros() {
+        bodies_velocity + planar
+    } else {
+        *bodies_velocity
+    };
+    (slip, velocity)
+}
+
 /// `g/Δt` of a contact with a gap `g = -penetration > 0` in a step that
 /// asks for speculative contacts, else zero.
 pub(crate) fn gap_speed<T: Real>(world: &World<T>, penetration: T) -> T {
@@ -322,25 +346,17 @@ pub fn prepare_into<T: Real>(
         });
         let acceleration = relative_acceleration(acceleration);
         let duration = contact.duration.unwrap_or(world.step.duration);
-        let (velocity_from_acceleration, mut planar) =
+        let (velocity_from_acceleration, planar) =
             acceleration_terms(&acceleration, &basis, duration);
         // `Cᵀ(q̇₁ - q̇₂)` once: the slip reads it as it is, the bookkeeping
         // velocity with the planar term added (what `contact_velocity` adds).
         let (_, bodies_velocity) = contact_velocity(&point_velocity, &basis, &Vector3::zeros());
-        let slip = if with_friction {
-            let (y, z) = (bodies_velocity.y - planar.y, bodies_velocity.z - planar.z);
-            (y * y + z * z).sqrt()
-        } else {
-            T::zero()
-        };
-        if !world.step.anticipate_planar_acceleration {
-            planar = Vector3::zeros();
-        }
-        let velocity = if planar != Vector3::zeros() {
-            bodies_velocity + planar
-        } else {
-            bodies_velocity
-        };
+        let (slip, velocity) = slip_and_velocity(
+            &bodies_velocity,
+            planar,
+            with_friction,
+            world.step.anticipate_planar_acceleration,
+        );
         let friction_index = matrix.map(|matrix| {
             friction.push(FrictionData {
                 model: input.friction_model,

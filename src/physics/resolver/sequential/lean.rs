@@ -18,7 +18,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::super::prepare::{desired_of, gap_speed, prepare_bodies, Prepared};
+use super::super::prepare::{desired_of, gap_speed, prepare_bodies, slip_and_velocity, Prepared};
 use super::super::{ContactSetup, FrictionData, ResolverContact};
 use super::rows::{solver_bodies, symmetric_inverse, Rows};
 use super::State;
@@ -141,25 +141,17 @@ pub fn prepare<T: Real>(
         rows.inverse[(0, 0)] = T::one() / unit_total;
         let acceleration = relative_acceleration(acceleration);
         let duration = contact.duration.unwrap_or(world.step.duration);
-        let (velocity_from_acceleration, mut planar) =
+        let (velocity_from_acceleration, planar) =
             acceleration_terms(&acceleration, &basis, duration);
         // `Cᵀ(q̇₁ - q̇₂)`: the slip reads it as it is, the bookkeeping
         // velocity with the planar term added.
         let bodies_velocity = basis.transpose() * point_velocity;
-        let slip = if with_friction {
-            let (y, z) = (bodies_velocity.y - planar.y, bodies_velocity.z - planar.z);
-            (y * y + z * z).sqrt()
-        } else {
-            T::zero()
-        };
-        if !world.step.anticipate_planar_acceleration {
-            planar = Vector3::zeros();
-        }
-        let velocity = if planar != Vector3::zeros() {
-            bodies_velocity + planar
-        } else {
-            bodies_velocity
-        };
+        let (slip, velocity) = slip_and_velocity(
+            &bodies_velocity,
+            planar,
+            with_friction,
+            world.step.anticipate_planar_acceleration,
+        );
         let friction_index = with_friction.then(|| {
             // M = Σ A_iᵀ T_i + Σ m_i⁻¹ 𝟙 (= Cᵀ(Σ -[r_i]× I_i⁻¹ [r_i]×)C + Σ m_i⁻¹ 𝟙).
             let linear = rows.inverse_mass[0] - rows.inverse_mass[1];
