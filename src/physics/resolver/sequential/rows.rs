@@ -181,17 +181,8 @@ pub fn build<T: Real>(
         let mut rows = Rows {
             bodies: [world; 2],
             basis: k.basis,
-            angular: [Matrix3::zeros(); 2],
-            inverse_mass: [T::zero(); 2],
-            turn: [Matrix3::zeros(); 2],
-            inverse: Matrix3::zeros(),
-            normal_row: Vector3::zeros(),
-            offset: Vector3::zeros(),
-            bounce: T::zero(),
-            mu: T::zero(),
-            friction: false,
-            sliding: false,
             unit_total: setup.unit_total,
+            ..Rows::empty()
         };
         for (i, slot) in k.bodies.iter().enumerate() {
             let Some(b) = *slot else { continue };
