@@ -8,6 +8,7 @@
 
 use nalgebra::Vector3;
 
+use super::lean_take as lean;
 use super::observer::VelocityImpulse;
 use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
 use crate::physics::params::RestitutionFrom;
@@ -39,7 +40,20 @@ pub fn take_changes<T: Real>(
     friction: Option<&FrictionData<T>>,
     bodies: &mut [ResolverBody<T>],
 ) -> BodyChanges<T> {
-    let (impulse_contact, _) = impulse_of(c, setup, friction);
+    let impulse_contact = match friction {
+        // The lecture's clamp, lean (one solve, inlined here).
+        Some(f) if f.model == FrictionModel::Millington => {
+            let (g, _) = impulse_contact(
+                c.desired,
+                &c.velocity,
+                setup.unit_total,
+                Some(&f.matrix),
+                true,
+            );
+            lean::millington_clamp(g, f, c.desired, setup.unit_total)
+        }
+        _ => impulse_elsewise(c, setup, friction),
+    };
     let impulse_world = c.basis * impulse_contact;
     let mut out = BodyChanges {
         bodies: [usize::MAX; 2],
@@ -79,6 +93,17 @@ fn apply_world<T: Real>(
         body.angular_velocity = change.w;
         record(i, b, change);
     }
+}
+
+/// [`impulse_of`]'s impulse for [`take_changes`] without Millington
+/// friction, kept out of line (so the lean path's solve is inlined there).
+#[inline(never)]
+fn impulse_elsewise<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+) -> Vector3<T> {
+    impulse_of(c, setup, friction).0
 }
 
 /// The contact-space impulse of contact `c` (frictionless `Δv/Δq̇_t`, or the
