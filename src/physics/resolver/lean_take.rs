@@ -48,7 +48,8 @@ pub fn millington_clamp<T: Real>(
 ) -> Vector3<T> {
     let (mu_s, mu_d) = (f.static_friction, f.dynamic_friction);
     let planar = planar_norm(g.y, g.z);
-    if !(planar > mu_s * g.x) {
+    // Sticks unless the planar part is above the cone (NaN included: sticks).
+    if planar.partial_cmp(&(mu_s * g.x)) != Some(std::cmp::Ordering::Greater) {
         return g;
     }
     let m = &f.matrix.matrix;
