@@ -19,6 +19,7 @@
 
 pub mod checks;
 pub mod indexed;
+mod lean_take;
 pub mod observer;
 mod phase;
 pub mod position;

@@ -54,12 +54,15 @@ impl<T: Real> TournamentTree<T> {
         self.nodes.reserve(need.saturating_sub(self.nodes.len()));
     }
 
+    #[inline(always)]
     pub(super) fn key(x: T) -> T {
-        // NaN is the one value not ordered against itself.
-        if x.partial_cmp(&x).is_none() {
-            -c::<T>(f64::INFINITY)
-        } else {
+        // NaN (the one value not above -inf, bar -inf itself) ranks as -inf;
+        // `x > -inf ? x : -inf` is one `maxsd`.
+        let lowest = -c::<T>(f64::INFINITY);
+        if x > lowest {
             x
+        } else {
+            lowest
         }
     }
 

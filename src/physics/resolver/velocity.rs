@@ -8,6 +8,7 @@
 
 use nalgebra::Vector3;
 
+use super::lean_take as lean;
 use super::observer::VelocityImpulse;
 use super::{ContactSetup, FrictionData, ResolverBody, ResolverContact};
 use crate::physics::params::RestitutionFrom;
@@ -39,7 +40,20 @@ pub fn take_changes<T: Real>(
     friction: Option<&FrictionData<T>>,
     bodies: &mut [ResolverBody<T>],
 ) -> BodyChanges<T> {
-    let (impulse_contact, _) = impulse_of(c, setup, friction);
+    let impulse_contact = match friction {
+        // The lecture's clamp, lean (one solve, inlined here).
+        Some(f) if f.model == FrictionModel::Millington => {
+            let (g, _) = impulse_contact(
+                c.desired,
+                &c.velocity,
+                setup.unit_total,
+                Some(&f.matrix),
+                true,
+            );
+            lean::millington_clamp(g, f, c.desired, setup.unit_total)
+        }
+        _ => impulse_elsewise(c, setup, friction),
+    };
     let impulse_world = c.basis * impulse_contact;
     let mut out = BodyChanges {
         bodies: [usize::MAX; 2],
@@ -79,6 +93,17 @@ fn apply_world<T: Real>(
         body.angular_velocity = change.w;
         record(i, b, change);
     }
+}
+
+/// [`impulse_of`]'s impulse for [`take_changes`] without Millington
+/// friction, kept out of line (so the lean path's solve is inlined there).
+#[inline(never)]
+fn impulse_elsewise<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    friction: Option<&FrictionData<T>>,
+) -> Vector3<T> {
+    impulse_of(c, setup, friction).0
 }
 
 /// The contact-space impulse of contact `c` (frictionless `Δv/Δq̇_t`, or the
@@ -219,6 +244,14 @@ fn to_contact<T: Real>(basis: &nalgebra::Matrix3<T>, v: &Vector3<T>) -> Vector3<
     Vector3::new(dot(0), dot(1), dot(2))
 }
 
+/// [`to_contact`] from the basis by rows: component k is
+/// `C[(0, k)]·v.x + C[(1, k)]·v.y + C[(2, k)]·v.z` as there (the same
+/// operations in the same order), the three components side by side.
+#[inline(always)]
+fn to_contact_rows<T: Real>(rows: &[Vector3<T>; 3], v: &Vector3<T>) -> Vector3<T> {
+    rows[0] * v.x + rows[1] * v.y + rows[2] * v.z
+}
+
 /// A neighbour's slot that the taken contact did not change.
 pub const UNCHANGED: u8 = u8::MAX;
 
@@ -233,7 +266,9 @@ pub const UNCHANGED: u8 = u8::MAX;
 pub struct VelocityRow<T: Real> {
     pub velocity: Vector3<T>,
     pub desired: T,
-    basis: nalgebra::Matrix3<T>,
+    /// The basis by rows (`basis_rows[i][k]` is `C[(i, k)]`): [`to_contact`]'s
+    /// three dot products as one sum of rows, lane by lane.
+    basis_rows: [Vector3<T>; 3],
     r: [Vector3<T>; 2],
     rule: DesiredRule<T>,
 }
@@ -315,7 +350,7 @@ impl<T: Real> VelocityRow<T> {
         VelocityRow {
             velocity: c.velocity,
             desired: c.desired,
-            basis: c.basis,
+            basis_rows: [0, 1, 2].map(|i| c.basis.row(i).transpose()),
             r: c.r,
             rule: DesiredRule::of(c, from),
         }
@@ -331,15 +366,15 @@ impl<T: Real> VelocityRow<T> {
         let mut velocity = self.velocity;
         if slots[0] != UNCHANGED {
             let d = usize::from(slots[0] & 1);
-            velocity += to_contact(
-                &self.basis,
+            velocity += to_contact_rows(
+                &self.basis_rows,
                 &(changes.dv[d] + changes.dw[d].cross(&self.r[0])),
             );
         }
         if slots[1] != UNCHANGED {
             let d = usize::from(slots[1] & 1);
-            velocity -= to_contact(
-                &self.basis,
+            velocity -= to_contact_rows(
+                &self.basis_rows,
                 &(changes.dv[d] + changes.dw[d].cross(&self.r[1])),
             );
         }
