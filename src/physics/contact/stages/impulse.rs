@@ -279,6 +279,43 @@ pub fn impulse_factored<T: Real>(
     desired: &DesiredVelocity<T>,
     factored: Option<&FactoredMatrix<T>>,
 ) -> Impulse<T> {
+    let mut impulse = Impulse::empty();
+    impulse_factored_into(
+        problem,
+        inverse_inertias,
+        frame,
+        unit,
+        desired,
+        factored,
+        &mut impulse,
+    );
+    impulse
+}
+
+impl<T: Real> Impulse<T> {
+    /// A record to be written by [`impulse_factored_into`].
+    pub fn empty() -> Self {
+        Impulse {
+            impulse_contact: Vector3::zeros(),
+            impulse_world: Vector3::zeros(),
+            solve: None,
+            closed_form_j: T::zero(),
+            closed_form_relative_difference: T::zero(),
+        }
+    }
+}
+
+/// [`impulse_factored`] written into `out` (the stage path's form).
+#[inline]
+pub fn impulse_factored_into<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    factored: Option<&FactoredMatrix<T>>,
+    out: &mut Impulse<T>,
+) {
     let normal_only = Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
     let (impulse_contact, solve) = impulse_contact(
         desired.desired,
@@ -294,13 +331,11 @@ pub fn impulse_factored<T: Real>(
     } else {
         (normal_only.x - closed_form_j).abs()
     };
-    Impulse {
-        impulse_contact,
-        impulse_world: frame.to_world(&impulse_contact),
-        solve,
-        closed_form_j,
-        closed_form_relative_difference,
-    }
+    out.impulse_contact = impulse_contact;
+    out.impulse_world = frame.to_world(&impulse_contact);
+    out.solve = solve;
+    out.closed_form_j = closed_form_j;
+    out.closed_form_relative_difference = closed_form_relative_difference;
 }
 
 #[cfg(test)]
