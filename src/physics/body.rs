@@ -220,6 +220,12 @@ mod tests {
         let a = Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, -0.0));
         same_bits(&quarter, &a, f64::to_bits);
         same_bits(&-quarter, &(-a), f64::to_bits);
+        // A diagonal tensor written with -0 off the diagonal, and zeros on it.
+        let mut b = Matrix3::from_diagonal(&Vector3::new(0.0, 3.0, 0.5));
+        b[(0, 1)] = -0.0;
+        b[(2, 0)] = -0.0;
+        same_bits(&quarter, &b, f64::to_bits);
+        same_bits(&Matrix3::identity(), &b, f64::to_bits);
         assert_eq!(cases, 20_000);
     }
 }

@@ -101,6 +101,8 @@ impl<T: Real> FactoredMatrix<T> {
     /// 3×3 matrix) already shows κ·ε < 1e-3, that bound stands in for κ and
     /// no eigenvalue is computed; otherwise as [`FactoredMatrix::with_condition`].
     /// Either way the same factorisation is chosen, so g is the same.
+    /// Inlined: the stage path then builds it in place (no copy into its `Option`).
+    #[inline]
     pub fn new(m: Matrix3<T>) -> Self {
         // Only a positive-definite M (Cholesky succeeds) may skip the eigenvalues:
         // an indefinite M is hopeless however small the bound.
