@@ -1,4 +1,5 @@
-//! Cost of one contact: bare stage maths (`solve_stages`, f64 and f32),
+//! Cost of one contact: bare stage maths (`solve_stages`, f64 and f32; and
+//! `solve_stages_into` a `Stages` the loop holds, as a hot loop would call it),
 //! the stages with their physical checks (`solve`), against the full worked
 //! solution with its trace, and the friction path against the frictionless
 //! one.
@@ -6,7 +7,7 @@
 use std::hint::black_box;
 
 use contact_lab::lesson::Lesson;
-use contact_lab::physics::solve::{solve, solve_stages};
+use contact_lab::physics::solve::{solve, solve_stages, solve_stages_into, Stages};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 fn bench(c: &mut Criterion) {
@@ -22,6 +23,10 @@ fn bench(c: &mut Criterion) {
         let p32 = lesson.problem::<f32>(k);
         let mut group = c.benchmark_group(name);
         group.bench_function("stages_f64", |b| b.iter(|| solve_stages(black_box(&p64))));
+        let mut held = Stages::empty();
+        group.bench_function("stages_into_f64", |b| {
+            b.iter(|| solve_stages_into(black_box(&p64), black_box(&mut held)))
+        });
         group.bench_function("stages_f32", |b| b.iter(|| solve_stages(black_box(&p32))));
         group.bench_function("checked_f64", |b| b.iter(|| solve(black_box(&p64))));
         group.bench_function("trace_f64", |b| {

@@ -17,7 +17,7 @@ pub mod stage_id;
 pub mod stages;
 
 pub use problem::{ContactInput, Problem};
-pub use solve::{checks_of, solve, solve_stages, Solution, Stages};
+pub use solve::{checks_of, solve, solve_stages, solve_stages_into, Solution, Stages};
 pub use stage_id::StageId;
 
 use super::{c, Real, RigidBody};

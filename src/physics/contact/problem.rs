@@ -44,9 +44,15 @@ pub type InverseInertias<T> = [Option<Matrix3<T>>; 2];
 impl<T: Real> Problem<T> {
     /// Each slot's world inverse inertia `R I_b⁻¹ Rᵀ`.
     pub fn inverse_inertias(&self) -> InverseInertias<T> {
-        self.bodies
-            .each_ref()
-            .map(|b| b.as_ref().map(RigidBody::inverse_inertia_world))
+        // Written out, not `each_ref().map(..)`: the array is then built in place.
+        [
+            self.bodies[0]
+                .as_ref()
+                .map(RigidBody::inverse_inertia_world),
+            self.bodies[1]
+                .as_ref()
+                .map(RigidBody::inverse_inertia_world),
+        ]
     }
 
     /// The sign body i takes in the contact: +1 for body 1, -1 for body 2

@@ -63,17 +63,44 @@ pub fn apply_impulse_with<T: Real>(
     frame: &ContactFrame<T>,
     impulse_world: &Vector3<T>,
 ) -> AppliedImpulse<T> {
-    let bodies = [0, 1].map(|i| {
-        let body = problem.bodies[i].as_ref()?;
-        let r = frame.r[i]?;
-        Some(body_velocity_change(
-            body.inverse_mass,
-            inverse_inertias[i].as_ref()?,
-            &r,
-            impulse_world,
-            Problem::<T>::sign(i),
-            (&body.velocity, &body.angular_velocity),
-        ))
-    });
-    AppliedImpulse { bodies }
+    let mut applied = AppliedImpulse {
+        bodies: [None, None],
+    };
+    apply_impulse_into(
+        problem,
+        inverse_inertias,
+        frame,
+        impulse_world,
+        &mut applied,
+    );
+    applied
+}
+
+/// [`apply_impulse_with`] written into `out` (the stage path's form: each
+/// body's change is written into its slot, no array of records built and moved).
+#[inline]
+pub fn apply_impulse_into<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    impulse_world: &Vector3<T>,
+    out: &mut AppliedImpulse<T>,
+) {
+    for (i, slot) in out.bodies.iter_mut().enumerate() {
+        *slot = match (
+            problem.bodies[i].as_ref(),
+            frame.r[i],
+            inverse_inertias[i].as_ref(),
+        ) {
+            (Some(body), Some(r), Some(inverse_inertia)) => Some(body_velocity_change(
+                body.inverse_mass,
+                inverse_inertia,
+                &r,
+                impulse_world,
+                Problem::<T>::sign(i),
+                (&body.velocity, &body.angular_velocity),
+            )),
+            _ => None,
+        };
+    }
 }

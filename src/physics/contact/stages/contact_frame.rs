@@ -36,15 +36,32 @@ impl<T: Real> ContactFrame<T> {
         let p = problem.bodies[i].as_ref()?.position;
         Some(difference_digits(&self.r[i]?, &problem.contact.point, &p))
     }
+
+    /// A frame to be written by [`contact_frame_into`].
+    pub fn empty() -> Self {
+        ContactFrame {
+            contact_to_world: Matrix3::zeros(),
+            guess: GuessAxis::X,
+            r: [None, None],
+        }
+    }
 }
 
 pub fn contact_frame<T: Real>(problem: &Problem<T>) -> ContactFrame<T> {
+    let mut frame = ContactFrame::empty();
+    contact_frame_into(problem, &mut frame);
+    frame
+}
+
+/// [`contact_frame`] written into `out` (the stage path's form: the record
+/// is built where it stays).
+#[inline]
+pub fn contact_frame_into<T: Real>(problem: &Problem<T>, out: &mut ContactFrame<T>) {
     let (contact_to_world, guess) = contact_basis(&problem.contact.normal);
     let q = problem.contact.point;
-    let r = [0, 1].map(|i| problem.bodies[i].as_ref().map(|b| q - b.position));
-    ContactFrame {
-        contact_to_world,
-        guess,
-        r,
+    out.contact_to_world = contact_to_world;
+    out.guess = guess;
+    for (r, body) in out.r.iter_mut().zip(&problem.bodies) {
+        *r = body.as_ref().map(|b| q - b.position);
     }
 }

@@ -134,15 +134,50 @@ pub fn desired_delta_velocity<T: Real>(
     problem: &Problem<T>,
     frame: &ContactFrame<T>,
 ) -> DesiredVelocity<T> {
+    let mut desired = DesiredVelocity::empty();
+    desired_delta_velocity_into(problem, frame, &mut desired);
+    desired
+}
+
+impl<T: Real> DesiredVelocity<T> {
+    /// A record to be written by [`desired_delta_velocity_into`].
+    pub fn empty() -> Self {
+        DesiredVelocity {
+            point_velocity: [None, None],
+            contact_velocity_world: Vector3::zeros(),
+            contact_velocity: Vector3::zeros(),
+            planar_from_acceleration: Vector3::zeros(),
+            restitution_given: T::zero(),
+            restitution: T::zero(),
+            restitution_limited: false,
+            velocity_from_acceleration: T::zero(),
+            desired: T::zero(),
+        }
+    }
+}
+
+/// [`desired_delta_velocity`] written into `out` (the stage path's form).
+#[inline]
+pub fn desired_delta_velocity_into<T: Real>(
+    problem: &Problem<T>,
+    frame: &ContactFrame<T>,
+    out: &mut DesiredVelocity<T>,
+) {
     let contact = &problem.contact;
-    let point_velocity =
-        [0, 1].map(|i| Some(problem.bodies[i].as_ref()?.point_velocity(&frame.r[i]?)));
-    let acceleration =
-        relative_acceleration([0, 1].map(|i| problem.bodies[i].as_ref().map(|b| b.acceleration)));
+    for (i, slot) in out.point_velocity.iter_mut().enumerate() {
+        *slot = match (problem.bodies[i].as_ref(), frame.r[i]) {
+            (Some(body), Some(r)) => Some(body.point_velocity(&r)),
+            _ => None,
+        };
+    }
+    let acceleration = relative_acceleration([
+        problem.bodies[0].as_ref().map(|b| b.acceleration),
+        problem.bodies[1].as_ref().map(|b| b.acceleration),
+    ]);
     let (velocity_from_acceleration, planar_from_acceleration) =
         acceleration_terms(&acceleration, &frame.contact_to_world, problem.duration);
     let (contact_velocity_world, contact_velocity) = contact_velocity(
-        &point_velocity,
+        &out.point_velocity,
         &frame.contact_to_world,
         &planar_from_acceleration,
     );
@@ -150,16 +185,12 @@ pub fn desired_delta_velocity<T: Real>(
 
     let (restitution, restitution_limited) =
         applied_restitution(v_s, contact.restitution, contact.settings.velocity_limit);
-    let desired = desired_from(v_s, restitution, velocity_from_acceleration);
-    DesiredVelocity {
-        point_velocity,
-        contact_velocity_world,
-        contact_velocity,
-        planar_from_acceleration,
-        restitution_given: contact.restitution,
-        restitution,
-        restitution_limited,
-        velocity_from_acceleration,
-        desired,
-    }
+    out.contact_velocity_world = contact_velocity_world;
+    out.contact_velocity = contact_velocity;
+    out.planar_from_acceleration = planar_from_acceleration;
+    out.restitution_given = contact.restitution;
+    out.restitution = restitution;
+    out.restitution_limited = restitution_limited;
+    out.velocity_from_acceleration = velocity_from_acceleration;
+    out.desired = desired_from(v_s, restitution, velocity_from_acceleration);
 }

@@ -93,8 +93,40 @@ pub fn friction_clamp_factored<T: Real>(
     impulse: &Impulse<T>,
     factored: Option<&FactoredMatrix<T>>,
 ) -> FrictionClamp<T> {
+    clamp(clamp_inputs(
+        problem, frame, unit, desired, impulse, factored,
+    ))
+}
+
+/// [`friction_clamp_factored`] written into `out` (the stage path's form:
+/// [`clamp`], inlined, builds the record where it stays).
+#[inline]
+pub fn friction_clamp_factored_into<T: Real>(
+    problem: &Problem<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    impulse: &Impulse<T>,
+    factored: Option<&FactoredMatrix<T>>,
+    out: &mut Option<FrictionClamp<T>>,
+) {
+    *out = Some(clamp(clamp_inputs(
+        problem, frame, unit, desired, impulse, factored,
+    )));
+}
+
+/// What the clamp reads of a contact's earlier stages.
+#[inline]
+fn clamp_inputs<'a, T: Real>(
+    problem: &Problem<T>,
+    frame: &'a ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    impulse: &Impulse<T>,
+    factored: Option<&'a FactoredMatrix<T>>,
+) -> ClampInputs<'a, T> {
     let contact = &problem.contact;
-    clamp(ClampInputs {
+    ClampInputs {
         model: contact.friction_model,
         static_friction: contact.static_friction,
         dynamic_friction: contact.dynamic_friction,
@@ -105,7 +137,7 @@ pub fn friction_clamp_factored<T: Real>(
         matrix: factored,
         closed_form_j: impulse.closed_form_j,
         contact_to_world: &frame.contact_to_world,
-    })
+    }
 }
 
 /// The clamp of each friction model on an impulse (see the module comment).

@@ -101,6 +101,8 @@ impl<T: Real> FactoredMatrix<T> {
     /// 3×3 matrix) already shows κ·ε < 1e-3, that bound stands in for κ and
     /// no eigenvalue is computed; otherwise as [`FactoredMatrix::with_condition`].
     /// Either way the same factorisation is chosen, so g is the same.
+    /// Inlined: the stage path then builds it in place (no copy into its `Option`).
+    #[inline]
     pub fn new(m: Matrix3<T>) -> Self {
         // Only a positive-definite M (Cholesky succeeds) may skip the eigenvalues:
         // an indefinite M is hopeless however small the bound.
@@ -279,6 +281,43 @@ pub fn impulse_factored<T: Real>(
     desired: &DesiredVelocity<T>,
     factored: Option<&FactoredMatrix<T>>,
 ) -> Impulse<T> {
+    let mut impulse = Impulse::empty();
+    impulse_factored_into(
+        problem,
+        inverse_inertias,
+        frame,
+        unit,
+        desired,
+        factored,
+        &mut impulse,
+    );
+    impulse
+}
+
+impl<T: Real> Impulse<T> {
+    /// A record to be written by [`impulse_factored_into`].
+    pub fn empty() -> Self {
+        Impulse {
+            impulse_contact: Vector3::zeros(),
+            impulse_world: Vector3::zeros(),
+            solve: None,
+            closed_form_j: T::zero(),
+            closed_form_relative_difference: T::zero(),
+        }
+    }
+}
+
+/// [`impulse_factored`] written into `out` (the stage path's form).
+#[inline]
+pub fn impulse_factored_into<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    unit: &UnitImpulse<T>,
+    desired: &DesiredVelocity<T>,
+    factored: Option<&FactoredMatrix<T>>,
+    out: &mut Impulse<T>,
+) {
     let normal_only = Vector3::new(desired.desired / unit.total, T::zero(), T::zero());
     let (impulse_contact, solve) = impulse_contact(
         desired.desired,
@@ -294,13 +333,11 @@ pub fn impulse_factored<T: Real>(
     } else {
         (normal_only.x - closed_form_j).abs()
     };
-    Impulse {
-        impulse_contact,
-        impulse_world: frame.to_world(&impulse_contact),
-        solve,
-        closed_form_j,
-        closed_form_relative_difference,
-    }
+    out.impulse_contact = impulse_contact;
+    out.impulse_world = frame.to_world(&impulse_contact);
+    out.solve = solve;
+    out.closed_form_j = closed_form_j;
+    out.closed_form_relative_difference = closed_form_relative_difference;
 }
 
 #[cfg(test)]

@@ -56,6 +56,7 @@ pub struct OrientationUpdate<T: Real> {
 }
 
 /// `θ + ½ [0, Δθ] θ` (lecture, "Nonlinear Projection"), not normalised.
+#[inline]
 pub fn add_scaled_rotation<T: Real>(theta: &Quaternion<T>, rotation: &Vector3<T>) -> Quaternion<T> {
     let spin = Quaternion::new(T::zero(), rotation.x, rotation.y, rotation.z);
     theta + (spin * theta) * c::<T>(0.5)
@@ -65,20 +66,33 @@ pub fn orientation_update<T: Real>(
     problem: &Problem<T>,
     projection: &Projection<T>,
 ) -> OrientationUpdate<T> {
-    let bodies = [0, 1].map(|i| {
-        let body = problem.bodies[i].as_ref()?;
-        let moved = projection.bodies[i].as_ref()?;
-        if moved.angular_change == Vector3::zeros() {
-            return None;
-        }
-        let before = body.orientation;
-        let unnormalised = add_scaled_rotation(&before, &moved.angular_change);
-        Some(BodyOrientation {
-            before,
-            rotation: moved.angular_change,
-            unnormalised,
-            normalised: UnitQuaternion::new_normalize(unnormalised).into_inner(),
-        })
-    });
-    OrientationUpdate { bodies }
+    let mut update = OrientationUpdate {
+        bodies: [None, None],
+    };
+    orientation_update_into(problem, projection, &mut update);
+    update
+}
+
+/// [`orientation_update`] written into `out` (the stage path's form).
+#[inline]
+pub fn orientation_update_into<T: Real>(
+    problem: &Problem<T>,
+    projection: &Projection<T>,
+    out: &mut OrientationUpdate<T>,
+) {
+    for (i, slot) in out.bodies.iter_mut().enumerate() {
+        *slot = match (problem.bodies[i].as_ref(), projection.bodies[i].as_ref()) {
+            (Some(body), Some(moved)) if moved.angular_change != Vector3::zeros() => {
+                let before = body.orientation;
+                let unnormalised = add_scaled_rotation(&before, &moved.angular_change);
+                Some(BodyOrientation {
+                    before,
+                    rotation: moved.angular_change,
+                    unnormalised,
+                    normalised: UnitQuaternion::new_normalize(unnormalised).into_inner(),
+                })
+            }
+            _ => None,
+        };
+    }
 }

@@ -63,6 +63,7 @@ pub struct ProjectionInertia<T: Real> {
 }
 
 /// One body's [`ProjectionInertia`] from its inverse mass, world inverse inertia and arm.
+#[inline]
 pub fn projection_inertia<T: Real>(
     inverse_mass: T,
     inverse_inertia_world: &Matrix3<T>,
@@ -76,6 +77,7 @@ pub fn projection_inertia<T: Real>(
 
 /// [`projection_inertia`] from the body's [`AngularResponse`] (the same
 /// numbers as the velocity change per unit impulse).
+#[inline]
 pub fn projection_inertia_from<T: Real>(
     inverse_mass: T,
     response: &AngularResponse<T>,
@@ -118,6 +120,7 @@ pub fn total_projection_inertia<T: Real>(inertias: &[Option<ProjectionInertia<T>
 /// One body's moves for `depth` (lecture: `Δ_l = (-1)^(i+1) d_pen I_l/I_t`,
 /// `Δ_a = (-1)^(i+1) d_pen I_a/I_t`, then the angular limit). `position` is
 /// the body's position before the move.
+#[inline]
 pub fn body_projection<T: Real>(
     inertia: &ProjectionInertia<T>,
     sign: T,
@@ -173,38 +176,60 @@ pub fn nonlinear_projection_with<T: Real>(
     inverse_inertias: &InverseInertias<T>,
     frame: &ContactFrame<T>,
 ) -> Projection<T> {
+    let mut projection = Projection {
+        method: problem.contact.settings.projection,
+        resolved_depth: T::zero(),
+        total_inertia: T::zero(),
+        bodies: [None, None],
+    };
+    nonlinear_projection_into(problem, inverse_inertias, frame, &mut projection);
+    projection
+}
+
+/// [`nonlinear_projection_with`] written into `out` (the stage path's form:
+/// each body's record is written into its slot, no array of records moved).
+#[inline]
+pub fn nonlinear_projection_into<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    out: &mut Projection<T>,
+) {
     let settings = &problem.contact.settings;
     let d = frame.normal();
     let depth = problem.contact.penetration * settings.relaxation;
 
-    let inertias = [0, 1].map(|i| {
-        let body = problem.bodies[i].as_ref()?;
-        let r = frame.r[i]?;
-        Some(projection_inertia(
-            body.inverse_mass,
-            inverse_inertias[i].as_ref()?,
-            &r,
-            &d,
-            settings,
-        ))
-    });
-    let total_inertia = total_projection_inertia(&inertias);
-    let bodies = [0, 1].map(|i| {
-        let inertia = inertias[i].as_ref()?;
-        let body = problem.bodies[i].as_ref()?;
-        Some(body_projection(
-            inertia,
-            Problem::<T>::sign(i),
-            depth,
-            total_inertia,
-            &d,
-            &body.position,
-        ))
-    });
-    Projection {
-        method: settings.projection,
-        resolved_depth: depth,
-        total_inertia,
-        bodies,
+    let mut inertias = [None, None];
+    for (i, inertia) in inertias.iter_mut().enumerate() {
+        if let (Some(body), Some(r), Some(inverse_inertia)) = (
+            problem.bodies[i].as_ref(),
+            frame.r[i],
+            inverse_inertias[i].as_ref(),
+        ) {
+            *inertia = Some(projection_inertia(
+                body.inverse_mass,
+                inverse_inertia,
+                &r,
+                &d,
+                settings,
+            ));
+        }
     }
+    let total_inertia = total_projection_inertia(&inertias);
+    for (i, slot) in out.bodies.iter_mut().enumerate() {
+        *slot = match (inertias[i].as_ref(), problem.bodies[i].as_ref()) {
+            (Some(inertia), Some(body)) => Some(body_projection(
+                inertia,
+                Problem::<T>::sign(i),
+                depth,
+                total_inertia,
+                &d,
+                &body.position,
+            )),
+            _ => None,
+        };
+    }
+    out.method = settings.projection;
+    out.resolved_depth = depth;
+    out.total_inertia = total_inertia;
 }

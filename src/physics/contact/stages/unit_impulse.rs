@@ -49,6 +49,7 @@ pub struct AngularResponse<T: Real> {
     pub angular: T,
 }
 
+#[inline]
 pub fn angular_response<T: Real>(
     inverse_inertia_world: &Matrix3<T>,
     r: &Vector3<T>,
@@ -81,6 +82,7 @@ pub fn total_per_unit_impulse<T: Real>(bodies: &[Option<(T, T)>; 2]) -> (T, T) {
 
 /// One body's response to a unit impulse along `d`, from its inverse mass,
 /// world inverse inertia and arm `r`.
+#[inline]
 pub fn body_unit_response<T: Real>(
     inverse_mass: T,
     inverse_inertia_world: &Matrix3<T>,
@@ -136,23 +138,43 @@ pub fn unit_impulse_with<T: Real>(
     frame: &ContactFrame<T>,
     with_matrix: bool,
 ) -> UnitImpulse<T> {
+    let mut unit = UnitImpulse::empty();
+    unit_impulse_into(problem, inverse_inertias, frame, with_matrix, &mut unit);
+    unit
+}
+
+impl<T: Real> UnitImpulse<T> {
+    /// A record to be written by [`unit_impulse_into`].
+    pub fn empty() -> Self {
+        UnitImpulse {
+            bodies: [None, None],
+            linear: T::zero(),
+            total: T::zero(),
+            matrix: None,
+        }
+    }
+}
+
+/// [`unit_impulse_with`] written into `out` (the stage path's form: each
+/// response is written into its slot where it stays, no record moved).
+#[inline]
+pub fn unit_impulse_into<T: Real>(
+    problem: &Problem<T>,
+    inverse_inertias: &InverseInertias<T>,
+    frame: &ContactFrame<T>,
+    with_matrix: bool,
+    out: &mut UnitImpulse<T>,
+) {
     let d = frame.normal();
-    // Each response is written into its slot where it stays (no array of
-    // records built and moved).
-    let mut unit = UnitImpulse {
-        bodies: [None, None],
-        linear: T::zero(),
-        total: T::zero(),
-        matrix: None,
-    };
     // Σ -[rᵢ]× Iᵢ⁻¹ [rᵢ]× in world space, body 1 first (friction only).
     let mut angular_world = Matrix3::zeros();
-    for (i, slot) in unit.bodies.iter_mut().enumerate() {
+    for (i, slot) in out.bodies.iter_mut().enumerate() {
         let (Some(body), Some(r), Some(inverse_inertia)) = (
             problem.bodies[i].as_ref(),
             frame.r[i],
             inverse_inertias[i].as_ref(),
         ) else {
+            *slot = None;
             continue;
         };
         *slot = Some(body_unit_response(
@@ -165,15 +187,12 @@ pub fn unit_impulse_with<T: Real>(
             angular_world += angular_matrix(&skew(&r), inverse_inertia);
         }
     }
-    let (linear, total) = total_per_unit_impulse(
-        &unit
-            .bodies
-            .each_ref()
-            .map(|b| b.as_ref().map(|b| (b.inverse_mass, b.angular))),
-    );
-    unit.linear = linear;
-    unit.total = total;
-    unit.matrix =
+    let (linear, total) = total_per_unit_impulse(&[
+        out.bodies[0].as_ref().map(|b| (b.inverse_mass, b.angular)),
+        out.bodies[1].as_ref().map(|b| (b.inverse_mass, b.angular)),
+    ]);
+    out.linear = linear;
+    out.total = total;
+    out.matrix =
         with_matrix.then(|| contact_matrix(&angular_world, &frame.contact_to_world, linear));
-    unit
 }
