@@ -112,34 +112,51 @@ pub(super) fn clip_incident<T: Real>(
         corner[v] = c::<T>(sv) * hi[v];
         polygon.push(origin + rel * corner);
     }
-    let mut spare = Polygon::new();
-    for k in (0..3).filter(|&k| k != reference.axis) {
-        for s in [T::one(), -T::one()] {
-            clip_plane(&polygon, k, s, reference.h[k], &mut spare);
-            std::mem::swap(&mut polygon, &mut spare);
+    // The four side planes, the lower axis first, + before -; the two
+    // buffers take turns (nothing copied between the clips).
+    let (k1, k2) = ((reference.axis + 1) % 3, (reference.axis + 2) % 3);
+    let (k1, k2) = (k1.min(k2), k1.max(k2));
+    let mut buffers = [polygon, Polygon::new()];
+    let mut current = 0;
+    let (plus, minus) = (T::one(), -T::one());
+    for (k, s) in [(k1, plus), (k1, minus), (k2, plus), (k2, minus)] {
+        let limit = reference.h[k];
+        // Every point on the kept side: the clip would copy the polygon as
+        // it is (no edge crosses, every point kept in order).
+        if buffers[current]
+            .iter()
+            .all(|p| s * p[k] - limit <= T::zero())
+        {
+            continue;
         }
+        let [a, b] = &mut buffers;
+        let (input, output) = if current == 0 { (a, b) } else { (b, a) };
+        clip_plane(input, k, s, limit, output);
+        current = 1 - current;
     }
-    polygon
+    buffers[current]
 }
 
 /// Sutherland–Hodgman against one plane: `output` is the part of `input`
 /// where `s·x_k ≤ limit`.
 fn clip_plane<T: Real>(input: &Polygon<T>, k: usize, s: T, limit: T, output: &mut Polygon<T>) {
     output.len = 0;
-    let Some(&last) = input.iter().last() else {
+    let points = &input.points[..input.len.min(input.points.len())];
+    let Some(&last) = points.last() else {
         return;
     };
-    // Each edge p → q, starting with the closing edge last → first.
-    let mut p = last;
-    for &q in input.iter() {
-        let (dp, dq) = (s * p[k] - limit, s * q[k] - limit);
+    // Each edge p → q, starting with the closing edge last → first; each
+    // point's signed distance once.
+    let (mut p, mut dp) = (last, s * last[k] - limit);
+    for &q in points {
+        let dq = s * q[k] - limit;
         if (dp < T::zero() && dq > T::zero()) || (dp > T::zero() && dq < T::zero()) {
             output.push(p + (q - p) * (dp / (dp - dq)));
         }
         if dq <= T::zero() {
             output.push(q);
         }
-        p = q;
+        (p, dp) = (q, dq);
     }
 }
 

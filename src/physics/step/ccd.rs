@@ -78,14 +78,26 @@ pub fn contact_pairs<T: Real>(world: &World<T>) -> ContactPairs {
 pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
     let keys = &mut pairs.0;
     keys.clear();
-    let contacts = world.contacts.iter();
-    keys.extend(contacts.filter_map(|k| Some(key(k.body1.0, k.body2?.0))));
-    // Generated contacts come pair by pair in sorted order: sorted only
-    // when they are not (contacts given otherwise).
-    if !keys.is_sorted() {
-        keys.sort_unstable();
+    // Generated contacts come pair by pair in sorted order: a pair's
+    // contacts follow one another (kept once as they come), and the keys
+    // are sorted only when they are not (contacts given otherwise).
+    let mut sorted = true;
+    for k in &world.contacts {
+        let Some(b2) = k.body2 else {
+            continue;
+        };
+        let (i, j) = (k.body1.0.min(b2.0), k.body1.0.max(b2.0));
+        match keys.last() {
+            Some(&(a, Some(b))) if (a.0, b.0) == (i, j) => continue,
+            Some(&(a, b)) if (a.0, b.map_or(0, |b| b.0)) > (i, j) => sorted = false,
+            _ => {}
+        }
+        keys.push((BodyId(i), Some(BodyId(j))));
     }
-    keys.dedup();
+    if !sorted {
+        keys.sort_unstable();
+        keys.dedup();
+    }
 }
 
 /// A set of body pairs, sorted (building it hashes nothing; a step's

@@ -9,7 +9,7 @@ use super::audit::Switches;
 use super::audits::{Audits, StepAudit};
 use super::ccd_mode::Rollback;
 use super::contact_events::{ContactEvents, PairSet};
-use super::integrate::{integrate_velocity, Loads};
+use super::integrate::{integrate_velocity_kept, Kept, Loads};
 use super::previous_frame::{self, PoseOf};
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::SleepState;
@@ -338,16 +338,11 @@ impl<T: Real> Simulation<T> {
         }
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
+        let kept = Kept::over(p.world.linear_damping, p.world.angular_damping, p.dt);
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate_velocity(
-                    &mut body.state,
-                    &p.world.gravity,
-                    &Loads::default(),
-                    p.world.linear_damping,
-                    p.world.angular_damping,
-                    p.dt,
-                );
+                let loads = Loads::default();
+                integrate_velocity_kept(&mut body.state, &p.world.gravity, &loads, &kept, p.dt);
             }
         }
         self.world.step.duration = p.dt;
@@ -371,8 +366,20 @@ impl<T: Real> Simulation<T> {
         std::mem::swap(&mut self.inside, &mut self.inside_before);
         self.inside.clear();
         let mut pushed = PairSet::default();
+        // The last contact's pair, its thinnest width and its normal: a
+        // pair's contacts follow one another and mostly share the normal.
+        let mut last: Option<(&Contact<T>, f64)> = None;
         for k in &self.world.contacts {
-            if let Some(width) = overlap::wholly_inside(&self.world, k) {
+            let same_pair = last.filter(|(l, _)| (l.body1, l.body2) == (k.body1, k.body2));
+            let thin = match same_pair {
+                Some((_, thin)) => thin,
+                None => overlap::thinnest_of_pair(&self.world, k),
+            };
+            // The same pair along the same normal: pushed through or not as
+            // the last contact (and reported once per pair already).
+            let same_normal = same_pair.is_some_and(|(l, _)| l.input.normal == k.input.normal);
+            last = Some((k, thin));
+            if let Some(width) = overlap::wholly_inside_below(&self.world, k, thin) {
                 let pair = (k.body1, k.body2);
                 if !self.inside_before.contains(&pair) {
                     events.push(Event::WhollyInside {
@@ -383,6 +390,9 @@ impl<T: Real> Simulation<T> {
                     });
                 }
                 self.inside.insert(pair);
+            }
+            if same_normal {
+                continue;
             }
             if let Some((body, through)) = overlap::pushed_through(&self.world, k, self.params.dt) {
                 // Once per pair of bodies (a manifold has several points).
