@@ -86,13 +86,13 @@ pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
         let Some(b2) = k.body2 else {
             continue;
         };
-        let (i, j) = (k.body1.0.min(b2.0), k.body1.0.max(b2.0));
+        let key = (k.body1.0.min(b2.0), k.body1.0.max(b2.0));
         match keys.last() {
-            Some(&(a, Some(b))) if (a.0, b.0) == (i, j) => continue,
-            Some(&(a, b)) if (a.0, b.map_or(0, |b| b.0)) > (i, j) => sorted = false,
+            Some(&last) if last == key => continue,
+            Some(&last) if last > key => sorted = false,
             _ => {}
         }
-        keys.push((BodyId(i), Some(BodyId(j))));
+        keys.push(key);
     }
     if !sorted {
         keys.sort_unstable();
@@ -100,14 +100,17 @@ pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
     }
 }
 
-/// A set of body pairs, sorted (building it hashes nothing; a step's
-/// contacts are already in pair order).
+/// A set of body pairs, each as its [`key`]'s indices, sorted (building it
+/// hashes nothing; a step's contacts are already in pair order).
 #[derive(Debug, Clone, Default)]
-pub struct ContactPairs(Vec<(BodyId, Option<BodyId>)>);
+pub struct ContactPairs(Vec<(usize, usize)>);
 
 impl ContactPairs {
     pub fn contains(&self, pair: &(BodyId, Option<BodyId>)) -> bool {
-        self.0.binary_search(pair).is_ok()
+        let (a, Some(b)) = *pair else {
+            return false;
+        };
+        self.0.binary_search(&(a.0, b.0)).is_ok()
     }
 }
 
