@@ -98,3 +98,41 @@ fn a_slow_ball_that_hits_the_wall_is_not_reported() {
     // It bounced.
     assert!(sim.world.bodies[0].state.velocity.x < 0.0);
 }
+
+/// The audit's set of touching pairs (ccd::contact_pairs) holds exactly the
+/// pairs of the step's contacts, whether they come pair by pair in order
+/// (as generated) or in any other order, each pair in either order.
+#[test]
+fn the_touching_pairs_are_the_contacts_pairs_in_any_order() {
+    use contact_lab::lesson::Lesson;
+    use contact_lab::physics::step::ccd::{contact_pairs, key};
+    use std::collections::BTreeSet;
+    let lesson = Lesson::load("stack-5").unwrap();
+    let params = lesson.sim_params().expect("a scene");
+    let world = lesson.world::<f64>();
+    let materials = lesson.simulation.unwrap().materials;
+    let mut sim = Simulation::new(world, params, materials);
+    for _ in 0..5 {
+        sim.advance().unwrap();
+    }
+    let mut world = sim.world.clone();
+    let n = world.bodies.len();
+    let naive: BTreeSet<_> = (world.contacts.iter())
+        .filter_map(|k| Some(key(k.body1.0, k.body2?.0)))
+        .collect();
+    assert!(naive.len() >= 5, "a stack of 5 boxes on a floor: {naive:?}");
+    let check = |world: &contact_lab::physics::World<f64>| {
+        let pairs = contact_pairs(world);
+        for i in 0..n {
+            for j in 0..n {
+                assert_eq!(pairs.contains(&key(i, j)), naive.contains(&key(i, j)));
+            }
+        }
+    };
+    check(&world);
+    world.contacts.reverse();
+    check(&world);
+    // By the points' x: the pairs' contacts mixed, a pair's apart.
+    (world.contacts).sort_by(|a, b| a.input.point.x.total_cmp(&b.input.point.x));
+    check(&world);
+}

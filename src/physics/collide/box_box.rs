@@ -4,7 +4,7 @@
 
 use nalgebra::Vector3;
 
-use super::clip::{clip_incident, manifold, Reference};
+use super::clip::{clip_incident, manifold, Polygon, Reference};
 use super::{c, vertex, BoxBoxMode, ContactPoint, Feature, Pose, Real, Side};
 
 /// The axis of least overlap.
@@ -148,7 +148,8 @@ pub(super) fn box_box<T: Real>(
         Axis::FaceB(j) => (face(hb, pb, j, overlap.normal, Side::B), pa, ha),
     };
     if mode == BoxBoxMode::Manifold {
-        let polygon = clip_incident(&reference, incident, hi);
+        let mut polygon = Polygon::new();
+        clip_incident(&reference, incident, hi, &mut polygon);
         if manifold(&reference, &polygon, &overlap.normal, tol, out) > 0 {
             return;
         }
@@ -203,7 +204,8 @@ fn point_face<T: Real>(
         .filter(|&k| k != reference.axis)
         .any(|k| local[k].abs() > reference.h[k] + slack);
     let deepest = if beside {
-        let polygon = clip_incident(reference, incident, hi);
+        let mut polygon = Polygon::new();
+        clip_incident(reference, incident, hi, &mut polygon);
         let depth = |p: &&Vector3<T>| reference.depth(p);
         let inside = polygon.iter().filter(|p| reference.holds(p, T::zero()));
         inside

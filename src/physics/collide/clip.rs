@@ -18,7 +18,7 @@ pub(super) struct Polygon<T: Real> {
 }
 
 impl<T: Real> Polygon<T> {
-    fn new() -> Self {
+    pub fn new() -> Self {
         Polygon {
             points: [Vector3::zeros(); 8],
             len: 0,
@@ -83,12 +83,14 @@ impl<T: Real> Reference<'_, T> {
 }
 
 /// The incident box's face most anti-parallel to the reference face, in the
-/// reference frame, clipped against the reference face's four side planes.
+/// reference frame, clipped against the reference face's four side planes,
+/// into `polygon`.
 pub(super) fn clip_incident<T: Real>(
     reference: &Reference<'_, T>,
     incident: &Pose<T>,
     hi: &Vector3<T>,
-) -> Polygon<T> {
+    polygon: &mut Polygon<T>,
+) {
     // The incident box in the reference frame: its axes are the columns of
     // C = R_refᵀ R_inc, its centre o = R_refᵀ (x_inc - x_ref).
     let rel = reference.pose.rotation.tr_mul(&incident.rotation);
@@ -104,7 +106,7 @@ pub(super) fn clip_incident<T: Real>(
         T::one()
     };
     let (u, v) = ((j + 1) % 3, (j + 2) % 3);
-    let mut polygon = Polygon::new();
+    polygon.len = 0;
     for (su, sv) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)] {
         let mut corner = Vector3::zeros();
         corner[j] = face_sign * hi[j];
@@ -112,34 +114,51 @@ pub(super) fn clip_incident<T: Real>(
         corner[v] = c::<T>(sv) * hi[v];
         polygon.push(origin + rel * corner);
     }
+    // The four side planes, the lower axis first, + before -; the polygon
+    // and a spare take turns (nothing copied between the clips).
+    let (k1, k2) = ((reference.axis + 1) % 3, (reference.axis + 2) % 3);
+    let (k1, k2) = (k1.min(k2), k1.max(k2));
     let mut spare = Polygon::new();
-    for k in (0..3).filter(|&k| k != reference.axis) {
-        for s in [T::one(), -T::one()] {
-            clip_plane(&polygon, k, s, reference.h[k], &mut spare);
-            std::mem::swap(&mut polygon, &mut spare);
+    let (mut input, mut output) = (polygon, &mut spare);
+    let mut clipped = 0;
+    let (plus, minus) = (T::one(), -T::one());
+    for (k, s) in [(k1, plus), (k1, minus), (k2, plus), (k2, minus)] {
+        let limit = reference.h[k];
+        // Every point on the kept side: the clip would copy the polygon as
+        // it is (no edge crosses, every point kept in order).
+        if input.iter().all(|p| s * p[k] - limit <= T::zero()) {
+            continue;
         }
+        clip_plane(input, k, s, limit, output);
+        std::mem::swap(&mut input, &mut output);
+        clipped += 1;
     }
-    polygon
+    // An odd number of clips left the result in the spare.
+    if clipped % 2 == 1 {
+        *output = *input;
+    }
 }
 
 /// Sutherland–Hodgman against one plane: `output` is the part of `input`
 /// where `s·x_k ≤ limit`.
 fn clip_plane<T: Real>(input: &Polygon<T>, k: usize, s: T, limit: T, output: &mut Polygon<T>) {
     output.len = 0;
-    let Some(&last) = input.iter().last() else {
+    let points = &input.points[..input.len.min(input.points.len())];
+    let Some(&last) = points.last() else {
         return;
     };
-    // Each edge p → q, starting with the closing edge last → first.
-    let mut p = last;
-    for &q in input.iter() {
-        let (dp, dq) = (s * p[k] - limit, s * q[k] - limit);
+    // Each edge p → q, starting with the closing edge last → first; each
+    // point's signed distance once.
+    let (mut p, mut dp) = (last, s * last[k] - limit);
+    for &q in points {
+        let dq = s * q[k] - limit;
         if (dp < T::zero() && dq > T::zero()) || (dp > T::zero() && dq < T::zero()) {
             output.push(p + (q - p) * (dp / (dp - dq)));
         }
         if dq <= T::zero() {
             output.push(q);
         }
-        p = q;
+        (p, dp) = (q, dq);
     }
 }
 
@@ -154,6 +173,14 @@ pub(super) fn manifold<T: Real>(
     tol: T,
     out: &mut Vec<ContactPoint<T>>,
 ) -> usize {
+    // At most 4 points, all held (a face resting on a face): all of them,
+    // in order, as the reduction would keep them.
+    if polygon.len <= 4 && polygon.iter().all(|p| reference.holds(p, tol)) {
+        for p in polygon.iter() {
+            out.push(reference.contact(p, normal, reference.depth(p)));
+        }
+        return polygon.len;
+    }
     let mut kept = Polygon::new();
     for p in polygon.iter().filter(|p| reference.holds(p, tol)) {
         kept.push(*p);

@@ -78,24 +78,39 @@ pub fn contact_pairs<T: Real>(world: &World<T>) -> ContactPairs {
 pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
     let keys = &mut pairs.0;
     keys.clear();
-    let contacts = world.contacts.iter();
-    keys.extend(contacts.filter_map(|k| Some(key(k.body1.0, k.body2?.0))));
-    // Generated contacts come pair by pair in sorted order: sorted only
-    // when they are not (contacts given otherwise).
-    if !keys.is_sorted() {
-        keys.sort_unstable();
+    // Generated contacts come pair by pair in sorted order: a pair's
+    // contacts follow one another (kept once as they come), and the keys
+    // are sorted only when they are not (contacts given otherwise).
+    let mut sorted = true;
+    for k in &world.contacts {
+        let Some(b2) = k.body2 else {
+            continue;
+        };
+        let key = (k.body1.0.min(b2.0), k.body1.0.max(b2.0));
+        match keys.last() {
+            Some(&last) if last == key => continue,
+            Some(&last) if last > key => sorted = false,
+            _ => {}
+        }
+        keys.push(key);
     }
-    keys.dedup();
+    if !sorted {
+        keys.sort_unstable();
+        keys.dedup();
+    }
 }
 
-/// A set of body pairs, sorted (building it hashes nothing; a step's
-/// contacts are already in pair order).
+/// A set of body pairs, each as its [`key`]'s indices, sorted (building it
+/// hashes nothing; a step's contacts are already in pair order).
 #[derive(Debug, Clone, Default)]
-pub struct ContactPairs(Vec<(BodyId, Option<BodyId>)>);
+pub struct ContactPairs(Vec<(usize, usize)>);
 
 impl ContactPairs {
     pub fn contains(&self, pair: &(BodyId, Option<BodyId>)) -> bool {
-        self.0.binary_search(pair).is_ok()
+        let (a, Some(b)) = *pair else {
+            return false;
+        };
+        self.0.binary_search(&(a.0, b.0)).is_ok()
     }
 }
 

@@ -49,6 +49,38 @@ pub fn integrate_velocity<T: Real>(
     angular_damping: T,
     dt: T,
 ) {
+    let kept = Kept::over(linear_damping, angular_damping, dt);
+    integrate_velocity_kept(body, gravity, loads, &kept, dt);
+}
+
+/// The fractions of linear and angular velocity damping keeps over a step,
+/// `d_lin^dt` and `d_ang^dt` (`None`: no damping, no pow); the same for
+/// every body of a step, so a step raises them to the power once.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Kept<T: Real> {
+    pub linear: Option<T>,
+    pub angular: Option<T>,
+}
+
+impl<T: Real> Kept<T> {
+    pub fn over(linear_damping: T, angular_damping: T, dt: T) -> Self {
+        // 1ʸ = 1: no damping, no pow.
+        let kept = |d: T| (d != T::one()).then(|| d.powf(dt));
+        Kept {
+            linear: kept(linear_damping),
+            angular: kept(angular_damping),
+        }
+    }
+}
+
+/// [`integrate_velocity`] with the step's damping fractions `kept` already raised.
+pub fn integrate_velocity_kept<T: Real>(
+    body: &mut RigidBody<T>,
+    gravity: &Vector3<T>,
+    loads: &Loads<T>,
+    kept: &Kept<T>,
+    dt: T,
+) {
     body.acceleration = gravity + loads.force * body.inverse_mass;
     body.velocity += body.acceleration * dt;
     // Without torque I⁻¹τ is zero: R I⁻¹ Rᵀ is not built (most bodies, most steps).
@@ -56,12 +88,12 @@ pub fn integrate_velocity<T: Real>(
         let angular_acceleration = body.inverse_inertia_world() * loads.torque;
         body.angular_velocity += angular_acceleration * dt;
     }
-    // Damping as the fraction of velocity kept per second (1ʸ = 1: no damping, no pow).
-    if linear_damping != T::one() {
-        body.velocity *= linear_damping.powf(dt);
+    // Damping as the fraction of velocity kept per second.
+    if let Some(k) = kept.linear {
+        body.velocity *= k;
     }
-    if angular_damping != T::one() {
-        body.angular_velocity *= angular_damping.powf(dt);
+    if let Some(k) = kept.angular {
+        body.angular_velocity *= k;
     }
 }
 
@@ -120,6 +152,23 @@ mod tests {
         }
         assert!((b.velocity.x - 0.5).abs() < 1e-12);
         assert!((b.angular_velocity.z - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_kept_fractions_raised_once_per_step_are_the_damping_to_the_bit() {
+        let kept = Kept::over(0.5, 0.25, 0.1);
+        assert_eq!(kept.linear, Some(0.5f64.powf(0.1)));
+        assert_eq!(Kept::over(1.0, 0.25, 0.1).linear, None);
+        let g = Vector3::new(0.0, -9.81, 0.0);
+        let (mut a, mut b) = (ball(), ball());
+        // What a step's bodies share: the same numbers as each raising its own.
+        let loads = Loads::default();
+        integrate_velocity_kept(&mut a, &g, &loads, &kept, 0.1);
+        let (lin, ang) = (0.5f64, 0.25f64);
+        b.velocity = (b.velocity + g * 0.1) * lin.powf(0.1);
+        b.angular_velocity *= ang.powf(0.1);
+        assert_eq!(a.velocity, b.velocity);
+        assert_eq!(a.angular_velocity, b.angular_velocity);
     }
 
     #[test]

@@ -40,10 +40,21 @@ fn thinnest<T: Real>(world: &World<T>, id: BodyId) -> f64 {
 /// Whether a contact's penetration reaches the smaller body's width along
 /// its normal: one body is wholly inside the other. Returns that width.
 pub fn wholly_inside<T: Real>(world: &World<T>, k: &Contact<T>) -> Option<f64> {
+    wholly_inside_below(world, k, thinnest_of_pair(world, k))
+}
+
+/// The smaller of a contact's two bodies' [`thinnest`] widths (the same for
+/// every contact of a pair).
+pub fn thinnest_of_pair<T: Real>(world: &World<T>, k: &Contact<T>) -> f64 {
+    let thin = k.body2.map_or(f64::INFINITY, |b| thinnest(world, b));
+    thinnest(world, k.body1).min(thin)
+}
+
+/// [`wholly_inside`], the pair's [`thinnest_of_pair`] given.
+pub fn wholly_inside_below<T: Real>(world: &World<T>, k: &Contact<T>, thin: f64) -> Option<f64> {
     // Cheap test first: shallower than either body's thinnest width.
     let depth = to_f64(k.input.penetration);
-    let thin = k.body2.map_or(f64::INFINITY, |b| thinnest(world, b));
-    if depth < thinnest(world, k.body1).min(thin) {
+    if depth < thin {
         return None;
     }
     let n = k.input.normal.map(to_f64);

@@ -204,13 +204,18 @@ pub fn surge_bound<T: Real>(world: &World<T>, gravity: f64, dt: f64) -> f64 {
 
 /// One body's term of the [`surge_bound`], its kinetic energy `kinetic` given.
 fn body_bound<T: Real>(b: &Body<T>, gravity: f64, dt: f64, kinetic: f64) -> f64 {
+    bound_at_speed(b, to_f64(b.state.velocity.norm()), gravity, dt, kinetic)
+}
+
+/// [`body_bound`], the body's speed `|v|` given.
+fn bound_at_speed<T: Real>(b: &Body<T>, speed: f64, gravity: f64, dt: f64, kinetic: f64) -> f64 {
     let s = &b.state;
     let reach = b
         .shape
         .as_ref()
         .and_then(|sh| sh.bounding_radius())
         .unwrap_or(0.0);
-    let speed = to_f64(s.velocity.norm()) + to_f64(s.angular_velocity.norm()) * reach;
+    let speed = speed + to_f64(s.angular_velocity.norm()) * reach;
     let kick = (gravity + to_f64(s.acceleration.norm())) * dt;
     let e = 0.5 * to_f64(s.mass) * (speed + kick).powi(2);
     // Angular energy beyond what |ω| × radius stands for (thin bodies).
@@ -237,7 +242,8 @@ pub fn start_of_step<T: Real>(
     let mut bound = -0.0f64;
     for b in &world.bodies {
         let s = &b.state;
-        speeds.push(to_f64(s.velocity.norm()));
+        let speed = to_f64(s.velocity.norm());
+        speeds.push(speed);
         if !b.movable {
             inertia.push(nalgebra::Matrix3::zeros());
             continue;
@@ -246,7 +252,7 @@ pub fn start_of_step<T: Real>(
         inertia.push(i);
         let energy = s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity);
         kinetic += energy;
-        bound += body_bound(b, gravity, dt, to_f64(energy));
+        bound += bound_at_speed(b, speed, gravity, dt, to_f64(energy));
     }
     (kinetic, bound)
 }

@@ -5,23 +5,27 @@
 
 use nalgebra::Vector3;
 
+mod contacts;
+mod events;
+
 use super::audit::Switches;
 use super::audits::{Audits, StepAudit};
 use super::ccd_mode::Rollback;
 use super::contact_events::{ContactEvents, PairSet};
-use super::integrate::{integrate_velocity, Loads};
-use super::previous_frame::{self, PoseOf};
+use super::integrate::{integrate_velocity_kept, Kept, Loads};
+use super::previous_frame::PoseOf;
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
-use super::{energy, overlap, replay, rollback, tolerance, wake_sleep};
-use crate::physics::collide::{BodyContact, ContactGenerator, Options};
+use super::{energy, replay, rollback, tolerance, wake_sleep};
+use crate::physics::collide::{BodyContact, ContactGenerator};
+use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
-use crate::physics::params::{Material, NormalFrom};
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
-use crate::physics::{c, to_f64, Contact, ContactInput, Real, Solver, World};
+use crate::physics::{c, to_f64, Real, Solver, World};
+use events::Ending;
 
 /// A world stepping in time.
 #[derive(Debug, Clone)]
@@ -200,7 +204,7 @@ impl<T: Real> Simulation<T> {
         let position = resolver.position_phase(Implementation::Indexed, observer);
         let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
         // The audits, while the world still holds the step's inputs.
-        let [lift_event, gain_event, rise_event] = self.audits.run(StepAudit {
+        let audits = self.audits.run(StepAudit {
             world: &self.world,
             resolver,
             params: &p,
@@ -219,67 +223,23 @@ impl<T: Real> Simulation<T> {
         // 5. Positions of the awake bodies with the resolved velocities,
         // through the step's collisions with continuous detection on, and
         // the tunnelling audit of each pair's swept motion (substep.rs).
-        let mut spent = Spent::default();
-        self.substeps.moving.clear();
-        self.substeps.moving.extend(
-            (self.world.bodies.iter().zip(&self.sleep))
-                .map(|(b, s)| b.movable && (s.awake || !p.sleep.enabled)),
-        );
-        // The audit reuses contact generation's pairs where it can (swept.rs).
-        let earlier = Earlier {
-            bounds: self.generator.bounds(),
-            pairs: self.generator.pairs(),
-        };
-        self.substeps.spend(
-            &mut self.world,
-            &p,
-            &self.materials,
-            Some(earlier),
-            &mut spent,
-        );
-        // A sleeper a collision inside the step changed is awake (its
-        // velocity is no longer a sleeper's zero).
-        for &body in &spent.woken {
-            if !self.sleep[body.0].awake {
-                self.sleep[body.0].wake(p.sleep.epsilon);
-                events.push(Event::Wakes { body });
-            }
-        }
+        let spent = self.move_bodies(&mut events);
         // 6. Sleep.
         if p.sleep.enabled {
             wake_sleep::update_sleep(&mut self.world, &self.params, &mut self.sleep, &mut events);
         }
         self.step += 1;
         self.time += to_f64(p.dt);
-        self.contact_events(&closing_before, &mut events);
+        // The step's end: its events in their order (simulation/events.rs).
+        let end = Ending {
+            closing_before: &closing_before,
+            spent: &spent,
+            audits,
+            position: &position,
+            velocity: &velocity,
+        };
+        self.ending_events(end, &mut events);
         self.closing_before = closing_before;
-        let start = self.time - to_f64(p.dt);
-        events.extend(spent.hits.iter().map(|h| {
-            Event::Toi(ToiEvent {
-                time: start + h.time,
-                ..*h
-            })
-        }));
-        events.extend(spent.crossed.iter().map(|t| Event::Tunnelled {
-            body1: t.body1,
-            body2: t.body2,
-            time: start + t.time,
-            point: t.point,
-        }));
-        events.extend(lift_event);
-        events.extend(gain_event);
-        events.extend(rise_event);
-        if position.limit_reached && !self.limits_hit[0] {
-            events.push(Event::PositionLimit {
-                left: to_f64(position.max_after),
-            });
-        }
-        if velocity.limit_reached && !self.limits_hit[1] {
-            events.push(Event::VelocityLimit {
-                left: to_f64(velocity.max_after),
-            });
-        }
-        self.limits_hit = [position.limit_reached, velocity.limit_reached];
         super::report::check_finite(&self.world, self.step)?;
         let kinetic = to_f64(energy::kinetic(&self.world));
         if kinetic > super::report::SURGE_FACTOR * surge_bound + 1e-9 * self.energy_scale {
@@ -315,6 +275,40 @@ impl<T: Real> Simulation<T> {
         })
     }
 
+    /// Moves the bodies over the step (substep.rs) and wakes the sleepers a
+    /// collision inside it changed; what continuous detection and the
+    /// tunnelling audit found.
+    fn move_bodies(&mut self, events: &mut Vec<Event>) -> Spent {
+        let p = self.params;
+        let mut spent = Spent::default();
+        self.substeps.moving.clear();
+        self.substeps.moving.extend(
+            (self.world.bodies.iter().zip(&self.sleep))
+                .map(|(b, s)| b.movable && (s.awake || !p.sleep.enabled)),
+        );
+        // The audit reuses contact generation's pairs where it can (swept.rs).
+        let earlier = Earlier {
+            bounds: self.generator.bounds(),
+            pairs: self.generator.pairs(),
+        };
+        self.substeps.spend(
+            &mut self.world,
+            &p,
+            &self.materials,
+            Some(earlier),
+            &mut spent,
+        );
+        // A sleeper a collision inside the step changed is awake (its
+        // velocity is no longer a sleeper's zero).
+        for &body in &spent.woken {
+            if !self.sleep[body.0].awake {
+                self.sleep[body.0].wake(p.sleep.epsilon);
+                events.push(Event::Wakes { body });
+            }
+        }
+        spent
+    }
+
     /// The step up to its resolution: contacts generated, velocities
     /// integrated, sleepers woken.
     fn begin_step(&mut self, events: &mut Vec<Event>) {
@@ -338,16 +332,11 @@ impl<T: Real> Simulation<T> {
         }
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
+        let kept = Kept::over(p.world.linear_damping, p.world.angular_damping, p.dt);
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) {
-                integrate_velocity(
-                    &mut body.state,
-                    &p.world.gravity,
-                    &Loads::default(),
-                    p.world.linear_damping,
-                    p.world.angular_damping,
-                    p.dt,
-                );
+                let loads = Loads::default();
+                integrate_velocity_kept(&mut body.state, &p.world.gravity, &loads, &kept, p.dt);
             }
         }
         self.world.step.duration = p.dt;
@@ -361,35 +350,6 @@ impl<T: Real> Simulation<T> {
         // 3. Wake sleepers that an awake body presses on.
         if p.sleep.enabled {
             wake_sleep::wake_touched(&self.world, &self.params, &mut self.sleep, events);
-        }
-    }
-
-    /// Bodies wholly inside others (when it starts) and bodies about to be
-    /// pushed through a thin body, from this step's contacts and the
-    /// velocities that brought the bodies here.
-    fn overlap_events(&mut self, events: &mut Vec<Event>) {
-        std::mem::swap(&mut self.inside, &mut self.inside_before);
-        self.inside.clear();
-        let mut pushed = PairSet::default();
-        for k in &self.world.contacts {
-            if let Some(width) = overlap::wholly_inside(&self.world, k) {
-                let pair = (k.body1, k.body2);
-                if !self.inside_before.contains(&pair) {
-                    events.push(Event::WhollyInside {
-                        body1: k.body1,
-                        body2: k.body2,
-                        penetration: to_f64(k.input.penetration),
-                        width,
-                    });
-                }
-                self.inside.insert(pair);
-            }
-            if let Some((body, through)) = overlap::pushed_through(&self.world, k, self.params.dt) {
-                // Once per pair of bodies (a manifold has several points).
-                if pushed.insert((body, Some(through))) {
-                    events.push(Event::PushedThrough { body, through });
-                }
-            }
         }
     }
 
@@ -444,76 +404,6 @@ impl<T: Real> Simulation<T> {
     /// The scene's energy scale (J): what gains and blow-ups are measured against.
     pub fn energy_scale(&self) -> f64 {
         self.energy_scale
-    }
-
-    /// Replaces the world's contacts with those the shapes generate now.
-    fn generate_contacts(&mut self) {
-        let options = Options {
-            box_box: self.params.box_box,
-            tolerance: self.params.contact_margin,
-            narrow_phase: self.params.narrow_phase,
-        };
-        self.generator
-            .generate_world(&self.world.bodies, &options, &mut self.generated);
-        let p = &self.params;
-        let duration = (!p.acceleration_compensation).then(T::zero);
-        self.world.contacts.clear();
-        for g in &self.generated {
-            let m = self.materials[g.body1.0].combine(&self.materials[g.body2.0]);
-            let (normal, penetration) = match p.normal_from {
-                NormalFrom::Previous if g.contact.penetration > T::zero() => {
-                    let bodies = &self.world.bodies;
-                    let (i, j) = (g.body1.0, g.body2.0);
-                    previous_frame::pair_normal(bodies, &self.previous, i, j)
-                        .and_then(|n| Some((n, previous_frame::depth_along(bodies, i, j, &n)?)))
-                        .unwrap_or((g.contact.normal, g.contact.penetration))
-                }
-                _ => (g.contact.normal, g.contact.penetration),
-            };
-            self.world.contacts.push(Contact {
-                body1: g.body1,
-                body2: Some(g.body2),
-                input: ContactInput {
-                    point: g.contact.point,
-                    normal,
-                    penetration,
-                    restitution: c(m.restitution),
-                    static_friction: c(m.static_friction),
-                    dynamic_friction: c(m.dynamic_friction),
-                    friction_model: p.friction_model,
-                    settings: p.contact,
-                },
-                duration,
-            });
-        }
-    }
-
-    /// Relative normal velocity at each contact (negative when closing),
-    /// and the tangential speed, into `out`.
-    fn normal_velocities(&self, out: &mut Vec<(T, T)>) {
-        out.clear();
-        out.extend(self.world.contacts.iter().map(|k| {
-            let v = self.point_velocity(k);
-            let n = k.input.normal;
-            let normal = v.dot(&n);
-            let tangential = (v - n * normal).norm();
-            (normal, tangential)
-        }));
-    }
-
-    fn point_velocity(&self, k: &Contact<T>) -> Vector3<T> {
-        wake_sleep::relative_point_velocity(&self.world, k)
-    }
-
-    /// Contact made or lost, bounces, sticking and sliding, per touching pair.
-    fn contact_events(&mut self, before: &[(T, T)], events: &mut Vec<Event>) {
-        let mut after = std::mem::take(&mut self.closing_after);
-        self.normal_velocities(&mut after);
-        let limit = to_f64(self.params.contact.velocity_limit).max(0.05);
-        let contacts = &self.world.contacts;
-        self.touching
-            .report(contacts, before, &after, limit, events);
-        self.closing_after = after;
     }
 }
 

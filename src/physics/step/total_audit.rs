@@ -109,7 +109,13 @@ impl TotalAudit {
     ) -> TotalStart<'_> {
         self.touched.clear();
         self.touched.resize(world.bodies.len(), false);
+        // A pair's contacts follow one another: each pair marked once
+        // (marking is the same for every contact of it).
+        let mut last = None;
         for k in &world.contacts {
+            if last.replace((k.body1, k.body2)) == Some((k.body1, k.body2)) {
+                continue;
+            }
             for id in k.slots().into_iter().flatten() {
                 self.touched[id.0] = world.bodies[id.0].movable && moving(id.0);
             }
