@@ -161,6 +161,9 @@ pub fn prepare<T: Real>(
     let mut frictions = 0;
     // Every record is written where it lies (no record built, then copied).
     all_rows.resize(n, Rows::empty());
+    // The adjacency depends on the bodies' count and every contact's slots
+    // alone: where they are the last prepare's, it is kept as it is.
+    let mut same_slots = contacts.len() == n && adjacency.offsets.len() == bodies.len() + 1;
     contacts.truncate(n);
     contacts.resize(n, blank_contact());
     setups.truncate(n);
@@ -270,6 +273,7 @@ pub fn prepare<T: Real>(
             data.matrix.matrix = m;
             f
         });
+        same_slots &= c.bodies == slots;
         *c = ResolverContact {
             penetration: input.penetration,
             desired: T::zero(),
@@ -298,7 +302,9 @@ pub fn prepare<T: Real>(
         };
     }
     friction.truncate(frictions);
-    adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
+    if !same_slots {
+        adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
+    }
     accumulated.clear();
     accumulated.resize(n, Vector3::zeros());
     pushed.clear();
