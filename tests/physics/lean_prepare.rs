@@ -5,10 +5,11 @@
 //! (rotated bodies, friction, sliding and sticking contacts, the world).
 
 use contact_lab::lesson::Lesson;
-use contact_lab::physics::resolver::{Implementation, Resolver, Silent};
+use contact_lab::physics::resolver::{Implementation, Observer, Resolver, Silent, VelocityImpulse};
 use contact_lab::physics::step::Simulation;
 use contact_lab::physics::{ResolverParams, Solver, World};
 use nalgebra::{Matrix3, Vector3};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 fn si() -> ResolverParams {
     ResolverParams {
@@ -30,6 +31,19 @@ fn close_v(a: &Vector3<f64>, b: &Vector3<f64>, what: &str, k: usize) {
 
 fn close_m(a: &Matrix3<f64>, b: &Matrix3<f64>, what: &str, k: usize) {
     a.iter().zip(b).for_each(|(x, y)| close(*x, *y, what, k));
+}
+
+/// Velocity visits the recorded path made that changed an impulse.
+static RECORDED_VISITS: AtomicUsize = AtomicUsize::new(0);
+
+/// An observer that keeps something (so the phases take the recorded path,
+/// visit by visit through the resolver): counts the velocity visits.
+struct Counting;
+
+impl Observer<f64> for Counting {
+    fn velocity_taken(&mut self, _: usize, _: usize, _: f64, _: &VelocityImpulse<f64>) {
+        RECORDED_VISITS.fetch_add(1, Ordering::Relaxed);
+    }
 }
 
 /// Prepares `world` both ways; every field the phases and reports read agrees.
@@ -99,11 +113,19 @@ fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize)
     }
     // Both resolve to the same bodies.
     let mut full = full;
+    let mut recorded = lean.clone();
     for r in [&mut lean, &mut full] {
         r.position_phase(Implementation::Indexed, &mut Silent);
         r.velocity_phase(Implementation::Indexed, &mut Silent);
     }
     assert_eq!(lean.bodies, full.bodies);
+    // The silent velocity sweep (rows and accumulated impulses side by
+    // side) and the recorded one give the same bits.
+    recorded.position_phase(Implementation::Indexed, &mut Counting);
+    recorded.velocity_phase(Implementation::Indexed, &mut Counting);
+    assert_eq!(recorded.bodies, lean.bodies);
+    assert_eq!(recorded.contacts, lean.contacts);
+    assert_eq!(recorded.sequential.accumulated, lean.sequential.accumulated);
     (full.contacts.len(), with_friction, sliding)
 }
 
@@ -151,6 +173,8 @@ fn the_lean_rows_are_the_full_paths_on_stepped_scenes() {
             (contacts, friction, sliding) = (contacts + n, friction + f, sliding + s);
         }
     }
+    // The recorded velocity sweeps changed impulses (they were compared).
+    assert!(RECORDED_VISITS.load(Ordering::Relaxed) > 100);
     // The scenes gave contacts with friction, and some slid.
     assert!(
         contacts > 500 && friction > 100 && sliding > 0,

@@ -209,23 +209,26 @@ impl<T: Real> Resolver<T> {
         self.adjacency = prepared.adjacency;
         self.index = prepared.index;
         self.params = *params;
-        self.velocity_rows.clear();
-        self.velocity_rows.reserve(n);
-        let mut neighbours = std::mem::take(&mut self.neighbours);
-        neighbours.reserve(self);
-        self.neighbours = neighbours;
-        if n < queue::SCAN_BELOW {
-            self.scan_queue.reserve(n);
-        } else {
-            self.queue.reserve(n);
+        // The deepest-first order's scratch (sequential impulses read none of it).
+        if params.solver != Solver::SequentialImpulse {
+            self.velocity_rows.clear();
+            self.velocity_rows.reserve(n);
+            let mut neighbours = std::mem::take(&mut self.neighbours);
+            neighbours.reserve(self);
+            self.neighbours = neighbours;
+            if n < queue::SCAN_BELOW {
+                self.scan_queue.reserve(n);
+            } else {
+                self.queue.reserve(n);
+            }
+            // An iteration changes at most the contacts of the taken contact's two bodies.
+            let widest = (0..self.bodies.len())
+                .map(|b| self.adjacency.of(b).len())
+                .max()
+                .unwrap_or(0);
+            self.changed
+                .reserve((2 * widest).saturating_sub(self.changed.len()));
         }
-        // An iteration changes at most the contacts of the taken contact's two bodies.
-        let widest = (0..self.bodies.len())
-            .map(|b| self.adjacency.of(b).len())
-            .max()
-            .unwrap_or(0);
-        self.changed
-            .reserve((2 * widest).saturating_sub(self.changed.len()));
         self.stamps.clear();
         self.stamps.resize(n, 0);
         self.stamp = 0;

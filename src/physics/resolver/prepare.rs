@@ -128,22 +128,27 @@ impl Adjacency {
     ) {
         self.offsets.clear();
         self.offsets.resize(bodies + 1, 0);
+        // Counts shifted by one, then their running sum: row starts.
+        let counts = &mut self.offsets[1..];
         for s in slots.clone() {
             for b in s.into_iter().flatten() {
-                self.offsets[b + 1] += 1;
+                counts[b] += 1;
             }
         }
-        for b in 0..bodies {
-            self.offsets[b + 1] += self.offsets[b];
+        let mut sum = 0;
+        for o in counts.iter_mut() {
+            sum += *o;
+            *o = sum;
         }
         self.contacts.clear();
-        self.contacts.resize(self.offsets[bodies], 0);
+        self.contacts.resize(sum, 0);
         self.fill.clear();
         self.fill.extend_from_slice(&self.offsets[..bodies]);
+        let (fill, contacts) = (&mut self.fill[..], &mut self.contacts[..]);
         for (k, s) in slots.enumerate() {
             for b in s.into_iter().flatten() {
-                self.contacts[self.fill[b]] = k;
-                self.fill[b] += 1;
+                contacts[fill[b]] = k;
+                fill[b] += 1;
             }
         }
     }
@@ -185,6 +190,7 @@ pub fn desired_of<T: Real>(c: &ResolverContact<T>, from: RestitutionFrom) -> T {
 /// acceleration term; zero without friction) and the contact's bookkeeping
 /// velocity (`Cᵀ(q̇₁ - q̇₂)` with the planar term added where it is
 /// anticipated). Both prepares call it: the same operations on the same bits.
+#[inline]
 pub(crate) fn slip_and_velocity<T: Real>(
     bodies_velocity: &Vector3<T>,
     planar: Vector3<T>,

@@ -23,13 +23,15 @@ use super::super::{ContactSetup, FrictionData, ResolverContact};
 use super::rows::{solver_bodies, symmetric_inverse, Rows};
 use super::State;
 use crate::physics::params::RestitutionFrom;
+use crate::physics::params::{ContactParams, ProjectionMethod};
+use crate::physics::scale::stable_norm;
 use crate::physics::stages::desired_velocity::{
     acceleration_terms, applied_restitution, relative_acceleration,
 };
 use crate::physics::stages::impulse::FactoredMatrix;
-use crate::physics::stages::projection::{projection_inertia_from, total_projection_inertia};
-use crate::physics::stages::unit_impulse::{total_per_unit_impulse, AngularResponse};
-use crate::physics::{Real, World};
+use crate::physics::stages::projection::{total_projection_inertia, ProjectionInertia};
+use crate::physics::stages::unit_impulse::total_per_unit_impulse;
+use crate::physics::{c, Real, World};
 
 /// `[r × d, r × t₀, r × t₁]`, each column `r ×` the basis column.
 #[inline(always)]
@@ -39,6 +41,90 @@ fn arm_rows<T: Real>(r: &Vector3<T>, basis: &Matrix3<T>) -> Matrix3<T> {
         r.cross(&basis.column(1).into_owned()),
         r.cross(&basis.column(2).into_owned()),
     ])
+}
+
+/// `|v|` as [`crate::physics::scale::stable_norm`] gives it, the plain way
+/// where that is the same bits: the stable norm divides by a power of two
+/// `s` first, and where the plain sum of squares stays far from underflow
+/// (above `8 m / ε²`, `m` the smallest normal, so a square that underflows
+/// is below half an ulp of the largest) and overflow, every square, sum and
+/// square root differs from the plain one by an exact power of two; only
+/// otherwise the stable way.
+#[inline(always)]
+fn arm_norm<T: Real>(v: &Vector3<T>) -> T {
+    let sq = v.x * v.x + v.y * v.y + v.z * v.z;
+    let (Some(max), e) = (T::max_value(), T::default_epsilon()) else {
+        return stable_norm(v);
+    };
+    // 4/max is the smallest normal for IEEE floats.
+    let floor = c::<T>(32.0) / max / (e * e);
+    if sq >= floor && sq < max {
+        sq.sqrt()
+    } else {
+        stable_norm(v)
+    }
+}
+
+/// One body's [`ProjectionInertia`] as [`projection_inertia_from`] gives it
+/// (the same operations; `|r⊥|` by [`arm_norm`]).
+#[inline(always)]
+fn projection_inertia<T: Real>(
+    inverse_mass: T,
+    rotation: Vector3<T>,
+    angular: T,
+    r: &Vector3<T>,
+    d: &Vector3<T>,
+    settings: &ContactParams<T>,
+) -> ProjectionInertia<T> {
+    let angular = if settings.projection == ProjectionMethod::Nonlinear {
+        angular
+    } else {
+        T::zero()
+    };
+    let r_perp = r - d * r.dot(d);
+    let r_perp_length = arm_norm(&r_perp);
+    let angular_limit = if settings.angular_limit.is_finite() {
+        settings.angular_limit * r_perp_length
+    } else {
+        settings.angular_limit
+    };
+    ProjectionInertia {
+        linear: inverse_mass,
+        angular,
+        rotation_per_unit: rotation,
+        r_perp_length,
+        angular_limit,
+    }
+}
+
+/// A contact record to be overwritten (storage for a new contact).
+fn blank_contact<T: Real>() -> ResolverContact<T> {
+    ResolverContact {
+        penetration: T::zero(),
+        desired: T::zero(),
+        bodies: [None; 2],
+        normal: Vector3::zeros(),
+        r: [Vector3::zeros(); 2],
+        velocity: Vector3::zeros(),
+        basis: Matrix3::zeros(),
+        initial_velocity: T::zero(),
+        velocity_from_acceleration: T::zero(),
+        restitution: T::zero(),
+        velocity_limit: T::zero(),
+        gap_speed: T::zero(),
+    }
+}
+
+/// A setup record to be overwritten.
+fn blank_setup<T: Real>() -> ContactSetup<T> {
+    ContactSetup {
+        relaxation: T::zero(),
+        projection: [None, None],
+        total_inertia: T::zero(),
+        unit_total: T::zero(),
+        friction: None,
+        slip: T::zero(),
+    }
 }
 
 /// Prepares `world` for sequential impulses into `out` and `state` (storage
@@ -73,12 +159,18 @@ pub fn prepare<T: Real>(
     // Friction entries of the last prepare are overwritten where they lie
     // (the caller clears entries a deepest-first prepare factored).
     let mut frictions = 0;
-    setups.clear();
-    contacts.clear();
+    // Every record is written where it lies (no record built, then copied).
     all_rows.resize(n, Rows::empty());
-    contacts.reserve(n);
-    setups.reserve(n);
-    for (contact, rows) in world.contacts.iter().zip(all_rows.iter_mut()) {
+    // The adjacency depends on the bodies' count and every contact's slots
+    // alone: where they are the last prepare's, it is kept as it is.
+    let mut same_slots = contacts.len() == n && adjacency.offsets.len() == bodies.len() + 1;
+    contacts.truncate(n);
+    contacts.resize(n, blank_contact());
+    setups.truncate(n);
+    setups.resize(n, blank_setup());
+    let records = contacts.iter_mut().zip(setups.iter_mut());
+    for ((contact, rows), (c, setup)) in world.contacts.iter().zip(all_rows.iter_mut()).zip(records)
+    {
         let input = &contact.input;
         let slots = contact.slots().map(|id| index[id?.0]);
         // Contact frame (stage 1): basis and arms.
@@ -101,23 +193,17 @@ pub fn prepare<T: Real>(
             let turn = body.inverse_inertia_world * rows_of_arm;
             // Velocity change per unit impulse along d (stage 2): I⁻¹(r × d)
             // is T's first column; the projection's angular inertia is the same.
-            let torque = rows_of_arm.column(0).into_owned();
             let rotation = turn.column(0).into_owned();
-            let velocity = rotation.cross(&arm);
-            let response = AngularResponse {
-                torque,
-                rotation,
-                velocity,
-                angular: velocity.dot(&d),
-            };
-            projection[i] = Some(projection_inertia_from(
+            let angular = rotation.cross(&arm).dot(&d);
+            projection[i] = Some(projection_inertia(
                 body.inverse_mass,
-                &response,
+                rotation,
+                angular,
                 &arm,
                 &d,
                 &input.settings,
             ));
-            unit[i] = Some((body.inverse_mass, response.angular));
+            unit[i] = Some((body.inverse_mass, angular));
             // v + ω × r (stage 3), body 2's subtracted.
             let state = &world.bodies[body.id.0].state;
             let point = state.point_velocity(&arm);
@@ -187,7 +273,8 @@ pub fn prepare<T: Real>(
             data.matrix.matrix = m;
             f
         });
-        let mut c = ResolverContact {
+        same_slots &= c.bodies == slots;
+        *c = ResolverContact {
             penetration: input.penetration,
             desired: T::zero(),
             bodies: slots,
@@ -201,26 +288,75 @@ pub fn prepare<T: Real>(
             velocity_limit: input.settings.velocity_limit,
             gap_speed: gap_speed(world, input.penetration),
         };
-        c.desired = desired_of(&c, from);
+        c.desired = desired_of(c, from);
         let (e, _) = applied_restitution(c.initial_velocity, c.restitution, c.velocity_limit);
         rows.bounce = e * (c.initial_velocity - c.velocity_from_acceleration);
         rows.offset = c.velocity - rows.velocity(solver);
-        setups.push(ContactSetup {
+        *setup = ContactSetup {
             relaxation: input.settings.relaxation,
             total_inertia: total_projection_inertia(&projection),
             projection,
             unit_total,
             friction: friction_index,
             slip,
-        });
-        contacts.push(c);
+        };
     }
     friction.truncate(frictions);
-    adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
+    if !same_slots {
+        adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
+    }
     accumulated.clear();
     accumulated.resize(n, Vector3::zeros());
     pushed.clear();
     pushed.resize(n, T::zero());
     warm.clear();
     warm.resize(n, None);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_arm_norm_is_the_stable_norm_bit_for_bit() {
+        // Components over f64's whole range (each a power of ten times an
+        // irregular mantissa, with either sign), near and at the fallback.
+        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let mut plain = 0;
+        for _ in 0..200_000 {
+            let mut v = Vector3::zeros();
+            for k in 0..3 {
+                let bits = next();
+                let mantissa = 1.0 + (bits >> 11) as f64 / (1u64 << 53) as f64;
+                let exponent = (bits % 700) as i32 - 350;
+                let scale = match bits % 5 {
+                    0 => 0.0,
+                    1 => 10f64.powi(exponent),
+                    _ => 10f64.powi(exponent / 20),
+                };
+                v[k] = if bits & 1 == 0 { mantissa } else { -mantissa } * scale;
+            }
+            let sq = v.norm_squared();
+            plain += usize::from(sq >= 1e-270 && sq.is_finite());
+            assert_eq!(arm_norm(&v).to_bits(), stable_norm(&v).to_bits(), "{v:?}");
+        }
+        assert!(plain > 100_000, "{plain}");
+        for v in [
+            Vector3::new(1e-160, 0.0, 0.0),
+            Vector3::new(1e200, 1e200, 0.0),
+            Vector3::new(f64::MAX, 1.0, 0.0),
+            Vector3::new(f64::MIN_POSITIVE, 0.0, 5e-324),
+            Vector3::zeros(),
+        ] {
+            assert_eq!(arm_norm(&v).to_bits(), stable_norm(&v).to_bits(), "{v:?}");
+        }
+        let v: Vector3<f32> = Vector3::new(1e-20, 3e-21, 0.0);
+        assert_eq!(arm_norm(&v).to_bits(), stable_norm(&v).to_bits());
+    }
 }

@@ -148,17 +148,40 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
     }
     let n = r.contacts.len();
     let mut used = 0;
-    'sweeps: while n > 0 && used < limit {
-        let mut largest = T::zero();
-        for k in 0..n {
-            if used == limit {
-                break 'sweeps;
+    if O::RECORDS {
+        'sweeps: while n > 0 && used < limit {
+            let mut largest = T::zero();
+            for k in 0..n {
+                if used == limit {
+                    break 'sweeps;
+                }
+                largest = largest.max(velocity::visit(r, k, used, obs));
+                used += 1;
             }
-            largest = largest.max(velocity::visit(r, k, used, obs));
-            used += 1;
+            if largest <= epsilon {
+                break;
+            }
         }
-        if largest <= epsilon {
-            break;
+    } else {
+        // Nothing records: the same visits in the same order, each sweep
+        // over the rows and accumulated impulses side by side (a sweep the
+        // limit cuts short stops there, as above).
+        let State {
+            rows,
+            accumulated,
+            solver,
+            ..
+        } = &mut r.sequential;
+        while n > 0 && used < limit {
+            let sweep = n.min(limit - used);
+            let mut largest = T::zero();
+            for (rows, accumulated) in rows[..sweep].iter().zip(&mut accumulated[..sweep]) {
+                largest = largest.max(velocity::silent_visit(rows, accumulated, solver));
+            }
+            used += sweep;
+            if sweep < n || largest <= epsilon {
+                break;
+            }
         }
     }
     r.sequential.write_velocities(&mut r.bodies);

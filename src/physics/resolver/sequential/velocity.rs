@@ -26,6 +26,7 @@ use nalgebra::Vector3;
 
 use super::super::observer::{Observer, VelocityImpulse};
 use super::super::Resolver;
+use super::{Rows, SolverBody, State};
 use crate::physics::stages::{BodyVelocityChange, FrictionRegime};
 use crate::physics::{Problem, Real};
 
@@ -127,6 +128,52 @@ fn recorded<T: Real>(
     }
 }
 
+/// The visit's arithmetic on contact rows `rows` with accumulated impulse
+/// `old`: the contact velocity now, the Δv wanted along the normal, the new
+/// accumulated impulse (clamped; on the rim for a sliding contact pushed off
+/// its cone) and the regime. Both visits ([`visit`], [`silent_visit`]) run
+/// it, so they give the same bits.
+#[inline(always)]
+fn solve<T: Real>(
+    rows: &Rows<T>,
+    solver: &[SolverBody<T>],
+    old: &Vector3<T>,
+) -> (Vector3<T>, T, Vector3<T>, Option<FrictionRegime>) {
+    let v = rows.velocity(solver);
+    let desired = -v.x - rows.bounce;
+    let step = rows.inverse * Vector3::new(desired, -v.y, -v.z);
+    let (mut total, regime) = clamp_accumulated(old + step, rows.friction.then_some(rows.mu));
+    // A sliding contact pushed off its cone: friction on the rim against the
+    // slip now, the normal part solved again so the normal target holds.
+    if rows.sliding && regime == Some(FrictionRegime::Dynamic) {
+        let against = Vector3::new(T::zero(), -v.y, -v.z);
+        if let Some(g) = on_the_rim(old, &against, rows.mu, &rows.normal_row, desired) {
+            total = g;
+        }
+    }
+    (v, desired, total, regime)
+}
+
+/// A visit nothing records: [`visit`]'s arithmetic on the contact's rows,
+/// its accumulated impulse and the solver bodies alone (no resolver, no
+/// index into the contacts); returns `|Δg| Δq̇_t`.
+#[inline(always)]
+pub fn silent_visit<T: Real>(
+    rows: &Rows<T>,
+    accumulated: &mut Vector3<T>,
+    solver: &mut [SolverBody<T>],
+) -> T {
+    let old = *accumulated;
+    let (_, _, total, _) = solve(rows, solver, &old);
+    let delta = total - old;
+    if delta == Vector3::zeros() {
+        return T::zero();
+    }
+    *accumulated = total;
+    rows.apply(solver, &delta);
+    delta.norm() * rows.unit_total
+}
+
 /// Visits contact `k` (visit number `visit`): returns how much it changed the
 /// contact's velocity, `|Δg| Δq̇_t`. Straight-line on the contact's rows
 /// and the solver bodies (`g ← clamp(g + M⁻¹ (Δv, -v_t0, -v_t1))`).
@@ -138,25 +185,13 @@ pub fn visit<T: Real, O: Observer<T>>(
     obs: &mut O,
 ) -> T {
     let state = &mut r.sequential;
-    let rows = &state.rows[k];
-    let v = rows.velocity(&state.solver);
-    let desired = -v.x - rows.bounce;
     let old = state.accumulated[k];
-    let step = rows.inverse * Vector3::new(desired, -v.y, -v.z);
-    let (mut total, regime) = clamp_accumulated(old + step, rows.friction.then_some(rows.mu));
-    // A sliding contact pushed off its cone: friction on the rim against the
-    // slip now, the normal part solved again so the normal target holds.
-    if rows.sliding && regime == Some(FrictionRegime::Dynamic) {
-        let against = Vector3::new(T::zero(), -v.y, -v.z);
-        if let Some(g) = on_the_rim(&old, &against, rows.mu, &rows.normal_row, desired) {
-            total = g;
-        }
-    }
+    let (v, desired, total, regime) = solve(&state.rows[k], &state.solver, &old);
     let delta = total - old;
     if delta == Vector3::zeros() {
         return T::zero();
     }
-    let change = delta.norm() * rows.unit_total;
+    let change = delta.norm() * state.rows[k].unit_total;
     if O::RECORDS {
         obs.before_velocity(visit, k, &r.bodies);
     }
@@ -179,17 +214,23 @@ pub fn visit<T: Real, O: Observer<T>>(
 /// [`Resolver::warm_start`]) as the contacts' starting accumulated impulses,
 /// clamped to the contact's cone in its new basis, through the contacts' rows.
 pub fn apply_warm_start<T: Real>(r: &mut Resolver<T>) {
-    let state = &mut r.sequential;
-    for (k, rows) in state.rows.iter().enumerate() {
-        let Some(world) = state.warm[k].take() else {
+    let State {
+        rows,
+        accumulated,
+        solver,
+        warm,
+        ..
+    } = &mut r.sequential;
+    for ((rows, warm), accumulated) in rows.iter().zip(warm.iter_mut()).zip(accumulated) {
+        let Some(world) = warm.take() else {
             continue;
         };
         let (g, _) = clamp_accumulated(rows.basis.tr_mul(&world), rows.friction.then_some(rows.mu));
         if g == Vector3::zeros() {
             continue;
         }
-        state.accumulated[k] = g;
-        rows.apply(&mut state.solver, &g);
+        *accumulated = g;
+        rows.apply(solver, &g);
     }
 }
 
