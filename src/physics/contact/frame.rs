@@ -14,6 +14,7 @@ pub enum GuessAxis {
 /// Orthonormal right-handed basis with the contact normal as first column:
 /// guess world y, or world x when |d.x| ≤ |d.y|; `t0 = guess × d / |guess × d|`,
 /// `t1 = d × t0`. The reference code's `t1.x = d.y·t0.x` typo is not copied.
+#[inline]
 pub fn contact_basis<T: Real>(d: &Vector3<T>) -> (Matrix3<T>, GuessAxis) {
     let guess = if d.x.abs() > d.y.abs() {
         GuessAxis::Y

@@ -93,6 +93,7 @@ pub fn contact_velocity<T: Real>(
 }
 
 /// `(v_acc, planar)` of a contact from `a₁ - a₂`: both zero without acceleration.
+#[inline]
 pub fn acceleration_terms<T: Real>(
     acceleration: &Vector3<T>,
     contact_to_world: &Matrix3<T>,
