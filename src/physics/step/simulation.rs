@@ -5,7 +5,7 @@
 
 use nalgebra::Vector3;
 
-mod contacts;
+pub(super) mod contacts;
 mod events;
 
 use super::audit::Switches;

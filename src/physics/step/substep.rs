@@ -21,6 +21,7 @@ use super::ccd::{self, Tunnelled};
 use super::energy;
 use super::integrate::integrate_position;
 use super::report::ToiEvent;
+use super::simulation::contacts::contact_input;
 use super::swept::{motion_of, Earlier, MovementBound, SweptPairs};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
@@ -29,7 +30,7 @@ use crate::physics::detect::{
 use crate::physics::params::{Material, SimParams};
 use crate::physics::pose::Pose;
 use crate::physics::resolver::{Implementation, Resolver, Silent};
-use crate::physics::{c, to_f64, BodyId, Contact, ContactInput, Real, World};
+use crate::physics::{c, to_f64, BodyId, Contact, Real, World};
 
 /// The most collisions continuous detection resolves inside one step.
 pub const MAX_SUBSTEPS: usize = 8;
@@ -284,16 +285,7 @@ fn resolve_at<T: Real>(
     let contact = Contact {
         body1: BodyId(i),
         body2: Some(BodyId(j)),
-        input: ContactInput {
-            point,
-            normal,
-            penetration,
-            restitution: c(m.restitution),
-            static_friction: c(m.static_friction),
-            dynamic_friction: c(m.dynamic_friction),
-            friction_model: p.friction_model,
-            settings: p.contact,
-        },
+        input: contact_input(p, &m, point, normal, penetration),
         duration: (!p.acceleration_compensation).then(T::zero),
     };
     let normal_speed = |w: &World<T>| {

@@ -5,7 +5,9 @@
 use super::super::previous_frame;
 use super::Simulation;
 use crate::physics::collide::Options;
-use crate::physics::params::NormalFrom;
+use nalgebra::Vector3;
+
+use crate::physics::params::{Material, NormalFrom, SimParams};
 use crate::physics::{c, Contact, ContactInput, Real};
 
 impl<T: Real> Simulation<T> {
@@ -36,18 +38,31 @@ impl<T: Real> Simulation<T> {
             self.world.contacts.push(Contact {
                 body1: g.body1,
                 body2: Some(g.body2),
-                input: ContactInput {
-                    point: g.contact.point,
-                    normal,
-                    penetration,
-                    restitution: c(m.restitution),
-                    static_friction: c(m.static_friction),
-                    dynamic_friction: c(m.dynamic_friction),
-                    friction_model: p.friction_model,
-                    settings: p.contact,
-                },
+                input: contact_input(p, &m, g.contact.point, normal, penetration),
                 duration,
             });
         }
+    }
+}
+
+/// A contact's input from a point and normal found between two bodies: the
+/// pair's combined material `m` and the step's friction model and contact
+/// settings (contact generation's contacts and exact impact's alike).
+pub(in crate::physics::step) fn contact_input<T: Real>(
+    p: &SimParams<T>,
+    m: &Material,
+    point: Vector3<T>,
+    normal: Vector3<T>,
+    penetration: T,
+) -> ContactInput<T> {
+    ContactInput {
+        point,
+        normal,
+        penetration,
+        restitution: c(m.restitution),
+        static_friction: c(m.static_friction),
+        dynamic_friction: c(m.dynamic_friction),
+        friction_model: p.friction_model,
+        settings: p.contact,
     }
 }
