@@ -85,15 +85,38 @@ pub fn projection_inertia_from<T: Real>(
     d: &Vector3<T>,
     settings: &ContactParams<T>,
 ) -> ProjectionInertia<T> {
-    let rotation_per_unit = response.rotation;
+    projection_inertia_parts(
+        inverse_mass,
+        response.rotation,
+        response.angular,
+        r,
+        d,
+        settings,
+        stable_norm,
+    )
+}
+
+/// [`projection_inertia_from`] from the response's parts, `|r⊥|` by `norm`
+/// (the resolver's lean prepare passes a norm that gives `stable_norm`'s
+/// bits more cheaply).
+#[inline(always)]
+pub fn projection_inertia_parts<T: Real>(
+    inverse_mass: T,
+    rotation_per_unit: Vector3<T>,
+    angular: T,
+    r: &Vector3<T>,
+    d: &Vector3<T>,
+    settings: &ContactParams<T>,
+    norm: impl Fn(&Vector3<T>) -> T,
+) -> ProjectionInertia<T> {
     let angular = if settings.projection == ProjectionMethod::Nonlinear {
-        response.angular
+        angular
     } else {
         T::zero()
     };
     // Avoiding excessive rotation: scale the limit by the lever arm's size.
     let r_perp = r - d * r.dot(d);
-    let r_perp_length = stable_norm(&r_perp);
+    let r_perp_length = norm(&r_perp);
     // `inf` switches the limit off (and must not become inf · 0 = NaN).
     let angular_limit = if settings.angular_limit.is_finite() {
         settings.angular_limit * r_perp_length

@@ -23,13 +23,12 @@ use super::super::{ContactSetup, FrictionData, ResolverContact};
 use super::rows::{solver_bodies, symmetric_inverse, Rows};
 use super::State;
 use crate::physics::params::RestitutionFrom;
-use crate::physics::params::{ContactParams, ProjectionMethod};
 use crate::physics::scale::stable_norm;
 use crate::physics::stages::desired_velocity::{
     acceleration_terms, applied_restitution, relative_acceleration,
 };
 use crate::physics::stages::impulse::FactoredMatrix;
-use crate::physics::stages::projection::{total_projection_inertia, ProjectionInertia};
+use crate::physics::stages::projection::{projection_inertia_parts, total_projection_inertia};
 use crate::physics::stages::unit_impulse::total_per_unit_impulse;
 use crate::physics::{c, Real, World};
 
@@ -62,38 +61,6 @@ fn arm_norm<T: Real>(v: &Vector3<T>) -> T {
         sq.sqrt()
     } else {
         stable_norm(v)
-    }
-}
-
-/// One body's [`ProjectionInertia`] as [`projection_inertia_from`] gives it
-/// (the same operations; `|r⊥|` by [`arm_norm`]).
-#[inline(always)]
-fn projection_inertia<T: Real>(
-    inverse_mass: T,
-    rotation: Vector3<T>,
-    angular: T,
-    r: &Vector3<T>,
-    d: &Vector3<T>,
-    settings: &ContactParams<T>,
-) -> ProjectionInertia<T> {
-    let angular = if settings.projection == ProjectionMethod::Nonlinear {
-        angular
-    } else {
-        T::zero()
-    };
-    let r_perp = r - d * r.dot(d);
-    let r_perp_length = arm_norm(&r_perp);
-    let angular_limit = if settings.angular_limit.is_finite() {
-        settings.angular_limit * r_perp_length
-    } else {
-        settings.angular_limit
-    };
-    ProjectionInertia {
-        linear: inverse_mass,
-        angular,
-        rotation_per_unit: rotation,
-        r_perp_length,
-        angular_limit,
     }
 }
 
@@ -195,13 +162,14 @@ pub fn prepare<T: Real>(
             // is T's first column; the projection's angular inertia is the same.
             let rotation = turn.column(0).into_owned();
             let angular = rotation.cross(&arm).dot(&d);
-            projection[i] = Some(projection_inertia(
+            projection[i] = Some(projection_inertia_parts(
                 body.inverse_mass,
                 rotation,
                 angular,
                 &arm,
                 &d,
                 &input.settings,
+                arm_norm,
             ));
             unit[i] = Some((body.inverse_mass, angular));
             // v + ω × r (stage 3), body 2's subtracted.
