@@ -80,25 +80,18 @@ pub fn friction_clamp<T: Real>(
     impulse: &Impulse<T>,
 ) -> FrictionClamp<T> {
     let factored = unit.matrix.map(FactoredMatrix::new);
-    friction_clamp_factored(problem, frame, unit, desired, impulse, factored.as_ref())
-}
-
-/// [`friction_clamp`] with `M` already factored (the stage path factors it
-/// once for the impulse and the clamp).
-pub fn friction_clamp_factored<T: Real>(
-    problem: &Problem<T>,
-    frame: &ContactFrame<T>,
-    unit: &UnitImpulse<T>,
-    desired: &DesiredVelocity<T>,
-    impulse: &Impulse<T>,
-    factored: Option<&FactoredMatrix<T>>,
-) -> FrictionClamp<T> {
     clamp(clamp_inputs(
-        problem, frame, unit, desired, impulse, factored,
+        problem,
+        frame,
+        unit,
+        desired,
+        impulse,
+        factored.as_ref(),
     ))
 }
 
-/// [`friction_clamp_factored`] written into `out` (the stage path's form:
+/// [`friction_clamp`] with `M` already factored (the stage path factors it
+/// once for the impulse and the clamp), written into `out` (the stage path's form:
 /// [`clamp`], inlined, builds the record where it stays).
 #[inline]
 pub fn friction_clamp_factored_into<T: Real>(

@@ -261,26 +261,6 @@ pub fn impulse_with<T: Real>(
     desired: &DesiredVelocity<T>,
 ) -> Impulse<T> {
     let factored = unit.matrix.map(FactoredMatrix::new);
-    impulse_factored(
-        problem,
-        inverse_inertias,
-        frame,
-        unit,
-        desired,
-        factored.as_ref(),
-    )
-}
-
-/// [`impulse_with`] with `M` already factored (the stage path factors it
-/// once for the impulse and the friction clamp).
-pub fn impulse_factored<T: Real>(
-    problem: &Problem<T>,
-    inverse_inertias: &InverseInertias<T>,
-    frame: &ContactFrame<T>,
-    unit: &UnitImpulse<T>,
-    desired: &DesiredVelocity<T>,
-    factored: Option<&FactoredMatrix<T>>,
-) -> Impulse<T> {
     let mut impulse = Impulse::empty();
     impulse_factored_into(
         problem,
@@ -288,7 +268,7 @@ pub fn impulse_factored<T: Real>(
         frame,
         unit,
         desired,
-        factored,
+        factored.as_ref(),
         &mut impulse,
     );
     impulse
@@ -307,7 +287,8 @@ impl<T: Real> Impulse<T> {
     }
 }
 
-/// [`impulse_factored`] written into `out` (the stage path's form).
+/// [`impulse_with`] with `M` already factored (the stage path factors it
+/// once for the impulse and the friction clamp), written into `out`.
 #[inline]
 pub fn impulse_factored_into<T: Real>(
     problem: &Problem<T>,

@@ -19,13 +19,10 @@ pub use apply_impulse::{
 };
 pub use contact_frame::{contact_frame, contact_frame_into, ContactFrame};
 pub use desired_velocity::{desired_delta_velocity, desired_delta_velocity_into, DesiredVelocity};
-pub use friction::{
-    friction_clamp, friction_clamp_factored, friction_clamp_factored_into, FrictionClamp,
-    FrictionRegime,
-};
+pub use friction::{friction_clamp, friction_clamp_factored_into, FrictionClamp, FrictionRegime};
 pub use impulse::{
-    condition_number, impulse, impulse_factored, impulse_factored_into, impulse_with,
-    FactoredMatrix, Impulse, MatrixSolve,
+    condition_number, impulse, impulse_factored_into, impulse_with, FactoredMatrix, Impulse,
+    MatrixSolve,
 };
 pub use orientation::{
     orientation_update, orientation_update_into, BodyOrientation, OrientationUpdate, Turn,
