@@ -6,7 +6,7 @@
 
 use contact_lab::physics::params::{ResolverParams, RestitutionFrom};
 use contact_lab::physics::resolver::{
-    Implementation, Observer, PositionMoves, Resolver, VelocityImpulse,
+    Implementation, Observer, PositionMoves, Resolver, Silent, VelocityImpulse,
 };
 use contact_lab::physics::{
     Body, BodyId, Contact, ContactInput, ContactParams, FrictionModel, ProjectionMethod, RigidBody,
@@ -269,6 +269,11 @@ fn same_bits(spec: &Spec) -> Result<(), TestCaseError> {
     prop_assert_eq!(state(&scan), state(&indexed));
     // Debug text, so that a NaN left by a runaway scene compares equal to itself.
     prop_assert_eq!(format!("{scan_out:?}"), format!("{indexed_out:?}"));
+    // The fast path (nothing recorded: the neighbours visited by slot
+    // pattern) leaves the same bits too.
+    let (silent, silent_out) = Resolver::resolve(&w, &params, Implementation::Indexed, &mut Silent);
+    prop_assert_eq!(state(&scan), state(&silent));
+    prop_assert_eq!(format!("{scan_out:?}"), format!("{silent_out:?}"));
     Ok(())
 }
 

@@ -16,7 +16,7 @@
 use super::observer::Observer;
 use super::phase::{PhaseWork, Positions, Velocities};
 use super::queue::{Queue, SCAN_BELOW};
-use super::velocity::{VelocityRow, UNCHANGED};
+use super::velocity::{BodyChanges, VelocityRow, UNCHANGED};
 use super::{Phase, PhaseOutcome, Resolver};
 use crate::physics::Real;
 
@@ -166,16 +166,33 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
         c.desired = rows[k].desired;
         let change = Velocities::take(r, used, k, value, obs);
         r.changed.clear();
-        for n in table.of(k) {
-            let j = n.contact as usize;
-            let (before, after) = rows[j].update(n.slots, &change);
-            obs.desired_updated(j, before, after);
-            if !(before <= epsilon && after <= epsilon) {
-                queue.set(j, after);
-                if Q::REPLAYS {
-                    r.changed.push(j);
+        if O::RECORDS {
+            for n in table.of(k) {
+                let j = n.contact as usize;
+                let (before, after) = rows[j].update(n.slots, &change);
+                obs.desired_updated(j, before, after);
+                if !(before <= epsilon && after <= epsilon) {
+                    queue.set(j, after);
+                    if Q::REPLAYS {
+                        r.changed.push(j);
+                    }
                 }
             }
+        } else {
+            // Nothing is told of the updates: the neighbours by slot
+            // pattern, each group's slots fixed in its loop. Each update
+            // reads and writes its own row only, and the queue orders by
+            // value (the tree replays its changed contacts sorted), so the
+            // order of the visits changes no bit.
+            let [g0, g1, g2, g3, g4, g5] = table.grouped(k);
+            let (c, q) = (&change, &mut *queue);
+            const U: u8 = UNCHANGED;
+            update_group::<T, Q, 0, 1>(&mut rows, g0, c, epsilon, q, &mut r.changed);
+            update_group::<T, Q, 1, 0>(&mut rows, g1, c, epsilon, q, &mut r.changed);
+            update_group::<T, Q, 0, U>(&mut rows, g2, c, epsilon, q, &mut r.changed);
+            update_group::<T, Q, 1, U>(&mut rows, g3, c, epsilon, q, &mut r.changed);
+            update_group::<T, Q, U, 0>(&mut rows, g4, c, epsilon, q, &mut r.changed);
+            update_group::<T, Q, U, 1>(&mut rows, g5, c, epsilon, q, &mut r.changed);
         }
         if Q::REPLAYS {
             queue.replay(&mut r.changed);
@@ -190,6 +207,41 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
     r.neighbours = table;
     r.finish(Phase::Velocity, used, obs)
 }
+
+/// Brings the neighbours `group` (every one with the slots `[S0, S1]`) up
+/// to date after a take's `change`, and their values in the queue.
+#[inline(always)]
+fn update_group<T: Real, Q: Queue<T>, const S0: u8, const S1: u8>(
+    rows: &mut [VelocityRow<T>],
+    group: &[u32],
+    change: &BodyChanges<T>,
+    epsilon: T,
+    queue: &mut Q,
+    changed: &mut Vec<usize>,
+) {
+    for &j in group {
+        let j = j as usize;
+        let (before, after) = rows[j].update([S0, S1], change);
+        if !(before <= epsilon && after <= epsilon) {
+            queue.set(j, after);
+            if Q::REPLAYS {
+                changed.push(j);
+            }
+        }
+    }
+}
+
+/// The slots a neighbour can have (for its slot 1, then its slot 2: the
+/// taken contact's slot with the same body, [`UNCHANGED`] for none): both
+/// bodies shared (either way round), or one of them.
+const SLOT_PATTERNS: [[u8; 2]; 6] = [
+    [0, 1],
+    [1, 0],
+    [0, UNCHANGED],
+    [1, UNCHANGED],
+    [UNCHANGED, 0],
+    [UNCHANGED, 1],
+];
 
 /// One neighbour of a contact: a contact sharing a body with it, and for
 /// each of the neighbour's slots the contact's slot with the same body
@@ -212,6 +264,11 @@ pub struct Neighbours {
     /// Contact `k`'s neighbours are `entries[offsets[k]..offsets[k + 1]]`.
     offsets: Vec<u32>,
     entries: Vec<Neighbour>,
+    /// The same neighbours by the slots the taken contact changed
+    /// ([`SLOT_PATTERNS`]): contact `k`'s pattern `p` ones are
+    /// `grouped[bounds[k][p]..bounds[k][p + 1]]`.
+    grouped: Vec<u32>,
+    bounds: Vec<[u32; 7]>,
     /// The resolver bodies and contact slots the table was built for.
     bodies: usize,
     slots: Vec<[Option<usize>; 2]>,
@@ -237,6 +294,9 @@ impl Neighbours {
             .reserve((n + 1).saturating_sub(self.offsets.len()));
         self.entries
             .reserve(most.saturating_sub(self.entries.len()));
+        self.grouped
+            .reserve(most.saturating_sub(self.grouped.len()));
+        self.bounds.reserve(n.saturating_sub(self.bounds.len()));
         self.slots.reserve(n.saturating_sub(self.slots.len()));
     }
 
@@ -289,12 +349,43 @@ impl Neighbours {
             }
             self.offsets.push(self.entries.len() as u32);
         }
+        self.group();
+    }
+
+    /// Sorts every contact's neighbours into [`SLOT_PATTERNS`]' groups (each
+    /// group in the table's order).
+    fn group(&mut self) {
+        self.grouped.clear();
+        self.bounds.clear();
+        for k in 0..self.offsets.len() - 1 {
+            let of = &self.entries[self.offsets[k] as usize..self.offsets[k + 1] as usize];
+            let mut bounds = [self.grouped.len() as u32; 7];
+            for (p, pattern) in SLOT_PATTERNS.into_iter().enumerate() {
+                let members = of.iter().filter(|n| n.slots == pattern);
+                self.grouped.extend(members.map(|n| n.contact));
+                bounds[p + 1] = self.grouped.len() as u32;
+            }
+            debug_assert_eq!(
+                bounds[6],
+                self.offsets[k + 1],
+                "every neighbour has a pattern"
+            );
+            self.bounds.push(bounds);
+        }
     }
 
     /// The neighbours of contact `k`.
     #[inline(always)]
     pub fn of(&self, k: usize) -> &[Neighbour] {
         &self.entries[self.offsets[k] as usize..self.offsets[k + 1] as usize]
+    }
+
+    /// The neighbours of contact `k` by [`SLOT_PATTERNS`].
+    #[inline(always)]
+    fn grouped(&self, k: usize) -> [&[u32]; 6] {
+        let b = &self.bounds[k];
+        let g = |p: usize| &self.grouped[b[p] as usize..b[p + 1] as usize];
+        [g(0), g(1), g(2), g(3), g(4), g(5)]
     }
 }
 
