@@ -296,6 +296,28 @@ proptest! {
     }
 }
 
+/// `spec` with nothing bouncing and no gap (restitution 0 from the current
+/// velocity, no contact apart): every contact's desired Δv takes the fast
+/// path's plain rule.
+fn plain(spec: &Spec) -> Spec {
+    let mut plain = spec.clone();
+    for contact in &mut plain.contacts {
+        contact.4 = contact.4.max(1);
+        contact.5 = 0;
+    }
+    plain.restitution_from = RestitutionFrom::Current;
+    plain
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(150))]
+
+    #[test]
+    fn with_the_plain_desired_rule_too(spec in spec()) {
+        same_bits(&plain(&spec))?;
+    }
+}
+
 /// Two contacts at exactly the same penetration: both implementations take
 /// the first in file order, as the lecture's strict `>` does.
 #[test]

@@ -155,6 +155,7 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
     let mut table = std::mem::take(&mut r.neighbours);
     table.build(r);
     queue.fill(rows.iter().map(|w| w.desired));
+    let plain = rows.iter().all(VelocityRow::is_plain);
     let mut used = 0;
     while used < limit {
         let Some((k, value)) = queue.top().filter(|(_, v)| *v > epsilon) else {
@@ -169,7 +170,7 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
         if O::RECORDS {
             for n in table.of(k) {
                 let j = n.contact as usize;
-                let (before, after) = rows[j].update(n.slots, &change);
+                let (before, after) = rows[j].update::<false>(n.slots, &change);
                 obs.desired_updated(j, before, after);
                 if !(before <= epsilon && after <= epsilon) {
                     queue.set(j, after);
@@ -184,15 +185,13 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
             // reads and writes its own row only, and the queue orders by
             // value (the tree replays its changed contacts sorted), so the
             // order of the visits changes no bit.
-            let [g0, g1, g2, g3, g4, g5] = table.grouped(k);
-            let (c, q) = (&change, &mut *queue);
-            const U: u8 = UNCHANGED;
-            update_group::<T, Q, 0, 1>(&mut rows, g0, c, epsilon, q, &mut r.changed);
-            update_group::<T, Q, 1, 0>(&mut rows, g1, c, epsilon, q, &mut r.changed);
-            update_group::<T, Q, 0, U>(&mut rows, g2, c, epsilon, q, &mut r.changed);
-            update_group::<T, Q, 1, U>(&mut rows, g3, c, epsilon, q, &mut r.changed);
-            update_group::<T, Q, U, 0>(&mut rows, g4, c, epsilon, q, &mut r.changed);
-            update_group::<T, Q, U, 1>(&mut rows, g5, c, epsilon, q, &mut r.changed);
+            let groups = table.grouped(k);
+            let changed = &mut r.changed;
+            if plain {
+                update_groups::<T, Q, true>(&mut rows, groups, &change, epsilon, queue, changed);
+            } else {
+                update_groups::<T, Q, false>(&mut rows, groups, &change, epsilon, queue, changed);
+            }
         }
         if Q::REPLAYS {
             queue.replay(&mut r.changed);
@@ -208,10 +207,32 @@ fn velocity_rows<T: Real, O: Observer<T>, Q: Queue<T>>(
     r.finish(Phase::Velocity, used, obs)
 }
 
+/// Brings a taken contact's neighbours `groups` ([`Neighbours::grouped`])
+/// up to date after its `change`, and their values in the queue; `PLAIN`:
+/// every row [`VelocityRow::is_plain`].
+#[inline(always)]
+fn update_groups<T: Real, Q: Queue<T>, const PLAIN: bool>(
+    rows: &mut [VelocityRow<T>],
+    [g0, g1, g2, g3, g4, g5]: [&[u32]; 6],
+    change: &BodyChanges<T>,
+    epsilon: T,
+    queue: &mut Q,
+    changed: &mut Vec<usize>,
+) {
+    const U: u8 = UNCHANGED;
+    let (c, q) = (change, queue);
+    update_group::<T, Q, PLAIN, 0, 1>(rows, g0, c, epsilon, q, changed);
+    update_group::<T, Q, PLAIN, 1, 0>(rows, g1, c, epsilon, q, changed);
+    update_group::<T, Q, PLAIN, 0, U>(rows, g2, c, epsilon, q, changed);
+    update_group::<T, Q, PLAIN, 1, U>(rows, g3, c, epsilon, q, changed);
+    update_group::<T, Q, PLAIN, U, 0>(rows, g4, c, epsilon, q, changed);
+    update_group::<T, Q, PLAIN, U, 1>(rows, g5, c, epsilon, q, changed);
+}
+
 /// Brings the neighbours `group` (every one with the slots `[S0, S1]`) up
 /// to date after a take's `change`, and their values in the queue.
 #[inline(always)]
-fn update_group<T: Real, Q: Queue<T>, const S0: u8, const S1: u8>(
+fn update_group<T: Real, Q: Queue<T>, const PLAIN: bool, const S0: u8, const S1: u8>(
     rows: &mut [VelocityRow<T>],
     group: &[u32],
     change: &BodyChanges<T>,
@@ -221,7 +242,7 @@ fn update_group<T: Real, Q: Queue<T>, const S0: u8, const S1: u8>(
 ) {
     for &j in group {
         let j = j as usize;
-        let (before, after) = rows[j].update([S0, S1], change);
+        let (before, after) = rows[j].update::<PLAIN>([S0, S1], change);
         if !(before <= epsilon && after <= epsilon) {
             queue.set(j, after);
             if Q::REPLAYS {
