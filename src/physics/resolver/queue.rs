@@ -210,17 +210,38 @@ impl<T: Real> Queue<T> for ScanQueue<T> {
         self.keys.clear();
         self.keys.extend(values.map(TournamentTree::key));
     }
+    #[inline(always)]
     fn top(&self) -> Option<(usize, T)> {
         // Two short passes instead of one with a branch per key: the largest
         // value (keys hold no NaN), then the first key equal to it, which is
         // the first of the largest (the same contact as one pass taking a
         // key only when strictly larger; -0 and +0 are equal both ways).
         let first = *self.keys.first()?;
-        let largest = self
-            .keys
-            .iter()
-            .fold(first, |m, k| if *k > m { *k } else { m });
-        let best = self.keys.iter().position(|k| *k == largest)?;
+        // Four running maxima side by side: the largest value is the same
+        // whatever the order of the comparisons (no NaN), but -0 and +0
+        // may come out either way, which the second pass does not mind.
+        let mut lanes = [first; 4];
+        let chunks = self.keys.chunks_exact(4);
+        let rest = chunks.remainder();
+        for chunk in chunks {
+            for (m, k) in lanes.iter_mut().zip(chunk) {
+                *m = if *k > *m { *k } else { *m };
+            }
+        }
+        let most = |a: T, b: T| if b > a { b } else { a };
+        let largest = rest.iter().fold(
+            most(most(lanes[0], lanes[1]), most(lanes[2], lanes[3])),
+            |m, k| most(m, *k),
+        );
+        // The first key equal to it: four keys a test, then one by one.
+        let mut from = 0;
+        for c in self.keys.chunks_exact(4) {
+            if (c[0] == largest) | (c[1] == largest) | (c[2] == largest) | (c[3] == largest) {
+                break;
+            }
+            from += 4;
+        }
+        let best = from + self.keys[from..].iter().position(|k| *k == largest)?;
         Some((best, self.keys[best]))
     }
     fn set(&mut self, k: usize, value: T) {
@@ -321,6 +342,35 @@ mod tests {
                 assert_eq!(Queue::top(&tree), Queue::top(&queue), "n = {n}");
             }
         }
+    }
+
+    /// The scan queue's passes (four keys at a time, then the rest) give
+    /// the first of the largest wherever it lies, signed zeros as equals.
+    #[test]
+    fn the_scan_queue_finds_the_first_of_the_largest_anywhere() {
+        use super::{Queue, ScanQueue};
+        for n in 1..14usize {
+            for at in 0..n {
+                for top in [1.0, 0.0, -0.0] {
+                    // The largest value at `at` and again after it.
+                    let values: Vec<f64> = (0..n)
+                        .map(|i| if i == at || i == n - 1 { top } else { -2.0 })
+                        .collect();
+                    let mut queue = ScanQueue::<f64>::default();
+                    Queue::fill(&mut queue, values.iter().copied());
+                    let (k, v) = Queue::top(&queue).unwrap();
+                    assert_eq!((k, v.to_bits()), (at, top.to_bits()), "{values:?}");
+                    assert_eq!(scan(&values).map(|(i, _)| i), Some(at));
+                }
+            }
+        }
+        // -0 first, +0 after it: the first.
+        let mut queue = ScanQueue::<f64>::default();
+        Queue::fill(&mut queue, [-1.0, -0.0, 0.0, -0.0, 0.0, -3.0].into_iter());
+        assert_eq!(
+            Queue::top(&queue).map(|(k, v)| (k, v.to_bits())),
+            Some((1, (-0.0f64).to_bits()))
+        );
     }
 
     #[test]
