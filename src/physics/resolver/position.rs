@@ -186,18 +186,21 @@ pub fn penetration_after_slots<T: Real>(
     slots: [u8; 2],
     moves: &BodyMoves<T>,
 ) -> T {
+    // Slot 1 (sign -1), then slot 2 (sign +1), each as `penetration_after` does it.
     let mut penetration = c.penetration;
-    for (b, &d) in slots.iter().enumerate() {
-        if d == UNCHANGED {
-            continue;
+    if slots[0] != UNCHANGED {
+        let d = usize::from(slots[0] & 1);
+        if moves.bodies[d] != usize::MAX {
+            let delta = moves.linear[d] + moves.angular[d].cross(&c.r[0]);
+            penetration += delta.dot(&c.normal) * -T::one();
         }
-        let d = usize::from(d & 1);
-        if moves.bodies[d] == usize::MAX {
-            continue;
+    }
+    if slots[1] != UNCHANGED {
+        let d = usize::from(slots[1] & 1);
+        if moves.bodies[d] != usize::MAX {
+            let delta = moves.linear[d] + moves.angular[d].cross(&c.r[1]);
+            penetration += delta.dot(&c.normal) * T::one();
         }
-        let delta = moves.linear[d] + moves.angular[d].cross(&c.r[b]);
-        let sign = if b == 0 { -T::one() } else { T::one() };
-        penetration += delta.dot(&c.normal) * sign;
     }
     penetration
 }

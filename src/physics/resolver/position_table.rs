@@ -37,23 +37,26 @@ pub(super) fn phase<T: Real, O: Observer<T>, Q: Queue<T>>(
             break;
         };
         let moves = Positions::take(r, used, k, value, obs);
-        r.changed.clear();
+        let Resolver {
+            contacts, changed, ..
+        } = &mut *r;
+        changed.clear();
         for n in table.of(k) {
             let j = n.contact as usize;
-            let c = &mut r.contacts[j];
+            let c = &mut contacts[j];
             let before = c.penetration;
-            c.penetration = position::penetration_after_slots(c, n.slots, &moves);
-            let after = c.penetration;
+            let after = position::penetration_after_slots(c, n.slots, &moves);
+            c.penetration = after;
             obs.penetration_updated(j, before, after);
             if !(before <= epsilon && after <= epsilon) {
                 queue.set(j, after);
                 if Q::REPLAYS {
-                    r.changed.push(j);
+                    changed.push(j);
                 }
             }
         }
         if Q::REPLAYS {
-            queue.replay(&mut r.changed);
+            queue.replay(changed);
         }
         used += 1;
     }
