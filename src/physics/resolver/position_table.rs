@@ -40,6 +40,7 @@ pub(super) fn phase<T: Real, O: Observer<T>, Q: Queue<T>>(
         let Resolver {
             contacts, changed, ..
         } = &mut *r;
+        let contacts = contacts.as_mut_slice();
         changed.clear();
         for n in table.of(k) {
             let j = n.contact as usize;
@@ -48,7 +49,10 @@ pub(super) fn phase<T: Real, O: Observer<T>, Q: Queue<T>>(
             let after = position::penetration_after_slots(c, n.slots, &moves);
             c.penetration = after;
             obs.penetration_updated(j, before, after);
-            if !(before <= epsilon && after <= epsilon) {
+            // A queue that replays nothing (the scan's) is set every time:
+            // a value left at or below epsilon is either way a key at or
+            // below it, which is never taken and never beats one above it.
+            if !Q::REPLAYS || !(before <= epsilon && after <= epsilon) {
                 queue.set(j, after);
                 if Q::REPLAYS {
                     changed.push(j);
