@@ -52,7 +52,7 @@ pub(super) fn phase<T: Real, O: Observer<T>, Q: Queue<T>>(
             // A queue that replays nothing (the scan's) is set every time:
             // a value left at or below epsilon is either way a key at or
             // below it, which is never taken and never beats one above it.
-            if !Q::REPLAYS || !(before <= epsilon && after <= epsilon) {
+            if !(Q::REPLAYS && before <= epsilon && after <= epsilon) {
                 queue.set(j, after);
                 if Q::REPLAYS {
                     changed.push(j);
