@@ -14,10 +14,10 @@
 //! exact.
 
 use super::observer::Observer;
-use super::phase::{PhaseWork, Positions, Velocities};
+use super::phase::{PhaseWork, Velocities};
 use super::queue::{Queue, SCAN_BELOW};
 use super::velocity::{BodyChanges, VelocityRow, UNCHANGED};
-use super::{Phase, PhaseOutcome, Resolver};
+use super::{position_table, Phase, PhaseOutcome, Resolver};
 use crate::physics::Real;
 
 /// Marks each contact of the taken contact's bodies once per iteration and
@@ -43,7 +43,7 @@ pub fn position_phase<T: Real, O: Observer<T>>(
     r: &mut Resolver<T>,
     obs: &mut O,
 ) -> PhaseOutcome<T> {
-    with_queue::<T, O, Positions>(r, obs)
+    with_queue(r, obs)
 }
 
 pub fn velocity_phase<T: Real, O: Observer<T>>(
@@ -63,79 +63,29 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
     }
 }
 
-/// Runs the phase with the scan queue below [`SCAN_BELOW`] contacts, the
-/// tournament tree from there on (both give the same order).
-fn with_queue<T: Real, O: Observer<T>, W: PhaseWork<T>>(
-    r: &mut Resolver<T>,
-    obs: &mut O,
-) -> PhaseOutcome<T> {
-    if r.contacts.len() < SCAN_BELOW {
+/// Runs the position phase ([`position_table::phase`]) on the neighbour
+/// table (built here, kept for the velocity phase) with the scan queue below
+/// [`SCAN_BELOW`] contacts, the tournament tree from there on (both give the
+/// same order).
+fn with_queue<T: Real, O: Observer<T>>(r: &mut Resolver<T>, obs: &mut O) -> PhaseOutcome<T> {
+    let mut table = std::mem::take(&mut r.neighbours);
+    table.build(r);
+    let outcome = if r.contacts.len() < SCAN_BELOW {
         let mut queue = std::mem::take(&mut r.scan_queue);
-        let outcome = phase::<T, O, W, _>(r, obs, &mut queue);
+        let outcome = position_table::phase(r, obs, &mut queue, &table);
         r.scan_queue = queue;
         outcome
     } else {
         let mut queue = std::mem::take(&mut r.queue);
-        let outcome = phase::<T, O, W, _>(r, obs, &mut queue);
+        let outcome = position_table::phase(r, obs, &mut queue, &table);
         r.queue = queue;
         outcome
-    }
+    };
+    r.neighbours = table;
+    outcome
 }
 
-fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>, Q: Queue<T>>(
-    r: &mut Resolver<T>,
-    obs: &mut O,
-    queue: &mut Q,
-) -> PhaseOutcome<T> {
-    let (limit, epsilon) = r.limits(W::PHASE);
-    let from = r.params.restitution_from;
-    queue.fill(r.contacts.iter().map(W::value));
-    let mut used = 0;
-    while used < limit {
-        let Some((k, value)) = queue.top().filter(|(_, v)| *v > epsilon) else {
-            break;
-        };
-        let taken = r.contacts[k].bodies;
-        let change = W::take(r, used, k, value, obs);
-        r.stamp += 1;
-        let stamp = r.stamp;
-        r.changed.clear();
-        // The neighbours, as [`each_neighbour`] visits them, with the
-        // adjacency, the stamps and the contacts borrowed apart (no closure,
-        // no lookup through the resolver per contact).
-        let Resolver {
-            adjacency,
-            stamps,
-            contacts,
-            changed,
-            ..
-        } = &mut *r;
-        for b in taken.into_iter().flatten() {
-            let row = &adjacency.contacts[adjacency.offsets[b]..adjacency.offsets[b + 1]];
-            for &j in row {
-                let seen = &mut stamps[j];
-                if *seen == stamp {
-                    continue;
-                }
-                *seen = stamp;
-                let (before, after) = W::update(&mut contacts[j], j, &taken, &change, from, obs);
-                if !(before <= epsilon && after <= epsilon) {
-                    queue.set(j, after);
-                    if Q::REPLAYS {
-                        changed.push(j);
-                    }
-                }
-            }
-        }
-        if Q::REPLAYS {
-            queue.replay(changed);
-        }
-        used += 1;
-    }
-    r.finish(W::PHASE, used, obs)
-}
-
-/// The velocity phase of [`phase`], its neighbour updates on the contacts'
+/// The velocity phase, its neighbour updates on the contacts'
 /// hot rows ([`VelocityRow`]: copied in at the start, the velocities and
 /// desired Δv written back at the end) through the neighbour table
 /// ([`Neighbours`], built at the start: the same neighbours in the same

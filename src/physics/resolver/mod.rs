@@ -23,6 +23,7 @@ mod lean_take;
 pub mod observer;
 mod phase;
 pub mod position;
+mod position_table;
 pub mod prepare;
 pub mod queue;
 pub mod row;

@@ -58,6 +58,10 @@ impl<T: Real> PhaseWork<T> for Positions {
         obs: &mut O,
     ) -> BodyMoves<T> {
         obs.before_position(used, k, &r.bodies);
+        if !O::RECORDS {
+            // Nothing keeps the record: the compact moves only.
+            return position::take_moves(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
+        }
         let moves = position::take(&r.contacts[k], &r.setups[k], penetration, &mut r.bodies);
         obs.position_taken(used, k, penetration, &moves);
         BodyMoves::of(&moves)

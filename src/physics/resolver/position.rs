@@ -9,6 +9,7 @@
 use nalgebra::Vector3;
 
 use super::observer::PositionMoves;
+use super::velocity::UNCHANGED;
 use super::{ContactSetup, ResolverBody, ResolverContact};
 use crate::physics::stages::orientation::add_scaled_rotation;
 use crate::physics::stages::projection::body_projection;
@@ -50,6 +51,48 @@ pub fn take<T: Real>(
             moves.orientations[i] = Some(body.orientation);
         }
         moves.bodies[i] = Some(projection);
+    }
+    moves
+}
+
+/// [`take`] on the fast path (nothing records): the same moves applied to
+/// the bodies by the same operations, only the compact [`BodyMoves`]
+/// returned (no [`PositionMoves`] record built; the projection's record
+/// fields nobody reads are not kept).
+#[inline]
+pub fn take_moves<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    penetration: T,
+    bodies: &mut [ResolverBody<T>],
+) -> BodyMoves<T> {
+    let depth = penetration * setup.relaxation;
+    let mut moves = BodyMoves {
+        bodies: [usize::MAX; 2],
+        linear: [Vector3::zeros(); 2],
+        angular: [Vector3::zeros(); 2],
+    };
+    for i in 0..2 {
+        let (Some(b), Some(inertia)) = (c.bodies[i], setup.projection[i].as_ref()) else {
+            continue;
+        };
+        let body = &mut bodies[b];
+        let projection = body_projection(
+            inertia,
+            Problem::<T>::sign(i),
+            depth,
+            setup.total_inertia,
+            &c.normal,
+            &body.position,
+        );
+        body.position = projection.position;
+        if projection.angular_change != Vector3::zeros() {
+            let turned = add_scaled_rotation(&body.orientation, &projection.angular_change);
+            body.orientation = turned.normalize();
+        }
+        moves.bodies[i] = b;
+        moves.linear[i] = projection.linear_change;
+        moves.angular[i] = projection.angular_change;
     }
     moves
 }
@@ -128,6 +171,36 @@ pub fn penetration_after<T: Real>(c: &ResolverContact<T>, moves: &BodyMoves<T>) 
         let delta = moves.linear[d] + moves.angular[d].cross(&c.r[b]);
         let sign = if b == 0 { -T::one() } else { T::one() };
         penetration += delta.dot(&c.normal) * sign;
+    }
+    penetration
+}
+
+/// [`penetration_after`] with the slots looked up beforehand (the neighbour
+/// table's, [`super::indexed::Neighbour`]): `slots[s]` is the taken
+/// contact's slot holding `c`'s slot-`s` body ([`UNCHANGED`] for none). A
+/// taken slot that moved nothing (`usize::MAX` in `moves.bodies`) adds
+/// nothing, as there. The same operations in the same order.
+#[inline(always)]
+pub fn penetration_after_slots<T: Real>(
+    c: &ResolverContact<T>,
+    slots: [u8; 2],
+    moves: &BodyMoves<T>,
+) -> T {
+    // Slot 1 (sign -1), then slot 2 (sign +1), each as `penetration_after` does it.
+    let mut penetration = c.penetration;
+    if slots[0] != UNCHANGED {
+        let d = usize::from(slots[0] & 1);
+        if moves.bodies[d] != usize::MAX {
+            let delta = moves.linear[d] + moves.angular[d].cross(&c.r[0]);
+            penetration += delta.dot(&c.normal) * -T::one();
+        }
+    }
+    if slots[1] != UNCHANGED {
+        let d = usize::from(slots[1] & 1);
+        if moves.bodies[d] != usize::MAX {
+            let delta = moves.linear[d] + moves.angular[d].cross(&c.r[1]);
+            penetration += delta.dot(&c.normal) * T::one();
+        }
     }
     penetration
 }
