@@ -14,7 +14,7 @@ use contact_lab::lesson::Lesson;
 use contact_lab::physics::resolver::position::{
     penetration_after, penetration_after_slots, take, take_moves, updated_penetration, BodyMoves,
 };
-use contact_lab::physics::resolver::velocity::UNCHANGED;
+use contact_lab::physics::resolver::velocity_row::UNCHANGED;
 use contact_lab::physics::resolver::{
     Implementation, Observer, PositionMoves, Resolver, ResolverBody, Silent,
 };

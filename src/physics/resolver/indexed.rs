@@ -16,7 +16,8 @@
 use super::observer::Observer;
 use super::phase::{PhaseWork, Velocities};
 use super::queue::{Queue, SCAN_BELOW};
-use super::velocity::{BodyChanges, VelocityRow, UNCHANGED};
+use super::velocity::BodyChanges;
+use super::velocity_row::{VelocityRow, UNCHANGED};
 use super::{position_table, Phase, PhaseOutcome, Resolver};
 use crate::physics::Real;
 

@@ -30,6 +30,7 @@ pub mod row;
 pub mod scan;
 pub mod sequential;
 pub mod velocity;
+pub mod velocity_row;
 
 pub use observer::{Observer, PositionMoves, Silent, VelocityImpulse};
 pub use prepare::{
@@ -108,7 +109,7 @@ pub struct Resolver<T: Real> {
     /// The contacts one iteration changed (scratch, sized at prepare).
     changed: Vec<usize>,
     /// The indexed velocity phase's hot rows (sized at prepare).
-    velocity_rows: Vec<velocity::VelocityRow<T>>,
+    velocity_rows: Vec<velocity_row::VelocityRow<T>>,
     /// Each contact's neighbours, for the indexed velocity phase (sized at prepare).
     neighbours: indexed::Neighbours,
     stamps: Vec<usize>,

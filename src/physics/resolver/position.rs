@@ -9,7 +9,7 @@
 use nalgebra::Vector3;
 
 use super::observer::PositionMoves;
-use super::velocity::UNCHANGED;
+use super::velocity_row::UNCHANGED;
 use super::{ContactSetup, ResolverBody, ResolverContact};
 use crate::physics::stages::orientation::add_scaled_rotation;
 use crate::physics::stages::projection::body_projection;
