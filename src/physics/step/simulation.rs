@@ -203,6 +203,9 @@ impl<T: Real> Simulation<T> {
             }
             none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
         };
+        // Nothing in a step reads the contacts' tangential velocities after
+        // the velocity phase (the audits read the bodies).
+        resolver.sequential.whole_velocities = false;
         let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
         if warm {
             self.warm.stage(&self.world, resolver);
