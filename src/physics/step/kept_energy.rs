@@ -76,7 +76,7 @@ impl<T: Real> KeptEnergy<T> {
             };
             let inertia = s.inertia_world();
             let energy = s.kinetic_energy_with(&inertia, &s.velocity, &s.angular_velocity);
-            sum = sum + energy;
+            sum += energy;
             self.bodies.push(Some(Kept {
                 orientation: s.orientation,
                 inertia_body: s.inertia_body,
