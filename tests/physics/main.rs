@@ -19,6 +19,7 @@ mod floors;
 mod hull_manifolds;
 mod hull_pairs;
 mod invariants;
+mod kept_energy;
 mod lean_position;
 mod lean_prepare;
 mod models_and_options;

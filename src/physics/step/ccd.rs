@@ -106,6 +106,7 @@ pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
 pub struct ContactPairs(Vec<(usize, usize)>);
 
 impl ContactPairs {
+    #[inline]
     pub fn contains(&self, pair: &(BodyId, Option<BodyId>)) -> bool {
         let (a, Some(b)) = *pair else {
             return false;
@@ -115,6 +116,7 @@ impl ContactPairs {
 }
 
 /// A pair of bodies in either order, as one key.
+#[inline]
 pub fn key(i: usize, j: usize) -> (BodyId, Option<BodyId>) {
     (BodyId(i.min(j)), Some(BodyId(i.max(j))))
 }

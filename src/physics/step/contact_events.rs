@@ -33,11 +33,13 @@ impl ContactEvents {
     /// pair: `before` and `after` are each contact's (normal, tangential)
     /// speeds across the step, `limit` the speed below which a closing is a
     /// resting micro-collision; this step's pairs become the next step's
-    /// last ones.
+    /// last ones. `before` holds each contact's normal speed alone, and
+    /// may be empty when no contact [`can_bounce`] (only a bouncy pair's
+    /// closing speed is read).
     pub fn report<T: Real>(
         &mut self,
         contacts: &[Contact<T>],
-        before: &[(T, T)],
+        before: &[T],
         after: &[(T, T)],
         limit: f64,
         events: &mut Vec<Event>,
@@ -57,7 +59,7 @@ impl ContactEvents {
         pairs.clear();
         speeds.clear();
         for (i, k) in contacts.iter().enumerate() {
-            let (vn0, slides, vn1, bouncy) = speeds_of(k, before[i], after[i]);
+            let (vn0, slides, vn1, bouncy) = speeds_of(k, before.get(i).copied(), after[i]);
             match pairs.last_mut() {
                 Some(p) if (p.0, p.1) == (k.body1, k.body2) => {
                     p.2 |= slides;
@@ -82,7 +84,7 @@ impl ContactEvents {
             speeds.clear();
             index.clear();
             for (i, k) in contacts.iter().enumerate() {
-                let (vn0, slides, vn1, bouncy) = speeds_of(k, before[i], after[i]);
+                let (vn0, slides, vn1, bouncy) = speeds_of(k, before.get(i).copied(), after[i]);
                 match index.entry((k.body1, k.body2)) {
                     Entry::Occupied(j) => {
                         let j = *j.get();
@@ -158,10 +160,18 @@ impl ContactEvents {
 /// A contact's speeds as the events read them: the normal speed before,
 /// whether it slides after (faster than residual jitter of resting
 /// contacts, 5 cm/s), the normal speed after, whether it can bounce.
-fn speeds_of<T: Real>(k: &Contact<T>, before: (T, T), after: (T, T)) -> (f64, bool, f64, bool) {
-    let vn0 = to_f64(before.0);
+fn speeds_of<T: Real>(k: &Contact<T>, before: Option<T>, after: (T, T)) -> (f64, bool, f64, bool) {
+    // No normal speed before: no contact can bounce, and the closing
+    // speed this gives is never read.
+    let vn0 = before.map_or(0.0, to_f64);
     let (vn1, vt1) = (to_f64(after.0), to_f64(after.1));
-    (vn0, vt1 > 0.05, vn1, k.input.restitution > T::zero())
+    (vn0, vt1 > 0.05, vn1, can_bounce(k))
+}
+
+/// Whether a contact can bounce (restitution above zero): only then is a
+/// pair's closing speed before the step read.
+pub fn can_bounce<T: Real>(k: &Contact<T>) -> bool {
+    k.input.restitution > T::zero()
 }
 
 /// A set of body pairs (the pairs wholly inside one another).
@@ -316,7 +326,8 @@ mod tests {
         let mut last: Touching = Vec::new();
         let mut seen = Vec::new();
         for (contacts, speeds) in &steps {
-            let (before, after): (Vec<_>, Vec<_>) = speeds.iter().copied().unzip();
+            let (before, after): (Vec<(f64, f64)>, Vec<_>) = speeds.iter().copied().unzip();
+            let before: Vec<f64> = before.iter().map(|b| b.0).collect();
             let mut events = Vec::new();
             state.report(contacts, &before, &after, 1.0, &mut events);
             let (expected, pairs) = by_search(contacts, speeds, &last);
@@ -331,5 +342,36 @@ mod tests {
         assert!(kind(|e| matches!(e, Event::Slides { .. })));
         assert!(kind(|e| matches!(e, Event::Sticks { .. })));
         assert!(kind(|e| matches!(e, Event::Bounce { .. })));
+    }
+
+    #[test]
+    fn without_a_contact_that_can_bounce_the_speeds_before_are_not_read() {
+        // The same steps with every restitution 0: the events from the
+        // speeds before and from none at all (what the step passes then)
+        // are the same, closing speeds of any size notwithstanding.
+        let a = || contact(0, Some(1), 0.0);
+        let c = || contact(3, Some(1), 0.0);
+        let d = || contact(2, None, 0.0);
+        let fast = ((-3.0, 0.4), (1.0, 0.0));
+        let slide = ((-0.5, 0.0), (0.2, 0.3));
+        let steps: Vec<(Vec<Contact<f64>>, Vec<_>)> = vec![
+            (vec![a(), a(), d()], vec![fast, fast, slide]),
+            (vec![a(), c(), a()], vec![slide, fast, fast]),
+            (vec![c(), d()], vec![fast, fast]),
+            (vec![], vec![]),
+        ];
+        let (mut read, mut unread) = (ContactEvents::default(), ContactEvents::default());
+        let mut seen = 0;
+        for (contacts, speeds) in &steps {
+            assert!(!contacts.iter().any(can_bounce));
+            let before: Vec<f64> = speeds.iter().map(|s| s.0 .0).collect();
+            let after: Vec<(f64, f64)> = speeds.iter().map(|s| s.1).collect();
+            let (mut with, mut without) = (Vec::new(), Vec::new());
+            read.report(contacts, &before, &after, 0.05, &mut with);
+            unread.report(contacts, &[], &after, 0.05, &mut without);
+            assert_eq!(with, without);
+            seen += with.len();
+        }
+        assert!(seen >= 4, "{seen}");
     }
 }

@@ -9,6 +9,7 @@ pub mod ccd;
 pub mod contact_events;
 pub mod energy;
 pub mod integrate;
+pub mod kept_energy;
 pub mod overlap;
 pub mod previous_frame;
 pub mod replay;

@@ -235,6 +235,20 @@ pub fn start_of_step<T: Real>(
     speeds: &mut Vec<f64>,
     inertia: &mut Vec<nalgebra::Matrix3<T>>,
 ) -> (T, f64) {
+    start_of_step_kept(world, gravity, dt, speeds, inertia, None)
+}
+
+/// [`start_of_step`], each body's `R I Rᵀ` and kinetic energy taken from
+/// `kept` (the last step's end) where the body still holds the state they
+/// were computed from: the same bits.
+pub fn start_of_step_kept<T: Real>(
+    world: &World<T>,
+    gravity: f64,
+    dt: f64,
+    speeds: &mut Vec<f64>,
+    inertia: &mut Vec<nalgebra::Matrix3<T>>,
+    kept: Option<&super::kept_energy::KeptEnergy<T>>,
+) -> (T, f64) {
     speeds.clear();
     inertia.clear();
     let mut kinetic = T::zero();
@@ -248,9 +262,17 @@ pub fn start_of_step<T: Real>(
             inertia.push(nalgebra::Matrix3::zeros());
             continue;
         }
-        let i = s.inertia_world();
+        let (i, energy) = match kept.and_then(|k| k.of(inertia.len(), s)) {
+            Some(at_hand) => at_hand,
+            None => {
+                let i = s.inertia_world();
+                (
+                    i,
+                    s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity),
+                )
+            }
+        };
         inertia.push(i);
-        let energy = s.kinetic_energy_with(&i, &s.velocity, &s.angular_velocity);
         kinetic += energy;
         bound += bound_at_speed(b, speed, gravity, dt, to_f64(energy));
     }

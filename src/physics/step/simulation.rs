@@ -13,6 +13,7 @@ use super::audits::{Audits, StepAudit};
 use super::ccd_mode::Rollback;
 use super::contact_events::{ContactEvents, PairSet};
 use super::integrate::{integrate_velocity_kept, Kept, Loads};
+use super::kept_energy::KeptEnergy;
 use super::previous_frame::PoseOf;
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
 use super::sleep::SleepState;
@@ -47,9 +48,10 @@ pub struct Simulation<T: Real> {
     /// Touching pairs of the last step and whether they slid (and the
     /// events' buffers).
     touching: ContactEvents,
-    /// Each contact's (normal, tangential) relative speed before and
-    /// after the resolution (storage kept).
-    closing_before: Vec<(T, T)>,
+    /// Each contact's normal relative speed before the resolution (only
+    /// where some contact can bounce), and its (normal, tangential) speed
+    /// after it (storage kept).
+    closing_before: Vec<T>,
     closing_after: Vec<(T, T)>,
     /// The energy scale blow-ups are measured against.
     energy_scale: f64,
@@ -62,6 +64,9 @@ pub struct Simulation<T: Real> {
     speeds: Vec<f64>,
     /// Each body's world inertia at the start of the step (storage kept).
     inertia: Vec<nalgebra::Matrix3<T>>,
+    /// Each body's world inertia and kinetic energy at the last step's end
+    /// (kept_energy.rs: the next start takes them).
+    kept: KeptEnergy<T>,
     /// The smallest half-width of a movable body (the tolerances' scale).
     size: Option<f64>,
     /// The parameters the scaled ones were made from, and the scaled ones.
@@ -100,6 +105,7 @@ impl<T: Real> Simulation<T> {
             audits: Audits::default(),
             speeds: Vec::new(),
             inertia: Vec::new(),
+            kept: KeptEnergy::default(),
             size: None,
             scaled_for: None,
             scaled: SimParams::default(),
@@ -169,12 +175,13 @@ impl<T: Real> Simulation<T> {
         let mut events = Vec::new();
         // What this step may give at most (the blow-up rule), and each
         // body's speed to name the ones that blew up.
-        let (kinetic_start, surge_bound) = super::report::start_of_step(
+        let (kinetic_start, surge_bound) = super::report::start_of_step_kept(
             &self.world,
             to_f64(p.world.gravity.norm()),
             to_f64(p.dt),
             &mut self.speeds,
             &mut self.inertia,
+            Some(&self.kept),
         );
         let kinetic_start = to_f64(kinetic_start);
         self.audits
@@ -187,7 +194,7 @@ impl<T: Real> Simulation<T> {
             .iter()
             .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
         let mut closing_before = std::mem::take(&mut self.closing_before);
-        self.normal_velocities(&mut closing_before);
+        self.closing_speeds(&mut closing_before);
         // 4. Resolve the contacts together.
         let resolver = match &mut self.resolver {
             Some(r) => {
@@ -196,6 +203,9 @@ impl<T: Real> Simulation<T> {
             }
             none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
         };
+        // Nothing in a step reads the contacts' tangential velocities after
+        // the velocity phase (the audits read the bodies).
+        resolver.sequential.whole_velocities = false;
         let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
         if warm {
             self.warm.stage(&self.world, resolver);
@@ -241,7 +251,8 @@ impl<T: Real> Simulation<T> {
         self.ending_events(end, &mut events);
         self.closing_before = closing_before;
         super::report::check_finite(&self.world, self.step)?;
-        let kinetic = to_f64(energy::kinetic(&self.world));
+        // As energy::kinetic, each body's share kept for the next start.
+        let kinetic = to_f64(self.kept.kinetic(&self.world));
         if kinetic > super::report::SURGE_FACTOR * surge_bound + 1e-9 * self.energy_scale {
             return Err(BlowUp::Surge {
                 step: self.step,

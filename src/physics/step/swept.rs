@@ -241,14 +241,20 @@ impl<T: Real> SweptPairs<T> {
                 .map(|&(i, j)| (i.min(j), i.max(j)))
                 .filter(|&(i, j)| i != j && !outside[i] && !outside[j] && overlap(i, j)),
         );
-        for u in (0..bounds.len()).filter(|&u| outside[u]) {
+        for (u, a) in bounds.iter().enumerate() {
+            // (A body outside has a box: `outside` is false without one.)
+            let (true, Some(a)) = (outside[u], a) else {
+                continue;
+            };
             // Each pair once: with a body inside, or a later body outside.
-            let others = (0..bounds.len()).filter(|&j| j != u && (!outside[j] || j > u));
-            self.pairs.extend(
-                others
-                    .filter(|&j| overlap(u, j))
-                    .map(|j| (u.min(j), u.max(j))),
-            );
+            for (j, b) in bounds.iter().enumerate() {
+                if j == u || (outside[j] && j < u) {
+                    continue;
+                }
+                if b.as_ref().is_some_and(|b| a.overlaps(b)) {
+                    self.pairs.push((u.min(j), u.max(j)));
+                }
+            }
         }
         true
     }

@@ -12,14 +12,15 @@ use crate::physics::{c, BodyId, Contact, Real, World};
 
 /// The velocity of body 1's material point at the contact relative to
 /// body 2's (lecture eq. A for each body).
+#[inline]
 pub(super) fn relative_point_velocity<T: Real>(world: &World<T>, k: &Contact<T>) -> Vector3<T> {
-    let v = |id: Option<BodyId>| {
-        id.map_or(Vector3::zeros(), |id| {
-            let b = &world.body(id).state;
-            b.point_velocity(&(k.input.point - b.position))
-        })
+    let v = |id: BodyId| {
+        let b = &world.body(id).state;
+        b.point_velocity(&(k.input.point - b.position))
     };
-    v(Some(k.body1)) - v(k.body2)
+    // Without a body 2 its velocity is zero (subtracted all the same).
+    let v2 = k.body2.map_or(Vector3::zeros(), v);
+    v(k.body1) - v2
 }
 
 /// A contact between an awake and a sleeping movable body that the

@@ -119,6 +119,7 @@ pub fn prepare<T: Real>(
         rows: all_rows,
         solver,
         warm,
+        ..
     } = state;
     solver_bodies(bodies, solver);
     let world_slot = bodies.len();
@@ -241,7 +242,8 @@ pub fn prepare<T: Real>(
             data.matrix.matrix = m;
             f
         });
-        same_slots &= c.bodies == slots;
+        // Slot by slot (an array compare goes through a slice loop).
+        same_slots &= c.bodies[0] == slots[0] && c.bodies[1] == slots[1];
         *c = ResolverContact {
             penetration: input.penetration,
             desired: T::zero(),

@@ -40,6 +40,12 @@ pub struct State<T: Real> {
     pub solver: Vec<SolverBody<T>>,
     /// Impulses (world space) to start from, set by [`Resolver::warm_start`].
     pub warm: Vec<Option<Vector3<T>>>,
+    /// Whether the velocity phase's end brings each contact's whole
+    /// bookkeeping velocity up to date (the default), or, when nothing
+    /// records, only its normal part, all that its desired Δv reads: for a
+    /// caller that reads nothing else of the contacts' velocities after the
+    /// phase (a time step).
+    pub whole_velocities: bool,
 }
 
 impl<T: Real> Default for State<T> {
@@ -50,6 +56,7 @@ impl<T: Real> Default for State<T> {
             rows: Vec::new(),
             solver: Vec::new(),
             warm: Vec::new(),
+            whole_velocities: true,
         }
     }
 }
@@ -185,11 +192,21 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
         }
     }
     r.sequential.write_velocities(&mut r.bodies);
-    let State { rows, solver, .. } = &r.sequential;
+    let State {
+        rows,
+        solver,
+        whole_velocities,
+        ..
+    } = &r.sequential;
     // The bookkeeping velocities and desired Δv, from the bodies as they are now.
     let from = r.params.restitution_from;
+    let whole = O::RECORDS || *whole_velocities;
     for (contact, rows) in r.contacts.iter_mut().zip(rows) {
-        contact.velocity = rows.velocity(solver);
+        if whole {
+            contact.velocity = rows.velocity(solver);
+        } else {
+            contact.velocity.x = rows.normal_velocity(solver);
+        }
         contact.desired = super::desired_of(contact, from);
     }
     r.finish(Phase::Velocity, used, obs)

@@ -18,8 +18,9 @@ use crate::physics::{to_f64, Contact, Real};
 
 /// What the end of a step reports besides its contacts' events.
 pub(super) struct Ending<'a, T: Real> {
-    /// Each contact's (normal, tangential) relative speed before the resolution.
-    pub closing_before: &'a [(T, T)],
+    /// Each contact's normal relative speed before the resolution (empty
+    /// when no contact can bounce: [`Simulation::closing_speeds`]).
+    pub closing_before: &'a [T],
     /// What continuous detection and the tunnelling audit found.
     pub spent: &'a Spent,
     /// The energy audits' events: the projection's lift, a kinetic gain, a
@@ -106,6 +107,27 @@ impl<T: Real> Simulation<T> {
         self.limits_hit = [position.limit_reached, velocity.limit_reached];
     }
 
+    /// Each contact's relative normal velocity (negative when closing)
+    /// before the resolution, into `out`: the contact events read it for a
+    /// pair's fastest closing, and only where the pair can bounce. With no
+    /// contact that can bounce (restitution 0) nothing reads it, and `out`
+    /// is left empty; its tangential speed is never read.
+    pub(super) fn closing_speeds(&self, out: &mut Vec<T>) {
+        out.clear();
+        let contacts = &self.world.contacts;
+        if !contacts
+            .iter()
+            .any(super::super::contact_events::can_bounce)
+        {
+            return;
+        }
+        out.extend(
+            contacts
+                .iter()
+                .map(|k| self.point_velocity(k).dot(&k.input.normal)),
+        );
+    }
+
     /// Relative normal velocity at each contact (negative when closing),
     /// and the tangential speed, into `out`.
     pub(super) fn normal_velocities(&self, out: &mut Vec<(T, T)>) {
@@ -124,7 +146,7 @@ impl<T: Real> Simulation<T> {
     }
 
     /// Contact made or lost, bounces, sticking and sliding, per touching pair.
-    fn contact_events(&mut self, before: &[(T, T)], events: &mut Vec<Event>) {
+    fn contact_events(&mut self, before: &[T], events: &mut Vec<Event>) {
         let mut after = std::mem::take(&mut self.closing_after);
         self.normal_velocities(&mut after);
         let limit = to_f64(self.params.contact.velocity_limit).max(0.05);
