@@ -19,6 +19,7 @@
 
 pub mod checks;
 pub mod indexed;
+mod lean_prepare;
 mod lean_take;
 pub mod observer;
 mod phase;
@@ -145,12 +146,16 @@ impl<T: Real> Resolver<T> {
 
     /// Prepares `world` again in this resolver's storage: once it has held a
     /// world this size, nothing is allocated (as an engine resolving every
-    /// frame would run it). Sequential impulses take the lean prepare
-    /// ([`sequential::lean`]: contacts and rows in one pass, the same bits as
-    /// [`Resolver::prepare_full_again`]).
+    /// frame would run it). Both solvers take a lean prepare, the same bits
+    /// as [`Resolver::prepare_full_again`]: sequential impulses
+    /// [`sequential::lean`] (contacts and rows in one pass), the deepest-first
+    /// order [`lean_prepare`] (contacts, setups and factored friction
+    /// matrices in one pass; κ not computed, as nothing here reports it).
     pub fn prepare_again(&mut self, world: &World<T>, params: &ResolverParams) {
         if params.solver != Solver::SequentialImpulse {
-            return self.prepare_full_again(world, params);
+            let mut prepared = self.take_prepared();
+            lean_prepare::prepare(world, params.restitution_from, &mut prepared);
+            return self.put_prepared(prepared, params);
         }
         if self.params.solver != Solver::SequentialImpulse {
             // Factored by a deepest-first prepare: the lean one keeps only unfactored entries.
