@@ -27,14 +27,33 @@ use crate::physics::params::RestitutionFrom;
 use crate::physics::stages::desired_velocity::{acceleration_terms, relative_acceleration};
 use crate::physics::stages::impulse::FactoredMatrix;
 use crate::physics::stages::projection::{projection_inertia_parts, total_projection_inertia};
-use crate::physics::stages::unit_impulse::{
-    angular_matrix, angular_response, contact_matrix, total_per_unit_impulse,
-};
+use crate::physics::stages::unit_impulse::{angular_response, total_per_unit_impulse};
 use crate::physics::{Real, World};
 
+/// [`crate::physics::stages::unit_impulse::angular_matrix`], `−[r]× I⁻¹ [r]×`,
+/// the same expression inlined here (the stage's is a call per slot).
+#[inline(always)]
+fn angular_matrix<T: Real>(skew_r: &Matrix3<T>, inverse_inertia_world: &Matrix3<T>) -> Matrix3<T> {
+    -(skew_r * inverse_inertia_world * skew_r)
+}
+
+/// [`crate::physics::stages::unit_impulse::contact_matrix`],
+/// `M = Cᵀ W C + (Σ 1/m)·𝟙`, the same expression inlined here.
+#[inline(always)]
+fn contact_matrix<T: Real>(
+    angular_world: &Matrix3<T>,
+    contact_to_world: &Matrix3<T>,
+    linear: T,
+) -> Matrix3<T> {
+    let c = contact_to_world;
+    c.transpose() * angular_world * c + Matrix3::identity() * linear
+}
+
 /// Prepares `world` for the deepest-first order into `out` (storage reused;
-/// nothing allocated once it has held a world this size).
-pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut Prepared<T>) {
+/// nothing allocated once it has held a world this size). True when the
+/// adjacency was kept (every contact's bodies and the bodies' count as in
+/// the last prepare).
+pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut Prepared<T>) -> bool {
     let Prepared {
         bodies,
         contacts,
@@ -161,4 +180,5 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut Prepa
     if !same_slots {
         adjacency.build_into(bodies.len(), contacts.iter().map(|c| c.bodies));
     }
+    same_slots
 }

@@ -154,8 +154,10 @@ impl<T: Real> Resolver<T> {
     pub fn prepare_again(&mut self, world: &World<T>, params: &ResolverParams) {
         if params.solver != Solver::SequentialImpulse {
             let mut prepared = self.take_prepared();
-            lean_prepare::prepare(world, params.restitution_from, &mut prepared);
-            return self.put_prepared(prepared, params);
+            let kept = lean_prepare::prepare(world, params.restitution_from, &mut prepared);
+            // The same adjacency as a deepest-first prepare sized the scratch for.
+            let sized = kept && self.params.solver != Solver::SequentialImpulse;
+            return self.put_prepared(prepared, params, sized);
         }
         if self.params.solver != Solver::SequentialImpulse {
             // Factored by a deepest-first prepare: the lean one keeps only unfactored entries.
@@ -169,7 +171,7 @@ impl<T: Real> Resolver<T> {
             &mut prepared,
             &mut self.sequential,
         );
-        self.put_prepared(prepared, params);
+        self.put_prepared(prepared, params, false);
     }
 
     /// [`Resolver::prepare_again`] the full way for either solver: every
@@ -180,7 +182,7 @@ impl<T: Real> Resolver<T> {
         let mut prepared = self.take_prepared();
         let inverse_only = params.solver == Solver::SequentialImpulse;
         prepare::prepare_into(world, params.restitution_from, inverse_only, &mut prepared);
-        self.put_prepared(prepared, params);
+        self.put_prepared(prepared, params, false);
         if params.solver == Solver::SequentialImpulse {
             self.sequential.prepare(
                 &self.contacts,
@@ -204,8 +206,15 @@ impl<T: Real> Resolver<T> {
         }
     }
 
-    /// Puts `prepared` back and sizes the phases' scratch for it.
-    fn put_prepared(&mut self, prepared: prepare::Prepared<T>, params: &ResolverParams) {
+    /// Puts `prepared` back and sizes the phases' scratch for it (`sized`:
+    /// the deepest-first scratch already fits it, as the last prepare was a
+    /// deepest-first one of the same adjacency and contact count).
+    fn put_prepared(
+        &mut self,
+        prepared: prepare::Prepared<T>,
+        params: &ResolverParams,
+        sized: bool,
+    ) {
         let n = prepared.contacts.len();
         self.bodies = prepared.bodies;
         self.contacts = prepared.contacts;
@@ -215,7 +224,7 @@ impl<T: Real> Resolver<T> {
         self.index = prepared.index;
         self.params = *params;
         // The deepest-first order's scratch (sequential impulses read none of it).
-        if params.solver != Solver::SequentialImpulse {
+        if params.solver != Solver::SequentialImpulse && !sized {
             self.velocity_rows.clear();
             self.velocity_rows.reserve(n);
             let mut neighbours = std::mem::take(&mut self.neighbours);
