@@ -91,6 +91,32 @@ pub fn condition_number<T: Real>(m: &Matrix3<T>) -> T {
     }
 }
 
+/// `m.cholesky()` written out for 3×3: nalgebra's operations in its order
+/// (column j: `a_ij ← (−a_jk)·a_ik + a_ij` for k < j, then `√a_jj`, None
+/// for a zero, negative or NaN pivot, and the column below divided by it),
+/// without its general loops (`tests`: the same factor bit for bit).
+#[inline(always)]
+fn cholesky3<T: Real>(m: &Matrix3<T>) -> Option<Cholesky<T, U3>> {
+    let root = |v: T| if v.is_zero() { None } else { v.try_sqrt() };
+    let mut a = *m;
+    let l00 = root(a[(0, 0)])?;
+    a[(0, 0)] = l00;
+    a[(1, 0)] /= l00;
+    a[(2, 0)] /= l00;
+    let f = -a[(1, 0)];
+    a[(1, 1)] = f * a[(1, 0)] + a[(1, 1)];
+    a[(2, 1)] = f * a[(2, 0)] + a[(2, 1)];
+    let l11 = root(a[(1, 1)])?;
+    a[(1, 1)] = l11;
+    a[(2, 1)] /= l11;
+    let f = -a[(2, 0)];
+    a[(2, 2)] = f * a[(2, 0)] + a[(2, 2)];
+    let f = -a[(2, 1)];
+    a[(2, 2)] = f * a[(2, 1)] + a[(2, 2)];
+    a[(2, 2)] = root(a[(2, 2)])?;
+    Some(Cholesky::pack_dirty(a))
+}
+
 impl<T: Real> FactoredMatrix<T> {
     /// Factors `m` with its exact condition number (symmetric eigenvalues).
     pub fn with_condition(m: Matrix3<T>) -> Self {
@@ -130,7 +156,7 @@ impl<T: Real> FactoredMatrix<T> {
     /// reports κ (`tests` below: the same factor as `new`, bit for bit).
     #[inline]
     pub fn lean(m: Matrix3<T>) -> Self {
-        if let Some(ch) = m.cholesky() {
+        if let Some(ch) = cholesky3(&m) {
             let l = ch.l_dirty();
             // L⁻¹ (lower triangular), from L L⁻¹ = 𝟙 row by row.
             let (x00, x11, x22) = (
@@ -448,6 +474,13 @@ mod tests {
                 7 => m[(1, 1)] = f64::INFINITY,
                 _ => {}
             }
+            // The written-out factor is nalgebra's, dirty upper part included.
+            let (mine, theirs) = (cholesky3(&m), m.cholesky());
+            assert_eq!(mine.is_some(), theirs.is_some(), "{m}");
+            if let (Some(x), Some(y)) = (mine, theirs) {
+                let bits = |c: &Cholesky<f64, U3>| c.l_dirty().map(f64::to_bits);
+                assert_eq!(bits(&x), bits(&y), "{m}");
+            }
             let (lean, new) = (FactoredMatrix::lean(m), FactoredMatrix::new(m));
             let (a, b) = (factor_bits(&lean), factor_bits(&new));
             assert_eq!(a, b, "factor of {m}");
@@ -464,6 +497,25 @@ mod tests {
                     "{m}"
                 );
             }
+        }
+        // Zero, negative-zero and exactly vanishing pivots, non-finite entries.
+        let (z, nz, inf, nan) = (0.0, -0.0, f64::INFINITY, f64::NAN);
+        for m in [
+            Matrix3::zeros(),
+            Matrix3::new(nz, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+            Matrix3::new(1.0, 1.0, z, 1.0, 1.0, z, z, z, 1.0),
+            Matrix3::new(4.0, nz, 2.0, nz, 9.0, nz, 2.0, nz, 5.0),
+            Matrix3::new(inf, 1.0, 0.0, 1.0, 2.0, 0.0, 0.0, 0.0, 3.0),
+            Matrix3::new(2.0, nan, 0.0, nan, 2.0, 0.0, 0.0, 0.0, 3.0),
+            Matrix3::new(2.0, 1.0, -inf, 1.0, 2.0, 0.0, -inf, 0.0, 3.0),
+        ] {
+            let (mine, theirs) = (cholesky3(&m), m.cholesky());
+            assert_eq!(mine.is_some(), theirs.is_some(), "{m}");
+            if let (Some(x), Some(y)) = (mine, theirs) {
+                assert_eq!(x.l_dirty().map(f64::to_bits), y.l_dirty().map(f64::to_bits));
+            }
+            let (a, b) = (FactoredMatrix::lean(m), FactoredMatrix::new(m));
+            assert_eq!(factor_bits(&a), factor_bits(&b), "factor of {m}");
         }
         // Every kind was met (LU only near the boundary), and the lean bound stood in often.
         assert!(
