@@ -3,6 +3,9 @@
 //! prepared contacts): every number a phase reads agrees to 1e-12 (and, as
 //! the operations are the same, bit for bit) on lessons and on stepped scenes
 //! (rotated bodies, friction, sliding and sticking contacts, the world).
+//! The deepest-first order's lean prepare likewise against its full path
+//! (contacts, setups, friction entries with their factored matrix, bodies,
+//! adjacency), then both resolved, silent and recorded.
 
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::resolver::{Implementation, Observer, Resolver, Silent, VelocityImpulse};
@@ -180,4 +183,171 @@ fn the_lean_rows_are_the_full_paths_on_stepped_scenes() {
         contacts > 500 && friction > 100 && sliding > 0,
         "{contacts} {friction} {sliding}"
     );
+}
+
+fn df() -> ResolverParams {
+    ResolverParams {
+        solver: Solver::DeepestFirst,
+        ..ResolverParams::default()
+    }
+}
+
+/// `a` and `b` to the bit (Debug tells -0 from 0 where `==` does not).
+fn same_bits<D: std::fmt::Debug>(a: &D, b: &D, what: &str) {
+    assert_eq!(
+        format!("{a:?}"),
+        format!("{b:?}"),
+        "{what}: not bit for bit"
+    );
+}
+
+/// The deepest-first lean prepare (`lean`, by `prepare_again`) against the
+/// full one of `world`: field by field, then bit for bit, then resolved.
+/// Returns (contacts, contacts with friction).
+fn compare_deepest_first(lean: &mut Resolver<f64>, world: &World<f64>) -> (usize, usize) {
+    let params = lean.params;
+    let full = Resolver::prepare(world, &params);
+    same_bits(&lean.bodies, &full.bodies, "bodies");
+    assert_eq!(lean.contacts.len(), full.contacts.len());
+    assert_eq!(lean.adjacency.offsets, full.adjacency.offsets);
+    assert_eq!(lean.adjacency.contacts, full.adjacency.contacts);
+    for k in 0..full.contacts.len() {
+        let (a, b) = (&lean.contacts[k], &full.contacts[k]);
+        assert_eq!(a.bodies, b.bodies, "contact {k}");
+        close(a.penetration, b.penetration, "penetration", k);
+        close(a.desired, b.desired, "desired", k);
+        close_v(&a.velocity, &b.velocity, "velocity", k);
+        close_m(&a.basis, &b.basis, "basis", k);
+        close(
+            a.velocity_from_acceleration,
+            b.velocity_from_acceleration,
+            "v_acc",
+            k,
+        );
+        for i in 0..2 {
+            close_v(&a.r[i], &b.r[i], "r", k);
+        }
+        let (s, t) = (&lean.setups[k], &full.setups[k]);
+        close(s.total_inertia, t.total_inertia, "total inertia", k);
+        close(s.unit_total, t.unit_total, "Δq̇_t", k);
+        close(s.slip, t.slip, "slip", k);
+        assert_eq!(s.friction, t.friction, "contact {k}");
+        for (p, q) in s.projection.iter().zip(&t.projection) {
+            assert_eq!(p.is_some(), q.is_some(), "contact {k}");
+            if let (Some(p), Some(q)) = (p, q) {
+                close(p.angular, q.angular, "angular inertia", k);
+                close(p.r_perp_length, q.r_perp_length, "|r⊥|", k);
+                close_v(&p.rotation_per_unit, &q.rotation_per_unit, "I⁻¹(r×d)", k);
+            }
+        }
+        same_bits(a, b, &format!("contact {k}"));
+        same_bits(s, t, &format!("setup {k}"));
+    }
+    assert_eq!(lean.friction.len(), full.friction.len());
+    for (j, (f, g)) in lean.friction.iter().zip(&full.friction).enumerate() {
+        assert_eq!(f.model, g.model);
+        same_bits(
+            &(f.static_friction, f.dynamic_friction),
+            &(g.static_friction, g.dynamic_friction),
+            "μ",
+        );
+        close_m(&f.matrix.matrix, &g.matrix.matrix, "M", j);
+        same_bits(
+            &f.matrix.matrix,
+            &g.matrix.matrix,
+            &format!("M of entry {j}"),
+        );
+        // The same factor: the same g, the same way, for any right-hand side.
+        for rhs in [Vector3::new(0.3, -1.2, 2.5), Vector3::new(-2.0, 0.01, 1e-3)] {
+            let ((x, s), (y, t)) = (f.matrix.solve(rhs), g.matrix.solve(rhs));
+            same_bits(&x, &y, &format!("g of entry {j}"));
+            assert_eq!(
+                (s.used_lu, s.singular),
+                (t.used_lu, t.singular),
+                "entry {j}"
+            );
+        }
+        same_bits(
+            &f.matrix.cholesky_inverse(),
+            &g.matrix.cholesky_inverse(),
+            "M⁻¹",
+        );
+    }
+    // Both resolve to the same bits, silent and recorded.
+    let mut full = full;
+    let mut recorded = lean.clone();
+    for r in [&mut *lean, &mut full] {
+        r.position_phase(Implementation::Indexed, &mut Silent);
+        r.velocity_phase(Implementation::Indexed, &mut Silent);
+    }
+    same_bits(&lean.bodies, &full.bodies, "resolved bodies");
+    same_bits(&lean.contacts, &full.contacts, "resolved contacts");
+    recorded.position_phase(Implementation::Indexed, &mut Counting);
+    recorded.velocity_phase(Implementation::Indexed, &mut Counting);
+    same_bits(&recorded.bodies, &lean.bodies, "recorded bodies");
+    let friction = full.setups.iter().filter(|s| s.friction.is_some()).count();
+    (full.contacts.len(), friction)
+}
+
+#[test]
+fn the_deepest_first_lean_prepare_is_the_full_paths_on_lessons() {
+    let mut totals = (0, 0);
+    let other = Lesson::load("box-four-corners").unwrap().world::<f64>();
+    for id in [
+        "lecture-1",
+        "lecture-2",
+        "lecture-3",
+        "friction-cube",
+        "two-boxes",
+        "box-stack",
+        "box-four-corners",
+        "spinning-ball",
+    ] {
+        let world = Lesson::load(id).unwrap().world::<f64>();
+        // Storage that held this world under either solver, and a fresh one.
+        for held in [df(), si()] {
+            let mut lean = Resolver::prepare(&world, &held);
+            lean.prepare_again(&world, &df());
+            let (n, f) = compare_deepest_first(&mut lean, &world);
+            totals = (totals.0 + n, totals.1 + f);
+        }
+        // Storage that held another world (other sizes, other slots).
+        let mut lean = Resolver::prepare(&other, &df());
+        lean.prepare_again(&world, &df());
+        compare_deepest_first(&mut lean, &world);
+    }
+    assert!(totals.0 > 20 && totals.1 > 0, "{totals:?}");
+}
+
+#[test]
+fn the_deepest_first_lean_prepare_is_the_full_paths_on_stepped_scenes() {
+    let (mut contacts, mut friction) = (0, 0);
+    for id in [
+        "stack-5",
+        "ramp-slide",
+        "ramp-stick",
+        "spinning-edge",
+        "hull-stack",
+    ] {
+        let lesson = Lesson::load(id).unwrap();
+        let mut p = lesson.sim_params().unwrap();
+        p.resolver.solver = Solver::DeepestFirst;
+        p.sleep.enabled = false;
+        let mut world = lesson.world::<f64>();
+        world.contacts.clear();
+        let mut sim = Simulation::new(world, p, lesson.simulation.unwrap().materials);
+        // One resolver through the steps, as a simulation keeps it (the
+        // adjacency kept where the contacts' bodies stay, rebuilt elsewhere).
+        let mut kept: Option<Resolver<f64>> = None;
+        for _ in 0..25 {
+            sim.advance().unwrap();
+            let lean = kept.get_or_insert_with(|| Resolver::prepare(&sim.world, &p.resolver));
+            lean.prepare_again(&sim.world, &p.resolver);
+            let mut run = lean.clone();
+            let (n, f) = compare_deepest_first(&mut run, &sim.world);
+            (contacts, friction) = (contacts + n, friction + f);
+        }
+    }
+    assert!(RECORDED_VISITS.load(Ordering::Relaxed) > 100);
+    assert!(contacts > 500 && friction > 100, "{contacts} {friction}");
 }

@@ -19,6 +19,7 @@
 
 pub mod checks;
 pub mod indexed;
+mod lean_prepare;
 mod lean_take;
 pub mod observer;
 mod phase;
@@ -147,12 +148,18 @@ impl<T: Real> Resolver<T> {
 
     /// Prepares `world` again in this resolver's storage: once it has held a
     /// world this size, nothing is allocated (as an engine resolving every
-    /// frame would run it). Sequential impulses take the lean prepare
-    /// ([`sequential::lean`]: contacts and rows in one pass, the same bits as
-    /// [`Resolver::prepare_full_again`]).
+    /// frame would run it). Both solvers take a lean prepare, the same bits
+    /// as [`Resolver::prepare_full_again`]: sequential impulses
+    /// [`sequential::lean`] (contacts and rows in one pass), the deepest-first
+    /// order [`lean_prepare`] (contacts, setups and factored friction
+    /// matrices in one pass; κ not computed, as nothing here reports it).
     pub fn prepare_again(&mut self, world: &World<T>, params: &ResolverParams) {
         if params.solver != Solver::SequentialImpulse {
-            return self.prepare_full_again(world, params);
+            let mut prepared = self.take_prepared();
+            let kept = lean_prepare::prepare(world, params.restitution_from, &mut prepared);
+            // The same adjacency as a deepest-first prepare sized the scratch for.
+            let sized = kept && self.params.solver != Solver::SequentialImpulse;
+            return self.put_prepared(prepared, params, sized);
         }
         if self.params.solver != Solver::SequentialImpulse {
             // Factored by a deepest-first prepare: the lean one keeps only unfactored entries.
@@ -166,7 +173,7 @@ impl<T: Real> Resolver<T> {
             &mut prepared,
             &mut self.sequential,
         );
-        self.put_prepared(prepared, params);
+        self.put_prepared(prepared, params, false);
     }
 
     /// [`Resolver::prepare_again`] the full way for either solver: every
@@ -177,7 +184,7 @@ impl<T: Real> Resolver<T> {
         let mut prepared = self.take_prepared();
         let inverse_only = params.solver == Solver::SequentialImpulse;
         prepare::prepare_into(world, params.restitution_from, inverse_only, &mut prepared);
-        self.put_prepared(prepared, params);
+        self.put_prepared(prepared, params, false);
         if params.solver == Solver::SequentialImpulse {
             self.sequential.prepare(
                 &self.contacts,
@@ -201,8 +208,15 @@ impl<T: Real> Resolver<T> {
         }
     }
 
-    /// Puts `prepared` back and sizes the phases' scratch for it.
-    fn put_prepared(&mut self, prepared: prepare::Prepared<T>, params: &ResolverParams) {
+    /// Puts `prepared` back and sizes the phases' scratch for it (`sized`:
+    /// the deepest-first scratch already fits it, as the last prepare was a
+    /// deepest-first one of the same adjacency and contact count).
+    fn put_prepared(
+        &mut self,
+        prepared: prepare::Prepared<T>,
+        params: &ResolverParams,
+        sized: bool,
+    ) {
         let n = prepared.contacts.len();
         self.bodies = prepared.bodies;
         self.contacts = prepared.contacts;
@@ -212,7 +226,7 @@ impl<T: Real> Resolver<T> {
         self.index = prepared.index;
         self.params = *params;
         // The deepest-first order's scratch (sequential impulses read none of it).
-        if params.solver != Solver::SequentialImpulse {
+        if params.solver != Solver::SequentialImpulse && !sized {
             self.velocity_rows.clear();
             self.velocity_rows.reserve(n);
             let mut neighbours = std::mem::take(&mut self.neighbours);

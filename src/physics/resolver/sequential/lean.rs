@@ -50,7 +50,7 @@ fn arm_rows<T: Real>(r: &Vector3<T>, basis: &Matrix3<T>) -> Matrix3<T> {
 /// square root differs from the plain one by an exact power of two; only
 /// otherwise the stable way.
 #[inline(always)]
-fn arm_norm<T: Real>(v: &Vector3<T>) -> T {
+pub(in crate::physics::resolver) fn arm_norm<T: Real>(v: &Vector3<T>) -> T {
     let sq = v.x * v.x + v.y * v.y + v.z * v.z;
     let (Some(max), e) = (T::max_value(), T::default_epsilon()) else {
         return stable_norm(v);
@@ -65,7 +65,7 @@ fn arm_norm<T: Real>(v: &Vector3<T>) -> T {
 }
 
 /// A contact record to be overwritten (storage for a new contact).
-fn blank_contact<T: Real>() -> ResolverContact<T> {
+pub(in crate::physics::resolver) fn blank_contact<T: Real>() -> ResolverContact<T> {
     ResolverContact {
         penetration: T::zero(),
         desired: T::zero(),
@@ -83,7 +83,7 @@ fn blank_contact<T: Real>() -> ResolverContact<T> {
 }
 
 /// A setup record to be overwritten.
-fn blank_setup<T: Real>() -> ContactSetup<T> {
+pub(in crate::physics::resolver) fn blank_setup<T: Real>() -> ContactSetup<T> {
     ContactSetup {
         relaxation: T::zero(),
         projection: [None, None],
