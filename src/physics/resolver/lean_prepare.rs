@@ -19,12 +19,11 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::prepare::{desired_of, gap_speed, prepare_bodies, slip_and_velocity, Prepared};
+use super::prepare::{desired_of, gap_speed, lean_velocity_terms, prepare_bodies, Prepared};
 use super::sequential::lean::{arm_norm, blank_contact, blank_setup};
 use super::{ContactSetup, FrictionData, ResolverContact};
 use crate::physics::frame::{contact_basis, skew};
 use crate::physics::params::RestitutionFrom;
-use crate::physics::stages::desired_velocity::{acceleration_terms, relative_acceleration};
 use crate::physics::stages::impulse::FactoredMatrix;
 use crate::physics::stages::projection::{projection_inertia_parts, total_projection_inertia};
 use crate::physics::stages::unit_impulse::{angular_response, total_per_unit_impulse};
@@ -121,18 +120,13 @@ pub fn prepare<T: Real>(world: &World<T>, from: RestitutionFrom, out: &mut Prepa
             r[i] = arm;
         }
         let (linear, unit_total) = total_per_unit_impulse(&unit);
-        let acceleration = relative_acceleration(acceleration);
-        let duration = contact.duration.unwrap_or(world.step.duration);
-        let (velocity_from_acceleration, planar) =
-            acceleration_terms(&acceleration, &basis, duration);
-        // `Cᵀ(q̇₁ - q̇₂)`: the slip reads it as it is, the bookkeeping
-        // velocity with the planar term added.
-        let bodies_velocity = basis.transpose() * point_velocity;
-        let (slip, velocity) = slip_and_velocity(
-            &bodies_velocity,
-            planar,
+        let (velocity_from_acceleration, slip, velocity) = lean_velocity_terms(
+            world,
+            contact.duration,
+            acceleration,
+            &basis,
+            &point_velocity,
             with_friction,
-            world.step.anticipate_planar_acceleration,
         );
         let friction_index = with_friction.then(|| {
             // M = Cᵀ W C + (Σ 1/m)·𝟙, factored once for every visit.

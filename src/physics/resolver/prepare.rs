@@ -211,6 +211,35 @@ pub(crate) fn slip_and_velocity<T: Real>(
     (slip, velocity)
 }
 
+/// What both lean prepares work out of a contact's velocities: `v_acc`,
+/// the slip and the bookkeeping velocity ([`acceleration_terms`],
+/// [`slip_and_velocity`]) from its bodies' accelerations and `q̇₁ - q̇₂`
+/// (`point_velocity`, world), in the contact's `basis`; `duration` is the
+/// contact's own, if it has one.
+#[inline(always)]
+pub(crate) fn lean_velocity_terms<T: Real>(
+    world: &World<T>,
+    duration: Option<T>,
+    accelerations: [Option<Vector3<T>>; 2],
+    basis: &Matrix3<T>,
+    point_velocity: &Vector3<T>,
+    with_friction: bool,
+) -> (T, T, Vector3<T>) {
+    let acceleration = relative_acceleration(accelerations);
+    let duration = duration.unwrap_or(world.step.duration);
+    let (velocity_from_acceleration, planar) = acceleration_terms(&acceleration, basis, duration);
+    // `Cᵀ(q̇₁ - q̇₂)`: the slip reads it as it is, the bookkeeping velocity
+    // with the planar term added.
+    let bodies_velocity = basis.transpose() * point_velocity;
+    let (slip, velocity) = slip_and_velocity(
+        &bodies_velocity,
+        planar,
+        with_friction,
+        world.step.anticipate_planar_acceleration,
+    );
+    (velocity_from_acceleration, slip, velocity)
+}
+
 /// `g/Δt` of a contact with a gap `g = -penetration > 0` in a step that
 /// asks for speculative contacts, else zero.
 pub(crate) fn gap_speed<T: Real>(world: &World<T>, penetration: T) -> T {

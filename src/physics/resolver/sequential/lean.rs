@@ -18,15 +18,13 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::super::prepare::{desired_of, gap_speed, prepare_bodies, slip_and_velocity, Prepared};
+use super::super::prepare::{desired_of, gap_speed, lean_velocity_terms, prepare_bodies, Prepared};
 use super::super::{ContactSetup, FrictionData, ResolverContact};
 use super::rows::{solver_bodies, symmetric_inverse, Rows};
 use super::State;
 use crate::physics::params::RestitutionFrom;
 use crate::physics::scale::stable_norm;
-use crate::physics::stages::desired_velocity::{
-    acceleration_terms, applied_restitution, relative_acceleration,
-};
+use crate::physics::stages::desired_velocity::applied_restitution;
 use crate::physics::stages::impulse::FactoredMatrix;
 use crate::physics::stages::projection::{projection_inertia_parts, total_projection_inertia};
 use crate::physics::stages::unit_impulse::total_per_unit_impulse;
@@ -194,18 +192,13 @@ pub fn prepare<T: Real>(
         let (_, unit_total) = total_per_unit_impulse(&unit);
         rows.unit_total = unit_total;
         rows.inverse[(0, 0)] = T::one() / unit_total;
-        let acceleration = relative_acceleration(acceleration);
-        let duration = contact.duration.unwrap_or(world.step.duration);
-        let (velocity_from_acceleration, planar) =
-            acceleration_terms(&acceleration, &basis, duration);
-        // `Cᵀ(q̇₁ - q̇₂)`: the slip reads it as it is, the bookkeeping
-        // velocity with the planar term added.
-        let bodies_velocity = basis.transpose() * point_velocity;
-        let (slip, velocity) = slip_and_velocity(
-            &bodies_velocity,
-            planar,
+        let (velocity_from_acceleration, slip, velocity) = lean_velocity_terms(
+            world,
+            contact.duration,
+            acceleration,
+            &basis,
+            &point_velocity,
             with_friction,
-            world.step.anticipate_planar_acceleration,
         );
         let friction_index = with_friction.then(|| {
             // M = Σ A_iᵀ T_i + Σ m_i⁻¹ 𝟙 (= Cᵀ(Σ -[r_i]× I_i⁻¹ [r_i]×)C + Σ m_i⁻¹ 𝟙).
