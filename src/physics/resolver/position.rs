@@ -6,13 +6,13 @@
 //!   moved bodies it shares, `pen_j -= s·(Δp + Δθ × r_j)·n_j` (s = +1 for
 //!   body 1 of contact j, -1 for body 2).
 
-use nalgebra::Vector3;
+use nalgebra::{Quaternion, Vector3};
 
 use super::observer::PositionMoves;
 use super::velocity_row::UNCHANGED;
 use super::{ContactSetup, ResolverBody, ResolverContact};
 use crate::physics::stages::orientation::add_scaled_rotation;
-use crate::physics::stages::projection::body_projection;
+use crate::physics::stages::projection::{body_projection, BodyProjection};
 use crate::physics::{Problem, Real};
 
 /// Resolves `penetration` (times the relaxation) of contact `c`: computes each
@@ -25,33 +25,15 @@ pub fn take<T: Real>(
     penetration: T,
     bodies: &mut [ResolverBody<T>],
 ) -> PositionMoves<T> {
-    let depth = penetration * setup.relaxation;
     let mut moves = PositionMoves {
         slots: c.bodies,
         bodies: [None, None],
         orientations: [None, None],
     };
-    for i in 0..2 {
-        let (Some(b), Some(inertia)) = (c.bodies[i], setup.projection[i].as_ref()) else {
-            continue;
-        };
-        let body = &mut bodies[b];
-        let projection = body_projection(
-            inertia,
-            Problem::<T>::sign(i),
-            depth,
-            setup.total_inertia,
-            &c.normal,
-            &body.position,
-        );
-        body.position = projection.position;
-        if projection.angular_change != Vector3::zeros() {
-            let turned = add_scaled_rotation(&body.orientation, &projection.angular_change);
-            body.orientation = turned.normalize();
-            moves.orientations[i] = Some(body.orientation);
-        }
+    project(c, setup, penetration, bodies, |i, _, projection, turned| {
+        moves.orientations[i] = turned;
         moves.bodies[i] = Some(projection);
-    }
+    });
     moves
 }
 
@@ -66,12 +48,31 @@ pub fn take_moves<T: Real>(
     penetration: T,
     bodies: &mut [ResolverBody<T>],
 ) -> BodyMoves<T> {
-    let depth = penetration * setup.relaxation;
     let mut moves = BodyMoves {
         bodies: [usize::MAX; 2],
         linear: [Vector3::zeros(); 2],
         angular: [Vector3::zeros(); 2],
     };
+    project(c, setup, penetration, bodies, |i, b, projection, _| {
+        moves.bodies[i] = b;
+        moves.linear[i] = projection.linear_change;
+        moves.angular[i] = projection.angular_change;
+    });
+    moves
+}
+
+/// Moves each body of contact `c` by its projection of `penetration` (times
+/// the relaxation), handing `record` the slot, the resolver body, the
+/// projection and the new orientation where the body turned.
+#[inline(always)]
+fn project<T: Real>(
+    c: &ResolverContact<T>,
+    setup: &ContactSetup<T>,
+    penetration: T,
+    bodies: &mut [ResolverBody<T>],
+    mut record: impl FnMut(usize, usize, BodyProjection<T>, Option<Quaternion<T>>),
+) {
+    let depth = penetration * setup.relaxation;
     for i in 0..2 {
         let (Some(b), Some(inertia)) = (c.bodies[i], setup.projection[i].as_ref()) else {
             continue;
@@ -86,15 +87,14 @@ pub fn take_moves<T: Real>(
             &body.position,
         );
         body.position = projection.position;
+        let mut turned = None;
         if projection.angular_change != Vector3::zeros() {
-            let turned = add_scaled_rotation(&body.orientation, &projection.angular_change);
-            body.orientation = turned.normalize();
+            let orientation = add_scaled_rotation(&body.orientation, &projection.angular_change);
+            body.orientation = orientation.normalize();
+            turned = Some(body.orientation);
         }
-        moves.bodies[i] = b;
-        moves.linear[i] = projection.linear_change;
-        moves.angular[i] = projection.angular_change;
+        record(i, b, projection, turned);
     }
-    moves
 }
 
 /// The penetration of contact `c` after the taken contact (slots `taken`)
