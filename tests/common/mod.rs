@@ -7,6 +7,7 @@ pub mod dd;
 pub mod json;
 pub mod pile;
 pub mod random;
+pub mod resolver_worlds;
 pub mod svg;
 pub mod tui;
 

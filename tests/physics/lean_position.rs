@@ -18,9 +18,10 @@ use contact_lab::physics::resolver::velocity_row::UNCHANGED;
 use contact_lab::physics::resolver::{
     Implementation, Observer, PositionMoves, Resolver, ResolverBody, Silent,
 };
-use contact_lab::physics::step::Simulation;
 use contact_lab::physics::{ResolverParams, Solver, World};
 use nalgebra::Vector3;
+
+use crate::common::resolver_worlds::{each_stepped_world, LESSONS};
 
 fn bits_v(v: &Vector3<f64>) -> [u64; 3] {
     [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]
@@ -153,38 +154,9 @@ fn compare_phases(world: &World<f64>) -> usize {
     silent.2
 }
 
-const LESSONS: [&str; 8] = [
-    "lecture-1",
-    "lecture-2",
-    "lecture-3",
-    "friction-cube",
-    "two-boxes",
-    "box-stack",
-    "box-four-corners",
-    "spinning-ball",
-];
-
 /// Worlds of stepped scenes under deepest-first: each step's contacts.
 fn stepped(each: &mut impl FnMut(&World<f64>)) {
-    for id in [
-        "stack-5",
-        "ramp-slide",
-        "ramp-stick",
-        "spinning-edge",
-        "hull-stack",
-    ] {
-        let lesson = Lesson::load(id).unwrap();
-        let mut p = lesson.sim_params().unwrap();
-        p.resolver.solver = Solver::DeepestFirst;
-        p.sleep.enabled = false;
-        let mut world = lesson.world::<f64>();
-        world.contacts.clear();
-        let mut sim = Simulation::new(world, p, lesson.simulation.unwrap().materials);
-        for _ in 0..25 {
-            sim.advance().unwrap();
-            each(&sim.world);
-        }
-    }
+    each_stepped_world(Solver::DeepestFirst, false, |world, _, _| each(world));
 }
 
 #[test]

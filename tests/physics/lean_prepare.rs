@@ -9,10 +9,11 @@
 
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::resolver::{Implementation, Observer, Resolver, Silent, VelocityImpulse};
-use contact_lab::physics::step::Simulation;
 use contact_lab::physics::{ResolverParams, Solver, World};
 use nalgebra::{Matrix3, Vector3};
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+use crate::common::resolver_worlds::{each_stepped_world, LESSONS};
 
 fn si() -> ResolverParams {
     ResolverParams {
@@ -135,16 +136,7 @@ fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize)
 #[test]
 fn the_lean_rows_are_the_full_paths_on_lessons() {
     let mut totals = (0, 0);
-    for id in [
-        "lecture-1",
-        "lecture-2",
-        "lecture-3",
-        "friction-cube",
-        "two-boxes",
-        "box-stack",
-        "box-four-corners",
-        "spinning-ball",
-    ] {
+    for id in LESSONS {
         let world = Lesson::load(id).unwrap().world::<f64>();
         let (n, f, _) = compare(&world, &si());
         totals = (totals.0 + n, totals.1 + f);
@@ -155,27 +147,10 @@ fn the_lean_rows_are_the_full_paths_on_lessons() {
 #[test]
 fn the_lean_rows_are_the_full_paths_on_stepped_scenes() {
     let (mut contacts, mut friction, mut sliding) = (0, 0, 0);
-    for id in [
-        "stack-5",
-        "ramp-slide",
-        "ramp-stick",
-        "spinning-edge",
-        "hull-stack",
-    ] {
-        let lesson = Lesson::load(id).unwrap();
-        let mut p = lesson.sim_params().unwrap();
-        p.resolver.solver = Solver::SequentialImpulse;
-        p.resolver.warm_start = true;
-        p.sleep.enabled = false;
-        let mut world = lesson.world::<f64>();
-        world.contacts.clear();
-        let mut sim = Simulation::new(world, p, lesson.simulation.unwrap().materials);
-        for _ in 0..25 {
-            sim.advance().unwrap();
-            let (n, f, s) = compare(&sim.world, &p.resolver);
-            (contacts, friction, sliding) = (contacts + n, friction + f, sliding + s);
-        }
-    }
+    each_stepped_world(Solver::SequentialImpulse, true, |world, params, _| {
+        let (n, f, s) = compare(world, params);
+        (contacts, friction, sliding) = (contacts + n, friction + f, sliding + s);
+    });
     // The recorded velocity sweeps changed impulses (they were compared).
     assert!(RECORDED_VISITS.load(Ordering::Relaxed) > 100);
     // The scenes gave contacts with friction, and some slid.
@@ -293,16 +268,7 @@ fn compare_deepest_first(lean: &mut Resolver<f64>, world: &World<f64>) -> (usize
 fn the_deepest_first_lean_prepare_is_the_full_paths_on_lessons() {
     let mut totals = (0, 0);
     let other = Lesson::load("box-four-corners").unwrap().world::<f64>();
-    for id in [
-        "lecture-1",
-        "lecture-2",
-        "lecture-3",
-        "friction-cube",
-        "two-boxes",
-        "box-stack",
-        "box-four-corners",
-        "spinning-ball",
-    ] {
+    for id in LESSONS {
         let world = Lesson::load(id).unwrap().world::<f64>();
         // Storage that held this world under either solver, and a fresh one.
         for held in [df(), si()] {
@@ -322,32 +288,20 @@ fn the_deepest_first_lean_prepare_is_the_full_paths_on_lessons() {
 #[test]
 fn the_deepest_first_lean_prepare_is_the_full_paths_on_stepped_scenes() {
     let (mut contacts, mut friction) = (0, 0);
-    for id in [
-        "stack-5",
-        "ramp-slide",
-        "ramp-stick",
-        "spinning-edge",
-        "hull-stack",
-    ] {
-        let lesson = Lesson::load(id).unwrap();
-        let mut p = lesson.sim_params().unwrap();
-        p.resolver.solver = Solver::DeepestFirst;
-        p.sleep.enabled = false;
-        let mut world = lesson.world::<f64>();
-        world.contacts.clear();
-        let mut sim = Simulation::new(world, p, lesson.simulation.unwrap().materials);
-        // One resolver through the steps, as a simulation keeps it (the
-        // adjacency kept where the contacts' bodies stay, rebuilt elsewhere).
-        let mut kept: Option<Resolver<f64>> = None;
-        for _ in 0..25 {
-            sim.advance().unwrap();
-            let lean = kept.get_or_insert_with(|| Resolver::prepare(&sim.world, &p.resolver));
-            lean.prepare_again(&sim.world, &p.resolver);
-            let mut run = lean.clone();
-            let (n, f) = compare_deepest_first(&mut run, &sim.world);
-            (contacts, friction) = (contacts + n, friction + f);
+    // One resolver through a scene's steps, as a simulation keeps it (the
+    // adjacency kept where the contacts' bodies stay, rebuilt elsewhere); a
+    // new one for each scene (the first step of each has no contact before).
+    let mut kept: Option<Resolver<f64>> = None;
+    each_stepped_world(Solver::DeepestFirst, false, |world, params, step| {
+        if step == 0 {
+            kept = None;
         }
-    }
+        let lean = kept.get_or_insert_with(|| Resolver::prepare(world, params));
+        lean.prepare_again(world, params);
+        let mut run = lean.clone();
+        let (n, f) = compare_deepest_first(&mut run, world);
+        (contacts, friction) = (contacts + n, friction + f);
+    });
     assert!(RECORDED_VISITS.load(Ordering::Relaxed) > 100);
     assert!(contacts > 500 && friction > 100, "{contacts} {friction}");
 }
