@@ -46,7 +46,7 @@ fn moves_bits(m: &BodyMoves<f64>) -> (Vec<usize>, Vec<[u64; 3]>) {
 }
 
 /// The neighbour table's slots of contact `c_bodies` for a taken contact
-/// with slots `taken` (the rule of `indexed::Neighbours`).
+/// with slots `taken` (the rule of `neighbours::Neighbours`).
 fn slots(c_bodies: [Option<usize>; 2], taken: [Option<usize>; 2]) -> [u8; 2] {
     c_bodies.map(|body| match body {
         Some(_) if body == taken[0] => 0,

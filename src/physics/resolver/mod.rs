@@ -21,6 +21,7 @@ pub mod checks;
 pub mod indexed;
 mod lean_prepare;
 mod lean_take;
+pub mod neighbours;
 pub mod observer;
 mod phase;
 pub mod position;
@@ -112,7 +113,7 @@ pub struct Resolver<T: Real> {
     /// The indexed velocity phase's hot rows (sized at prepare).
     velocity_rows: Vec<velocity_row::VelocityRow<T>>,
     /// Each contact's neighbours, for the indexed velocity phase (sized at prepare).
-    neighbours: indexed::Neighbours,
+    neighbours: neighbours::Neighbours,
     stamps: Vec<usize>,
     stamp: usize,
     /// The largest value of each phase before it ran.
@@ -136,7 +137,7 @@ impl<T: Real> Resolver<T> {
             scan_queue: ScanQueue::default(),
             changed: Vec::new(),
             velocity_rows: Vec::new(),
-            neighbours: indexed::Neighbours::default(),
+            neighbours: neighbours::Neighbours::default(),
             stamps: Vec::new(),
             stamp: 0,
             before: [T::zero(); 2],

@@ -176,7 +176,7 @@ pub fn penetration_after<T: Real>(c: &ResolverContact<T>, moves: &BodyMoves<T>) 
 }
 
 /// [`penetration_after`] with the slots looked up beforehand (the neighbour
-/// table's, [`super::indexed::Neighbour`]): `slots[s]` is the taken
+/// table's, [`super::neighbours::Neighbour`]): `slots[s]` is the taken
 /// contact's slot holding `c`'s slot-`s` body ([`UNCHANGED`] for none). A
 /// taken slot that moved nothing (`usize::MAX` in `moves.bodies`) adds
 /// nothing, as there. The same operations in the same order.

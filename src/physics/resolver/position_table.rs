@@ -15,7 +15,7 @@
 //! and normal, which a row would only copy (the same loads, plus the copies
 //! in and out).
 
-use super::indexed::Neighbours;
+use super::neighbours::Neighbours;
 use super::observer::Observer;
 use super::phase::{PhaseWork, Positions};
 use super::queue::Queue;
