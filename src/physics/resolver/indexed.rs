@@ -194,7 +194,13 @@ fn update_group<T: Real, Q: Queue<T>, const PLAIN: bool, const S0: u8, const S1:
     for &j in group {
         let j = j as usize;
         let (before, after) = rows[j].update::<PLAIN>([S0, S1], change);
-        if !(before <= epsilon && after <= epsilon) {
+        // A queue that replays nothing (the scan's) is set every time, with
+        // no branch on which values stay at or below epsilon (that comes and
+        // goes, and its mispredictions cost more than the stores): a value
+        // left at or below epsilon is either way a key at or below it, which
+        // is never taken and never beats one above it (as the position
+        // phase's loop, `position_table`).
+        if !(Q::REPLAYS && before <= epsilon && after <= epsilon) {
             queue.set(j, after);
             if Q::REPLAYS {
                 changed.push(j);
