@@ -233,15 +233,19 @@ impl<T: Real> Queue<T> for ScanQueue<T> {
             most(most(lanes[0], lanes[1]), most(lanes[2], lanes[3])),
             |m, k| most(m, *k),
         );
-        // The first key equal to it: four keys a test, then one by one.
-        let mut from = 0;
-        for c in self.keys.chunks_exact(4) {
-            if (c[0] == largest) | (c[1] == largest) | (c[2] == largest) | (c[3] == largest) {
-                break;
-            }
-            from += 4;
+        // The first key equal to it, without a branch per key (where it
+        // lies comes and goes, so a search's exit would be mispredicted):
+        // the first 64 keys' equality as bits of a mask, its lowest set bit;
+        // past them (never below `SCAN_BELOW` contacts) a search.
+        let mut equal = 0u64;
+        for (i, k) in self.keys.iter().enumerate().take(64) {
+            equal |= u64::from(*k == largest) << i;
         }
-        let best = from + self.keys[from..].iter().position(|k| *k == largest)?;
+        let best = if equal != 0 {
+            equal.trailing_zeros() as usize
+        } else {
+            64 + self.keys.get(64..)?.iter().position(|k| *k == largest)?
+        };
         Some((best, self.keys[best]))
     }
     fn set(&mut self, k: usize, value: T) {
@@ -344,12 +348,13 @@ mod tests {
         }
     }
 
-    /// The scan queue's passes (four keys at a time, then the rest) give
-    /// the first of the largest wherever it lies, signed zeros as equals.
+    /// The scan queue's passes (four running maxima and the rest, then the
+    /// first 64 keys' mask and a search past them) give the first of the
+    /// largest wherever it lies, signed zeros as equals.
     #[test]
     fn the_scan_queue_finds_the_first_of_the_largest_anywhere() {
         use super::{Queue, ScanQueue};
-        for n in 1..14usize {
+        for n in (1..14usize).chain([63, 64, 65, 70, 130]) {
             for at in 0..n {
                 for top in [1.0, 0.0, -0.0] {
                     // The largest value at `at` and again after it.
