@@ -36,17 +36,24 @@ pub fn each_stepped_world(
         "spinning-edge",
         "hull-stack",
     ] {
-        let lesson = Lesson::load(id).unwrap();
-        let mut p = lesson.sim_params().unwrap();
-        p.resolver.solver = solver;
-        p.resolver.warm_start = warm_start;
-        p.sleep.enabled = false;
-        let mut world = lesson.world::<f64>();
-        world.contacts.clear();
-        let mut sim = Simulation::new(world, p, lesson.simulation.unwrap().materials);
+        let mut sim = stepped(id, solver, warm_start);
+        let params = sim.params.resolver;
         for step in 0..25 {
             sim.advance().unwrap();
-            each(&sim.world, &p.resolver, step);
+            each(&sim.world, &params, step);
         }
     }
+}
+
+/// The embedded scene `id` as a simulation under `solver` (warm-started or
+/// not), sleep off, from its start.
+pub fn stepped(id: &str, solver: Solver, warm_start: bool) -> Simulation<f64> {
+    let lesson = Lesson::load(id).unwrap();
+    let mut p = lesson.sim_params().unwrap();
+    p.resolver.solver = solver;
+    p.resolver.warm_start = warm_start;
+    p.sleep.enabled = false;
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    Simulation::new(world, p, lesson.simulation.unwrap().materials)
 }

@@ -189,14 +189,7 @@ fn ramp_stick_sticks_under_sequential_impulses_and_creeps_under_the_lecture() {
 
 /// stack-5 with sleep off under `solver`.
 fn stack(solver: Solver, warm_start: bool) -> Simulation<f64> {
-    let lesson = Lesson::load("stack-5").unwrap();
-    let mut p = lesson.sim_params().unwrap();
-    p.resolver.solver = solver;
-    p.resolver.warm_start = warm_start;
-    p.sleep.enabled = false;
-    let mut world = lesson.world::<f64>();
-    world.contacts.clear();
-    Simulation::new(world, p, lesson.simulation.unwrap().materials)
+    crate::common::resolver_worlds::stepped("stack-5", solver, warm_start)
 }
 
 /// Velocity-phase visits over steps 31–90 of stack-5 under sequential impulses.
