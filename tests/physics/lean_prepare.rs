@@ -50,8 +50,45 @@ impl Observer<f64> for Counting {
     }
 }
 
-/// Prepares `world` both ways; every field the phases and reports read agrees.
+/// Contact `k`'s bookkeeping and setup, lean against full, field by field
+/// (each prepare's test then adds what it alone holds).
+fn close_records(lean: &Resolver<f64>, full: &Resolver<f64>, k: usize) {
+    let (a, b) = (&lean.contacts[k], &full.contacts[k]);
+    assert_eq!(a.bodies, b.bodies, "contact {k}");
+    close(a.penetration, b.penetration, "penetration", k);
+    close(a.desired, b.desired, "desired", k);
+    close_v(&a.velocity, &b.velocity, "velocity", k);
+    close_m(&a.basis, &b.basis, "basis", k);
+    close(a.initial_velocity, b.initial_velocity, "v0", k);
+    close(a.gap_speed, b.gap_speed, "gap speed", k);
+    close(
+        a.velocity_from_acceleration,
+        b.velocity_from_acceleration,
+        "v_acc",
+        k,
+    );
+    for i in 0..2 {
+        close_v(&a.r[i], &b.r[i], "r", k);
+    }
+    let (s, t) = (&lean.setups[k], &full.setups[k]);
+    close(s.total_inertia, t.total_inertia, "total inertia", k);
+    close(s.unit_total, t.unit_total, "Δq̇_t", k);
+    close(s.slip, t.slip, "slip", k);
+    assert_eq!(s.friction, t.friction, "contact {k}");
+    for (p, q) in s.projection.iter().zip(&t.projection) {
+        assert_eq!(p.is_some(), q.is_some(), "contact {k}");
+        if let (Some(p), Some(q)) = (p, q) {
+            close(p.angular, q.angular, "angular inertia", k);
+            close(p.linear, q.linear, "linear inertia", k);
+            close(p.r_perp_length, q.r_perp_length, "|r⊥|", k);
+            close_v(&p.rotation_per_unit, &q.rotation_per_unit, "I⁻¹(r×d)", k);
+            close(p.angular_limit, q.angular_limit, "angular limit", k);
+        }
+    }
+}
+
 /// Returns (contacts, contacts with friction, sliding contacts).
+/// Prepares `world` both ways; every field the phases and reports read agrees.
 fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize) {
     let full = Resolver::prepare(world, params);
     // `prepare_again` (the lean path) on a resolver that held this world
@@ -67,31 +104,7 @@ fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize)
     assert_eq!(lean.adjacency, full.adjacency);
     let (mut with_friction, mut sliding) = (0, 0);
     for k in 0..full.contacts.len() {
-        let (a, b) = (&lean.contacts[k], &full.contacts[k]);
-        assert_eq!(a.bodies, b.bodies, "contact {k}");
-        close(a.penetration, b.penetration, "penetration", k);
-        close(a.desired, b.desired, "desired", k);
-        close_v(&a.velocity, &b.velocity, "velocity", k);
-        close_m(&a.basis, &b.basis, "basis", k);
-        close(a.initial_velocity, b.initial_velocity, "v0", k);
-        close(a.gap_speed, b.gap_speed, "gap speed", k);
-        for i in 0..2 {
-            close_v(&a.r[i], &b.r[i], "r", k);
-        }
-        let (s, t) = (&lean.setups[k], &full.setups[k]);
-        close(s.total_inertia, t.total_inertia, "total inertia", k);
-        close(s.unit_total, t.unit_total, "Δq̇_t", k);
-        close(s.slip, t.slip, "slip", k);
-        assert_eq!(s.friction, t.friction, "contact {k}");
-        for i in 0..2 {
-            assert_eq!(s.projection[i].is_some(), t.projection[i].is_some());
-            if let (Some(p), Some(q)) = (&s.projection[i], &t.projection[i]) {
-                close(p.angular, q.angular, "angular inertia", k);
-                close(p.linear, q.linear, "linear inertia", k);
-                close_v(&p.rotation_per_unit, &q.rotation_per_unit, "I⁻¹(r×d)", k);
-                close(p.angular_limit, q.angular_limit, "angular limit", k);
-            }
-        }
+        close_records(&lean, &full, k);
         let (x, y) = (&lean.sequential.rows[k], &full.sequential.rows[k]);
         assert_eq!(x.bodies, y.bodies, "contact {k}");
         assert_eq!((x.friction, x.sliding), (y.friction, y.sliding));
@@ -110,6 +123,7 @@ fn compare(world: &World<f64>, params: &ResolverParams) -> (usize, usize, usize)
         sliding += usize::from(y.sliding);
         // The same operations in the same order: the same bits.
         assert_eq!(x, y, "contact {k}: rows not bit for bit");
+        let (a, b) = (&lean.contacts[k], &full.contacts[k]);
         assert_eq!(a, b, "contact {k}: contact not bit for bit");
     }
     for (f, g) in lean.friction.iter().zip(&full.friction) {
@@ -187,34 +201,9 @@ fn compare_deepest_first(lean: &mut Resolver<f64>, world: &World<f64>) -> (usize
     assert_eq!(lean.adjacency.offsets, full.adjacency.offsets);
     assert_eq!(lean.adjacency.contacts, full.adjacency.contacts);
     for k in 0..full.contacts.len() {
+        close_records(lean, &full, k);
         let (a, b) = (&lean.contacts[k], &full.contacts[k]);
-        assert_eq!(a.bodies, b.bodies, "contact {k}");
-        close(a.penetration, b.penetration, "penetration", k);
-        close(a.desired, b.desired, "desired", k);
-        close_v(&a.velocity, &b.velocity, "velocity", k);
-        close_m(&a.basis, &b.basis, "basis", k);
-        close(
-            a.velocity_from_acceleration,
-            b.velocity_from_acceleration,
-            "v_acc",
-            k,
-        );
-        for i in 0..2 {
-            close_v(&a.r[i], &b.r[i], "r", k);
-        }
         let (s, t) = (&lean.setups[k], &full.setups[k]);
-        close(s.total_inertia, t.total_inertia, "total inertia", k);
-        close(s.unit_total, t.unit_total, "Δq̇_t", k);
-        close(s.slip, t.slip, "slip", k);
-        assert_eq!(s.friction, t.friction, "contact {k}");
-        for (p, q) in s.projection.iter().zip(&t.projection) {
-            assert_eq!(p.is_some(), q.is_some(), "contact {k}");
-            if let (Some(p), Some(q)) = (p, q) {
-                close(p.angular, q.angular, "angular inertia", k);
-                close(p.r_perp_length, q.r_perp_length, "|r⊥|", k);
-                close_v(&p.rotation_per_unit, &q.rotation_per_unit, "I⁻¹(r×d)", k);
-            }
-        }
         same_bits(a, b, &format!("contact {k}"));
         same_bits(s, t, &format!("setup {k}"));
     }
