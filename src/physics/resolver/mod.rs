@@ -111,7 +111,7 @@ pub struct Resolver<T: Real> {
     /// The contacts one iteration changed (scratch, sized at prepare).
     changed: Vec<usize>,
     /// The indexed velocity phase's hot rows (sized at prepare).
-    velocity_rows: Vec<velocity_row::VelocityRow<T>>,
+    velocity_rows: velocity_row::VelocityRows<T>,
     /// Each contact's neighbours, for the indexed velocity phase (sized at prepare).
     neighbours: neighbours::Neighbours,
     stamps: Vec<usize>,
@@ -136,7 +136,7 @@ impl<T: Real> Resolver<T> {
             queue: TournamentTree::default(),
             scan_queue: ScanQueue::default(),
             changed: Vec::new(),
-            velocity_rows: Vec::new(),
+            velocity_rows: velocity_row::VelocityRows::default(),
             neighbours: neighbours::Neighbours::default(),
             stamps: Vec::new(),
             stamp: 0,
@@ -228,7 +228,6 @@ impl<T: Real> Resolver<T> {
         self.params = *params;
         // The deepest-first order's scratch (sequential impulses read none of it).
         if params.solver != Solver::SequentialImpulse && !sized {
-            self.velocity_rows.clear();
             self.velocity_rows.reserve(n);
             let mut neighbours = std::mem::take(&mut self.neighbours);
             neighbours.reserve(self);

@@ -2,7 +2,9 @@
 //! contacts sharing a body with it (itself included), each with the slots the
 //! contact changes of it, in the order [`super::indexed::each_neighbour`]
 //! visits them, and the same neighbours grouped by those slots
-//! ([`SLOT_PATTERNS`]) for the velocity phase's silent loop.
+//! ([`SLOT_PATTERNS`]), each group as whole blocks of four contacts (the
+//! velocity rows' [`Block`](super::velocity_row)s, updated four lanes at a
+//! time) and the rest, for the velocity phase's silent loop.
 
 use super::velocity_row::UNCHANGED;
 use super::Resolver;
@@ -42,10 +44,14 @@ pub struct Neighbours {
     offsets: Vec<u32>,
     entries: Vec<Neighbour>,
     /// The same neighbours by the slots the taken contact changed
-    /// ([`SLOT_PATTERNS`]): contact `k`'s pattern `p` ones are
-    /// `grouped[bounds[k][p]..bounds[k][p + 1]]`.
+    /// ([`SLOT_PATTERNS`]): contact `k`'s pattern `p` ones are the blocks
+    /// `j..j + 4` for each `j` of `grouped[bounds[k][2p]..bounds[k][2p + 1]]`
+    /// and the contacts `grouped[bounds[k][2p + 1]..bounds[k][2p + 2]]`.
     grouped: Vec<u32>,
-    bounds: Vec<[u32; 7]>,
+    bounds: Vec<[u32; 13]>,
+    /// Scratch for grouping (one pattern's members, those in no whole block).
+    members: Vec<u32>,
+    others: Vec<u32>,
     /// The resolver bodies and contact slots the table was built for.
     bodies: usize,
     slots: Vec<[Option<usize>; 2]>,
@@ -75,6 +81,20 @@ impl Neighbours {
             .reserve(most.saturating_sub(self.grouped.len()));
         self.bounds.reserve(n.saturating_sub(self.bounds.len()));
         self.slots.reserve(n.saturating_sub(self.slots.len()));
+        let widest = r
+            .contacts
+            .iter()
+            .map(|c| {
+                c.bodies
+                    .into_iter()
+                    .flatten()
+                    .map(|b| r.adjacency.of(b).len())
+                    .sum()
+            })
+            .max()
+            .unwrap_or(0);
+        self.members.reserve(widest);
+        self.others.reserve(widest);
     }
 
     /// Lists every contact's neighbours (marks them with `r`'s stamps, as
@@ -129,26 +149,51 @@ impl Neighbours {
         self.group();
     }
 
-    /// Sorts every contact's neighbours into [`SLOT_PATTERNS`]' groups (each
-    /// group in the table's order).
+    /// Sorts every contact's neighbours into [`SLOT_PATTERNS`]' groups, each
+    /// group (in the table's order) split into whole blocks of four
+    /// contacts (`4b..4b + 4`, listed one after another) and the others.
     fn group(&mut self) {
         self.grouped.clear();
         self.bounds.clear();
+        let (mut members, mut others) = (
+            std::mem::take(&mut self.members),
+            std::mem::take(&mut self.others),
+        );
         for k in 0..self.offsets.len() - 1 {
             let of = &self.entries[self.offsets[k] as usize..self.offsets[k + 1] as usize];
-            let mut bounds = [self.grouped.len() as u32; 7];
+            let mut bounds = [self.grouped.len() as u32; 13];
             for (p, pattern) in SLOT_PATTERNS.into_iter().enumerate() {
-                let members = of.iter().filter(|n| n.slots == pattern);
-                self.grouped.extend(members.map(|n| n.contact));
-                bounds[p + 1] = self.grouped.len() as u32;
+                members.clear();
+                members.extend(of.iter().filter(|n| n.slots == pattern).map(|n| n.contact));
+                others.clear();
+                let mut rest = &members[..];
+                while let Some(&j) = rest.first() {
+                    let block = j % 4 == 0 && rest.get(..4) == Some(&[j, j + 1, j + 2, j + 3]);
+                    if block {
+                        self.grouped.push(j);
+                        rest = &rest[4..];
+                    } else {
+                        others.push(j);
+                        rest = &rest[1..];
+                    }
+                }
+                bounds[2 * p + 1] = self.grouped.len() as u32;
+                self.grouped.extend_from_slice(&others);
+                bounds[2 * p + 2] = self.grouped.len() as u32;
             }
             debug_assert_eq!(
-                bounds[6],
-                self.offsets[k + 1],
+                (0..6)
+                    .map(
+                        |p| 4 * (bounds[2 * p + 1] - bounds[2 * p]) + bounds[2 * p + 2]
+                            - bounds[2 * p + 1]
+                    )
+                    .sum::<u32>(),
+                self.offsets[k + 1] - self.offsets[k],
                 "every neighbour has a pattern"
             );
             self.bounds.push(bounds);
         }
+        (self.members, self.others) = (members, others);
     }
 
     /// The neighbours of contact `k`.
@@ -157,11 +202,23 @@ impl Neighbours {
         &self.entries[self.offsets[k] as usize..self.offsets[k + 1] as usize]
     }
 
-    /// The neighbours of contact `k` by [`SLOT_PATTERNS`].
+    /// The neighbours of contact `k` by [`SLOT_PATTERNS`], each pattern's as
+    /// whole blocks of four contacts and the rest.
     #[inline(always)]
-    pub(super) fn grouped(&self, k: usize) -> [&[u32]; 6] {
+    pub(super) fn grouped(&self, k: usize) -> [Group<'_>; 6] {
         let b = &self.bounds[k];
-        let g = |p: usize| &self.grouped[b[p] as usize..b[p + 1] as usize];
+        let g = |p: usize| Group {
+            blocks: &self.grouped[b[2 * p] as usize..b[2 * p + 1] as usize],
+            others: &self.grouped[b[2 * p + 1] as usize..b[2 * p + 2] as usize],
+        };
         [g(0), g(1), g(2), g(3), g(4), g(5)]
     }
+}
+
+/// The neighbours with one slot pattern: contacts `j..j + 4` for each `j`
+/// of `blocks` (a multiple of four), and each of `others`.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Group<'a> {
+    pub blocks: &'a [u32],
+    pub others: &'a [u32],
 }
