@@ -64,7 +64,7 @@ pub fn millington_clamp<T: Real>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use nalgebra::{Matrix3, Vector3};
 
     use super::{millington_clamp, planar_norm};
@@ -75,7 +75,7 @@ mod tests {
     use crate::physics::FrictionModel;
 
     /// A number spread over many magnitudes and both signs (a fixed scramble).
-    fn spread(i: u64) -> f64 {
+    pub(in crate::physics::resolver) fn spread(i: u64) -> f64 {
         let mut x = i.wrapping_mul(0x9E37_79B9_7F4A_7C15);
         x ^= x >> 29;
         x = x.wrapping_mul(0xBF58_476D_1CE4_E5B9);

@@ -13,7 +13,7 @@ use crate::physics::Real;
 /// The slots a neighbour can have (for its slot 1, then its slot 2: the
 /// taken contact's slot with the same body, [`UNCHANGED`] for none): both
 /// bodies shared (either way round), or one of them.
-const SLOT_PATTERNS: [[u8; 2]; 6] = [
+pub(super) const SLOT_PATTERNS: [[u8; 2]; 6] = [
     [0, 1],
     [1, 0],
     [0, UNCHANGED],

@@ -280,6 +280,8 @@ mod tests {
 
     use super::{plain_desired, DesiredRule, VelocityRows, UNCHANGED};
     use crate::physics::params::RestitutionFrom;
+    use crate::physics::resolver::lean_take::tests::spread;
+    use crate::physics::resolver::neighbours::SLOT_PATTERNS;
     use crate::physics::resolver::prepare::{desired_of, ResolverContact};
     use crate::physics::resolver::velocity::{velocity_after, BodyChanges};
 
@@ -329,17 +331,6 @@ mod tests {
         assert_eq!((checked, plain), (192, 24));
     }
 
-    /// A number spread over several magnitudes and both signs (a fixed scramble).
-    fn spread(i: u64) -> f64 {
-        let mut x = i.wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        x ^= x >> 29;
-        x = x.wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        x ^= x >> 31;
-        let mantissa = 1.0 + (x >> 12) as f64 / (1u64 << 52) as f64;
-        let sign = if x & 1 == 0 { 1.0 } else { -1.0 };
-        sign * mantissa * 2f64.powi((x % 9) as i32 - 4)
-    }
-
     /// A contact with every field from `spread`, bodies 1 and 2.
     fn contact(seed: u64, restitution: f64) -> ResolverContact<f64> {
         let v = |i: u64| Vector3::new(spread(i), spread(i + 1), spread(i + 2));
@@ -364,14 +355,6 @@ mod tests {
     /// plain rows and rows with restitution.
     #[test]
     fn the_rows_update_lane_by_lane_as_velocity_after_and_desired_of() {
-        let patterns = [
-            [0, 1],
-            [1, 0],
-            [0, UNCHANGED],
-            [1, UNCHANGED],
-            [UNCHANGED, 0],
-            [UNCHANGED, 1],
-        ];
         let mut checked = 0;
         for case in 0..40u64 {
             let restitution = if case % 2 == 0 { 0.0 } else { 0.4 };
@@ -384,7 +367,7 @@ mod tests {
                 dv: [v(7000 + case), v(7100 + case)],
                 dw: [v(7200 + case), v(7300 + case)],
             };
-            for slots in patterns {
+            for slots in SLOT_PATTERNS {
                 // The bodies each row's slots hold for this pattern.
                 let bodies = slots.map(|s| (s != UNCHANGED).then(|| 1 + usize::from(s)));
                 let contacts: Vec<_> = contacts
