@@ -151,12 +151,7 @@ fn velocity_rows_on<T: Real, O: Observer<T>, Q: Queue<T>>(
                 let j = n.contact as usize;
                 let ([before], [after]) = rows.update::<1, false>(j, n.slots, &change);
                 obs.desired_updated(j, before, after);
-                if !(before <= epsilon && after <= epsilon) {
-                    queue.set(j, after);
-                    if Q::REPLAYS {
-                        r.changed.push(j);
-                    }
-                }
+                set_value(queue, &mut r.changed, j, before, after, epsilon);
             }
         } else {
             // Nothing is told of the updates: the neighbours by slot

@@ -61,12 +61,16 @@ impl Neighbours {
     /// Room for the table of `r`'s contacts (at most the contacts of both
     /// bodies of each contact).
     pub fn reserve<T: Real>(&mut self, r: &Resolver<T>) {
-        let most: usize = r
-            .contacts
-            .iter()
-            .flat_map(|c| c.bodies.into_iter().flatten())
-            .map(|b| r.adjacency.of(b).len())
-            .sum();
+        // Each contact has at most the contacts of both its bodies.
+        let width = |c: &super::ResolverContact<T>| -> usize {
+            c.bodies
+                .into_iter()
+                .flatten()
+                .map(|b| r.adjacency.of(b).len())
+                .sum()
+        };
+        let most: usize = r.contacts.iter().map(width).sum();
+        let widest = r.contacts.iter().map(width).max().unwrap_or(0);
         assert!(
             most < u32::MAX as usize,
             "neighbours are numbered in 32 bits"
@@ -81,18 +85,7 @@ impl Neighbours {
             .reserve(most.saturating_sub(self.grouped.len()));
         self.bounds.reserve(n.saturating_sub(self.bounds.len()));
         self.slots.reserve(n.saturating_sub(self.slots.len()));
-        let widest = r
-            .contacts
-            .iter()
-            .map(|c| {
-                c.bodies
-                    .into_iter()
-                    .flatten()
-                    .map(|b| r.adjacency.of(b).len())
-                    .sum()
-            })
-            .max()
-            .unwrap_or(0);
+        // Grouping scratch: one contact's neighbours at most.
         self.members.reserve(widest);
         self.others.reserve(widest);
     }
