@@ -221,6 +221,8 @@ fn method_without_toi_is_a_usage_error() {
     assert!(err.contains("--toi"), "{err}");
 }
 
+/// Two spheres 1 cm inside each other, moving apart: apart again by the
+/// step's end, so a scan that looks only at piece ends would see nothing.
 #[test]
 fn two_spheres_overlapping_at_the_steps_start_report_at_start() {
     let path = crate::common::scratch("toi-overlap").join("toi-overlap.toml");
@@ -239,14 +241,14 @@ enabled = false
 name = "a"
 mass = 1.0
 shape = { sphere = 0.5 }
-position = [-0.45, 0, 0]
-velocity = [1, 0, 0]
+position = [-0.495, 0, 0]
+velocity = [-1, 0, 0]
 [[body]]
 name = "b"
 mass = 1.0
 shape = { sphere = 0.5 }
-position = [0.45, 0, 0]
-velocity = [-1, 0, 0]
+position = [0.495, 0, 0]
+velocity = [1, 0, 0]
 "#,
     )
     .unwrap();
