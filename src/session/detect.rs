@@ -96,7 +96,9 @@ pub fn toi_trace(
             b: name(j),
             aabbs_overlap: s.aabbs_overlap,
             spheres_meet: s.spheres_meet,
-            method,
+            // The search that ran: bisection falls back to advancement
+            // where its scan cannot certify the step.
+            method: s.toi.method,
             time: s.toi.time.map(to_f64),
             end: s.toi.end,
             tests: s.toi.iterations,
