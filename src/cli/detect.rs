@@ -21,9 +21,11 @@ pub struct DetectArgs {
     /// (docs/ccd.md): the pairs whose movement bounds meet, or --pair.
     #[arg(long)]
     pub toi: bool,
-    /// With --toi, the search: bisection (the lecture's) or conservative advancement.
-    #[arg(long, value_enum, default_value_t = ToiMethodArg::Bisection)]
-    pub method: ToiMethodArg,
+    /// With --toi (only), the search: bisection (the lecture's) or
+    /// conservative advancement. Default: the scene's ccd method, or
+    /// bisection when its ccd is off.
+    #[arg(long, value_enum, requires = "toi")]
+    pub method: Option<ToiMethodArg>,
     /// Output format (--toi: text or JSON).
     #[arg(long, short, value_enum, default_value_t = Format::Text)]
     pub format: Format,

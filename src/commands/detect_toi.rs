@@ -3,7 +3,7 @@
 //! run up to the step; the step's contacts are resolved; then each pair
 //! whose movement bounds meet (or the one `--pair` names) is searched as
 //! continuous detection searches it. The entry point for a fuller `detect`
-//! command is [`detect_toi`] (its `--toi` mode) or [`trace`] (the trace).
+//! command is [`detect_toi`] (its `--toi` mode).
 
 use std::io::Write;
 
@@ -21,15 +21,28 @@ use crate::trace::toi::DetectToi;
 pub fn detect_toi(args: &DetectArgs, lesson: &Lesson, out: &mut dyn Write) -> Result<(), AppError> {
     let lesson = lesson.clone();
     let method = match args.method {
-        ToiMethodArg::Bisection => ToiMethod::Bisection,
-        ToiMethodArg::Conservative => ToiMethod::Conservative,
+        Some(ToiMethodArg::Bisection) => ToiMethod::Bisection,
+        Some(ToiMethodArg::Conservative) => ToiMethod::Conservative,
+        None => lesson
+            .sim_params()
+            .and_then(|p| p.ccd.method())
+            .unwrap_or(ToiMethod::Bisection),
     };
     let pair = args
         .pair
         .as_deref()
         .map(|p| pair_of(&lesson, p))
         .transpose()?;
-    let detected = trace(&lesson, args.step.max(1), method, pair)?;
+    let (sim, detected) = traced(&lesson, args.step.max(1), method, pair)?;
+    if let Some(path) = &args.figure {
+        let picture = crate::session::toi_picture(&sim, &lesson, &detected, 0).ok_or_else(|| {
+            AppError::Usage(
+                "--figure: no pair's movement bounds meet over the step, so there is nothing to draw (name one with --pair A,B)".into(),
+            )
+        })?;
+        let svg = crate::render::toi_svg::svg(&picture, super::figure::plane(args.plane));
+        super::write_atomic(path, svg.as_bytes())?;
+    }
     let text = match args.format {
         Format::Text => crate::render::wrap::wrap(
             &render::text(&detected, &Fmt::new(args.digits as usize)),
@@ -76,13 +89,14 @@ fn pair_of(lesson: &Lesson, text: &str) -> Result<(usize, usize), AppError> {
     Ok((i, j))
 }
 
-/// The scene run up to step `step`, then that step's pairs searched.
-pub fn trace(
+/// The scene run up to step `step`, then that step's pairs searched; and
+/// the run standing where the searches started (for the figure).
+fn traced(
     lesson: &Lesson,
     step: u64,
     method: ToiMethod,
     pair: Option<(usize, usize)>,
-) -> Result<DetectToi, AppError> {
+) -> Result<(Simulation<f64>, DetectToi), AppError> {
     let (Some(scene), Some(p)) = (lesson.simulation.as_ref(), lesson.sim_params()) else {
         return Err(AppError::Usage(format!(
             "{} is not a scene: it has no [world], [step] or [sleep] table, so it has no motion to search",
@@ -100,10 +114,11 @@ pub fn trace(
             ))
         })?;
     }
-    crate::session::toi_trace(&sim, lesson, step, method, pair).map_err(|(i, j)| {
+    let toi = crate::session::toi_trace(&sim, lesson, step, method, pair).map_err(|(i, j)| {
         AppError::Usage(format!(
-            "--pair {},{}: both bodies need a convex shape (a sphere, box, cylinder or capsule) to be searched; a half-space or a body without a shape has no time of collision",
+            "--pair {},{}: a pair needs a convex shape (a sphere, box, cylinder, capsule or hull) against another or a half-space to be searched; two half-spaces, or a body without a shape, have no time of collision",
             lesson.bodies[i].name, lesson.bodies[j].name
         ))
-    })
+    })?;
+    Ok((sim, toi))
 }

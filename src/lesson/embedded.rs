@@ -59,6 +59,7 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/plate-drop.toml",
     "scenes/tetra-on-floor.toml",
     "scenes/capsule-on-slope.toml",
+    "scenes/ball-floor-fast.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

@@ -17,4 +17,5 @@ pub mod study;
 pub mod svg;
 pub mod tex;
 pub mod toi;
+pub mod toi_svg;
 pub mod wrap;

@@ -35,6 +35,14 @@ pub fn text(d: &DetectToi, f: &Fmt) -> String {
     for p in &d.pairs {
         s.push('\n');
         pair_text(&mut s, p, f);
+        if p.method != d.method {
+            s.push_str(&format!(
+                "  ({}'s scan would need more than {} pieces to certify the step: {} instead)\n",
+                d.method.json_name(),
+                crate::physics::detect::toi_sweep::MAX_PIECES,
+                p.method.json_name()
+            ));
+        }
     }
     s
 }

@@ -7,15 +7,18 @@ use crate::lesson::Lesson;
 use crate::physics::collide::record::detect as record;
 use crate::physics::collide::Options;
 use crate::physics::detect::toi::Motion;
+use crate::physics::detect::Convex;
 use crate::physics::detect::ToiMethod;
-use crate::physics::step::swept::motion_of;
+use crate::physics::step::ccd_pairs::plane_pairs;
+use crate::physics::step::swept::{motion_of, swept_aabb, swept_sphere, MovementBound};
 use crate::physics::step::swept::{movement_bounds, SweptPairs};
 use crate::physics::step::toi_pair::search_pair;
 use crate::physics::step::Simulation;
 use crate::physics::to_f64;
 use crate::trace::detect::{build, Context, DetectTrace};
 use crate::trace::movement;
-use crate::trace::toi::{DetectToi, Overlap, PairToi, SearchRecord};
+use crate::trace::movement::Movement;
+use crate::trace::toi::{DetectToi, Overlap, PairToi, PictureBody, SearchRecord, ToiPicture};
 use crate::trace::Plane;
 
 /// The detection of `sim`'s bodies as they stand after `step` steps
@@ -72,7 +75,9 @@ pub fn toi_trace(
         None => {
             let mut swept = SweptPairs::default();
             swept.find(&world, &moving, dt);
-            swept.pairs.clone()
+            let mut planes = Vec::new();
+            plane_pairs(&world, &moving, dt, &mut planes);
+            swept.pairs.iter().chain(&planes).copied().collect()
         }
     };
     let name = |k: usize| lesson.bodies[k].name.clone();
@@ -91,7 +96,9 @@ pub fn toi_trace(
             b: name(j),
             aabbs_overlap: s.aabbs_overlap,
             spheres_meet: s.spheres_meet,
-            method,
+            // The search that ran: bisection falls back to advancement
+            // where its scan cannot certify the step.
+            method: s.toi.method,
             time: s.toi.time.map(to_f64),
             end: s.toi.end,
             tests: s.toi.iterations,
@@ -110,6 +117,61 @@ pub fn toi_trace(
         dt,
         method,
         pairs: found,
+    })
+}
+
+/// The picture of pair `k` of `toi` (`toi_trace`'s, `sim` standing where
+/// it stood): each body at the step's start and at the time found, with its
+/// movement bounds over the step. `None`: no such pair.
+pub fn toi_picture(
+    sim: &Simulation<f64>,
+    lesson: &Lesson,
+    toi: &DetectToi,
+    k: usize,
+) -> Option<ToiPicture> {
+    let p = toi.pairs.get(k)?;
+    let (world, moving) = sim.resolved_next();
+    let index = |name: &str| lesson.bodies.iter().position(|b| b.name == name);
+    let dt = toi.dt;
+    let body = |i: usize| {
+        let b = &world.bodies[i];
+        let m = motion_of(&world, i, moving[i]);
+        let pose = |t: f64| {
+            let x = m.position + m.velocity * t;
+            let q =
+                nalgebra::UnitQuaternion::from_scaled_axis(m.angular_velocity * t) * m.orientation;
+            ([x.x, x.y, x.z], [q.w, q.i, q.j, q.k])
+        };
+        let movement = (moving[i])
+            .then(|| {
+                let shape = b.shape.as_ref()?;
+                let aabb = swept_aabb(shape, &m, dt)?;
+                let r = Convex::from_shape(shape)?.bounding_radius();
+                let (centre, radius) = swept_sphere(r, &m, dt);
+                Some(Movement::from(&MovementBound {
+                    aabb,
+                    centre,
+                    radius,
+                }))
+            })
+            .flatten();
+        PictureBody {
+            name: lesson.bodies[i].name.clone(),
+            shape: b.shape.clone(),
+            start: pose(0.0),
+            found: p.time.map(pose),
+            movement,
+        }
+    };
+    let (i, j) = (index(&p.a)?, index(&p.b)?);
+    Some(ToiPicture {
+        lesson: toi.lesson.clone(),
+        step: toi.step,
+        method: p.method,
+        time: p.time,
+        end: p.end,
+        dt,
+        bodies: [body(i), body(j)],
     })
 }
 

@@ -113,3 +113,30 @@ pub fn end_name(end: ToiEnd) -> &'static str {
         ToiEnd::IterationCap => "iteration_cap",
     }
 }
+
+/// One body of a time-of-collision picture (`detect --toi --figure`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PictureBody {
+    pub name: String,
+    pub shape: Option<crate::physics::Shape>,
+    /// Position and orientation (w, x, y, z) at the step's start.
+    pub start: ([f64; 3], [f64; 4]),
+    /// The same at the time of collision found (`None`: none found).
+    pub found: Option<([f64; 3], [f64; 4])>,
+    /// Its movement bounds over the step (`None`: it does not move, or a half-space).
+    pub movement: Option<crate::trace::movement::Movement>,
+}
+
+/// The picture of one pair's search: the pair at the step's start and at
+/// the time found, and the bounds of their movement over the step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ToiPicture {
+    pub lesson: String,
+    pub step: u64,
+    pub method: ToiMethod,
+    /// Seconds into the step (`None`: no collision found).
+    pub time: Option<f64>,
+    pub end: ToiEnd,
+    pub dt: f64,
+    pub bodies: [PictureBody; 2],
+}

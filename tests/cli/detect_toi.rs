@@ -139,3 +139,123 @@ fn a_pair_that_is_not_in_the_scene_is_a_usage_error() {
     assert_eq!(code, Some(2));
     assert!(err.contains("lecture-2 is not a scene"), "{err}");
 }
+
+/// `ball-floor-fast` at step 3 (no damping; gravity added at each step's
+/// start): the ball's lowest point's height at the step's start, and its
+/// speed over the step.
+fn floor_closed_form() -> (f64, f64) {
+    let (g, dt) = (9.81, 1.0 / 60.0);
+    let v = |k: f64| 100.0 + k * g * dt;
+    let lowest = 4.5 - (v(1.0) + v(2.0)) * dt - 0.5;
+    (lowest, v(3.0))
+}
+
+#[test]
+fn a_ball_onto_a_half_space_floor_meets_it_at_gap_over_speed_with_either_search() {
+    let (gap, speed) = floor_closed_form();
+    let want = gap / speed;
+    for (method, tests) in [("bisection", None), ("conservative", Some(2))] {
+        let doc = json(&[
+            "ball-floor-fast",
+            "--toi",
+            "--step",
+            "3",
+            "--method",
+            method,
+        ]);
+        let pairs = doc["pairs"].as_array().unwrap();
+        assert_eq!(pairs.len(), 1, "{method}: {doc}");
+        let pair = &pairs[0];
+        assert_eq!(
+            (pair["a"].as_str(), pair["b"].as_str()),
+            (Some("ball"), Some("floor"))
+        );
+        let toi = &pair["toi"];
+        assert_eq!(toi["method"], method);
+        assert_eq!(toi["end"], "converged", "{method}: {toi}");
+        let t = toi["time"].as_f64().unwrap();
+        // The last time known apart, within the tolerance: 10⁻⁴ of the
+        // radius (5·10⁻⁵ m) at 100 m/s is 5·10⁻⁷ s.
+        assert!(
+            t <= want + 1e-12 && want - t < 5.1e-7,
+            "{method}: {t} vs {want}"
+        );
+        if let Some(n) = tests {
+            // Straight at a plane: one advance is exact, the second test confirms it.
+            assert_eq!(toi["tests"], n, "{method}: {toi}");
+        }
+        // The ball ends the step inside the floor: the normal at the end is the plane's.
+        let end = &pair["normals"]["epa_at_end"];
+        assert_eq!(end["normal"], serde_json::json!([0.0, 1.0, 0.0]), "{end}");
+    }
+}
+
+#[test]
+fn the_toi_figure_draws_the_pair_at_the_start_and_at_the_time_found() {
+    for (scene, step) in [("ball-floor-fast", "3"), ("bullet-wall", "1")] {
+        let path = crate::common::scratch(&format!("toi-figure-{scene}")).join("F.svg");
+        let (code, _, err) = detect(&[
+            scene,
+            "--toi",
+            "--step",
+            step,
+            "--figure",
+            path.to_str().unwrap(),
+        ]);
+        assert_eq!(code, Some(0), "{err}");
+        let svg = std::fs::read_to_string(&path).expect("the figure is written");
+        assert!(svg.starts_with("<svg"), "{svg}");
+        assert!(svg.contains("time of collision (bisection)"), "{svg}");
+        assert!(svg.contains("movement bounds over the next step"), "{svg}");
+        // Each body drawn twice: at t = 0 and at the time found.
+        let names = svg.matches("text-anchor=\"middle\"").count();
+        let planes = usize::from(scene == "ball-floor-fast");
+        assert_eq!(names + 2 * planes, 4, "{svg}");
+    }
+}
+
+#[test]
+fn method_without_toi_is_a_usage_error() {
+    let (code, _, err) = detect(&["bullet-wall", "--method", "conservative"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--toi"), "{err}");
+}
+
+/// Two spheres 1 cm inside each other, moving apart: apart again by the
+/// step's end, so a scan that looks only at piece ends would see nothing.
+#[test]
+fn two_spheres_overlapping_at_the_steps_start_report_at_start() {
+    let path = crate::common::scratch("toi-overlap").join("toi-overlap.toml");
+    std::fs::write(
+        &path,
+        r#"id = "toi-overlap"
+title = "Two spheres overlapping at the start"
+[world]
+gravity = [0, 0, 0]
+[step]
+dt = 0.016666666666666666
+steps = 2
+[sleep]
+enabled = false
+[[body]]
+name = "a"
+mass = 1.0
+shape = { sphere = 0.5 }
+position = [-0.495, 0, 0]
+velocity = [-1, 0, 0]
+[[body]]
+name = "b"
+mass = 1.0
+shape = { sphere = 0.5 }
+position = [0.495, 0, 0]
+velocity = [1, 0, 0]
+"#,
+    )
+    .unwrap();
+    for method in ["bisection", "conservative"] {
+        let doc = json(&[path.to_str().unwrap(), "--toi", "--method", method]);
+        let toi = &doc["pairs"][0]["toi"];
+        assert_eq!(toi["end"], "at_start", "{method}: {toi}");
+        assert_eq!(toi["time"], 0.0, "{method}: {toi}");
+    }
+}

@@ -402,3 +402,60 @@ fn relaxation_is_named_only_by_its_declaration_physics_trace_and_renderer() {
         );
     }
 }
+
+/// A number or count knob's boundary values (accepted), and a value just
+/// past each (refused), as typed.
+fn boundaries(knob: &Knob) -> (Vec<String>, Vec<String>) {
+    let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
+    match knob.kind {
+        Kind::Number { range, .. } => match range {
+            Range::Duration => (s(&["1e6", "1000000", "1e-60"]), s(&["1.0000001e6", "0"])),
+            Range::Share | Range::Damping => (s(&["1", "1e-60"]), s(&["1.0000001", "0"])),
+            Range::NonNegative => (s(&["0", "1e60"]), s(&["-1e-60", "1.0000001e60"])),
+            Range::NonNegativeOrInf => (s(&["0", "inf", "1e60"]), s(&["-1e-60"])),
+        },
+        Kind::Count { max, .. } => (
+            vec!["0".into(), max.to_string()],
+            vec![(max + 1).to_string()],
+        ),
+        _ => (vec![], vec![]),
+    }
+}
+
+#[test]
+fn every_range_accepts_its_boundary_in_a_file_on_the_command_line_and_in_the_grid() {
+    for knob in KNOBS {
+        let (inside, past) = boundaries(knob);
+        let grid_offered = matches!(knob.study, Offered::Yes);
+        for text in &inside {
+            knob_value::from_text(knob, text)
+                .unwrap_or_else(|e| panic!("{} = {text} on the command line: {e}", knob.name));
+            for &table in knob.tables {
+                validate::parse("probe.toml", &lesson_with(table, knob.name, text)).unwrap_or_else(
+                    |e| panic!("{} = {text} in {}: {e:?}", knob.name, table.name()),
+                );
+            }
+            if grid_offered {
+                grid::parse_grid(&format!("{}={text}", knob.name))
+                    .unwrap_or_else(|e| panic!("--grid {}={text}: {e}", knob.name));
+            }
+        }
+        for text in &past {
+            let cli = knob_value::from_text(knob, text)
+                .expect_err(&format!("{} = {text} on the command line", knob.name));
+            let file = validate::parse("probe.toml", &lesson_with(knob.tables[0], knob.name, text))
+                .map(|_| ())
+                .expect_err(&format!("{} = {text} in a file", knob.name));
+            assert!(
+                format!("{file:?}").contains(&cli),
+                "{}: {file:?} vs {cli}",
+                knob.name
+            );
+            if grid_offered {
+                let grid = grid::parse_grid(&format!("{}={text}", knob.name))
+                    .expect_err(&format!("--grid {}={text}", knob.name));
+                assert!(grid.ends_with(&cli), "{}: grid {grid} vs {cli}", knob.name);
+            }
+        }
+    }
+}

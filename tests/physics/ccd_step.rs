@@ -237,3 +237,47 @@ fn a_sleeping_box_struck_inside_the_step_wakes_and_moves() {
         assert!(sim.world.bodies[1].state.position.x > x, "{ccd:?}");
     }
 }
+
+#[test]
+fn a_fast_ball_onto_a_half_space_floor_rebounds_at_e_times_its_speed_and_never_goes_below() {
+    for (ccd, method) in [
+        (Ccd::Bisection, ToiMethod::Bisection),
+        (Ccd::Conservative, ToiMethod::Conservative),
+    ] {
+        let mut sim = scene("ball-floor-fast", ccd);
+        let mut hits = Vec::new();
+        for _ in 0..20 {
+            let r = sim.advance().expect("no blow-up");
+            let s = &sim.world.bodies[0].state;
+            // Its lowest point never below the floor at a step's end (within
+            // the search's tolerance, 10⁻⁴ of the radius).
+            assert!(
+                s.position.y - 0.5 >= -5e-5,
+                "{ccd:?} step {}: y = {}",
+                r.step,
+                s.position.y
+            );
+            for e in &r.events {
+                assert!(!matches!(e, Event::Tunnelled { .. }), "{ccd:?}: {e:?}");
+                if let Event::Toi(h) = e {
+                    // The speed it leaves with is the state's after the step
+                    // (no spin, and gravity is added at the next step's start).
+                    assert!(
+                        (h.separating - s.velocity.y).abs() <= 1e-9 * h.closing,
+                        "{ccd:?}: {h:?} vs {}",
+                        s.velocity.y
+                    );
+                    hits.push((r.step, *h));
+                }
+            }
+        }
+        assert_eq!(hits.len(), 1, "{ccd:?}: {hits:?}");
+        let (step, h) = hits[0];
+        assert_eq!((step, h.method), (3, method));
+        assert_eq!(h.normal, [0.0, 1.0, 0.0]);
+        // e = 0.5 of the speed it struck at, to 1 %.
+        let ratio = h.separating / h.closing;
+        assert!((ratio - 0.5).abs() < 0.005, "{ccd:?}: {ratio}");
+        assert!(h.closing > 100.0, "{ccd:?}: {}", h.closing);
+    }
+}

@@ -36,6 +36,7 @@ pub mod simplex;
 pub mod support;
 mod support_face;
 pub mod toi;
+pub mod toi_plane;
 pub mod toi_sweep;
 
 #[cfg(test)]
@@ -52,5 +53,7 @@ pub use query::{query, Penetration, PenetrationSource, Query, QueryOptions};
 pub use sat::{sat, Polyhedron, SatResult};
 pub use support::{plane_depth, Capsule, Convex, Support};
 pub use toi::{
-    toi, Motion, MovingPair, Toi, ToiEnd, ToiMethod, ToiObserver, ToiOptions, ToiRecorder, ToiStep,
+    toi, Motion, MovingPair, SweptPair, Toi, ToiEnd, ToiMethod, ToiObserver, ToiOptions,
+    ToiRecorder, ToiStep,
 };
+pub use toi_plane::PlanePair;

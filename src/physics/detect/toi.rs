@@ -46,6 +46,14 @@ impl<T: Real> Motion<T> {
         }
     }
 
+    /// The velocity at time t of the body's point at world `p`: v + ω × (p − x(t)).
+    pub fn point_velocity(&self, t: T, p: &Vector3<T>) -> Vector3<T> {
+        self.velocity
+            + self
+                .angular_velocity
+                .cross(&(p - (self.position + self.velocity * t)))
+    }
+
     /// The pose at time t into the step: x₀ + v t, exp(ω t) q₀.
     pub fn pose_at(&self, t: T) -> Pose<T> {
         let turn = UnitQuaternion::from_scaled_axis(self.angular_velocity * t);
@@ -81,6 +89,10 @@ pub struct ToiOptions<T: Real> {
     /// At most this many intersection or distance tests.
     pub max_iterations: usize,
     pub gjk: GjkOptions<T>,
+    /// Advancement: a pair within the tolerance whose closest points move
+    /// apart has not met (it is leaving a touch just resolved): advance past
+    /// it instead of stopping there.
+    pub skip_receding: bool,
 }
 
 impl<T: Real> Default for ToiOptions<T> {
@@ -89,6 +101,7 @@ impl<T: Real> Default for ToiOptions<T> {
             tolerance: c(1e-6),
             max_iterations: 64,
             gjk: GjkOptions::default(),
+            skip_receding: false,
         }
     }
 }
@@ -174,9 +187,35 @@ impl<'s, T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized> MovingPair<'s,
             motion_b,
         }
     }
+}
 
-    /// GJK at time t: whether they intersect, their distance and the gap
-    /// between their closest points (A's minus B's).
+/// What a time-of-collision search asks of a pair over the step: the test
+/// at a time, and what bounds its closing speed. Two convex shapes
+/// ([`MovingPair`]: GJK) and a convex shape against a half-space
+/// ([`super::toi_plane::PlanePair`]: a closed form) answer it.
+pub trait SweptPair<T: Real> {
+    /// At time t into the step: whether the pair intersects, its distance
+    /// (≥ 0; 0 when intersecting) and the gap between the closest points
+    /// (A's minus B's: along the normal from B toward A).
+    fn distance_at(&self, t: T, options: &GjkOptions<T>) -> (bool, T, Vector3<T>);
+    /// v_A − v_B.
+    fn relative_velocity(&self) -> Vector3<T>;
+    /// The rotation part of the closing bound, |ω_A| ρ_A + |ω_B| ρ_B, ρ the
+    /// farthest point of each shape from its body origin (the centre of
+    /// mass): no point of either moves faster than this by turning.
+    fn spin(&self) -> T;
+    /// The width the scan's pieces are cut to: half the sum of the two
+    /// shapes' smallest widths (a half-space counts as deep as the shape).
+    fn width(&self) -> T;
+    /// The rate at which the gap between the closest points grows at time
+    /// t (> 0: they move apart); `None` where there is no normal (the
+    /// pair intersects).
+    fn gap_rate(&self, t: T, options: &GjkOptions<T>) -> Option<T>;
+}
+
+impl<T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized> SweptPair<T>
+    for MovingPair<'_, T, A, B>
+{
     fn distance_at(&self, t: T, options: &GjkOptions<T>) -> (bool, T, Vector3<T>) {
         let (a, b) = (self.a, self.b);
         let r = gjk(
@@ -190,20 +229,64 @@ impl<'s, T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized> MovingPair<'s,
         let hit = r.verdict == GjkVerdict::Intersecting;
         (hit, r.distance, r.closest_a - r.closest_b)
     }
+
+    fn relative_velocity(&self) -> Vector3<T> {
+        self.motion_a.velocity - self.motion_b.velocity
+    }
+
+    fn spin(&self) -> T {
+        self.motion_a.angular_velocity.norm() * bounding_radius(self.a)
+            + self.motion_b.angular_velocity.norm() * bounding_radius(self.b)
+    }
+
+    fn width(&self) -> T {
+        (smallest_width(self.a) + smallest_width(self.b)) * c::<T>(0.5)
+    }
+
+    fn gap_rate(&self, t: T, options: &GjkOptions<T>) -> Option<T> {
+        let (ma, mb) = (self.motion_a, self.motion_b);
+        let r = gjk(
+            self.a,
+            &ma.pose_at(t),
+            self.b,
+            &mb.pose_at(t),
+            options,
+            &mut (),
+        );
+        let gap = r.closest_a - r.closest_b;
+        let d = gap.norm();
+        if r.verdict == GjkVerdict::Intersecting || d <= T::zero() {
+            return None;
+        }
+        Some(
+            (ma.point_velocity(t, &r.closest_a) - mb.point_velocity(t, &r.closest_b))
+                .dot(&(gap / d)),
+        )
+    }
+}
+
+/// The smallest width of a shape over its body axes: min_k s(e_k) − s(−e_k).
+pub fn smallest_width<T: Real, S: Support<T> + ?Sized>(shape: &S) -> T {
+    (0..3)
+        .map(|i| {
+            let mut d = Vector3::<T>::zeros();
+            d[i] = T::one();
+            shape.local_support(&d)[i] - shape.local_support(&-d)[i]
+        })
+        .fold(c::<T>(f64::INFINITY), |m, w| m.min(w))
 }
 
 /// Runs `method` over [0, dt].
-pub fn toi<T, A, B, O>(
+pub fn toi<T, P, O>(
     method: ToiMethod,
-    pair: &MovingPair<'_, T, A, B>,
+    pair: &P,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
 ) -> Toi<T>
 where
     T: Real,
-    A: Support<T> + ?Sized,
-    B: Support<T> + ?Sized,
+    P: SweptPair<T> + ?Sized,
     O: ToiObserver<T> + ?Sized,
 {
     match method {
@@ -213,16 +296,10 @@ where
 }
 
 /// Bisection on [0, dt] (module docs).
-pub fn bisection<T, A, B, O>(
-    pair: &MovingPair<'_, T, A, B>,
-    dt: T,
-    options: &ToiOptions<T>,
-    observer: &mut O,
-) -> Toi<T>
+pub fn bisection<T, P, O>(pair: &P, dt: T, options: &ToiOptions<T>, observer: &mut O) -> Toi<T>
 where
     T: Real,
-    A: Support<T> + ?Sized,
-    B: Support<T> + ?Sized,
+    P: SweptPair<T> + ?Sized,
     O: ToiObserver<T> + ?Sized,
 {
     let done = |time, iterations, end| Toi {
@@ -278,16 +355,15 @@ pub fn bounding_radius<T: Real, S: Support<T> + ?Sized>(shape: &S) -> T {
 }
 
 /// Conservative advancement on [0, dt] (module docs).
-pub fn conservative_advancement<T, A, B, O>(
-    pair: &MovingPair<'_, T, A, B>,
+pub fn conservative_advancement<T, P, O>(
+    pair: &P,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
 ) -> Toi<T>
 where
     T: Real,
-    A: Support<T> + ?Sized,
-    B: Support<T> + ?Sized,
+    P: SweptPair<T> + ?Sized,
     O: ToiObserver<T> + ?Sized,
 {
     let done = |time, iterations, end| Toi {
@@ -297,17 +373,22 @@ where
         end,
     };
     // The rotation part of μ: |ω_A| ρ_A + |ω_B| ρ_B (constant over the step).
-    let (ma, mb) = (pair.motion_a, pair.motion_b);
-    let spin = ma.angular_velocity.norm() * bounding_radius(pair.a)
-        + mb.angular_velocity.norm() * bounding_radius(pair.b);
-    let relative = ma.velocity - mb.velocity;
+    let spin = pair.spin();
+    let relative = pair.relative_velocity();
     let mut t = T::zero();
     for index in 0..options.max_iterations {
         let (hit, distance, gap) = pair.distance_at(t, &options.gjk);
-        if hit && index == 0 {
+        if hit && index == 0 && !options.skip_receding {
             return done(Some(t), 0, ToiEnd::AtStart);
         }
-        let close = hit || distance <= options.tolerance;
+        let near = hit || distance <= options.tolerance;
+        // A touch just resolved, the pair leaving it: not a meeting.
+        let receding = near
+            && options.skip_receding
+            && pair
+                .gap_rate(t, &options.gjk)
+                .is_some_and(|r| r > T::zero());
+        let close = near && !receding;
         // μ = −v_rel·n + spin, n from B toward A.
         let normal = if distance > T::zero() {
             gap / distance
@@ -315,7 +396,11 @@ where
             Vector3::zeros()
         };
         let mu = -relative.dot(&normal) + spin;
-        let next = if close || mu <= T::zero() {
+        let next = if receding {
+            // Past the touch: no farther than the gap (or the tolerance)
+            // can close at the bound on the closing speed, |v_rel| + spin.
+            t + distance.max(options.tolerance) / (relative.norm() + spin)
+        } else if close || mu <= T::zero() {
             t
         } else {
             t + distance / mu
@@ -331,7 +416,7 @@ where
         if close {
             return done(Some(t), index + 1, ToiEnd::Converged);
         }
-        if mu <= T::zero() || next > dt {
+        if (!receding && mu <= T::zero()) || next > dt {
             return done(None, index + 1, ToiEnd::NoHitInStep);
         }
         t = next;

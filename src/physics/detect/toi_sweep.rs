@@ -7,16 +7,16 @@
 //! half its two smallest widths, w = (w_A + w_B) / 2, at the bound on its
 //! closing speed μ (the same bound as advancement's): n = ⌈Δt μ / w⌉ pieces,
 //! at most [`MAX_PIECES`]. The first piece whose end intersects is bisected.
-//! A pair that only grazes (overlaps for less than a piece) can still be
-//! missed; the tunnelling auditor reports it.
+//! A pair that needs more pieces than that (a bullet at 10⁴ m/s) falls back
+//! to conservative advancement, which never passes the first contact, and
+//! its result says so (method `conservative`).
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use super::gjk::{gjk, GjkVerdict};
-use super::support::Support;
+use super::gjk::GjkOptions;
 use super::toi::{
-    bisection, bounding_radius, conservative_advancement, Motion, MovingPair, Toi, ToiEnd,
-    ToiMethod, ToiObserver, ToiOptions, ToiStep,
+    bisection, conservative_advancement, Motion, SweptPair, Toi, ToiEnd, ToiMethod, ToiObserver,
+    ToiOptions, ToiStep,
 };
 use crate::physics::{c, Real};
 
@@ -32,25 +32,34 @@ pub fn rebased<T: Real>(m: &Motion<T>, s: T) -> Motion<T> {
     }
 }
 
-/// The smallest width of a shape over its body axes: min_k s(e_k) − s(−e_k).
-pub fn smallest_width<T: Real, S: Support<T> + ?Sized>(shape: &S) -> T {
-    (0..3)
-        .map(|i| {
-            let mut d = Vector3::<T>::zeros();
-            d[i] = T::one();
-            shape.local_support(&d)[i] - shape.local_support(&-d)[i]
-        })
-        .fold(c::<T>(f64::INFINITY), |m, w| m.min(w))
+/// μ: a bound on the pair's closing speed, |v_A − v_B| + |ω_A| ρ_A + |ω_B| ρ_B.
+pub fn closing_bound<T: Real, P: SweptPair<T> + ?Sized>(pair: &P) -> T {
+    pair.relative_velocity().norm() + pair.spin()
 }
 
-/// μ: a bound on the pair's closing speed, |v_A − v_B| + |ω_A| ρ_A + |ω_B| ρ_B.
-pub fn closing_bound<T: Real, A: Support<T> + ?Sized, B: Support<T> + ?Sized>(
-    pair: &MovingPair<'_, T, A, B>,
-) -> T {
-    let (ma, mb) = (pair.motion_a, pair.motion_b);
-    (ma.velocity - mb.velocity).norm()
-        + ma.angular_velocity.norm() * bounding_radius(pair.a)
-        + mb.angular_velocity.norm() * bounding_radius(pair.b)
+/// A pair seen from `by` seconds into the step: its test at t is the
+/// pair's at `by + t`.
+pub struct Later<'a, T: Real, P: ?Sized> {
+    pub pair: &'a P,
+    pub by: T,
+}
+
+impl<T: Real, P: SweptPair<T> + ?Sized> SweptPair<T> for Later<'_, T, P> {
+    fn distance_at(&self, t: T, options: &GjkOptions<T>) -> (bool, T, Vector3<T>) {
+        self.pair.distance_at(self.by + t, options)
+    }
+    fn relative_velocity(&self) -> Vector3<T> {
+        self.pair.relative_velocity()
+    }
+    fn spin(&self) -> T {
+        self.pair.spin()
+    }
+    fn width(&self) -> T {
+        self.pair.width()
+    }
+    fn gap_rate(&self, t: T, options: &GjkOptions<T>) -> Option<T> {
+        self.pair.gap_rate(self.by + t, options)
+    }
 }
 
 /// Shifts the times a piece's bisection reports by the piece's start.
@@ -72,39 +81,54 @@ impl<T: Real, O: ToiObserver<T> + ?Sized> ToiObserver<T> for Shifted<'_, T, O> {
 
 /// Bisection over [0, dt] after the scan (module docs). `options.tolerance`
 /// is the bisection's, in seconds.
-pub fn scanned_bisection<T, A, B, O>(
-    pair: &MovingPair<'_, T, A, B>,
+pub fn scanned_bisection<T, P, O>(
+    pair: &P,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
 ) -> Toi<T>
 where
     T: Real,
-    A: Support<T> + ?Sized,
-    B: Support<T> + ?Sized,
+    P: SweptPair<T> + ?Sized,
     O: ToiObserver<T> + ?Sized,
 {
-    let (a, b) = (pair.a, pair.b);
-    let width = (smallest_width(a) + smallest_width(b)) * c::<T>(0.5);
+    let width = pair.width();
     let mu = closing_bound(pair);
-    let pieces = if width > T::zero() {
-        let n = (dt * mu / width).ceil();
-        if n >= c::<T>(MAX_PIECES as f64) {
-            MAX_PIECES
-        } else {
-            crate::physics::to_f64(n).max(1.0) as usize
-        }
-    } else {
-        MAX_PIECES
-    };
+    let n = (dt * mu / width).ceil();
+    if !(width > T::zero() && n <= c::<T>(MAX_PIECES as f64)) {
+        // Pieces of at most half the widths would be more than the cap:
+        // a scan with fewer could step over the pair, so it cannot
+        // certify the step. Advancement can (it never passes the first
+        // contact): the search falls back to it, and says so (its method).
+        let length = options.tolerance * mu;
+        let advancing = ToiOptions {
+            tolerance: if length > T::zero() {
+                length
+            } else {
+                options.tolerance
+            },
+            ..*options
+        };
+        return conservative_advancement(pair, dt, &advancing, observer);
+    }
+    let pieces = crate::physics::to_f64(n).max(1.0) as usize;
+    // A pair that already intersects has met at the start (the search is
+    // over its time of collision, not a new one): as plain bisection says.
+    if pair.distance_at(T::zero(), &options.gjk).0 {
+        return Toi {
+            method: ToiMethod::Bisection,
+            time: Some(T::zero()),
+            iterations: 0,
+            end: ToiEnd::AtStart,
+        };
+    }
     let h = dt / c::<T>(pieces as f64);
     let mut tests = 0;
     for k in 0..pieces {
         let start = h * c::<T>(k as f64);
-        let (pa, pb) = (rebased(pair.motion_a, start), rebased(pair.motion_b, start));
-        let end = gjk(a, &pa.pose_at(h), b, &pb.pose_at(h), &options.gjk, &mut ());
+        let later = Later { pair, by: start };
+        let hit = later.distance_at(h, &options.gjk).0;
         tests += 1;
-        let hit = end.verdict == GjkVerdict::Intersecting;
         observer.scan(start, start + h, hit);
         if !hit {
             continue;
@@ -113,7 +137,7 @@ where
             by: start,
             inner: observer,
         };
-        let found = bisection(&MovingPair::new(a, &pa, b, &pb), h, options, &mut shifted);
+        let found = bisection(&later, h, options, &mut shifted);
         return Toi {
             time: found.time.map(|t| t + start),
             iterations: tests + found.iterations,
@@ -130,17 +154,16 @@ where
 
 /// The search continuous detection runs: conservative advancement as it is,
 /// bisection after the scan.
-pub fn swept_toi<T, A, B, O>(
+pub fn swept_toi<T, P, O>(
     method: ToiMethod,
-    pair: &MovingPair<'_, T, A, B>,
+    pair: &P,
     dt: T,
     options: &ToiOptions<T>,
     observer: &mut O,
 ) -> Toi<T>
 where
     T: Real,
-    A: Support<T> + ?Sized,
-    B: Support<T> + ?Sized,
+    P: SweptPair<T> + ?Sized,
     O: ToiObserver<T> + ?Sized,
 {
     match method {

@@ -6,6 +6,7 @@
 pub mod audit;
 mod audits;
 pub mod ccd;
+pub mod ccd_pairs;
 pub mod contact_events;
 pub mod energy;
 pub mod integrate;
@@ -20,6 +21,7 @@ pub mod sleep;
 pub mod substep;
 pub mod swept;
 pub mod toi_pair;
+mod toi_resolve;
 pub mod tolerance;
 pub mod total_audit;
 mod wake_sleep;

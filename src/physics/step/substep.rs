@@ -15,22 +15,19 @@
 //! still watches it). Each sub-step costs a swept broad phase and one search
 //! per candidate pair (docs/ccd.md).
 
-use nalgebra::Vector3;
-
 use super::ccd::{self, Tunnelled};
-use super::energy;
+use super::ccd_pairs;
 use super::integrate::integrate_position;
 use super::report::ToiEvent;
-use super::simulation::contacts::contact_input;
 use super::swept::{motion_of, Earlier, MovementBound, SweptPairs};
-use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
+use super::toi_resolve::{advance_along, apart_for_good, resolve_at, shape, to3};
+use crate::physics::detect::toi_sweep::{closing_bound, swept_toi, Later};
 use crate::physics::detect::{
-    query, Convex, EpaOptions, GjkOptions, MovingPair, QueryOptions, ToiEnd, ToiMethod, ToiOptions,
+    gjk, Convex, GjkOptions, GjkVerdict, MovingPair, PlanePair, SweptPair, ToiEnd, ToiMethod,
+    ToiOptions,
 };
 use crate::physics::params::{Material, SimParams};
-use crate::physics::pose::Pose;
-use crate::physics::resolver::{Implementation, Resolver, Silent};
-use crate::physics::{c, to_f64, BodyId, Contact, Real, World};
+use crate::physics::{c, to_f64, BodyId, Real, World};
 
 /// The most collisions continuous detection resolves inside one step.
 pub const MAX_SUBSTEPS: usize = 8;
@@ -58,7 +55,9 @@ pub struct Spent {
 pub struct Substeps<T: Real> {
     pub moving: Vec<bool>,
     swept: SweptPairs<T>,
-    done: Vec<(usize, usize)>,
+    /// The pairs resolved so far in the step (module docs, "again").
+    done: Vec<Done>,
+    planes: Vec<(usize, usize)>,
     /// Rolling back: each body's time to go back (rollback.rs).
     pub back: Vec<T>,
     /// Each moving body's movement bounds over the whole step, as the
@@ -73,14 +72,11 @@ impl<T: Real> Default for Substeps<T> {
             moving: Vec::new(),
             swept: SweptPairs::default(),
             done: Vec::new(),
+            planes: Vec::new(),
             back: Vec::new(),
             bounds: Vec::new(),
         }
     }
-}
-
-fn to3<T: Real>(v: &Vector3<T>) -> [f64; 3] {
-    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
 }
 
 impl<T: Real> Substeps<T> {
@@ -109,19 +105,34 @@ impl<T: Real> Substeps<T> {
         };
         self.done.clear();
         let mut elapsed = T::zero();
+        let mut rounds = 0;
         loop {
             let left = p.dt - elapsed;
-            if out.hits.len() == MAX_SUBSTEPS {
+            if out.hits.len() == MAX_SUBSTEPS || rounds == MAX_ROUNDS {
                 out.capped = true;
                 break;
             }
-            let Some((i, j, s, tests)) = self.earliest(world, method, left, &mut out.tests) else {
+            rounds += 1;
+            let Some(found) = self.earliest(world, method, left, &mut out.tests) else {
                 break;
             };
-            advance(world, &self.moving, s);
-            elapsed += s;
-            self.done.push((i, j));
-            if let Some(hit) = resolve_at(world, p, materials, i, j) {
+            let (i, j) = found.pair;
+            advance_along(world, &self.moving, found.time);
+            elapsed += found.time;
+            if !found.met {
+                // Advancement's cap: the pair is still apart there, and
+                // nothing met before (safe to move to; search again).
+                continue;
+            }
+            let hit = resolve_at(world, p, materials, i, j, found.tolerance);
+            let key = (i.min(j), i.max(j));
+            self.done.retain(|d| d.pair != key);
+            self.done.push(Done {
+                pair: key,
+                for_good: hit.as_ref().is_none_or(|h| apart_for_good(world, h)),
+                tolerance: found.tolerance,
+            });
+            if let Some(hit) = hit {
                 for body in [hit.body1, hit.body2] {
                     if world.bodies[body.0].movable && !self.moving[body.0] {
                         self.moving[body.0] = true;
@@ -129,9 +140,9 @@ impl<T: Real> Substeps<T> {
                     }
                 }
                 out.hits.push(ToiEvent {
-                    method,
+                    method: found.method,
                     time: to_f64(elapsed),
-                    tests,
+                    tests: found.tests,
                     ..hit
                 });
             }
@@ -150,7 +161,70 @@ impl<T: Real> Substeps<T> {
         for t in &mut out.crossed[from..] {
             t.time += to_f64(elapsed);
         }
-        advance(world, moving, left);
+        if out.capped {
+            self.unfinished(world, method, left, elapsed, &mut out.crossed);
+        }
+        advance(world, &self.moving, left);
+    }
+
+    /// The cap was hit: a pair resolved in the step whose gap could still
+    /// shrink (not [`Done::for_good`]) is searched once more over what is
+    /// left; if it meets there and is apart again at the step's end, it
+    /// crossed unseen, and says so (a `tunnelled` event; the auditor, which
+    /// starts from the touch the pair has just had, cannot see it).
+    fn unfinished(
+        &self,
+        world: &World<T>,
+        method: ToiMethod,
+        left: T,
+        elapsed: T,
+        crossed: &mut Vec<Tunnelled>,
+    ) {
+        for d in self.done.iter().filter(|d| !d.for_good) {
+            let (i, j) = d.pair;
+            if crossed
+                .iter()
+                .any(|t| (t.body1.0.min(t.body2.0), t.body1.0.max(t.body2.0)) == d.pair)
+            {
+                continue;
+            }
+            let (Some(a), Some(b)) = (shape(world, i), shape(world, j)) else {
+                continue; // A half-space cannot be crossed: the discrete step sees the overlap.
+            };
+            let (ma, mb) = (
+                motion_of(world, i, self.moving[i]),
+                motion_of(world, j, self.moving[j]),
+            );
+            let pair = MovingPair::new(&a, &ma, &b, &mb);
+            let radius = a.bounding_radius().min(b.bounding_radius());
+            let Some(Found {
+                time: t, met: true, ..
+            }) = search(&pair, method, radius, left, Some(d.tolerance))
+            else {
+                continue;
+            };
+            let gjk_at = |s: T| {
+                gjk(
+                    &a,
+                    &ma.pose_at(s),
+                    &b,
+                    &mb.pose_at(s),
+                    &GjkOptions::default(),
+                    &mut (),
+                )
+            };
+            if gjk_at(left).verdict != GjkVerdict::Separated {
+                continue;
+            }
+            let hit = gjk_at(t);
+            let point = (hit.closest_a + hit.closest_b) * c::<T>(0.5);
+            crossed.push(Tunnelled {
+                body1: BodyId(i),
+                body2: BodyId(j),
+                time: to_f64(elapsed + t),
+                point: to3(&point),
+            });
+        }
     }
 
     /// The moving bodies' bounds from the last sweep, kept in `bounds`.
@@ -161,58 +235,159 @@ impl<T: Real> Substeps<T> {
             .extend((0..moving.len()).map(|i| if moving[i] { swept.bound(i) } else { None }));
     }
 
-    /// The pair that meets first within `left`, its time and its tests;
-    /// every search's tests are added to `spent`.
+    /// The pair that meets first within `left` (convex pairs from the
+    /// swept broad phase, then a body against a half-space); every
+    /// search's tests are added to `spent`.
     fn earliest(
         &mut self,
         world: &World<T>,
         method: ToiMethod,
         left: T,
         spent: &mut usize,
-    ) -> Option<(usize, usize, T, usize)> {
+    ) -> Option<Found<T>> {
         self.swept.find(world, &self.moving, left);
         if self.done.is_empty() {
             // The step's first sweep: over the whole step.
             self.keep_bounds();
         }
+        ccd_pairs::plane_pairs(world, &self.moving, left, &mut self.planes);
         let touching = ccd::contact_pairs(world);
-        let mut best: Option<(usize, usize, T, usize)> = None;
-        for &(i, j) in &self.swept.pairs {
-            if self.done.contains(&(i, j)) || touching.contains(&ccd::key(i, j)) {
+        let mut best: Option<Found<T>> = None;
+        let pairs = self.swept.pairs.iter().chain(&self.planes);
+        for &(i, j) in pairs {
+            let key = (i.min(j), i.max(j));
+            let again = match self.done.iter().find(|d| d.pair == key) {
+                Some(d) if d.for_good => continue,
+                Some(d) => Some(d.tolerance),
+                None => None,
+            };
+            if touching.contains(&ccd::key(i, j)) {
                 continue;
             }
-            let (Some(a), Some(b)) = (shape(world, i), shape(world, j)) else {
+            let Some(a) = shape(world, i) else {
                 continue;
             };
-            let (ma, mb) = (
-                motion_of(world, i, self.moving[i]),
-                motion_of(world, j, self.moving[j]),
-            );
-            let pair = MovingPair::new(&a, &ma, &b, &mb);
-            let options = search_options(method, &a, &b, closing_bound(&pair));
-            let toi = swept_toi(method, &pair, left, &options, &mut ());
-            *spent += toi.iterations;
-            let time = match (toi.end, toi.time) {
-                (ToiEnd::Converged | ToiEnd::IterationCap, Some(t)) if t < left => t,
-                _ => continue,
+            let ma = motion_of(world, i, self.moving[i]);
+            let found = match ccd_pairs::half_space(world, j) {
+                Some((normal, point)) => {
+                    let pair = PlanePair::new(&a, &ma, normal, point);
+                    let radius = a.bounding_radius();
+                    search(&pair, method, radius, left, again)
+                }
+                None => {
+                    let Some(b) = shape(world, j) else {
+                        continue;
+                    };
+                    let mb = motion_of(world, j, self.moving[j]);
+                    let pair = MovingPair::new(&a, &ma, &b, &mb);
+                    let radius = a.bounding_radius().min(b.bounding_radius());
+                    search(&pair, method, radius, left, again)
+                }
             };
-            if best.is_none_or(|b| time < b.2) {
-                best = Some((i, j, time, toi.iterations));
+            let Some(found) = found else {
+                continue;
+            };
+            *spent += found.tests;
+            if best.as_ref().is_none_or(|b| found.time < b.time) {
+                best = Some(Found {
+                    pair: (i, j),
+                    ..found
+                });
             }
         }
         best
     }
 }
 
-fn shape<T: Real>(world: &World<T>, i: usize) -> Option<Convex> {
-    Convex::from_shape(world.bodies[i].shape.as_ref()?)
+/// At most this many rounds (searches of the whole scene) in one step,
+/// collisions and advancement's caps together.
+pub const MAX_ROUNDS: usize = 4 * MAX_SUBSTEPS;
+
+/// A pair resolved in the step.
+#[derive(Debug, Clone, Copy)]
+struct Done {
+    pair: (usize, usize),
+    /// Its gap cannot shrink for the rest of the step: not searched again.
+    for_good: bool,
+    /// Its search's tolerance (metres).
+    tolerance: f64,
+}
+
+/// The earliest meeting of a round.
+#[derive(Debug, Clone, Copy)]
+struct Found<T: Real> {
+    pair: (usize, usize),
+    /// Seconds from now.
+    time: T,
+    /// The pair meets there (false: advancement's cap, still apart).
+    met: bool,
+    tests: usize,
+    /// The length the search worked to (metres).
+    tolerance: f64,
+    /// The search that found it (bisection falls back to advancement
+    /// where its scan cannot certify the step).
+    method: ToiMethod,
+}
+
+/// One pair's search over `left`: its time, whether it met there, its
+/// tests and its tolerance in metres (`radius`: the smaller bounding
+/// radius). `again`: the pair was resolved earlier in the step with that
+/// tolerance and still touches: advancement steps past the touch while the
+/// pair's closest points move apart; bisection starts once the gap could
+/// have closed the tolerance at the closing bound.
+fn search<T: Real, P: SweptPair<T>>(
+    pair: &P,
+    method: ToiMethod,
+    radius: f64,
+    left: T,
+    again: Option<f64>,
+) -> Option<Found<T>> {
+    let mu = closing_bound(pair);
+    let options = ToiOptions {
+        // Advancement steps past the touch itself while the pair leaves it.
+        skip_receding: again.is_some(),
+        ..search_options_for(method, radius, mu)
+    };
+    let length = 1e-4 * radius;
+    let from = match (again, method) {
+        (Some(_), ToiMethod::Conservative) => T::zero(),
+        (Some(tol), _) if mu > T::zero() => c::<T>(tol) / mu,
+        (Some(_), _) => return None,
+        (None, _) => T::zero(),
+    };
+    if from >= left {
+        return None;
+    }
+    let later = Later { pair, by: from };
+    let toi = swept_toi(method, &later, left - from, &options, &mut ());
+    let (time, met) = match (toi.end, toi.time) {
+        (ToiEnd::Converged, Some(t)) => (t, true),
+        (ToiEnd::AtStart, Some(t)) if again.is_some() => (t, true),
+        (ToiEnd::IterationCap, Some(t)) if toi.method == ToiMethod::Conservative => (t, false),
+        (ToiEnd::IterationCap, Some(t)) => (t, true),
+        _ => return None,
+    };
+    (time + from < left).then_some(Found {
+        pair: (0, 0),
+        time: time + from,
+        met,
+        tests: toi.iterations,
+        tolerance: length,
+        method: toi.method,
+    })
 }
 
 /// The tolerance of a search: 10⁻⁴ of the smaller bounding radius (metres:
 /// advancement's distance), or the time the pair takes to close it at its
 /// bound on the closing speed `mu` (bisection's interval).
 pub fn search_options<T: Real>(method: ToiMethod, a: &Convex, b: &Convex, mu: T) -> ToiOptions<T> {
-    let length: T = c(1e-4 * a.bounding_radius().min(b.bounding_radius()));
+    search_options_for(method, a.bounding_radius().min(b.bounding_radius()), mu)
+}
+
+/// [`search_options`] with the smaller bounding radius given (a half-space
+/// has none: the shape's own).
+pub fn search_options_for<T: Real>(method: ToiMethod, radius: f64, mu: T) -> ToiOptions<T> {
+    let length: T = c(1e-4 * radius);
     let tolerance = match method {
         ToiMethod::Conservative => length,
         ToiMethod::Bisection if mu > T::zero() => length / mu,
@@ -231,92 +406,4 @@ fn advance<T: Real>(world: &mut World<T>, moving: &[bool], dt: T) {
             integrate_position(&mut body.state, dt);
         }
     }
-}
-
-/// The contact of bodies `i` and `j` where they are now (GJK's closest
-/// points, or EPA's normal if the pair overlaps), resolved alone by the
-/// velocity phase. Body 1 is a movable one. `None` when the pair is not
-/// closing there.
-fn resolve_at<T: Real>(
-    world: &mut World<T>,
-    p: &SimParams<T>,
-    materials: &[Material],
-    i: usize,
-    j: usize,
-) -> Option<ToiEvent> {
-    let (i, j) = if world.bodies[i].movable {
-        (i, j)
-    } else {
-        (j, i)
-    };
-    let (a, b) = (shape(world, i)?, shape(world, j)?);
-    let pose = |k: usize| {
-        let s = &world.bodies[k].state;
-        Pose::new(s.position, &s.orientation)
-    };
-    let q = query(
-        &a,
-        &pose(i),
-        &b,
-        &pose(j),
-        &QueryOptions {
-            gjk: GjkOptions::default(),
-            epa: EpaOptions::default(),
-        },
-        &mut (),
-        &mut (),
-    );
-    let (point, normal, penetration) = match q.penetration {
-        Some(pen) => (pen.point, pen.normal, pen.depth),
-        None => {
-            let gap = q.gjk.closest_a - q.gjk.closest_b;
-            let d = gap.norm();
-            if d <= T::zero() {
-                return None;
-            }
-            (
-                (q.gjk.closest_a + q.gjk.closest_b) * c::<T>(0.5),
-                gap / d,
-                -d,
-            )
-        }
-    };
-    let m = materials[i].combine(&materials[j]);
-    let contact = Contact {
-        body1: BodyId(i),
-        body2: Some(BodyId(j)),
-        input: contact_input(p, &m, point, normal, penetration),
-        duration: (!p.acceleration_compensation).then(T::zero),
-    };
-    let normal_speed = |w: &World<T>| {
-        let v = |k: usize| {
-            let s = &w.bodies[k].state;
-            s.point_velocity(&(point - s.position))
-        };
-        to_f64((v(i) - v(j)).dot(&normal))
-    };
-    let closing = -normal_speed(world);
-    if closing <= 0.0 {
-        // Met but not closing (a grazing or turning-away pair): nothing to resolve.
-        return None;
-    }
-    let kinetic_before = to_f64(energy::kinetic(world));
-    let kept = std::mem::replace(&mut world.contacts, vec![contact]);
-    let mut resolver = Resolver::prepare(world, &p.resolver);
-    resolver.velocity_phase(Implementation::Indexed, &mut Silent);
-    resolver.write_back(world);
-    world.contacts = kept;
-    Some(ToiEvent {
-        body1: BodyId(i),
-        body2: BodyId(j),
-        method: ToiMethod::Conservative,
-        time: 0.0,
-        tests: 0,
-        point: to3(&point),
-        normal: to3(&normal),
-        closing,
-        separating: normal_speed(world),
-        kinetic_before,
-        kinetic_after: to_f64(energy::kinetic(world)),
-    })
 }

@@ -8,13 +8,14 @@
 
 use nalgebra::Vector3;
 
+use super::ccd_pairs::half_space;
 use super::previous_frame::apart_normal;
-use super::substep::search_options;
+use super::substep::{search_options, search_options_for};
 use super::swept::{motion_of, spheres_meet, swept_aabb, swept_sphere};
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi};
 use crate::physics::detect::{
-    query, Convex, EpaOptions, GjkOptions, Motion, MovingPair, QueryOptions, Toi, ToiMethod,
-    ToiObserver,
+    query, Convex, EpaOptions, GjkOptions, Motion, MovingPair, PlanePair, QueryOptions, Toi,
+    ToiMethod, ToiObserver,
 };
 use crate::physics::{c, Real, World};
 
@@ -31,7 +32,8 @@ pub struct PairSearch<T: Real> {
 }
 
 /// Bodies `i` and `j` of `world` (the step's contacts resolved, positions
-/// not yet updated) over `dt`; `None` when either has no convex shape.
+/// not yet updated) over `dt`; `None` when either has no convex shape and
+/// is not a half-space (or both are half-spaces).
 pub fn search_pair<T: Real, O: ToiObserver<T> + ?Sized>(
     world: &World<T>,
     moving: &[bool],
@@ -40,6 +42,12 @@ pub fn search_pair<T: Real, O: ToiObserver<T> + ?Sized>(
     method: ToiMethod,
     observer: &mut O,
 ) -> Option<PairSearch<T>> {
+    if let Some(plane) = half_space(world, j) {
+        return search_plane(world, moving, i, plane, dt, method, observer);
+    }
+    if let Some(plane) = half_space(world, i) {
+        return search_plane(world, moving, j, plane, dt, method, observer);
+    }
     let (sa, sb) = (
         world.bodies[i].shape.as_ref()?,
         world.bodies[j].shape.as_ref()?,
@@ -78,5 +86,38 @@ pub fn search_pair<T: Real, O: ToiObserver<T> + ?Sized>(
         toi,
         at_end,
         previous_frame,
+    })
+}
+
+/// Body `i` against the half-space `(normal, point)`: the closed form
+/// ([`PlanePair`]). The movement bounds are the body's bounding sphere
+/// swept along its path against the plane (both flags say whether it comes
+/// within its radius of the plane); the normal at either end is the plane's.
+fn search_plane<T: Real, O: ToiObserver<T> + ?Sized>(
+    world: &World<T>,
+    moving: &[bool],
+    i: usize,
+    (normal, point): (Vector3<T>, Vector3<T>),
+    dt: T,
+    method: ToiMethod,
+    observer: &mut O,
+) -> Option<PairSearch<T>> {
+    let a = Convex::from_shape(world.bodies[i].shape.as_ref()?)?;
+    let ma = motion_of(world, i, moving[i]);
+    let radius: T = c(a.bounding_radius());
+    let h0 = normal.dot(&(ma.position - point));
+    let h1 = h0 + normal.dot(&ma.velocity) * dt;
+    let reaches = h0.min(h1) <= radius;
+    let pair = PlanePair::new(&a, &ma, normal, point);
+    let options = search_options_for(method, a.bounding_radius(), closing_bound(&pair));
+    let toi = swept_toi(method, &pair, dt, &options, observer);
+    let (_, end) = pair.signed_distance(dt);
+    let (_, start) = pair.signed_distance(T::zero());
+    Some(PairSearch {
+        aabbs_overlap: reaches,
+        spheres_meet: reaches,
+        toi,
+        at_end: (end < T::zero()).then_some((normal, -end)),
+        previous_frame: (start > T::zero()).then_some(normal),
     })
 }

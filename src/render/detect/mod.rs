@@ -8,7 +8,7 @@ mod json;
 mod layout;
 pub mod minkowski;
 pub mod steps;
-mod svg;
+pub(crate) mod svg;
 
 pub use json::json;
 pub use layout::{latex, markdown, text};

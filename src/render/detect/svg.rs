@@ -13,9 +13,9 @@ use crate::render::figure::{outline, Silhouette, P};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
 use crate::trace::movement::Movement;
 
-const W: f64 = 1000.0;
-const H: f64 = 520.0;
-const PANEL: f64 = 480.0;
+pub(crate) const W: f64 = 1000.0;
+pub(crate) const H: f64 = 520.0;
+pub(crate) const PANEL: f64 = 480.0;
 
 /// The figure of pair `k` at the result (`None` when there is no such pair).
 pub fn svg(t: &DetectTrace, k: usize) -> Option<String> {
@@ -194,7 +194,7 @@ fn pair_movement(t: &DetectTrace, p: &PairTrace) -> Vec<Movement> {
 }
 
 /// The points a body's movement bounds reach in the view plane.
-fn movement_extent(m: &Movement, flat: &impl Fn(&V3) -> P) -> Vec<P> {
+pub(crate) fn movement_extent(m: &Movement, flat: &impl Fn(&V3) -> P) -> Vec<P> {
     let (lo, hi, c) = (flat(&m.aabb[0]), flat(&m.aabb[1]), flat(&m.centre));
     vec![
         lo,
@@ -206,7 +206,12 @@ fn movement_extent(m: &Movement, flat: &impl Fn(&V3) -> P) -> Vec<P> {
 
 /// Each moving body's movement bounds over the next step, under the
 /// shapes: its swept AABB dashed, its swept sphere dotted, and a legend.
-fn movement_bounds(out: &mut String, f: &Fit, moving: &[Movement], flat: &impl Fn(&V3) -> P) {
+pub(crate) fn movement_bounds(
+    out: &mut String,
+    f: &Fit,
+    moving: &[Movement],
+    flat: &impl Fn(&V3) -> P,
+) {
     if moving.is_empty() {
         return;
     }
@@ -309,7 +314,7 @@ fn plane_name(t: &DetectTrace) -> &'static str {
     }
 }
 
-fn arrow(out: &mut String, f: &Fit, from: P, to: P, colour: &str, label: &str) {
+pub(crate) fn arrow(out: &mut String, f: &Fit, from: P, to: P, colour: &str, label: &str) {
     let (a, b) = (f.at(from), f.at(to));
     let _ = writeln!(
         out,
@@ -342,15 +347,15 @@ fn arrow(out: &mut String, f: &Fit, from: P, to: P, colour: &str, label: &str) {
 }
 
 /// A panel's mapping from the view plane to the page (y up).
-struct Fit {
-    scale: f64,
+pub(crate) struct Fit {
+    pub(crate) scale: f64,
     lo: P,
     hi: P,
-    left: f64,
+    pub(crate) left: f64,
 }
 
 impl Fit {
-    fn new(pts: &[P], left: f64) -> Fit {
+    pub(crate) fn new(pts: &[P], left: f64) -> Fit {
         let finite = pts.iter().filter(|p| p[0].is_finite() && p[1].is_finite());
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for p in finite {
@@ -369,7 +374,7 @@ impl Fit {
         }
     }
 
-    fn at(&self, p: P) -> P {
+    pub(crate) fn at(&self, p: P) -> P {
         let cx = (self.lo[0] + self.hi[0]) / 2.0;
         let cy = (self.lo[1] + self.hi[1]) / 2.0;
         [
@@ -378,7 +383,7 @@ impl Fit {
         ]
     }
 
-    fn points(&self, poly: &[P]) -> String {
+    pub(crate) fn points(&self, poly: &[P]) -> String {
         poly.iter()
             .map(|p| {
                 let q = self.at(*p);
@@ -389,7 +394,7 @@ impl Fit {
     }
 }
 
-fn xml(s: &str) -> String {
+pub(crate) fn xml(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
