@@ -37,8 +37,10 @@ pub enum Event {
     FallsAsleep {
         body: BodyId,
     },
+    /// A sleeper wakes, and why.
     Wakes {
         body: BodyId,
+        cause: WakeCause,
     },
     /// The position or velocity phase used all its iterations.
     PositionLimit {
@@ -95,6 +97,21 @@ pub enum Event {
     },
     /// Continuous detection resolved a collision inside the step.
     Toi(ToiEvent),
+}
+
+/// Why a sleeper woke: every `wakes` event names one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WakeCause {
+    /// An awake body pressed on it (a contact the resolver acts on), or its
+    /// island was woken through that body.
+    Touched { by: BodyId },
+    /// The resolution changed its velocity through contact `contact` (the
+    /// index among the step's contacts), shared with the awake body `with`.
+    Impulse { contact: usize, with: BodyId },
+    /// Continuous detection resolved a collision with `by` inside the step.
+    Struck { by: BodyId },
+    /// An edit of the scene changed it.
+    Edit,
 }
 
 /// A collision continuous detection found inside a step and resolved at

@@ -15,7 +15,7 @@ use super::contact_events::{ContactEvents, PairSet};
 use super::integrate::{integrate_velocity_kept, Kept, Loads};
 use super::kept_energy::KeptEnergy;
 use super::previous_frame::PoseOf;
-pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
+pub use super::report::{BlowUp, Event, StepReport, ToiEvent, WakeCause};
 use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
@@ -25,7 +25,7 @@ use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
-use crate::physics::{c, to_f64, Real, Solver, World};
+use crate::physics::{c, to_f64, BodyId, Real, Solver, World};
 use events::Ending;
 
 /// A world stepping in time.
@@ -81,6 +81,8 @@ pub struct Simulation<T: Real> {
     /// last one: the previous frame (t − Δt) of this step's contacts.
     frame_start: Vec<PoseOf<T>>,
     previous: Vec<PoseOf<T>>,
+    /// Sleepers an edit woke since the last step (its first events).
+    edited: Vec<BodyId>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -114,6 +116,7 @@ impl<T: Real> Simulation<T> {
             substeps: Substeps::default(),
             frame_start: Vec::new(),
             previous: Vec::new(),
+            edited: Vec::new(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -136,6 +139,18 @@ impl<T: Real> Simulation<T> {
     /// Whether movable body `i` is awake (an immovable body never sleeps).
     pub fn is_awake(&self, i: usize) -> bool {
         self.sleep.get(i).is_none_or(|s| s.awake)
+    }
+
+    /// Wakes movable body `i` because an edit changed it: a sleeper's
+    /// `wakes` event (cause: an edit) opens the next step's events.
+    pub fn wake_for_edit(&mut self, i: usize) {
+        let epsilon = self.params.sleep.epsilon;
+        if let Some(s) = self.sleep.get_mut(i) {
+            if !s.awake && self.world.bodies[i].movable {
+                self.edited.push(BodyId(i));
+            }
+            *s = SleepState::awake(epsilon);
+        }
     }
 
     /// Advances one step without recording the resolver.
@@ -172,7 +187,12 @@ impl<T: Real> Simulation<T> {
 
     fn advance_scaled<O: Observer<T>>(&mut self, observer: &mut O) -> Result<StepReport, BlowUp> {
         let p = self.params;
-        let mut events = Vec::new();
+        let mut events: Vec<Event> = (self.edited.drain(..))
+            .map(|body| Event::Wakes {
+                body,
+                cause: WakeCause::Edit,
+            })
+            .collect();
         // What this step may give at most (the blow-up rule), and each
         // body's speed to name the ones that blew up.
         let (kinetic_start, surge_bound) = super::report::start_of_step_kept(
@@ -228,7 +248,12 @@ impl<T: Real> Simulation<T> {
         }
         resolver.write_back(&mut self.world);
         if p.sleep.enabled {
-            wake_sleep::wake_changed(&self.world, &mut self.sleep, p.sleep.epsilon, &mut events);
+            wake_sleep::wake_changed(
+                &mut self.world,
+                &mut self.sleep,
+                p.sleep.epsilon,
+                &mut events,
+            );
         }
         // 5. Positions of the awake bodies with the resolved velocities,
         // through the step's collisions with continuous detection on, and
@@ -237,6 +262,13 @@ impl<T: Real> Simulation<T> {
         // 6. Sleep.
         if p.sleep.enabled {
             wake_sleep::update_sleep(&mut self.world, &self.params, &mut self.sleep, &mut events);
+            // A pair with no awake body is at rest: its last impulses would
+            // only wake its sleepers next step (warm starting forgets them).
+            let (world, sleep) = (&self.world, &self.sleep);
+            self.warm.retain_pairs(|b1, b2| {
+                let awake = |b: BodyId| world.body(b).movable && sleep[b.0].awake;
+                awake(b1) || b2.is_some_and(awake)
+            });
         }
         self.step += 1;
         self.time += to_f64(p.dt);
@@ -311,10 +343,11 @@ impl<T: Real> Simulation<T> {
         );
         // A sleeper a collision inside the step changed is awake (its
         // velocity is no longer a sleeper's zero).
-        for &body in &spent.woken {
+        for &(body, by) in &spent.woken {
             if !self.sleep[body.0].awake {
                 self.sleep[body.0].wake(p.sleep.epsilon);
-                events.push(Event::Wakes { body });
+                let cause = WakeCause::Struck { by };
+                events.push(Event::Wakes { body, cause });
             }
         }
         spent
