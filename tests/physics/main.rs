@@ -37,6 +37,7 @@ mod scenes;
 mod sequential;
 mod sleep_holds;
 mod swept_reuse;
+mod table_budget;
 mod truth;
 mod tunnelling;
 mod world;
