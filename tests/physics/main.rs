@@ -10,6 +10,7 @@ mod common;
 #[path = "../exact_support/mod.rs"]
 mod exact_support;
 
+mod blow_up_rule;
 mod ccd_step;
 mod collide;
 mod collide_properties;

@@ -167,12 +167,15 @@ pub enum BlowUp {
         body: usize,
         what: &'static str,
     },
-    #[error("step {step}: the kinetic energy {energy:e} J is over 10⁶ times the scene's starting energy scale {scale:e} J; body {body} moves fastest")]
+    /// The kinetic energy is over [`ENERGY_FACTOR`] times what the run could
+    /// have given it ([`energy_blown_up`]).
+    #[error("step {step}: the kinetic energy {energy:e} J is over 10⁶ times the scene's starting energy scale {scale:e} J and the {released:e} J gravity has released since the start; body {body} moves fastest")]
     Energy {
         step: u64,
         body: usize,
         energy: f64,
         scale: f64,
+        released: f64,
     },
     /// One step's kinetic energy rose more than [`SURGE_FACTOR`] times what
     /// the step could give (see [`surge_bound`]).
@@ -186,6 +189,20 @@ pub enum BlowUp {
         /// fastest first, at most five.
         bodies: Vec<(usize, f64, f64)>,
     },
+}
+
+/// How many times what the run could have given it a run's kinetic energy
+/// may reach before the run stops ([`energy_blown_up`]).
+pub const ENERGY_FACTOR: f64 = 1e6;
+
+/// Whether a run's `kinetic` energy is a blow-up: over [`ENERGY_FACTOR`]
+/// times the scene's starting energy `scale` plus the energy gravity has
+/// `released` since the start (the potential energy the bodies lost, summed
+/// step by step: free fall turns it into kinetic energy without bound, and
+/// that is never a blow-up). The energy the resolution adds is the
+/// [`BlowUp::Surge`] rule's and the energy audits' to judge.
+pub fn energy_blown_up(kinetic: f64, scale: f64, released: f64) -> bool {
+    kinetic > ENERGY_FACTOR * (scale + released.max(0.0))
 }
 
 /// How many times the step's own bound a step's kinetic energy may reach

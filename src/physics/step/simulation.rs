@@ -55,6 +55,10 @@ pub struct Simulation<T: Real> {
     closing_after: Vec<(T, T)>,
     /// The energy scale blow-ups are measured against.
     energy_scale: f64,
+    /// The potential energy gravity has released since the start (J; the
+    /// potential lost, summed step by step): what the run could have given
+    /// the kinetic energy beyond its scale.
+    released: f64,
     /// Whether the position and velocity phases hit their limits last step
     /// (a limit is an event when it starts being hit).
     limits_hit: [bool; 2],
@@ -103,6 +107,7 @@ impl<T: Real> Simulation<T> {
             closing_before: Vec::new(),
             closing_after: Vec::new(),
             energy_scale: 0.0,
+            released: 0.0,
             limits_hit: [false; 2],
             audits: Audits::default(),
             speeds: Vec::new(),
@@ -204,6 +209,7 @@ impl<T: Real> Simulation<T> {
             Some(&self.kept),
         );
         let kinetic_start = to_f64(kinetic_start);
+        let potential_start = to_f64(energy::potential(&self.world, &p.world.gravity));
         self.audits
             .total
             .begin(&self.world, &p.world.gravity, &self.inertia);
@@ -294,12 +300,15 @@ impl<T: Real> Simulation<T> {
                 bodies: super::report::sped_up(&self.world, &self.speeds),
             });
         }
-        if kinetic > 1e6 * self.energy_scale {
+        let potential = to_f64(energy::potential(&self.world, &p.world.gravity));
+        self.released += potential_start - potential;
+        if super::report::energy_blown_up(kinetic, self.energy_scale, self.released) {
             return Err(BlowUp::Energy {
                 step: self.step,
                 body: super::report::fastest(&self.world),
                 energy: kinetic,
                 scale: self.energy_scale,
+                released: self.released.max(0.0),
             });
         }
         Ok(StepReport {
@@ -310,7 +319,7 @@ impl<T: Real> Simulation<T> {
             max_penetration,
             max_penetration_after: to_f64(position.max_after).max(0.0),
             kinetic_energy: kinetic,
-            potential_energy: to_f64(energy::potential(&self.world, &p.world.gravity)),
+            potential_energy: potential,
             position_iterations: position.iterations_used,
             velocity_iterations: velocity.iterations_used,
             ccd_tests: spent.tests,
