@@ -280,6 +280,13 @@ impl RunTrace {
                     f.num(gained)
                 ),
             ),
+            Event::RollbackLift { gained } => (
+                "energy",
+                format!(
+                    "rollback moved bodies back along their motion against gravity, adding {} J of potential energy (from now on, each step, until it stops)",
+                    f.num(gained)
+                ),
+            ),
             Event::Tunnelled {
                 body1,
                 body2,

@@ -86,6 +86,15 @@ pub enum Event {
     ProjectionLift {
         gained: f64,
     },
+    /// Rolling back time (`rollback = "rollback"`) moved bodies back along
+    /// their motion against gravity, adding `gained` J of potential energy
+    /// (measured: the potential energy after the roll-back less before it;
+    /// reported when it starts, not again while it goes on). The
+    /// total-energy audit starts from the rolled-back poses, so this lift
+    /// is named here and not counted again as a rise.
+    RollbackLift {
+        gained: f64,
+    },
     /// Two bodies met inside the step and were apart again at its end
     /// without a contact (the tunnelling auditor, [`super::ccd`]): at `time`
     /// (s, the run's clock), near `point`.

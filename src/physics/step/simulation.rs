@@ -85,6 +85,8 @@ pub struct Simulation<T: Real> {
     /// last one: the previous frame (t − Δt) of this step's contacts.
     frame_start: Vec<PoseOf<T>>,
     previous: Vec<PoseOf<T>>,
+    /// Whether the last step's roll-back lifted bodies (an event when it starts).
+    rolling_lift: bool,
     /// Sleepers an edit woke since the last step (its first events).
     edited: Vec<BodyId>,
 }
@@ -121,6 +123,7 @@ impl<T: Real> Simulation<T> {
             substeps: Substeps::default(),
             frame_start: Vec::new(),
             previous: Vec::new(),
+            rolling_lift: false,
             edited: Vec::new(),
         };
         sim.world.contacts.clear();
@@ -379,9 +382,22 @@ impl<T: Real> Simulation<T> {
             let eps = c::<T>(p.resolver.position_epsilon);
             let moving = |i: usize| sleep[i].awake || !enabled;
             let back = &mut self.substeps.back;
-            if rollback::roll_back(&mut self.world, moving, eps, p.dt, back) > 0 {
+            let g = p.world.gravity;
+            let before = energy::potential(&self.world, &g);
+            let lifted = if rollback::roll_back(&mut self.world, moving, eps, p.dt, back) > 0 {
                 self.generate_contacts();
+                // The audits start from the rolled-back poses: the lift is
+                // named on its own (below), not counted again as a rise.
+                self.audits.total.begin(&self.world, &g, &self.inertia);
+                let after = energy::potential(&self.world, &g);
+                super::audit::gain(to_f64(before), to_f64(after), self.energy_scale)
+            } else {
+                None
+            };
+            if let (Some(gained), false) = (lifted, self.rolling_lift) {
+                events.push(Event::RollbackLift { gained });
             }
+            self.rolling_lift = lifted.is_some();
         }
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
