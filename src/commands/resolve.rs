@@ -57,6 +57,29 @@ fn time(
     best.unwrap_or_default()
 }
 
+/// A note when the indexed phases' neighbour table would outgrow its budget
+/// and they scan the contacts instead (the same results).
+fn table_note(
+    lesson: &crate::lesson::Lesson,
+    params: &ResolverParams,
+    implementation: Implementation,
+    err: &mut dyn Write,
+) {
+    if implementation != Implementation::Indexed {
+        return;
+    }
+    let r = Resolver::prepare(&lesson.world::<f64>(), params);
+    if r.table_over_budget() {
+        let _ = writeln!(
+            err,
+            "note: {}: the neighbour table of these contacts would hold {} entries (one body's contacts, squared), over its budget of {}: the indexed phases scan the contacts instead, as --implementation scan does (the same contacts in the same order, the same results)",
+            lesson.id,
+            r.table_entries(),
+            r.table_budget
+        );
+    }
+}
+
 pub fn resolve(
     args: &ResolveArgs,
     out: &mut dyn Write,
@@ -86,6 +109,7 @@ pub fn resolve(
             if args.repeat > 1 { format!(", {} timed runs", args.repeat) } else { String::new() }
         ))
     });
+    table_note(&lesson, &params, implementation, err);
     crate::lesson::overflow::check_resolve(&lesson, &params, implementation)
         .map_err(|e| AppError::Runtime(format!("{}: {e}", lesson.id)))?;
     let fmt = Fmt::new(args.digits as usize);

@@ -110,11 +110,8 @@ impl SceneEdit {
             }
         }
         // The bodies it changed wake: the run must see the change.
-        let epsilon = sim.params.sleep.epsilon;
         for b in self.bodies() {
-            if let Some(s) = sim.sleep.get_mut(b) {
-                *s = crate::physics::step::SleepState::awake(epsilon);
-            }
+            sim.wake_for_edit(b);
         }
     }
 

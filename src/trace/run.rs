@@ -2,7 +2,7 @@
 //! numbers and every body's state) and the events in words, with body names.
 
 use crate::physics::step::audit::{EnergyCause, Switch, Switches};
-use crate::physics::step::{Event, Simulation, StepReport};
+use crate::physics::step::{Event, Simulation, StepReport, WakeCause};
 use crate::physics::{BodyId, Shape};
 use crate::trace::movement::{self, Movement};
 
@@ -164,6 +164,20 @@ impl RunTrace {
         }
     }
 
+    /// Why a sleeper woke, as the `wakes` line says it.
+    fn wake_cause(&self, cause: WakeCause) -> String {
+        match cause {
+            WakeCause::Touched { by } => format!("touched by {}", self.name(by)),
+            WakeCause::Impulse { contact, with } => {
+                format!("impulse from contact {contact} (with {})", self.name(with))
+            }
+            WakeCause::Struck { by } => {
+                format!("struck by {} inside the step", self.name(by))
+            }
+            WakeCause::Edit => "an edit changed it".to_string(),
+        }
+    }
+
     fn describe(&self, e: &Event) -> (&'static str, String) {
         let f = crate::format::Fmt::new(3);
         match *e {
@@ -197,7 +211,10 @@ impl RunTrace {
                 ("friction", format!("slides: {}", self.pair(body1, body2)))
             }
             Event::FallsAsleep { body } => ("sleep", format!("{} falls asleep", self.name(body))),
-            Event::Wakes { body } => ("sleep", format!("{} wakes", self.name(body))),
+            Event::Wakes { body, cause } => (
+                "sleep",
+                format!("{} wakes: {}", self.name(body), self.wake_cause(cause)),
+            ),
             Event::PositionLimit { left } => (
                 "limit",
                 format!(
@@ -260,6 +277,13 @@ impl RunTrace {
                 "energy",
                 format!(
                     "projection lifted bodies out of penetration, adding {} J of potential energy (from now on, each step, until it stops)",
+                    f.num(gained)
+                ),
+            ),
+            Event::RollbackLift { gained } => (
+                "energy",
+                format!(
+                    "rollback moved bodies back along their motion against gravity, adding {} J of potential energy (from now on, each step, until it stops)",
                     f.num(gained)
                 ),
             ),

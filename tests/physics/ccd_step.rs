@@ -6,7 +6,7 @@
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::detect::ToiMethod;
 use contact_lab::physics::step::ccd_mode::Ccd;
-use contact_lab::physics::step::{energy, Event, Simulation, StepReport};
+use contact_lab::physics::step::{energy, Event, Simulation, StepReport, WakeCause};
 
 fn scene(id: &str, ccd: Ccd) -> Simulation<f64> {
     let lesson = Lesson::load(id).expect("an embedded scene");
@@ -220,7 +220,7 @@ fn a_sleeping_box_struck_inside_the_step_wakes_and_moves() {
         assert!(
             r.events
                 .iter()
-                .any(|e| matches!(e, Event::Wakes { body } if body.0 == 1)),
+                .any(|e| matches!(e, Event::Wakes { body, cause: WakeCause::Struck { by } } if body.0 == 1 && by.0 == 0)),
             "{ccd:?}: {:?}",
             r.events
         );

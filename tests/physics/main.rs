@@ -10,6 +10,7 @@ mod common;
 #[path = "../exact_support/mod.rs"]
 mod exact_support;
 
+mod blow_up_rule;
 mod ccd_shapes;
 mod ccd_step;
 mod collide;
@@ -36,7 +37,9 @@ mod rollback;
 mod scale_invariance;
 mod scenes;
 mod sequential;
+mod sleep_holds;
 mod swept_reuse;
+mod table_budget;
 mod truth;
 mod tunnelling;
 mod world;

@@ -165,7 +165,7 @@ fn sleeping_boxes_wake_when_the_ball_arrives_and_the_floor_wakes_nobody() {
         for e in &r.events {
             match e {
                 Event::FallsAsleep { body: BodyId(0) } if asleep.is_none() => asleep = Some(r.time),
-                Event::Wakes { body } if woke.is_none() => {
+                Event::Wakes { body, .. } if woke.is_none() => {
                     // Only the ball (body 2) can wake a box.
                     let touching = sim.world.contacts.iter().any(|k| {
                         (k.body1 == *body && k.body2 == Some(BodyId(2)))

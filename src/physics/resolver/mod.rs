@@ -120,6 +120,10 @@ pub struct Resolver<T: Real> {
     before: [T; 2],
     /// Sequential impulses' accumulated impulses and moves.
     pub sequential: sequential::State<T>,
+    /// The most entries the indexed phases' neighbour table may hold
+    /// ([`neighbours::TABLE_BUDGET`]; lower it to try the fallback on a
+    /// small scene): beyond it they scan ([`Resolver::table_over_budget`]).
+    pub table_budget: usize,
 }
 
 impl<T: Real> Resolver<T> {
@@ -142,6 +146,7 @@ impl<T: Real> Resolver<T> {
             stamp: 0,
             before: [T::zero(); 2],
             sequential: sequential::State::default(),
+            table_budget: neighbours::TABLE_BUDGET,
         };
         r.prepare_full_again(world, params);
         r
@@ -251,6 +256,26 @@ impl<T: Real> Resolver<T> {
         self.before = [T::zero(); 2];
     }
 
+    /// Whether the deepest-first order's neighbour table for these contacts
+    /// would hold more entries than [`Resolver::table_budget`]: then the
+    /// indexed implementation scans the contacts instead (the same contacts
+    /// in the same order, so the same results; one body with tens of
+    /// thousands of contacts asks for billions of entries).
+    pub fn table_over_budget(&self) -> bool {
+        self.params.solver != Solver::SequentialImpulse
+            && self.neighbours.wanted() > self.table_budget.min(neighbours::TABLE_BUDGET)
+    }
+
+    /// The entries the neighbour table of these contacts would hold (0
+    /// under sequential impulses, which use none).
+    pub fn table_entries(&self) -> usize {
+        if self.params.solver == Solver::SequentialImpulse {
+            0
+        } else {
+            self.neighbours.wanted()
+        }
+    }
+
     /// Runs the position phase (the solver of the params; `implementation`
     /// chooses how deepest-first runs).
     pub fn position_phase<O: Observer<T>>(
@@ -263,6 +288,7 @@ impl<T: Real> Resolver<T> {
             return sequential::position_phase(self, obs);
         }
         match implementation {
+            Implementation::Indexed if self.table_over_budget() => scan::position_phase(self, obs),
             Implementation::Scan => scan::position_phase(self, obs),
             Implementation::Indexed => indexed::position_phase(self, obs),
         }
@@ -279,6 +305,7 @@ impl<T: Real> Resolver<T> {
             return sequential::velocity_phase(self, obs);
         }
         match implementation {
+            Implementation::Indexed if self.table_over_budget() => scan::velocity_phase(self, obs),
             Implementation::Scan => scan::velocity_phase(self, obs),
             Implementation::Indexed => indexed::velocity_phase(self, obs),
         }

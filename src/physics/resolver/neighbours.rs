@@ -22,6 +22,16 @@ pub(super) const SLOT_PATTERNS: [[u8; 2]; 6] = [
     [UNCHANGED, 1],
 ];
 
+/// The most entries a neighbour table may hold (8 bytes each, and 4 more
+/// for the grouped copy: about 800 MB): a table is the sum over the
+/// contacts of the contacts of their bodies, so it grows as the square of
+/// one body's contacts (70,000 on one body would ask for 4.9 × 10⁹, beyond
+/// the 32-bit numbering and the memory). Beyond it the indexed phases
+/// scan the contacts instead, as [`super::scan`] does (the same contacts
+/// in the same order: the same results), and the resolver says so
+/// ([`super::Resolver::table_over_budget`]).
+pub const TABLE_BUDGET: usize = 1 << 26;
+
 /// One neighbour of a contact: a contact sharing a body with it, and for
 /// each of the neighbour's slots the contact's slot with the same body
 /// ([`UNCHANGED`] for none).
@@ -52,6 +62,9 @@ pub struct Neighbours {
     /// Scratch for grouping (one pattern's members, those in no whole block).
     members: Vec<u32>,
     others: Vec<u32>,
+    /// The entries the table of the last reserve's contacts would hold at
+    /// most (its size, against [`TABLE_BUDGET`]).
+    wanted: usize,
     /// The resolver bodies and contact slots the table was built for.
     bodies: usize,
     slots: Vec<[Option<usize>; 2]>,
@@ -70,11 +83,12 @@ impl Neighbours {
                 .sum()
         };
         let most: usize = r.contacts.iter().map(width).sum();
+        self.wanted = most;
+        if most > TABLE_BUDGET {
+            // Over the budget: the phases scan instead (never built).
+            return;
+        }
         let widest = r.contacts.iter().map(width).max().unwrap_or(0);
-        assert!(
-            most < u32::MAX as usize,
-            "neighbours are numbered in 32 bits"
-        );
         let n = r.contacts.len();
         // Capacity for the largest table, kept as it is (it may be reused).
         self.offsets
@@ -88,6 +102,11 @@ impl Neighbours {
         // Grouping scratch: one contact's neighbours at most.
         self.members.reserve(widest);
         self.others.reserve(widest);
+    }
+
+    /// The entries the table of the last reserve's contacts would hold.
+    pub fn wanted(&self) -> usize {
+        self.wanted
     }
 
     /// Lists every contact's neighbours (marks them with `r`'s stamps, as

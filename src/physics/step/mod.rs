@@ -29,5 +29,5 @@ mod wake_sleep;
 /// The `ccd` and `rollback` knobs' choices (declared with the other params).
 pub use crate::physics::params::ccd_mode;
 pub use integrate::{integrate, Loads};
-pub use simulation::{BlowUp, Event, SimParams, Simulation, StepReport};
+pub use simulation::{BlowUp, Event, SimParams, Simulation, StepReport, WakeCause};
 pub use sleep::{SleepMode, SleepState};

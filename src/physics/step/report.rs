@@ -37,8 +37,10 @@ pub enum Event {
     FallsAsleep {
         body: BodyId,
     },
+    /// A sleeper wakes, and why.
     Wakes {
         body: BodyId,
+        cause: WakeCause,
     },
     /// The position or velocity phase used all its iterations.
     PositionLimit {
@@ -84,6 +86,15 @@ pub enum Event {
     ProjectionLift {
         gained: f64,
     },
+    /// Rolling back time (`rollback = "rollback"`) moved bodies back along
+    /// their motion against gravity, adding `gained` J of potential energy
+    /// (measured: the potential energy after the roll-back less before it;
+    /// reported when it starts, not again while it goes on). The
+    /// total-energy audit starts from the rolled-back poses, so this lift
+    /// is named here and not counted again as a rise.
+    RollbackLift {
+        gained: f64,
+    },
     /// Two bodies met inside the step and were apart again at its end
     /// without a contact (the tunnelling auditor, [`super::ccd`]): at `time`
     /// (s, the run's clock), near `point`.
@@ -95,6 +106,21 @@ pub enum Event {
     },
     /// Continuous detection resolved a collision inside the step.
     Toi(ToiEvent),
+}
+
+/// Why a sleeper woke: every `wakes` event names one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WakeCause {
+    /// An awake body pressed on it (a contact the resolver acts on), or its
+    /// island was woken through that body.
+    Touched { by: BodyId },
+    /// The resolution changed its velocity through contact `contact` (the
+    /// index among the step's contacts), shared with the awake body `with`.
+    Impulse { contact: usize, with: BodyId },
+    /// Continuous detection resolved a collision with `by` inside the step.
+    Struck { by: BodyId },
+    /// An edit of the scene changed it.
+    Edit,
 }
 
 /// A collision continuous detection found inside a step and resolved at
@@ -150,12 +176,15 @@ pub enum BlowUp {
         body: usize,
         what: &'static str,
     },
-    #[error("step {step}: the kinetic energy {energy:e} J is over 10⁶ times the scene's starting energy scale {scale:e} J; body {body} moves fastest")]
+    /// The kinetic energy is over [`ENERGY_FACTOR`] times what the run could
+    /// have given it ([`energy_blown_up`]).
+    #[error("step {step}: the kinetic energy {energy:e} J is over 10⁶ times the scene's starting energy scale {scale:e} J and the {released:e} J gravity has released since the start; body {body} moves fastest")]
     Energy {
         step: u64,
         body: usize,
         energy: f64,
         scale: f64,
+        released: f64,
     },
     /// One step's kinetic energy rose more than [`SURGE_FACTOR`] times what
     /// the step could give (see [`surge_bound`]).
@@ -169,6 +198,20 @@ pub enum BlowUp {
         /// fastest first, at most five.
         bodies: Vec<(usize, f64, f64)>,
     },
+}
+
+/// How many times what the run could have given it a run's kinetic energy
+/// may reach before the run stops ([`energy_blown_up`]).
+pub const ENERGY_FACTOR: f64 = 1e6;
+
+/// Whether a run's `kinetic` energy is a blow-up: over [`ENERGY_FACTOR`]
+/// times the scene's starting energy `scale` plus the energy gravity has
+/// `released` since the start (the potential energy the bodies lost, summed
+/// step by step: free fall turns it into kinetic energy without bound, and
+/// that is never a blow-up). The energy the resolution adds is the
+/// [`BlowUp::Surge`] rule's and the energy audits' to judge.
+pub fn energy_blown_up(kinetic: f64, scale: f64, released: f64) -> bool {
+    kinetic > ENERGY_FACTOR * (scale + released.max(0.0))
 }
 
 /// How many times the step's own bound a step's kinetic energy may reach

@@ -15,7 +15,7 @@ use super::contact_events::{ContactEvents, PairSet};
 use super::integrate::{integrate_velocity_kept, Kept, Loads};
 use super::kept_energy::KeptEnergy;
 use super::previous_frame::PoseOf;
-pub use super::report::{BlowUp, Event, StepReport, ToiEvent};
+pub use super::report::{BlowUp, Event, StepReport, ToiEvent, WakeCause};
 use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
 use super::swept::Earlier;
@@ -25,7 +25,7 @@ use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
 use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
-use crate::physics::{c, to_f64, Real, Solver, World};
+use crate::physics::{c, to_f64, BodyId, Real, Solver, World};
 use events::Ending;
 
 /// A world stepping in time.
@@ -55,6 +55,10 @@ pub struct Simulation<T: Real> {
     closing_after: Vec<(T, T)>,
     /// The energy scale blow-ups are measured against.
     energy_scale: f64,
+    /// The potential energy gravity has released since the start (J; the
+    /// potential lost, summed step by step): what the run could have given
+    /// the kinetic energy beyond its scale.
+    released: f64,
     /// Whether the position and velocity phases hit their limits last step
     /// (a limit is an event when it starts being hit).
     limits_hit: [bool; 2],
@@ -81,6 +85,10 @@ pub struct Simulation<T: Real> {
     /// last one: the previous frame (t − Δt) of this step's contacts.
     frame_start: Vec<PoseOf<T>>,
     previous: Vec<PoseOf<T>>,
+    /// Whether the last step's roll-back lifted bodies (an event when it starts).
+    rolling_lift: bool,
+    /// Sleepers an edit woke since the last step (its first events).
+    edited: Vec<BodyId>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -101,6 +109,7 @@ impl<T: Real> Simulation<T> {
             closing_before: Vec::new(),
             closing_after: Vec::new(),
             energy_scale: 0.0,
+            released: 0.0,
             limits_hit: [false; 2],
             audits: Audits::default(),
             speeds: Vec::new(),
@@ -114,6 +123,8 @@ impl<T: Real> Simulation<T> {
             substeps: Substeps::default(),
             frame_start: Vec::new(),
             previous: Vec::new(),
+            rolling_lift: false,
+            edited: Vec::new(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -136,6 +147,18 @@ impl<T: Real> Simulation<T> {
     /// Whether movable body `i` is awake (an immovable body never sleeps).
     pub fn is_awake(&self, i: usize) -> bool {
         self.sleep.get(i).is_none_or(|s| s.awake)
+    }
+
+    /// Wakes movable body `i` because an edit changed it: a sleeper's
+    /// `wakes` event (cause: an edit) opens the next step's events.
+    pub fn wake_for_edit(&mut self, i: usize) {
+        let epsilon = self.params.sleep.epsilon;
+        if let Some(s) = self.sleep.get_mut(i) {
+            if !s.awake && self.world.bodies[i].movable {
+                self.edited.push(BodyId(i));
+            }
+            *s = SleepState::awake(epsilon);
+        }
     }
 
     /// Advances one step without recording the resolver.
@@ -172,7 +195,12 @@ impl<T: Real> Simulation<T> {
 
     fn advance_scaled<O: Observer<T>>(&mut self, observer: &mut O) -> Result<StepReport, BlowUp> {
         let p = self.params;
-        let mut events = Vec::new();
+        let mut events: Vec<Event> = (self.edited.drain(..))
+            .map(|body| Event::Wakes {
+                body,
+                cause: WakeCause::Edit,
+            })
+            .collect();
         // What this step may give at most (the blow-up rule), and each
         // body's speed to name the ones that blew up.
         let (kinetic_start, surge_bound) = super::report::start_of_step_kept(
@@ -184,6 +212,7 @@ impl<T: Real> Simulation<T> {
             Some(&self.kept),
         );
         let kinetic_start = to_f64(kinetic_start);
+        let potential_start = to_f64(energy::potential(&self.world, &p.world.gravity));
         self.audits
             .total
             .begin(&self.world, &p.world.gravity, &self.inertia);
@@ -228,7 +257,12 @@ impl<T: Real> Simulation<T> {
         }
         resolver.write_back(&mut self.world);
         if p.sleep.enabled {
-            wake_sleep::wake_changed(&self.world, &mut self.sleep, p.sleep.epsilon, &mut events);
+            wake_sleep::wake_changed(
+                &mut self.world,
+                &mut self.sleep,
+                p.sleep.epsilon,
+                &mut events,
+            );
         }
         // 5. Positions of the awake bodies with the resolved velocities,
         // through the step's collisions with continuous detection on, and
@@ -237,6 +271,13 @@ impl<T: Real> Simulation<T> {
         // 6. Sleep.
         if p.sleep.enabled {
             wake_sleep::update_sleep(&mut self.world, &self.params, &mut self.sleep, &mut events);
+            // A pair with no awake body is at rest: its last impulses would
+            // only wake its sleepers next step (warm starting forgets them).
+            let (world, sleep) = (&self.world, &self.sleep);
+            self.warm.retain_pairs(|b1, b2| {
+                let awake = |b: BodyId| world.body(b).movable && sleep[b.0].awake;
+                awake(b1) || b2.is_some_and(awake)
+            });
         }
         self.step += 1;
         self.time += to_f64(p.dt);
@@ -262,12 +303,15 @@ impl<T: Real> Simulation<T> {
                 bodies: super::report::sped_up(&self.world, &self.speeds),
             });
         }
-        if kinetic > 1e6 * self.energy_scale {
+        let potential = to_f64(energy::potential(&self.world, &p.world.gravity));
+        self.released += potential_start - potential;
+        if super::report::energy_blown_up(kinetic, self.energy_scale, self.released) {
             return Err(BlowUp::Energy {
                 step: self.step,
                 body: super::report::fastest(&self.world),
                 energy: kinetic,
                 scale: self.energy_scale,
+                released: self.released.max(0.0),
             });
         }
         Ok(StepReport {
@@ -278,7 +322,7 @@ impl<T: Real> Simulation<T> {
             max_penetration,
             max_penetration_after: to_f64(position.max_after).max(0.0),
             kinetic_energy: kinetic,
-            potential_energy: to_f64(energy::potential(&self.world, &p.world.gravity)),
+            potential_energy: potential,
             position_iterations: position.iterations_used,
             velocity_iterations: velocity.iterations_used,
             ccd_tests: spent.tests,
@@ -311,10 +355,11 @@ impl<T: Real> Simulation<T> {
         );
         // A sleeper a collision inside the step changed is awake (its
         // velocity is no longer a sleeper's zero).
-        for &body in &spent.woken {
+        for &(body, by) in &spent.woken {
             if !self.sleep[body.0].awake {
                 self.sleep[body.0].wake(p.sleep.epsilon);
-                events.push(Event::Wakes { body });
+                let cause = WakeCause::Struck { by };
+                events.push(Event::Wakes { body, cause });
             }
         }
         spent
@@ -337,9 +382,22 @@ impl<T: Real> Simulation<T> {
             let eps = c::<T>(p.resolver.position_epsilon);
             let moving = |i: usize| sleep[i].awake || !enabled;
             let back = &mut self.substeps.back;
-            if rollback::roll_back(&mut self.world, moving, eps, p.dt, back) > 0 {
+            let g = p.world.gravity;
+            let before = energy::potential(&self.world, &g);
+            let lifted = if rollback::roll_back(&mut self.world, moving, eps, p.dt, back) > 0 {
                 self.generate_contacts();
+                // The audits start from the rolled-back poses: the lift is
+                // named on its own (below), not counted again as a rise.
+                self.audits.total.begin(&self.world, &g, &self.inertia);
+                let after = energy::potential(&self.world, &g);
+                super::audit::gain(to_f64(before), to_f64(after), self.energy_scale)
+            } else {
+                None
+            };
+            if let (Some(gained), false) = (lifted, self.rolling_lift) {
+                events.push(Event::RollbackLift { gained });
             }
+            self.rolling_lift = lifted.is_some();
         }
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.

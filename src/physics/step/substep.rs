@@ -42,7 +42,8 @@ pub struct Spent {
     /// Bodies that were not moving (asleep) until a collision resolved here
     /// changed their velocity: they move for the rest of the step, and the
     /// step wakes them (as the discrete step wakes a sleeper it acts on).
-    pub woken: Vec<BodyId>,
+    /// Each with the body that struck it.
+    pub woken: Vec<(BodyId, BodyId)>,
     /// The GJK calls of every time-of-collision search of the step, the
     /// pairs that met and those that did not (the work continuous
     /// detection adds; 0 with `ccd = "none"`, whose tunnelling audit is not
@@ -133,10 +134,10 @@ impl<T: Real> Substeps<T> {
                 tolerance: found.tolerance,
             });
             if let Some(hit) = hit {
-                for body in [hit.body1, hit.body2] {
+                for (body, by) in [(hit.body1, hit.body2), (hit.body2, hit.body1)] {
                     if world.bodies[body.0].movable && !self.moving[body.0] {
                         self.moving[body.0] = true;
-                        out.woken.push(body);
+                        out.woken.push((body, by));
                     }
                 }
                 out.hits.push(ToiEvent {

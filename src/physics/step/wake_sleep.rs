@@ -1,11 +1,14 @@
 //! Waking and sleeping over a step's contacts: a sleeper an awake body
-//! presses on wakes (with its island in island mode), and a body that
-//! touches something and has been slow long enough falls asleep
-//! (sleep.rs holds the lecture's per-body bookkeeping).
+//! presses on wakes (with its island in island mode), a sleeper the
+//! resolution moved through a contact with an awake body wakes, and a body
+//! that touches something and has been slow long enough falls asleep
+//! (sleep.rs holds the lecture's per-body bookkeeping). Every wake names
+//! its cause; a sleeper's contacts with immovable bodies and other
+//! sleepers never wake it.
 
 use nalgebra::Vector3;
 
-use super::report::Event;
+use super::report::{Event, WakeCause};
 use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
 use crate::physics::params::SimParams;
 use crate::physics::{c, BodyId, Contact, Real, World};
@@ -39,7 +42,8 @@ pub(super) fn wake_touched<T: Real>(
         c::<T>(params.resolver.position_epsilon),
         c::<T>(params.resolver.velocity_epsilon),
     );
-    let mut woken = Vec::new();
+    // Each sleeper to wake and the awake body that presses on it.
+    let mut woken: Vec<(BodyId, BodyId)> = Vec::new();
     for k in &world.contacts {
         let Some(b2) = k.body2.filter(|b| world.body(*b).movable) else {
             continue;
@@ -48,45 +52,83 @@ pub(super) fn wake_touched<T: Real>(
         let acts = k.input.penetration > pen_eps
             || -relative_point_velocity(world, k).dot(&k.input.normal) > vel_eps;
         if a != b && acts {
-            woken.push(if a { b2 } else { k.body1 });
+            woken.push(if a { (b2, k.body1) } else { (k.body1, b2) });
         }
     }
     if params.sleep.mode == SleepMode::Island && !woken.is_empty() {
         let roots = contact_islands(world);
-        let asleep: Vec<usize> = woken.iter().map(|b| roots[b.0]).collect();
+        let asleep: Vec<(usize, BodyId)> = woken.iter().map(|(b, by)| (roots[b.0], *by)).collect();
         for (i, r) in roots.iter().enumerate() {
-            if asleep.contains(r) && !sleep[i].awake {
-                woken.push(BodyId(i));
+            let through = asleep.iter().find(|(root, _)| root == r);
+            if let (Some((_, by)), false) = (through, sleep[i].awake) {
+                woken.push((BodyId(i), *by));
             }
         }
     }
-    for id in woken {
+    for (id, by) in woken {
         if !sleep[id.0].awake {
             sleep[id.0].wake(eps);
-            events.push(Event::Wakes { body: id });
+            let cause = WakeCause::Touched { by };
+            events.push(Event::Wakes { body: id, cause });
         }
     }
 }
 
 /// A sleeper the resolver changed (its velocity is no longer a sleeper's
-/// zero: a contact it shares with an awake body was taken after another
-/// contact made it close) is awake, as the reference engine wakes the
-/// bodies of every contact it takes; asleep, it would carry that velocity
-/// without moving, and its contacts would read it.
+/// zero) through a contact it shares with an awake body is awake, as the
+/// reference engine wakes the bodies of every contact it takes; asleep, it
+/// would carry that velocity without moving, and its contacts would read
+/// it. The event names that contact. A sleeper whose contacts are all with
+/// immovable bodies or other sleepers is at rest by definition: what the
+/// resolver gave it there (a warm-start impulse, a solver's push-out
+/// speed, the round-off of resting contacts) is taken back and it sleeps on.
 pub(super) fn wake_changed<T: Real>(
-    world: &World<T>,
+    world: &mut World<T>,
     sleep: &mut [SleepState<T>],
     epsilon: T,
     events: &mut Vec<Event>,
 ) {
-    for (i, (body, state)) in world.bodies.iter().zip(sleep.iter_mut()).enumerate() {
+    for i in 0..world.bodies.len() {
+        let body = &world.bodies[i];
         let moved = body.state.velocity != Vector3::zeros()
             || body.state.angular_velocity != Vector3::zeros();
-        if body.movable && !state.awake && moved {
-            state.wake(epsilon);
-            events.push(Event::Wakes { body: BodyId(i) });
+        if !body.movable || sleep[i].awake || !moved {
+            continue;
+        }
+        match shared_with_awake(world, sleep, BodyId(i)) {
+            Some((contact, with)) => {
+                sleep[i].wake(epsilon);
+                let cause = WakeCause::Impulse { contact, with };
+                events.push(Event::Wakes {
+                    body: BodyId(i),
+                    cause,
+                });
+            }
+            None => {
+                let s = &mut world.bodies[i].state;
+                s.velocity.fill(T::zero());
+                s.angular_velocity.fill(T::zero());
+            }
         }
     }
+}
+
+/// The first of this step's contacts between `body` and an awake movable
+/// body, and that body.
+fn shared_with_awake<T: Real>(
+    world: &World<T>,
+    sleep: &[SleepState<T>],
+    body: BodyId,
+) -> Option<(usize, BodyId)> {
+    let awake = |b: BodyId| world.body(b).movable && sleep[b.0].awake;
+    world.contacts.iter().enumerate().find_map(|(n, k)| {
+        let other = match k.body2 {
+            Some(b2) if k.body1 == body => b2,
+            Some(b2) if b2 == body => k.body1,
+            _ => return None,
+        };
+        awake(other).then_some((n, other))
+    })
 }
 
 /// Island roots of the movable bodies, joined by this step's contacts.

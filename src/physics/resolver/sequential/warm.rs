@@ -104,4 +104,12 @@ impl<T: Real> WarmCache<T> {
             }));
         self.entries.sort_by_key(|e| e.pair);
     }
+
+    /// Forgets the impulses of the pairs `keep` refuses (`keep(body1, body2)`).
+    pub fn retain_pairs(&mut self, keep: impl Fn(BodyId, Option<BodyId>) -> bool) {
+        self.entries.retain(|e| {
+            let body2 = (e.pair.1 != usize::MAX).then_some(BodyId(e.pair.1));
+            keep(BodyId(e.pair.0), body2)
+        });
+    }
 }
