@@ -7,7 +7,7 @@ use std::fmt::Write;
 
 use super::sheet::{four_decimals, short_answers};
 use super::{Exercise, Kind};
-use crate::exercise::answer::{grade, Score};
+use crate::exercise::answer::grade;
 use crate::format::Fmt;
 use crate::trace::glossary::{unit, with_unit};
 
@@ -137,12 +137,68 @@ pub fn read(text: &str) -> Result<(SheetId, Answers), String> {
     Ok((SheetId { seed, kind, count }, answers))
 }
 
+/// A sheet's score: every answer the sheet asks counts, a blank one as
+/// not right.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct SheetScore {
+    pub right: usize,
+    pub wrong: usize,
+    /// Asked and left blank (or with no table for its exercise).
+    pub blank: usize,
+}
+
+impl SheetScore {
+    /// Every answer the sheet asks.
+    pub fn asked(&self) -> usize {
+        self.right + self.wrong + self.blank
+    }
+
+    /// `1/59 (2 %): 1 right, 0 wrong, 58 blank`. The percentage is right /
+    /// asked, rounded, but never 100 % unless every answer is right.
+    pub fn summary(&self) -> String {
+        let asked = self.asked();
+        let percent = if asked == 0 {
+            0
+        } else if self.right < asked {
+            ((100.0 * self.right as f64 / asked as f64).round() as usize).min(99)
+        } else {
+            100
+        };
+        format!(
+            "{}/{asked} ({percent} %): {} right, {} wrong, {} blank",
+            self.right, self.right, self.wrong, self.blank
+        )
+    }
+}
+
+/// The labels of one kind of answer (wrong or blank), a line per
+/// exercise: `   exercise 1: v_s, Δv`.
+fn by_exercise(list: &[(usize, &str)]) -> String {
+    let mut parts: Vec<String> = vec![];
+    let mut k = 0;
+    while k < list.len() {
+        let n = list[k].0;
+        let labels: Vec<&str> = list[k..]
+            .iter()
+            .take_while(|(m, _)| *m == n)
+            .map(|(_, l)| *l)
+            .collect();
+        k += labels.len();
+        parts.push(format!("   exercise {}: {}\n", n + 1, labels.join(", ")));
+    }
+    parts.concat()
+}
+
 /// The graded file as text: per exercise each answer ✓ or ✗ with the right
-/// answer and the difference, unknown keys named, and the score.
-pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (String, Score) {
+/// answer and the difference, a blank one with the right answer, unknown
+/// keys named; then the score over every answer the sheet asks (right /
+/// asked), the wrong and the blank answers listed.
+pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (String, SheetScore) {
     let fmt = Fmt::default();
     let mut out = String::new();
-    let mut score = Score::default();
+    let mut score = SheetScore::default();
+    let mut wrong: Vec<(usize, &str)> = vec![];
+    let mut blank: Vec<(usize, &str)> = vec![];
     for (k, e) in exercises.iter().enumerate() {
         let _ = writeln!(out, "{} ({})", e.lesson.title, kind_name(e.kind));
         let given = answers.get(k).map(Vec::as_slice).unwrap_or(&[]);
@@ -153,11 +209,18 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
                 .iter()
                 .find(|(key, t)| key == a.key && !t.trim().is_empty())
             else {
+                score.blank += 1;
+                blank.push((k, a.label));
                 let _ = writeln!(out, "   · {}: no answer (right: {right})", a.label);
                 continue;
             };
             let g = grade(text, a.value);
-            score.record(&g);
+            if g.correct {
+                score.right += 1;
+            } else {
+                score.wrong += 1;
+                wrong.push((k, a.label));
+            }
             let mark = if g.correct { "✓" } else { "✗" };
             let _ = write!(out, "   {mark} {} = {}", a.label, echo(text.trim()));
             if let Some(problem) = &g.problem {
@@ -192,6 +255,24 @@ pub fn report(exercises: &[Exercise], answers: &[Vec<(String, String)>]) -> (Str
         out.push('\n');
     }
     let _ = writeln!(out, "Score: {}", score.summary());
+    if !wrong.is_empty() {
+        let _ = write!(out, "Wrong ({}):\n{}", wrong.len(), by_exercise(&wrong));
+    }
+    if score.blank == score.asked() && score.blank > 0 {
+        let _ = writeln!(
+            out,
+            "Blank: all {} answers the sheet asks (a blank answer counts as not right).",
+            score.blank
+        );
+    } else if !blank.is_empty() {
+        let _ = write!(
+            out,
+            "Blank: {} of the {} answers the sheet asks (a blank answer counts as not right):\n{}",
+            score.blank,
+            score.asked(),
+            by_exercise(&blank)
+        );
+    }
     (out, score)
 }
 
@@ -226,11 +307,14 @@ mod tests {
             .replace("v_s = \"\"", "v_s = \"+3\"");
         let (_, answers) = read(&filled).unwrap();
         let (text, score) = report(&exercises, &answers);
+        let asked = short_answers(exercises[0].kind, &exercises[0].trace).len();
+        assert!(asked > 2, "{asked}");
         assert_eq!(
             score,
-            Score {
-                correct: 1,
-                graded: 2
+            SheetScore {
+                right: 1,
+                wrong: 1,
+                blank: asked - 2,
             },
             "{text}"
         );
@@ -240,9 +324,45 @@ mod tests {
             "{text}"
         );
         assert!(text.contains("· g_world: no answer"), "{text}");
-        assert!(text.ends_with("Score: 1/2 (50 %)\n"), "{text}");
-        let (none, _) = report(&exercises, &empty);
-        assert!(none.contains("Score: 0/0"), "{none}");
+        assert!(
+            text.contains(&format!(
+                "Score: 1/{asked} ({} %): 1 right, 1 wrong, {} blank\n",
+                (100.0 / asked as f64).round(),
+                asked - 2
+            )),
+            "{text}"
+        );
+        assert!(text.contains("Wrong (1):\n   exercise 1: v_s\n"), "{text}");
+        assert!(
+            text.contains(&format!(
+                "Blank: {} of the {asked} answers the sheet asks",
+                asked - 2
+            )),
+            "{text}"
+        );
+        // A blank sheet scores 0 %, every answer blank.
+        let (none, score) = report(&exercises, &empty);
+        assert_eq!(score.blank, asked, "{none}");
+        assert!(none.contains(&format!("Score: 0/{asked} (0 %)")), "{none}");
+        assert!(
+            none.contains(&format!("Blank: all {asked} answers")),
+            "{none}"
+        );
+    }
+
+    #[test]
+    fn only_a_sheet_all_right_scores_100_percent() {
+        let s = |right, wrong, blank| {
+            SheetScore {
+                right,
+                wrong,
+                blank,
+            }
+            .summary()
+        };
+        assert_eq!(s(199, 0, 1), "199/200 (99 %): 199 right, 0 wrong, 1 blank");
+        assert_eq!(s(3, 0, 0), "3/3 (100 %): 3 right, 0 wrong, 0 blank");
+        assert_eq!(s(0, 0, 0), "0/0 (0 %): 0 right, 0 wrong, 0 blank");
     }
 
     #[test]

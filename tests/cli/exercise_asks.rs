@@ -106,7 +106,7 @@ fn asked_equals_template_equals_key_equals_graded_for_every_sheet() {
                 .iter()
                 .map(|e| short_answers(e.kind, &e.trace).len())
                 .sum();
-            assert_eq!((score.correct, score.graded), (asked, asked), "{text}");
+            assert_eq!((score.right, score.asked()), (asked, asked), "{text}");
         }
     }
 }

@@ -169,3 +169,194 @@ fn the_latex_sheet_draws_each_exercise_in_the_question_and_the_answer() {
         .assert()
         .code(2);
 }
+
+/// Whether `needle` occurs in `hay` as a whole number: not inside a longer
+/// one (`0.5` is not in `10.52`).
+fn has_number(hay: &str, needle: &str) -> bool {
+    let part = |c: Option<char>| c.is_some_and(|c| c.is_ascii_digit() || c == '.');
+    hay.match_indices(needle).any(|(i, _)| {
+        let before = hay[..i].chars().next_back();
+        let after = hay[i + needle.len()..].chars().next();
+        !part(before) && !(before == Some('-') && !needle.starts_with('-')) && !part(after)
+    })
+}
+
+/// Every number a set-up gives (the lesson's inputs and the arms r = q - p
+/// the figure draws): an answer made only of these is not given away.
+fn givens(l: &contact_lab::lesson::Lesson) -> Vec<f64> {
+    let mut out = vec![0.0];
+    let c = &l.contacts[0];
+    out.extend(c.point.iter().chain(c.normal.iter()));
+    out.extend([
+        c.penetration,
+        c.restitution,
+        c.static_friction,
+        c.dynamic_friction,
+    ]);
+    for b in &l.bodies {
+        out.push(b.mass);
+        out.extend(b.position.iter().chain(b.velocity.iter()));
+        out.extend(b.angular_velocity.iter());
+        out.extend(b.orientation.coords.iter());
+        out.extend((c.point - b.position).iter());
+        if let Some(m) = b.inertia {
+            out.extend(m.iter());
+        }
+    }
+    out
+}
+
+/// The LaTeX set-up pictures of a sheet: every line inside the picture's
+/// box (the floor's ticks once printed over the caption), and a caption
+/// that names only what a set-up draws (no velocity after, no impulse, no
+/// outline after the projection).
+fn set_up_picture(tex: &str, seed: u64) {
+    let mut size = [0.0f64; 2];
+    for line in tex.lines() {
+        let numbers = |s: &str| -> Vec<f64> {
+            s.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+                .filter_map(|t| t.parse().ok())
+                .collect()
+        };
+        if let Some(rest) = line.strip_prefix("\\begin{picture}") {
+            let n = numbers(rest);
+            size = [n[0], n[1]];
+        } else if let Some(rest) = line.strip_prefix("\\qbezier") {
+            for p in numbers(rest).chunks(2) {
+                assert!(
+                    (-0.5..=size[0] + 0.5).contains(&p[0])
+                        && (-0.5..=size[1] + 0.5).contains(&p[1]),
+                    "seed {seed}: {line} outside the picture {size:?}"
+                );
+            }
+        } else if line.starts_with("{\\footnotesize") {
+            for word in ["after", "impulse", "$v'$", "$g$"] {
+                assert!(
+                    !line.contains(word),
+                    "seed {seed}: {word} in the caption {line}"
+                );
+            }
+        }
+    }
+}
+
+/// A set-up shows only the set-up (issue 40): over 20 seeds of five mixed
+/// exercises, every short answer of the key (full values, as the JSON of
+/// the worked solution holds them), formatted as the figure's legend, the
+/// text and the answer key format numbers, is found in no set-up SVG and
+/// nowhere in the Markdown or LaTeX question sheet. An answer made only of
+/// numbers the set-up gives (ω′ = ω when the impulse has no arm) is skipped.
+#[test]
+fn no_answer_shows_in_a_set_up_figure_or_the_question_sheet() {
+    use contact_lab::exercise::sheet::short_answers;
+    use contact_lab::format::Fmt;
+    use contact_lab::trace::Value;
+    let formats = [Fmt::new(4), Fmt::default(), Fmt::new(10)];
+    let dir = common::scratch("exercise-set-up");
+    let mut searched = 0;
+    for seed in 1..=20u64 {
+        let s = seed.to_string();
+        let md = dir.join(format!("sheet-{seed}.md"));
+        cli()
+            .args(["exercise", "--seed", &s, "--count", "5", "-o"])
+            .arg(&md)
+            .assert()
+            .success();
+        let exercises = contact_lab::exercise::generate(seed, None, 5).unwrap();
+        // The LaTeX sheet as `--format latex` prints it (one process fewer).
+        let request = contact_lab::exercise::sheet::Request {
+            seed,
+            kind: "mixed",
+            count: 5,
+        };
+        let tex = contact_lab::exercise::sheet::latex(&exercises, &request, false, &Fmt::default());
+        set_up_picture(&tex, seed);
+        let md = std::fs::read_to_string(&md).unwrap();
+        // Each exercise's part of each sheet (another's inputs may be this
+        // one's answers), the picture's coordinates left out.
+        let md_parts: Vec<&str> = md.split("\n## ").skip(1).collect();
+        let tex: String = tex
+            .lines()
+            .filter(|l| !l.starts_with("\\qbezier") && !l.starts_with("\\begin{picture}"))
+            .map(|l| match l.strip_prefix("\\put(") {
+                Some(rest) => rest.split_once(')').map_or(rest, |(_, text)| text),
+                None => l,
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let tex_parts: Vec<&str> = tex.split("\\subsection*{").skip(1).collect();
+        assert_eq!((md_parts.len(), tex_parts.len()), (5, 5));
+        for (i, e) in exercises.iter().enumerate() {
+            let sheet = format!("{}\n{}", md_parts[i], tex_parts[i]);
+            let file = dir.join(format!("sheet-{seed}-{}.svg", i + 1));
+            let svg = std::fs::read_to_string(&file).unwrap();
+            // The projection's move (p to p′, the outline after) is an answer too.
+            assert!(
+                !svg.contains("stroke=\"#E69F00\""),
+                "seed {seed}, exercise {}: the set-up figure draws the projection's move",
+                i + 1
+            );
+            let doc = roxmltree::Document::parse(&svg).unwrap();
+            let figure: String = doc
+                .descendants()
+                .filter_map(|n| n.text())
+                .collect::<Vec<_>>()
+                .join("\n");
+            let hay = format!("{figure}\n{sheet}");
+            let given = givens(&e.lesson);
+            for a in short_answers(e.kind, &e.trace) {
+                // Words (static, dynamic) are the sheet's own vocabulary.
+                let rows: Vec<Vec<f64>> = match a.value {
+                    Value::Matrix(m) => m.iter().map(|r| r.to_vec()).collect(),
+                    Value::Text(_) | Value::List(_) => continue,
+                    v => vec![v.numbers()],
+                };
+                for row in rows {
+                    let (open, close) = match a.value {
+                        Value::Quaternion(_) => ("[", "]"),
+                        _ => ("(", ")"),
+                    };
+                    let mut needles = vec![];
+                    // As the figure and the text format numbers, and to four
+                    // decimals as the answer key does.
+                    let shows: [&dyn Fn(f64) -> String; 4] = [
+                        &|x| formats[0].num(x),
+                        &|x| formats[1].num(x),
+                        &|x| formats[2].num(x),
+                        &|x| formats[0].fixed(x, 4),
+                    ];
+                    // A vector's round-off components show as 0, as `Fmt::list` shows them.
+                    let row = contact_lab::format::snap_zeros(&row);
+                    for show in shows {
+                        let shown: Vec<String> = row.iter().map(|x| show(*x)).collect();
+                        if shown.iter().all(|x| given.iter().any(|g| show(*g) == *x)) {
+                            continue;
+                        }
+                        // A small whole number alone is a label's too
+                        // (body 2, question 3, sphere2).
+                        if let [x] = row.as_slice() {
+                            if x.fract() == 0.0 && x.abs() <= 10.0 {
+                                continue;
+                            }
+                        }
+                        needles.push(match shown.as_slice() {
+                            [x] => x.clone(),
+                            xs => format!("{open}{}{close}", xs.join(", ")),
+                        });
+                    }
+                    for needle in &needles {
+                        searched += 1;
+                        assert!(
+                            !has_number(&hay, needle),
+                            "seed {seed}, exercise {} ({:?}): the answer {} = {needle} is in its set-up figure or the question sheet",
+                            i + 1,
+                            e.kind,
+                            a.label
+                        );
+                    }
+                }
+            }
+        }
+    }
+    assert!(searched > 2000, "{searched}");
+}

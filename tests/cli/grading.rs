@@ -63,7 +63,75 @@ fn a_filled_answer_file_is_graded_with_the_right_answers_and_a_score() {
         report.contains("· g_world: no answer (right: (0.0000, 9.5229, 0.0000) N·s)"),
         "{report}"
     );
-    assert!(report.ends_with("Score: 2/3 (67 %)\n"), "{report}");
+    let asked = template.matches(" = \"\"").count();
+    assert!(
+        report.contains(&format!(
+            "\nScore: 2/{asked} ({} %): 2 right, 1 wrong, {} blank\n",
+            (200.0 / asked as f64).round(),
+            asked - 3
+        )),
+        "{report}"
+    );
+    assert!(
+        report.contains("Wrong (1):\n   exercise 1: Δq̇_t\n"),
+        "{report}"
+    );
+}
+
+/// A partly filled sheet scores right / asked, not right / answered (issue
+/// 40): the template of five exercises with only v_s filled in scores one
+/// of every answer the sheet asks, the blanks counted and listed.
+#[test]
+fn a_partly_filled_sheet_counts_every_question_asked() {
+    let (code, template, _) = run(&[
+        "exercise",
+        "--seed",
+        "1",
+        "--count",
+        "5",
+        "--answer-template",
+    ]);
+    assert_eq!(code, 0);
+    let asked = template.matches(" = \"\"").count();
+    assert!(asked > 50, "{asked}");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("answers.toml");
+    // The first exercise's v_s, right to four decimals.
+    let filled = template.replacen("v_s = \"\"", "v_s = \"-1.6800\"", 1);
+    std::fs::write(&path, &filled).unwrap();
+    let (code, report, err) = run(&["exercise", "--grade", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(report.contains("✓ v_s = -1.6800"), "{report}");
+    assert!(
+        report.contains(&format!(
+            "\nScore: 1/{asked} (2 %): 1 right, 0 wrong, {} blank\n",
+            asked - 1
+        )),
+        "{report}"
+    );
+    assert!(
+        report.contains(&format!(
+            "Blank: {} of the {asked} answers the sheet asks",
+            asked - 1
+        )),
+        "{report}"
+    );
+    assert!(report.contains("\n   exercise 5: "), "{report}");
+    assert!(!report.contains("Wrong ("), "{report}");
+    // The template as printed: nothing answered, 0 %.
+    std::fs::write(&path, &template).unwrap();
+    let (code, report, _) = run(&["exercise", "--grade", path.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(
+        report.contains(&format!(
+            "\nScore: 0/{asked} (0 %): 0 right, 0 wrong, {asked} blank\n"
+        )),
+        "{report}"
+    );
+    assert!(
+        report.contains(&format!("Blank: all {asked} answers")),
+        "{report}"
+    );
 }
 
 #[test]

@@ -111,6 +111,67 @@ impl Canvas {
     }
 }
 
+/// A point of a fixed surface's section: `u` along it from where it meets
+/// the view plane, `v` toward its solid side.
+fn along(s: &crate::render::figure::Section, u: f64, v: f64) -> P {
+    let (q, t, d) = (s.at, s.along, s.solid_side);
+    [q[0] + u * t[0] + v * d[0], q[1] + u * t[1] + v * d[1]]
+}
+
+/// The key under the picture, naming only what is drawn: a set-up figure
+/// has no velocity after, no impulse and no outline after the projection.
+fn caption(kinds: &[ArrowKind], outline_after: bool, surface: bool) -> String {
+    let has = |k: ArrowKind| kinds.contains(&k);
+    let mut dashed = vec![];
+    if has(ArrowKind::Arm) {
+        dashed.push("arms $r$");
+    }
+    if has(ArrowKind::Velocity) {
+        dashed.push("velocities before $v$");
+    }
+    if outline_after {
+        dashed.push("each body's outline after the projection");
+    }
+    let mut solid = vec![];
+    if has(ArrowKind::VelocityAfter) {
+        solid.push("velocities after $v'$");
+    }
+    if has(ArrowKind::Normal) {
+        solid.push("the normal $\\hat{d}$");
+    }
+    if has(ArrowKind::Impulse) {
+        solid.push("the impulse $g$ on body 1");
+    }
+    let list = |items: &[&str]| match items {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    };
+    let mut parts = vec![];
+    if !dashed.is_empty() {
+        parts.push(format!("Dashed: {}", list(&dashed)));
+    }
+    if !solid.is_empty() {
+        parts.push(format!("solid: {}", list(&solid)));
+    }
+    if surface {
+        parts.push("ticks: the solid side of a fixed surface".to_string());
+    }
+    let scales = match (
+        has(ArrowKind::Velocity) || has(ArrowKind::VelocityAfter),
+        has(ArrowKind::Impulse),
+    ) {
+        (true, true) => "velocities and the impulse to scales of their own; ",
+        (true, false) => "velocities to a scale of their own; ",
+        _ => "",
+    };
+    let mut text = parts.join("; ");
+    if let Some(first) = text.get(..1) {
+        text = first.to_uppercase() + &text[1..];
+    }
+    format!("{text} ({scales}the xy plane).")
+}
+
 /// The outline to draw: a polygon's corners, a circle's 24 rim points.
 fn ring(s: &Silhouette) -> Vec<P> {
     match s {
@@ -159,9 +220,17 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
         if (to[0] - from[0]).hypot(to[1] - from[1]) <= 1e-9 * reach {
             continue;
         }
-        arrows.push((from, to, dashed, a.kind != ArrowKind::Arm, a.label.clone()));
+        arrows.push((from, to, dashed, a.kind, a.label.clone()));
     }
     let mut points: Vec<P> = arrows.iter().flat_map(|a| [a.0, a.1]).collect();
+    // A fixed surface a scene length each way of where it meets the view
+    // plane, its ticks on the solid side: inside the picture, never over
+    // the caption under it.
+    for s in fig.surfaces.iter().filter_map(|s| s.section.as_ref()) {
+        for (u, v) in [(-1.12, 0.12), (1.0, 0.0), (-1.0, 0.0), (0.88, 0.12)] {
+            points.push(along(s, u * reach, v * reach));
+        }
+    }
     let mut shapes: Vec<(Vec<P>, bool)> = Vec::new();
     for b in &fig.bodies {
         points.push(flat(b.centre));
@@ -220,26 +289,26 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
     // plane, a scene length each way, with ticks on the solid side; none
     // when it faces the viewer.
     for s in fig.surfaces.iter().filter_map(|s| s.section.as_ref()) {
-        let (q, t, d) = (s.at, s.along, s.solid_side);
-        let at = |u: f64, v: f64| [q[0] + u * t[0] + v * d[0], q[1] + u * t[1] + v * d[1]];
+        let at = |u: f64, v: f64| along(s, u, v);
         c.line(at(-reach, 0.0), at(reach, 0.0));
         for i in -4..=4 {
             let u = 0.25 * reach * f64::from(i);
             c.line(at(u, 0.0), at(u - 0.12 * reach, 0.12 * reach));
         }
     }
-    for (from, to, dashed, head, label) in &arrows {
+    for (from, to, dashed, kind, label) in &arrows {
+        let head = *kind != ArrowKind::Arm;
         if *dashed {
             c.dashed(*from, *to);
         } else {
             c.line(*from, *to);
         }
-        if *head {
+        if head {
             c.head(*from, *to);
         }
         // As the SVG does: an arm's label at its middle, the impulse's at
         // its tail (its tip is q, which has a label of its own).
-        let at = if !*head {
+        let at = if !head {
             [(from[0] + to[0]) / 2.0, (from[1] + to[1]) / 2.0]
         } else if label.starts_with('g') {
             *from
@@ -252,7 +321,11 @@ pub fn picture(scene: &SceneView, stage: Option<StageId>) -> Option<String> {
         c.label(flat(p.at), &p.label);
     }
     c.out.push_str("\\end{picture}\n\n");
-    c.out.push_str("{\\footnotesize Dashed: arms $r$, velocities before $v$ and, when projection moves a body, its outline after; solid: velocities after $v'$, the normal $\\hat{d}$ and the impulse $g$ on body 1 (velocities and impulse to scales of their own; the xy plane).");
+    let kinds: Vec<ArrowKind> = arrows.iter().map(|a| a.3).collect();
+    let outline_after = shapes.iter().any(|(_, dashed)| *dashed);
+    let surface = fig.surfaces.iter().any(|s| s.section.is_some());
+    c.out.push_str("{\\footnotesize ");
+    c.out.push_str(&caption(&kinds, outline_after, surface));
     if let Some(note) = &fig.corrected {
         c.out.push(' ');
         c.out.push_str(&crate::render::tex::prose(note));

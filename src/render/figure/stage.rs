@@ -30,8 +30,13 @@ impl Figure {
         self.spins
             .retain(|s| if s.after { applied } else { before });
         if !projected {
+            // Before the projection the bodies have not moved: no outline
+            // after, no move from p to p′ (which the question asks for).
             for b in &mut self.bodies {
                 b.outline_after = None;
+                b.centre_after = b.centre;
+                b.pose_change = 0.0;
+                b.travel = 0.0;
             }
         }
         self.legend.retain(|item| match item {

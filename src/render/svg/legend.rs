@@ -133,7 +133,20 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                 after,
             } => {
                 let n = tag(body);
-                out.line(None, &format!("ω{n} {} → {}", v(before), v(after)));
+                // The phases the figure draws (a set-up figure shows no ω′),
+                // a spin at rest included (`(0, 0, 0) → …`).
+                use crate::render::figure::ArrowKind::{Velocity, VelocityAfter};
+                let drawn = |after: bool| {
+                    let kind = if after { VelocityAfter } else { Velocity };
+                    fig.spins.iter().any(|s| s.after == after)
+                        || fig.arrows.iter().any(|a| a.kind == kind)
+                };
+                let text = match (drawn(false), drawn(true)) {
+                    (true, true) => format!("ω{n} {} → {}", v(before), v(after)),
+                    (true, false) => format!("ω{n} {}", v(before)),
+                    _ => format!("ω{n}′ {}", v(after)),
+                };
+                out.line(None, &text);
             }
             LegendItem::Travel { body, distance } => {
                 let moves = format!("projection moves {} by {}", name(body), fmt.num(distance));

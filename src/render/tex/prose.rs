@@ -31,6 +31,8 @@ pub fn escape_text(s: &str) -> String {
             '|' => out.push_str("\\textbar{}"),
             '—' => out.push_str("---"),
             '–' => out.push_str("--"),
+            // `--exact` is a flag, not an en dash: LaTeX joins `--` and `---`.
+            '-' if chars.get(i + 1) == Some(&'-') => out.push_str("-{}"),
             '…' => out.push_str("\\ldots{}"),
             '‘' => out.push('`'),
             '’' => out.push('\''),
@@ -291,6 +293,11 @@ mod tests {
             (
                 "run `contact-lab check` \"now\"",
                 r"run \texttt{contact-lab check} ``now''",
+            ),
+            // A flag stays two hyphens, in text and in code.
+            (
+                "(solve --exact newton) or `solve --exact`",
+                r"(solve -{}-exact newton) or \texttt{solve -{}-exact}",
             ),
         ];
         for (text, latex) in cases {
