@@ -7,6 +7,7 @@
 mod common;
 
 mod check_causes;
+mod detect_rows;
 mod detect_snapshots;
 mod docs;
 mod every_number_substituted;
