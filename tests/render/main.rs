@@ -16,6 +16,7 @@ mod figure_corrected;
 mod figure_labels;
 mod figure_stages;
 mod figure_strokes;
+mod film_strip;
 mod glossary;
 mod huge_step;
 mod instructor_snapshots;
