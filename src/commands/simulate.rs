@@ -108,21 +108,31 @@ fn film(
     let every = args.every.max(1);
     let total = 1 + steps / every + u64::from(!steps.is_multiple_of(every));
     let picks = run::film_picks(total as usize);
-    let keep = |trace: &mut RunTrace, mut f: Frame| {
-        if picks.binary_search(&trace.frames.len()).is_err() {
+    // Also whole: the first frame after each of the first few events the
+    // strip marks (tunnelled, toi), which it swaps in.
+    let mut marked = 0;
+    let keep = |trace: &mut RunTrace, mut f: Frame, event: bool| {
+        if picks.binary_search(&trace.frames.len()).is_err() && !event {
             f.bodies = Vec::new();
             f.contact_points = Vec::new();
         }
         trace.frames.push(f);
     };
-    keep(&mut trace, RunTrace::initial(&sim));
+    keep(&mut trace, RunTrace::initial(&sim), false);
     let mut failure = None;
+    let mut pending = false;
     for n in 1..=steps {
         match sim.advance() {
             Ok(report) => {
+                let before = trace.events.len();
                 trace.add_events(&report);
+                if marked < run::MAX_MARKED && trace.events[before..].iter().any(run::marked) {
+                    marked += 1;
+                    pending = true;
+                }
                 if n % every == 0 || n == steps {
-                    keep(&mut trace, RunTrace::frame(&sim, &report));
+                    keep(&mut trace, RunTrace::frame(&sim, &report), pending);
+                    pending = false;
                 }
             }
             Err(blow_up) => {

@@ -7,6 +7,8 @@ use std::fmt::Write;
 
 use crate::format::Fmt;
 
+mod legend;
+
 /// A scale of one axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Scale {
@@ -60,6 +62,8 @@ pub struct Chart {
     pub front: Option<Vec<(f64, f64)>>,
     /// Labelled vertical lines at these x (events: where a phase changes).
     pub marks: Vec<(f64, String)>,
+    /// The y values are counts: whole-number ticks from 0 (or below).
+    pub integer_y: bool,
 }
 
 /// Colours told apart by colour-blind readers (Okabe–Ito).
@@ -107,6 +111,42 @@ pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
     }
 }
 
+/// A count's axis: from 0 (or the smallest value, if negative) to the
+/// largest value, at least 1 apart, whole numbers at both ends.
+fn integer_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (mut lo, mut hi) = (0.0f64, f64::NEG_INFINITY);
+    for v in values.filter(|v| v.is_finite()) {
+        lo = lo.min(v.floor());
+        hi = hi.max(v.ceil());
+    }
+    (lo, hi.max(lo + 1.0))
+}
+
+/// Whole-number ticks covering `[lo, hi]`: steps of 1, 2, 5, 10, … with at
+/// most 6 of them.
+pub fn integer_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    if !(lo.is_finite() && hi.is_finite()) || hi < lo {
+        return vec![];
+    }
+    let span = (hi - lo).max(1.0);
+    let mut step = 1.0;
+    while span / step > 6.0 {
+        let m = step / 10f64.powf(step.log10().floor());
+        step *= if m < 1.5 || m > 4.5 { 2.0 } else { 2.5 };
+    }
+    let first = (lo / step).floor() * step;
+    let mut out = vec![];
+    let mut t = first;
+    while t < hi + step && out.len() < 20 {
+        out.push(t);
+        if t >= hi {
+            break;
+        }
+        t += step;
+    }
+    out
+}
+
 fn transform(x: f64, scale: Scale) -> Option<f64> {
     match scale {
         Scale::Linear => x.is_finite().then_some(x),
@@ -142,10 +182,13 @@ impl Chart {
         let fmt = Fmt::new(3);
         let all = || self.series.iter().flat_map(|s| s.points.iter());
         let (xl, xh) = range(all().map(|p| p.0), self.x_scale);
-        let (yl, yh) = range(all().map(|p| p.1), self.y_scale);
+        let (yl0, yh0) = if self.integer_y && self.y_scale == Scale::Linear {
+            integer_range(all().map(|p| p.1))
+        } else {
+            range(all().map(|p| p.1), self.y_scale)
+        };
         let back = |v: f64, s: Scale| if s == Scale::Log { 10f64.powf(v) } else { v };
         let xt = ticks(back(xl, self.x_scale), back(xh, self.x_scale), self.x_scale);
-        let yt = ticks(back(yl, self.y_scale), back(yh, self.y_scale), self.y_scale);
         // Axis ranges widened to the outer ticks.
         let tick_range = |t: &[f64], s: Scale, lo: f64, hi: f64| {
             let tt: Vec<f64> = t.iter().filter_map(|v| transform(*v, s)).collect();
@@ -154,9 +197,53 @@ impl Chart {
             (lo, hi)
         };
         let (xl, xh) = tick_range(&xt, self.x_scale, xl, xh);
-        let (yl, yh) = tick_range(&yt, self.y_scale, yl, yh);
         let (left, top, right, bottom) = (x0 + 64.0, y0 + 28.0, x0 + w - 12.0, y0 + h - 40.0);
         let px = |v: f64| left + (v - xl) / (xh - xl).max(1e-300) * (right - left);
+        let y_axis = |yh: f64| {
+            let yt = if self.integer_y && self.y_scale == Scale::Linear {
+                integer_ticks(yl0, yh)
+            } else {
+                ticks(
+                    back(yl0, self.y_scale),
+                    back(yh, self.y_scale),
+                    self.y_scale,
+                )
+            };
+            let (yl, yh) = tick_range(&yt, self.y_scale, yl0, yh);
+            (yt, yl, yh)
+        };
+        // The legend: in a corner no curve crosses; where every corner is
+        // crossed, the y axis grows at the top until the top right is clear.
+        let names: Vec<&str> = self
+            .series
+            .iter()
+            .filter(|s| !s.name.is_empty())
+            .map(|s| s.name.as_str())
+            .collect();
+        let size = legend::size(&names);
+        let plot = (left, top, right - left, bottom - top);
+        let mut y_top = yh0;
+        let (mut yt, mut yl, mut yh) = y_axis(y_top);
+        let mut legend_box = None;
+        for _ in 0..6 {
+            let py = |v: f64| bottom - (v - yl) / (yh - yl).max(1e-300) * (bottom - top);
+            let curves = self.page_curves(&px, &py);
+            legend_box = if names.is_empty() {
+                None
+            } else {
+                legend::place(plot, size, &curves)
+            };
+            if names.is_empty() || legend_box.is_some() {
+                break;
+            }
+            // Room above the highest value for the legend's height.
+            let high = all()
+                .filter_map(|p| transform(p.1, self.y_scale))
+                .fold(yl, f64::max);
+            let r = ((size.1 + 12.0) / (bottom - top)).min(0.8);
+            y_top = y_top.max((high - r * yl) / (1.0 - r)) + (yh - yl) * 0.02;
+            (yt, yl, yh) = y_axis(y_top);
+        }
         let py = |v: f64| bottom - (v - yl) / (yh - yl).max(1e-300) * (bottom - top);
         let _ = writeln!(
             out,
@@ -301,33 +388,77 @@ impl Chart {
                 escape(label)
             );
         }
-        // Legend, top right inside the frame (series without a name have
-        // none: the caller draws its own).
-        for (i, s) in self
-            .series
-            .iter()
-            .filter(|s| !s.name.is_empty())
-            .enumerate()
-        {
-            let y = top + 14.0 + 15.0 * i as f64;
-            let x = right - 150.0;
-            let dash = if s.dashed {
-                r#" stroke-dasharray="6 4""#
-            } else {
-                ""
-            };
+        // Legend (series without a name have none: the caller draws its
+        // own), on a white box where no curve runs.
+        if let Some((bx, by, bw, bh)) = legend_box {
             let _ = writeln!(
                 out,
-                r##"<line x1="{x:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{}" stroke-width="2"{dash}/><text x="{:.1}" y="{y:.1}">{}</text>"##,
-                y - 4.0,
-                x + 18.0,
-                y - 4.0,
-                s.colour,
-                x + 24.0,
-                escape(&s.name)
+                r##"<rect class="legend-box" x="{bx:.1}" y="{by:.1}" width="{bw:.1}" height="{bh:.1}" fill="#FFFFFF" fill-opacity="0.9" stroke="#CCCCCC"/>"##
             );
+            for (i, s) in self
+                .series
+                .iter()
+                .filter(|s| !s.name.is_empty())
+                .enumerate()
+            {
+                let y = by + 15.0 + 15.0 * i as f64;
+                let x = bx + 6.0;
+                let dash = if s.dashed {
+                    r#" stroke-dasharray="6 4""#
+                } else {
+                    ""
+                };
+                let _ = writeln!(
+                    out,
+                    r##"<line x1="{x:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{}" stroke-width="2"{dash}/><text x="{:.1}" y="{y:.1}">{}</text>"##,
+                    y - 4.0,
+                    x + 18.0,
+                    y - 4.0,
+                    s.colour,
+                    x + 24.0,
+                    escape(&s.name)
+                );
+            }
         }
         out.push_str("</g>\n");
+    }
+
+    /// Every series as drawn on the page (a step line with its corners; a
+    /// scatter series one point per mark), and the front: what the legend
+    /// must stay clear of.
+    fn page_curves(
+        &self,
+        px: &dyn Fn(f64) -> f64,
+        py: &dyn Fn(f64) -> f64,
+    ) -> Vec<Vec<(f64, f64)>> {
+        let page = |p: &(f64, f64)| {
+            Some((
+                px(transform(p.0, self.x_scale)?),
+                py(transform(p.1, self.y_scale)?),
+            ))
+        };
+        let mut out = vec![];
+        for s in &self.series {
+            let pts: Vec<(f64, f64)> = s.points.iter().filter_map(page).collect();
+            match s.mark {
+                Mark::Line => out.push(pts),
+                Mark::Steps => {
+                    let mut line = vec![];
+                    for (i, p) in pts.iter().enumerate() {
+                        if i > 0 {
+                            line.push((p.0, pts[i - 1].1));
+                        }
+                        line.push(*p);
+                    }
+                    out.push(line);
+                }
+                _ => out.extend(pts.into_iter().map(|p| vec![p])),
+            }
+        }
+        if let Some(front) = &self.front {
+            out.push(front.iter().filter_map(page).collect());
+        }
+        out
     }
 }
 

@@ -11,6 +11,7 @@ pub mod knobs;
 pub mod previous_frame;
 pub mod resolve;
 pub mod run;
+mod run_film;
 pub mod run_stream;
 pub mod run_summary;
 pub mod study;

@@ -5,7 +5,7 @@ use serde_json::{json, Value};
 
 use crate::format::Fmt;
 use crate::physics::detect::ToiMethod;
-use crate::trace::toi::{end_name, end_text, DetectToi, PairToi, Trial};
+use crate::trace::toi::{end_name, end_text, method_words, DetectToi, PairToi, Test, Trial};
 
 fn vec3(f: &Fmt, v: &[f64; 3]) -> String {
     format!("({}, {}, {})", f.num(v[0]), f.num(v[1]), f.num(v[2]))
@@ -27,7 +27,7 @@ pub fn text(d: &DetectToi, f: &Fmt) -> String {
         d.step,
         f.num(d.time),
         f.num(d.time + d.dt),
-        d.method.json_name()
+        method_words(d.method)
     );
     if d.pairs.is_empty() {
         s.push_str("no pair's movement bounds meet over the step: nothing to search\n");
@@ -70,8 +70,8 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
             }
         ));
     }
-    for t in &p.record.trials {
-        s.push_str(&format!("  {}\n", trial_line(p, t, f)));
+    for t in &p.record.tests() {
+        s.push_str(&format!("  {}\n", test_line(p, t, f)));
     }
     s.push_str(&format!("  {}\n", outcome_line(p, f)));
     s.push_str(&format!(
@@ -92,7 +92,31 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
     ));
 }
 
-/// One test of the pair's search, as the text's line says it.
+/// One test of the pair's search (a scan piece or a trial), as the text's
+/// line says it.
+pub fn test_line(p: &PairToi, t: &Test, f: &Fmt) -> String {
+    match t {
+        Test::Scan { index, piece } => format!(
+            "scan piece {}: [{}, {}] {}",
+            index + 1,
+            f.num(piece.t0),
+            f.num(piece.t1),
+            if piece.hit {
+                "intersects at its end → bisect it"
+            } else {
+                "apart at its end"
+            }
+        ),
+        Test::Trial(x) => trial_line(p, x, f),
+    }
+}
+
+/// `n` tests, singular or plural.
+pub fn tests_count(n: usize) -> String {
+    format!("{n} {}", if n == 1 { "test" } else { "tests" })
+}
+
+/// One trial of the pair's search, as the text's line says it.
 pub fn trial_line(p: &PairToi, t: &Trial, f: &Fmt) -> String {
     match p.method {
         ToiMethod::Bisection => format!(
@@ -123,13 +147,13 @@ pub fn trial_line(p: &PairToi, t: &Trial, f: &Fmt) -> String {
 /// The search's outcome line: the time of collision and why it ended.
 pub fn outcome_line(p: &PairToi, f: &Fmt) -> String {
     format!(
-        "time of collision: {} ({}, {} tests)",
+        "time of collision: {} ({}, {})",
         p.time.map_or("none".into(), |t| format!(
             "t = {} s into the step",
             f.num(t)
         )),
         end_text(p.end),
-        p.tests
+        tests_count(p.tests)
     )
 }
 
@@ -176,4 +200,47 @@ fn pair_json(p: &PairToi) -> Value {
             "previous_frame": p.previous_frame,
         },
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::detect::ToiEnd;
+    use crate::trace::toi::{Piece, SearchRecord};
+
+    #[test]
+    fn one_scan_piece_is_one_test_in_the_text_and_the_outcome() {
+        let p = PairToi {
+            a: "a".into(),
+            b: "b".into(),
+            aabbs_overlap: true,
+            spheres_meet: true,
+            method: ToiMethod::Bisection,
+            time: None,
+            end: ToiEnd::NoHitInStep,
+            tests: 1,
+            record: SearchRecord {
+                scan: vec![Piece {
+                    t0: 0.0,
+                    t1: 0.01,
+                    hit: false,
+                }],
+                trials: vec![],
+            },
+            at_end: None,
+            previous_frame: None,
+        };
+        let f = Fmt::new(6);
+        assert_eq!(p.record.tests().len(), p.tests);
+        assert_eq!(
+            outcome_line(&p, &f),
+            "time of collision: none (no collision in the step, 1 test)"
+        );
+        let mut s = String::new();
+        pair_text(&mut s, &p, &f);
+        assert!(
+            s.contains("  scan piece 1: [0, 0.01] apart at its end\n"),
+            "{s}"
+        );
+    }
 }

@@ -35,23 +35,28 @@ pub struct Dropped {
     pub reason: String,
 }
 
-/// One GJK iteration.
+/// One GJK iteration: everything in it belongs to the same pass, which
+/// starts from v_k (docs/detect.md, "one rule for a row").
 #[derive(Debug, Clone, PartialEq)]
 pub struct GjkStep {
-    /// d_k.
+    /// v_k, the closest point the pass starts from.
+    pub v: V3,
+    /// d_k = -v_k.
     pub direction: V3,
     /// w_k = s_A(d_k) - s_B(-d_k), and the two shape points.
     pub support: V3,
     pub support_a: V3,
     pub support_b: V3,
-    /// The simplex with w_k added, and which of its points were kept.
-    pub simplex: Vec<V3>,
-    pub kept: Vec<usize>,
-    /// v_k.
-    pub closest: V3,
-    /// |v_{k-1}|² - v_{k-1}·w_k and its limit ε|v_{k-1}|².
+    /// |v_k|² - v_k·w_k and its limit ε|v_k|².
     pub bound: f64,
     pub bound_limit: f64,
+    /// The simplex with w_k added, and which of its points were kept
+    /// (the simplex unchanged when the pass stopped at the bound).
+    pub simplex: Vec<V3>,
+    pub kept: Vec<usize>,
+    /// v_{k+1}, the kept simplex's closest point (the next pass's v);
+    /// `None` when the pass stopped at the bound.
+    pub next: Option<V3>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -343,6 +348,7 @@ fn pair(cx: &Context, p: &PairRecord) -> PairTrace {
 
 fn gjk_step(it: &GjkIteration<f64>) -> GjkStep {
     GjkStep {
+        v: v(&it.v),
         direction: v(&it.direction),
         support: v(&it.support.w),
         support_a: v(&it.support.a),
@@ -351,7 +357,7 @@ fn gjk_step(it: &GjkIteration<f64>) -> GjkStep {
         kept: (0..it.simplex_len)
             .filter(|i| it.kept >> i & 1 == 1)
             .collect(),
-        closest: v(&it.closest),
+        next: it.next.as_ref().map(v),
         bound: it.bound,
         bound_limit: it.bound_limit,
     }

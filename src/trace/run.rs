@@ -44,6 +44,9 @@ pub struct EventLine {
     pub time: f64,
     pub kind: &'static str,
     pub text: String,
+    /// Where and when (s, the run's clock) the pair met, for the events a
+    /// picture marks (`tunnelled`, `toi`).
+    pub mark: Option<([f64; 3], f64)>,
 }
 
 /// A run: its frames and events.
@@ -144,11 +147,17 @@ impl RunTrace {
     pub fn add_events(&mut self, report: &StepReport) {
         for e in &report.events {
             let (kind, text) = self.describe(e);
+            let mark = match e {
+                Event::Tunnelled { point, time, .. } => Some((*point, *time)),
+                Event::Toi(h) => Some((h.point, h.time)),
+                _ => None,
+            };
             self.events.push(EventLine {
                 step: report.step,
                 time: report.time,
                 kind,
                 text,
+                mark,
             });
         }
     }

@@ -26,6 +26,45 @@ pub struct Piece {
     pub hit: bool,
 }
 
+/// One test of a search in the order it ran: bisection's scan pieces
+/// first (each tested at its end), then the trials.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Test {
+    /// Piece `index` (0-based) of the scan.
+    Scan {
+        index: usize,
+        piece: Piece,
+    },
+    Trial(Trial),
+}
+
+impl Test {
+    /// The time (seconds into the step) the test puts the pair at.
+    pub fn time(&self) -> f64 {
+        match self {
+            Test::Scan { piece, .. } => piece.t1,
+            Test::Trial(t) => t.trial,
+        }
+    }
+}
+
+impl SearchRecord {
+    /// Every test the search made, in order: the scan's pieces, then the
+    /// trials (as many as the search's `tests`).
+    pub fn tests(&self) -> Vec<Test> {
+        let scan = self
+            .scan
+            .iter()
+            .enumerate()
+            .map(|(index, piece)| Test::Scan {
+                index,
+                piece: *piece,
+            });
+        scan.chain(self.trials.iter().copied().map(Test::Trial))
+            .collect()
+    }
+}
+
 /// Keeps a search's scan and tests, as f64.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SearchRecord {
@@ -90,6 +129,14 @@ pub struct DetectToi {
     pub dt: f64,
     pub method: ToiMethod,
     pub pairs: Vec<PairToi>,
+}
+
+/// The search's name in words.
+pub fn method_words(m: ToiMethod) -> &'static str {
+    match m {
+        ToiMethod::Bisection => "bisection",
+        ToiMethod::Conservative => "conservative advancement",
+    }
 }
 
 /// Why a search ended, in words.

@@ -55,7 +55,7 @@ fn gjk_separated_gives_the_distance_and_the_closest_points() {
     assert_eq!(p["contacts"].as_array().unwrap().len(), 0);
     // Every iteration has the contract's keys.
     for it in g["iterations"].as_array().unwrap() {
-        for key in ["direction", "support", "simplex", "closest"] {
+        for key in ["v", "direction", "support", "bound", "simplex"] {
             assert!(!it[key].is_null(), "{key}: {it}");
         }
     }

@@ -61,7 +61,7 @@ fn a_dropped_point_is_drawn_hollow() {
     let text = run(&["detect", "gjk-separated", "--width", "0"]).stdout;
     let dropping = text
         .lines()
-        .skip_while(|l| !l.starts_with("k  d_k"))
+        .skip_while(|l| !l.starts_with("k  v_k"))
         .skip(1)
         .take_while(|l| !l.is_empty())
         .position(|l| l.contains('✗'))

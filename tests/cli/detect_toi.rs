@@ -259,3 +259,37 @@ velocity = [1, 0, 0]
         assert_eq!(toi["time"], 0.0, "{method}: {toi}");
     }
 }
+
+/// The text prints every test the outcome counts: the scan's pieces, then
+/// the trials (the TUI's `t` steps through the same list).
+#[test]
+fn the_text_prints_as_many_tests_as_the_outcome_counts() {
+    for method in ["bisection", "conservative"] {
+        let (code, out, err) = detect(&["bullet-wall", "--toi", "--method", method]);
+        assert_eq!(code, Some(0), "{err}");
+        let lines: Vec<&str> = out.lines().collect();
+        let pieces = lines
+            .iter()
+            .filter(|l| l.starts_with("  scan piece "))
+            .count();
+        let trials = lines
+            .iter()
+            .filter(|l| l.starts_with("  [t₀, t₁] = ") || l.starts_with("  t = "))
+            .count();
+        let outcome = lines
+            .iter()
+            .find(|l| l.starts_with("  time of collision: "))
+            .unwrap();
+        let n = pieces + trials;
+        assert!(
+            outcome.ends_with(&format!(", {n} tests)")),
+            "{method}: {n} lines, {outcome}"
+        );
+        assert_eq!(pieces > 0, method == "bisection", "{out}");
+    }
+    let (_, out, _) = detect(&["bullet-wall", "--toi", "--method", "conservative"]);
+    assert!(
+        out.contains("time of collision by conservative advancement"),
+        "{out}"
+    );
+}

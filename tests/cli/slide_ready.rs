@@ -211,9 +211,9 @@ fn a_wide_table_folds_into_blocks_that_keep_each_row_named() {
     // detect's GJK table: one block unfolded, the iteration k heading each
     // block at 60 columns.
     let whole = stdout(&["detect", "epa-edge-edge", "--width", "0"]);
-    assert!(whole.contains("\nk  d_k  "), "{whole}");
+    assert!(whole.contains("\nk  v_k  "), "{whole}");
     let narrow = stdout(&["detect", "epa-edge-edge", "--width", "60"]);
-    for head in ["k  d_k\n", "k  simplex (✗ dropped)\n", "k  faces\n"] {
+    for head in ["k  v_k\n", "k  simplex + w_k (✗ dropped)\n", "k  faces\n"] {
         assert!(narrow.contains(head), "no block {head:?} in:\n{narrow}");
     }
 }

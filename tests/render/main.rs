@@ -7,6 +7,7 @@
 mod common;
 
 mod check_causes;
+mod detect_rows;
 mod detect_snapshots;
 mod docs;
 mod every_number_substituted;
@@ -15,6 +16,7 @@ mod figure_corrected;
 mod figure_labels;
 mod figure_stages;
 mod figure_strokes;
+mod film_strip;
 mod glossary;
 mod huge_step;
 mod instructor_snapshots;

@@ -46,7 +46,7 @@ fn with_ccd_the_figure_draws_the_bullets_movement_bounds_and_without_it_none() {
     common::snapshot_settings().bind(|| {
         insta::assert_snapshot!("detect_figure_bullet_wall_ccd", with);
     });
-    assert!(with.contains("movement bounds over the next step"));
+    assert!(with.contains("the box each body sweeps over the next step (ccd)"));
     // The bullet's swept AABB runs from x = −0.51 to −0.49 + v Δt, v the
     // velocity the step integrates (100 m/s damped by 0.99^Δt): 1.6864 m,
     // against the wall's 2 m height (the figure's span, 0.85 × 480 px):
@@ -59,5 +59,5 @@ fn with_ccd_the_figure_draws_the_bullets_movement_bounds_and_without_it_none() {
     assert!((height - 0.02 * px_per_m).abs() < 0.2, "{height}");
     let without = figure("bounds-without-ccd", &[]);
     assert!(!without.contains("stroke-dasharray"), "{without}");
-    assert!(!without.contains("movement bounds"));
+    assert!(!without.contains("sweeps over the next step"));
 }

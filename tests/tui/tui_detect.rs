@@ -56,23 +56,34 @@ fn esc_goes_back_to_the_run_at_the_same_step() {
 }
 
 #[test]
-fn t_shows_the_bullets_time_of_collision_trial_by_trial() {
+fn t_shows_the_bullets_time_of_collision_test_by_test_scan_first() {
     let mut a = app("bullet-wall", false);
     key(&mut a, KeyCode::Char('d'));
     assert_eq!(a.screen, Screen::Detect);
     key(&mut a, KeyCode::Char('t'));
     let rows = joined(&screen(&a, 200, 40));
-    assert!(rows.contains("trial 1 of 15"), "{rows}");
+    // The scan's 25 pieces are the first tests, then bisection's 15: the
+    // 40 the outcome counts, as `detect --toi` prints them.
+    assert!(rows.contains("test 1 of 40"), "{rows}");
     assert!(
-        rows.contains("time of collision: t = 0.0048008 s into the step"),
+        rows.contains("Test 1 of 40: scan piece 1: [0, 0.000198413] apart at its end"),
         "{rows}"
     );
-    assert!(rows.contains("midpoint 0.00486111 intersects"), "{rows}");
-    assert!(rows.contains("←→ trial  t Esc iterations"), "{rows}");
+    assert!(
+        rows.contains("time of collision: t = 0.0048008 s into the step (converged, 40 tests)"),
+        "{rows}"
+    );
+    assert!(rows.contains("←→ test  t Esc iterations"), "{rows}");
+    keys(&mut a, KeyCode::Right, 24);
+    let rows = joined(&screen(&a, 200, 40));
+    assert!(
+        rows.contains("Test 25 of 40: scan piece 25: [0.0047619, 0.00496032] intersects at its end → bisect it"),
+        "{rows}"
+    );
     key(&mut a, KeyCode::Right);
     let rows = joined(&screen(&a, 200, 40));
-    assert!(rows.contains("trial 2 of 15"), "{rows}");
-    assert!(rows.contains("midpoint 0.00481151 intersects"), "{rows}");
+    assert!(rows.contains("test 26 of 40"), "{rows}");
+    assert!(rows.contains("midpoint 0.00486111 intersects"), "{rows}");
     // Esc leaves the time of collision for the pair's iterations, then the run.
     key(&mut a, KeyCode::Esc);
     assert!(a.detect.as_ref().is_some_and(|d| d.toi.is_none()));
@@ -131,15 +142,16 @@ fn the_time_of_collision_picture_moves_the_bullet_to_the_trial_time() {
     key(&mut a, KeyCode::Char('d'));
     key(&mut a, KeyCode::Char('t'));
     let first = joined(&screen(&a, 100, 30));
+    // The first test: the scan's first piece, tested at its end.
     assert!(
-        first.contains("bullet – wall · t = 0.00486111 s ·"),
+        first.contains("bullet – wall · t = 0.000198413 s ·"),
         "{first}"
     );
     key(&mut a, KeyCode::End);
     let last = joined(&screen(&a, 100, 30));
-    // After the trials: the pair at the time of collision.
+    // After the tests: the pair at the time of collision.
     assert!(last.contains("bullet – wall · t = 0.0048008 s ·"), "{last}");
-    assert!(last.contains("All 15 trials done."), "{last}");
+    assert!(last.contains("All 40 tests done."), "{last}");
 }
 
 #[test]
@@ -165,9 +177,9 @@ fn m_switches_the_search_to_conservative_advancement() {
     key(&mut a, KeyCode::Char('t'));
     key(&mut a, KeyCode::Char('m'));
     let rows = joined(&screen(&a, 200, 40));
-    assert!(rows.contains("by conservative"), "{rows}");
-    // Advancement's first trial: the distance at the step's start.
-    assert!(rows.contains("Trial 1 of"), "{rows}");
+    assert!(rows.contains("by conservative advancement."), "{rows}");
+    // Advancement's first test: the distance at the step's start.
+    assert!(rows.contains("Test 1 of 2:"), "{rows}");
     assert!(rows.contains("t = 0: distance"), "{rows}");
     assert!(rows.contains("time of collision: t = 0.0048"), "{rows}");
     key(&mut a, KeyCode::Char('m'));

@@ -1,11 +1,13 @@
 //! GJK (Gilbert–Johnson–Keerthi, in van den Bergen's distance form): the
 //! point v of the Minkowski difference A − B closest to the origin.
 //!
-//! Iteration k: search direction d_k = −v_{k−1}; support point
-//! w_k = s_A(d_k) − s_B(−d_k); stop when |v|² − v·w_k ≤ ε_rel |v|² (the
-//! lower bound v·w/|v| and the upper bound |v| on the distance agree);
-//! otherwise add w_k to the simplex and keep the sub-simplex closest to the
-//! origin (signed volumes, [`super::simplex`]), whose closest point is v_k.
+//! Iteration k starts from v_k, the simplex's point closest to the origin
+//! (v_1: the first support point): search direction d_k = −v_k; support
+//! point w_k = s_A(d_k) − s_B(−d_k); stop when |v_k|² − v_k·w_k ≤
+//! ε_rel |v_k|² (the lower bound v·w/|v| and the upper bound |v| on the
+//! distance agree); otherwise add w_k to the simplex and keep the
+//! sub-simplex closest to the origin (signed volumes, [`super::simplex`]),
+//! whose closest point is v_{k+1}, where the next iteration starts.
 //! The origin inside a tetrahedron, or |v| within ε_touch of the simplex's
 //! size, means the shapes intersect. An iteration cap and a no-progress test
 //! (v must shrink, w must be new) end every run.
@@ -80,15 +82,18 @@ impl GjkEnd {
     ];
 }
 
-/// One iteration, as the lecture draws it.
+/// One iteration, as the lecture draws it: everything it holds belongs to
+/// the same pass of the loop, which starts from `v` (v_k).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GjkIteration<T: Real> {
     pub index: usize,
-    /// d_k = −v_{k−1}.
+    /// v_k: the closest point of the simplex the iteration starts from.
+    pub v: Vector3<T>,
+    /// d_k = −v_k.
     pub direction: Vector3<T>,
     /// w_k with the support points of A (along d_k) and B (along −d_k), world.
     pub support: Vertex<T>,
-    /// |v_{k−1}|² − v_{k−1}·w_k, and the limit ε_rel |v_{k−1}|² it is held to.
+    /// |v_k|² − v_k·w_k, and the limit ε_rel |v_k|² it is held to.
     pub bound: T,
     pub bound_limit: T,
     /// The simplex w_i with w_k added (1–4 points; unchanged when the run ends here).
@@ -96,8 +101,10 @@ pub struct GjkIteration<T: Real> {
     pub simplex_len: usize,
     /// Bit i set: point i of `simplex` is kept in the sub-simplex.
     pub kept: u8,
-    /// v_k, the closest point of the kept sub-simplex.
-    pub closest: Vector3<T>,
+    /// v_{k+1}: the closest point of the kept sub-simplex, where the next
+    /// iteration starts; `None` when the run stopped at the bound test
+    /// (w_k was not added).
+    pub next: Option<Vector3<T>>,
 }
 
 /// Observer of a run; every method does nothing by default.
@@ -278,7 +285,8 @@ where
             simplex: [Vector3::zeros(); 4],
             simplex_len: simplex.len,
             kept: (1u8 << simplex.len) - 1,
-            closest: v,
+            v,
+            next: None,
         };
         for (slot, p) in record.simplex.iter_mut().zip(simplex.points()) {
             *slot = p.w;
@@ -312,7 +320,7 @@ where
         } else {
             simplex.combine(|p| p.w)
         };
-        record.closest = next;
+        record.next = Some(next);
         observer.iteration(&record);
         if simplex.len == 4 {
             v = next;

@@ -160,14 +160,17 @@ fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
     }
 }
 
-/// The GJK table's head.
-pub const GJK_HEAD: [&str; 6] = [
+/// The GJK table's head. A row is one pass of the loop (docs/detect.md,
+/// "one rule for a row"): it starts from v_k, and its d_k, w_k and bound
+/// are that v_k's; the simplex with w_k added gives v_{k+1}, the next row's v_k.
+pub const GJK_HEAD: [&str; 7] = [
     "k",
-    "d_k",
-    "w_k = s_A(d_k) - s_B(-d_k)",
-    "simplex (✗ dropped)",
     "v_k",
-    "|v|² - v·w",
+    "d_k = -v_k",
+    "w_k = s_A(d_k) - s_B(-d_k)",
+    "|v_k|² - v_k·w_k",
+    "simplex + w_k (✗ dropped)",
+    "v_k+1",
 ];
 
 /// Row `k` (0-based) of the GJK table.
@@ -185,6 +188,7 @@ pub fn gjk_row(g: &GjkTrace, k: usize, f: &Fmt, scale: f64) -> Vec<String> {
         .collect();
     vec![
         (k + 1).to_string(),
+        v(f, &it.v),
         v(f, &it.direction),
         format!(
             "{} = {} - {}",
@@ -192,9 +196,15 @@ pub fn gjk_row(g: &GjkTrace, k: usize, f: &Fmt, scale: f64) -> Vec<String> {
             v(f, &it.support_a),
             v(f, &it.support_b)
         ),
-        simplex.join(" "),
-        v(f, &it.closest),
         format!("{} (ε {})", f.num(it.bound), f.num(it.bound_limit)),
+        if it.next.is_some() {
+            simplex.join(" ")
+        } else {
+            format!("{} (w_k not added)", simplex.join(" "))
+        },
+        it.next
+            .as_ref()
+            .map_or("– (stopped)".to_string(), |x| v(f, x)),
     ]
 }
 

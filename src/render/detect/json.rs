@@ -58,15 +58,16 @@ fn gjk(g: &GjkTrace) -> Value {
         "distance": g.distance,
         "closest": g.closest,
         "iterations": g.iterations.iter().map(|it| j!({
+            "v": it.v,
             "direction": it.direction,
             "support": it.support,
             "support_a": it.support_a,
             "support_b": it.support_b,
-            "simplex": it.simplex,
-            "kept": it.kept,
-            "closest": it.closest,
             "bound": it.bound,
             "bound_limit": it.bound_limit,
+            "simplex": it.simplex,
+            "kept": it.kept,
+            "next": it.next,
         })).collect::<Vec<_>>(),
     })
 }

@@ -22,9 +22,12 @@ pub struct Minkowski {
     pub dropped: Vec<usize>,
     /// w_k, the support point of the stop.
     pub support: Option<P>,
-    /// v_k: GJK's closest point of the kept simplex; EPA's δ_k n_k, the
-    /// closest face's point nearest the origin.
+    /// v_k: the point GJK's iteration starts from (d_k = −v_k); EPA's
+    /// δ_k n_k, the closest face's point nearest the origin.
     pub closest: Option<P>,
+    /// GJK's v_{k+1}: the closest point of the simplex with w_k added and
+    /// reduced (`None` at EPA's stops and where GJK stopped at the bound).
+    pub next: Option<P>,
     /// The tip of d_k drawn from the origin (a third of the picture's size;
     /// `None` when d_k is seen end-on).
     pub direction: Option<P>,
@@ -48,6 +51,7 @@ impl Minkowski {
         let mut out: Vec<P> = self.hull.iter().chain(&self.simplex).copied().collect();
         out.extend(self.support);
         out.extend(self.closest);
+        out.extend(self.next);
         out.extend(self.direction);
         out.extend(self.arrow.map(|(p, _)| p));
         out.push([0.0, 0.0]);
@@ -72,6 +76,7 @@ pub fn minkowski(plane: Plane, p: &PairTrace, stop: usize) -> Minkowski {
         dropped: vec![],
         support: None,
         closest: None,
+        next: None,
         direction: None,
         arrow: None,
     };
@@ -85,7 +90,8 @@ pub fn minkowski(plane: Plane, p: &PairTrace, stop: usize) -> Minkowski {
                 .filter(|i| !it.kept.contains(i))
                 .collect();
             m.support = Some(flat(&it.support));
-            m.closest = Some(flat(&it.closest));
+            m.closest = Some(flat(&it.v));
+            m.next = it.next.as_ref().map(flat);
             m.direction = tip(&m, flat(&it.direction), norm(&it.direction));
         }
         Some(Stop::Epa(k)) => {
@@ -122,7 +128,7 @@ pub fn minkowski(plane: Plane, p: &PairTrace, stop: usize) -> Minkowski {
                 p.gjk
                     .as_ref()
                     .and_then(|g| g.iterations.last())
-                    .map(|it| (flat(&it.closest), "v"))
+                    .map(|it| (flat(&it.next.unwrap_or(it.v)), "v"))
             };
         }
     }

@@ -30,12 +30,12 @@ pub fn stop_lines(p: &PairTrace, stop: Stop, f: &Fmt) -> (String, Vec<String>) {
     let (title, head, row) = match (stop, &p.gjk, &p.epa) {
         (Stop::Gjk(k), Some(g), _) => (
             format!("GJK iteration {} of {}", k + 1, g.iterations.len()),
-            GJK_HEAD,
+            &GJK_HEAD[..],
             gjk_row(g, k, f, scale),
         ),
         (Stop::Epa(k), _, Some(e)) => (
             format!("EPA iteration {} of {}", k + 1, e.iterations.len()),
-            EPA_HEAD,
+            &EPA_HEAD[..],
             epa_row(e, k, f, scale),
         ),
         _ => return (String::new(), vec![]),

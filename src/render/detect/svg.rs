@@ -7,6 +7,7 @@
 
 use std::fmt::Write;
 
+use super::legend::{diamond, legend, Swatch};
 use super::minkowski::{minkowski, Minkowski};
 use super::steps::Stop;
 use crate::render::figure::{outline, Silhouette, P};
@@ -14,7 +15,7 @@ use crate::trace::detect::{DetectTrace, PairTrace, V3};
 use crate::trace::movement::Movement;
 
 pub(crate) const W: f64 = 1000.0;
-pub(crate) const H: f64 = 520.0;
+pub(crate) const H: f64 = 600.0;
 pub(crate) const PANEL: f64 = 480.0;
 
 /// The figure of pair `k` at the result (`None` when there is no such pair).
@@ -62,6 +63,7 @@ pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
     pts.extend(moving.iter().flat_map(|m| movement_extent(m, &flat)));
     let left = Fit::new(&pts, 20.0);
     movement_bounds(&mut out, &left, &moving, &flat);
+    let mut left_legend = vec![];
     let _ = writeln!(
         out,
         r##"  <text x="20" y="30" font-size="18">{} and {} ({} plane)</text>"##,
@@ -115,9 +117,24 @@ pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
             q,
             [q[0] + n[0] * size, q[1] + n[1] * size],
             "#2ca02c",
-            "d",
+            "n",
         );
+        left_legend.push((
+            Swatch::Arrow("#2ca02c"),
+            "n: the contact normal at the contact point (from B toward A)".to_string(),
+        ));
     }
+    if !moving.is_empty() {
+        left_legend.push((
+            Swatch::Line("#7f7f7f", "8 4"),
+            "the box each body sweeps over the next step (ccd)".to_string(),
+        ));
+        left_legend.push((
+            Swatch::Line("#7f7f7f", "2 4"),
+            "the sphere each body sweeps over the next step (ccd)".to_string(),
+        ));
+    }
+    legend(&mut out, 20.0, &left_legend);
     // Right: the Minkowski difference, the origin, the simplex, the normal
     // (the result's picture past the iterations), in view with the marks
     // of the stop.
@@ -176,9 +193,15 @@ pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
     if let Some((to, label)) = m.arrow {
         arrow(&mut out, &right, [0.0, 0.0], to, "#2ca02c", label);
     }
-    if let Some(stop) = super::steps::stops(p).get(stop) {
-        iteration(&mut out, &right, p, *stop, &m);
+    let stop = super::steps::stops(p).get(stop).copied();
+    if let Some(stop) = stop {
+        iteration(&mut out, &right, p, stop, &m);
     }
+    legend(
+        &mut out,
+        40.0 + PANEL,
+        &right_legend(p, stop, &m, plane_name(t)),
+    );
     out += "</svg>\n";
     Some(out)
 }
@@ -234,10 +257,6 @@ pub(crate) fn movement_bounds(
             m.radius * f.scale
         );
     }
-    let _ = writeln!(
-        out,
-        r##"  <text x="20" y="505" font-size="13" fill="#7f7f7f">movement bounds over the next step (ccd): swept AABB dashed, swept sphere dotted</text>"##
-    );
 }
 
 /// A stop's marks: its title, d_k from the origin, v_k, w_k.
@@ -278,6 +297,10 @@ fn iteration(out: &mut String, f: &Fit, p: &PairTrace, stop: Stop, m: &Minkowski
             );
         }
     }
+    if let Some(next) = m.next {
+        let c = f.at(next);
+        let _ = writeln!(out, "{}", diamond(c[0], c[1], "#2ca02c"));
+    }
     if let Some(w) = m.support {
         let c = f.at(w);
         let _ = writeln!(
@@ -290,6 +313,89 @@ fn iteration(out: &mut String, f: &Fit, p: &PairTrace, stop: Stop, m: &Minkowski
             c[1] + 16.0
         );
     }
+}
+
+/// The right panel's legend: every mark it draws at `stop` (the result
+/// when `None`), arrows included.
+fn right_legend(
+    p: &PairTrace,
+    stop: Option<Stop>,
+    m: &Minkowski,
+    plane: &str,
+) -> Vec<(Swatch, String)> {
+    let mut out = vec![];
+    if !m.hull.is_empty() {
+        out.push((
+            Swatch::Line("#9467bd", ""),
+            format!("A - B seen in the {plane} plane (its outline); O: the origin"),
+        ));
+    }
+    let s = |t: &str| t.to_string();
+    match stop {
+        Some(Stop::Gjk(_)) => {
+            out.push((
+                Swatch::Dot("#ff7f0e", true),
+                s("the simplex with w_k added (hollow: dropped)"),
+            ));
+            out.push((
+                Swatch::Square("#8c564b"),
+                s("w_k = s_A(d_k) - s_B(-d_k), the support point"),
+            ));
+            out.push((
+                Swatch::Arrow("#2ca02c"),
+                s("v_k: the closest point the iteration starts from"),
+            ));
+            out.push((
+                Swatch::Arrow("#17becf"),
+                s("d_k = -v_k: the search direction (its length is not to scale)"),
+            ));
+            if m.next.is_some() {
+                out.push((
+                    Swatch::Diamond("#2ca02c"),
+                    s("v_k+1: the kept simplex's closest point (the next v_k)"),
+                ));
+            }
+        }
+        Some(Stop::Epa(_)) => {
+            out.push((
+                Swatch::Dot("#ff7f0e", false),
+                s("the polytope's face closest to the origin"),
+            ));
+            out.push((
+                Swatch::Square("#8c564b"),
+                s("w_k: the support point along n_k"),
+            ));
+            out.push((
+                Swatch::Arrow("#2ca02c"),
+                s("v_k = δ_k n_k: the face's point closest to O"),
+            ));
+            out.push((
+                Swatch::Arrow("#17becf"),
+                s("d_k = n_k: the face's outward normal (length not to scale)"),
+            ));
+        }
+        None => {
+            if !m.simplex.is_empty() {
+                let what = match &p.epa {
+                    Some(e) if !e.iterations.is_empty() => "EPA's last closest face",
+                    _ => "GJK's last simplex",
+                };
+                out.push((Swatch::Dot("#ff7f0e", false), s(what)));
+            }
+            match m.arrow {
+                Some((_, "-δn")) => out.push((
+                    Swatch::Arrow("#2ca02c"),
+                    s("-δn: the penetration vector (depth δ along the normal n)"),
+                )),
+                Some(_) => out.push((
+                    Swatch::Arrow("#2ca02c"),
+                    s("v: from O to A - B's closest point (its length: the distance)"),
+                )),
+                None => {}
+            }
+        }
+    }
+    out
 }
 
 fn result(p: &PairTrace) -> String {

@@ -127,6 +127,7 @@ pub fn render(study: &Study) -> String {
             cursor: None,
             front: (!front.is_empty()).then_some(front),
             marks: Vec::new(),
+            ..Chart::default()
         };
         chart.draw(&mut out, (24.0, y0 + 16.0, PLOT, PANEL - 36.0));
         // The legend: one line per row, in the column right of the plot.

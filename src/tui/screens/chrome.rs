@@ -211,7 +211,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         ],
         (false, Screen::Detect) if app.detect.as_ref().is_some_and(|d| d.toi.is_some()) => &[
             ("↑↓", "pair"),
-            ("←→", "trial"),
+            ("←→", "test"),
             ("t Esc", "iterations"),
             ("?", "help"),
             ("q", "quit"),

@@ -216,8 +216,8 @@ fn render_picture(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
             // The pair where the search puts it at the trial's time (or at
             // the time of collision, or the step's end, after the trials).
             let p = run.trace.pairs.first();
-            let time = match p.and_then(|p| p.record.trials.get(*trial)) {
-                Some(x) => x.trial,
+            let time = match p.and_then(|p| p.record.tests().get(*trial).copied()) {
+                Some(x) => x.time(),
                 None => p.and_then(|p| p.time).unwrap_or(run.trace.dt),
             };
             if bodies.len() == 2 {

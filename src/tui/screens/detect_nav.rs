@@ -196,7 +196,7 @@ impl App {
         let pairs = d.trace.pairs.len() + d.trace.dropped.len();
         // The last stop is the result, after the iterations.
         let last = match (&d.toi, d.narrow()) {
-            (Some((t, _)), _) => t.trace.pairs.first().map_or(0, |p| p.record.trials.len()),
+            (Some((t, _)), _) => t.trace.pairs.first().map_or(0, |p| p.record.tests().len()),
             (None, Some(p)) => stops(p).len(),
             (None, None) => 0,
         };
@@ -359,8 +359,5 @@ fn scene_method(lesson: &crate::lesson::Lesson) -> Option<ToiMethod> {
 
 /// The search's name in words.
 pub(super) fn method_name(m: ToiMethod) -> &'static str {
-    match m {
-        ToiMethod::Bisection => "bisection",
-        ToiMethod::Conservative => "conservative advancement",
-    }
+    crate::trace::toi::method_words(m)
 }

@@ -10,8 +10,8 @@ use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 use super::DetectView;
 use crate::physics::detect::ToiMethod;
-use crate::render::toi::{outcome_line, trial_line};
-use crate::trace::toi::DetectToi;
+use crate::render::toi::{outcome_line, test_line};
+use crate::trace::toi::{method_words, DetectToi};
 use crate::tui::app::App;
 
 /// The pair's time-of-collision trial on show and the outcome.
@@ -31,7 +31,7 @@ pub fn render(
             toi.step,
             f.num(toi.time),
             f.num(toi.time + toi.dt),
-            toi.method.json_name()
+            method_words(toi.method)
         )),
         Line::styled(method_origin(d), t.dim()),
     ];
@@ -43,26 +43,36 @@ pub fn render(
             "time of collision".to_string()
         }
         Some(p) => {
-            let n = p.record.trials.len();
+            // The scan's pieces first, then the trials: every test the
+            // command prints, as many as the outcome counts.
+            let tests = p.record.tests();
+            let n = tests.len();
             lines.push(Line::from(format!(
                 "Movement bounds: swept AABBs overlap: {}; swept spheres meet: {}.",
                 yes(p.aabbs_overlap),
                 yes(p.spheres_meet)
             )));
             lines.push(Line::from(""));
-            match p.record.trials.get(trial) {
+            match tests.get(trial) {
                 Some(x) => lines.push(Line::from(format!(
-                    "Trial {} of {n}: {}",
+                    "Test {} of {n}: {}",
                     trial + 1,
-                    trial_line(p, x, f)
+                    test_line(p, x, f)
                 ))),
-                None => lines.push(Line::styled(format!("All {n} trials done."), t.dim())),
+                None => lines.push(Line::styled(
+                    match n {
+                        0 => "No test: the search ended before its first.".to_string(),
+                        1 => "The one test done.".to_string(),
+                        n => format!("All {n} tests done."),
+                    },
+                    t.dim(),
+                )),
             }
             lines.push(Line::from(""));
             lines.push(Line::styled("Result", t.title()));
             lines.push(Line::from(outcome_line(p, f)));
             match trial < n {
-                true => format!("time of collision · trial {} of {n}", trial + 1),
+                true => format!("time of collision · test {} of {n}", trial + 1),
                 false => "time of collision · result".into(),
             }
         }

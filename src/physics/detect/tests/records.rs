@@ -45,10 +45,13 @@ fn each_gjk_iteration_follows_from_the_one_before() {
         // w_k's points are the supports along d_k and −d_k.
         assert!((w.a - Support::support(&a, &pa, &it.direction)).norm() < 1e-12);
         assert!((w.b - Support::support(&b, &pb, &-it.direction)).norm() < 1e-12);
+        // One rule: the row's d_k, bound and v_k belong to the same pass,
+        // and v_k is where the pass before it ended (v_{k+1} of row k − 1).
+        assert_eq!(it.direction, -it.v);
         if k > 0 {
-            assert_eq!(it.direction, -rec.iterations[k - 1].closest);
+            assert_eq!(Some(it.v), rec.iterations[k - 1].next);
         }
-        let v = -it.direction;
+        let v = it.v;
         assert!((it.bound - (v.norm_squared() - v.dot(&w.w))).abs() < 1e-12);
         assert!(it.simplex_len >= 1 && it.simplex_len <= 4);
         assert!(it.kept != 0 && it.kept >> it.simplex_len == 0);
@@ -56,7 +59,8 @@ fn each_gjk_iteration_follows_from_the_one_before() {
     let last = rec.iterations.last().unwrap();
     assert_eq!(r.end, GjkEnd::Converged);
     assert!(last.bound <= last.bound_limit);
-    assert!((last.closest.norm() - r.distance).abs() < 1e-12);
+    assert_eq!(last.next, None);
+    assert!((last.v.norm() - r.distance).abs() < 1e-12);
     // Unwatched, the same answer.
     assert_eq!(gjk(&a, &pa, &b, &pb, &GjkOptions::default(), &mut ()), r);
 }
