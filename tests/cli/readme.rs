@@ -288,3 +288,57 @@ fn every_command_a_docs_page_shows_parses() {
     }
     assert!(checked >= 40, "only {checked} commands in docs/");
 }
+
+/// A heading's anchor as GitHub makes it: lower case, spaces to `-`,
+/// punctuation other than `-` and `_` dropped.
+fn anchor(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Every link of the README and of a docs/ page to a file of the
+/// repository leads to one that exists, and a `#heading` to a heading of
+/// that page (the content moved from the README is found where it says).
+#[test]
+fn every_link_between_the_pages_leads_somewhere() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut followed = 0;
+    for (page, text) in pages() {
+        let dir = root.join(&page).parent().unwrap().to_path_buf();
+        for link in text.split("](").skip(1) {
+            let target = link.split(')').next().unwrap();
+            if target.contains("://") || target.is_empty() {
+                continue;
+            }
+            let (file, heading) = target.split_once('#').unwrap_or((target, ""));
+            let path = if file.is_empty() {
+                root.join(&page)
+            } else {
+                dir.join(file)
+            };
+            assert!(path.exists(), "{page}: the link to {target} leads nowhere");
+            if !heading.is_empty() {
+                let linked = std::fs::read_to_string(&path).unwrap();
+                let anchors: Vec<String> = linked
+                    .lines()
+                    .filter_map(|l| l.strip_prefix('#'))
+                    .map(|h| anchor(h.trim_start_matches('#')))
+                    .collect();
+                assert!(
+                    anchors.iter().any(|a| a == heading),
+                    "{page}: {target}: no such heading in {file} ({anchors:?})"
+                );
+            }
+            followed += 1;
+        }
+    }
+    assert!(followed >= 40, "only {followed} links followed");
+}
