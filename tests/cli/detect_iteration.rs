@@ -112,3 +112,34 @@ fn the_figure_of_gjk_iteration_2_is_held_as_a_snapshot() {
         insta::assert_snapshot!("detect_svg@epa-edge-edge-gjk-2", svg);
     });
 }
+
+/// The result's figure never prints the origin's "O" over another label:
+/// on `hull-stack`'s resting pair the penetration vector −δn is shorter
+/// than a pixel and its label sat on O's (issue 40); it is now said below
+/// O, and a drawn arrow puts O's label on the side away from it.
+#[test]
+fn the_origin_label_overlaps_no_other_label() {
+    let cases: [&[&str]; 7] = [
+        &["hull-stack", "--pair", "hexagon,octagon"],
+        &["epa-edge-edge"],
+        &["gjk-separated"],
+        &["gjk-touching"],
+        &["cylinder-on-box"],
+        &["tetra-on-floor"],
+        &["capsule-on-slope"],
+    ];
+    for (i, args) in cases.into_iter().enumerate() {
+        let svg = figure(&format!("origin-label-{i}"), args);
+        let labels = common::svg::label_boxes(&svg);
+        let (o, _) = labels
+            .iter()
+            .find(|(_, t)| t == "O")
+            .unwrap_or_else(|| panic!("{args:?}: no O"));
+        for (b, text) in labels.iter().filter(|(_, t)| t != "O") {
+            let apart = b[2] <= o[0] || o[2] <= b[0] || b[3] <= o[1] || o[3] <= b[1];
+            assert!(apart, "{args:?}: O at {o:?} overlaps {text:?} at {b:?}");
+        }
+    }
+    let resting = figure("origin-label-resting", cases[0]);
+    assert!(resting.contains(">-δn ≈ 0<"), "{resting}");
+}

@@ -5,7 +5,7 @@
 //! tests/physics/sequential.rs).
 //!
 //! Coulomb: it stays put below atan 0.5 = 26.57° and slides above, gaining
-//! g (sin θ - μ_d cos θ) per second. What the solver does (measured, README):
+//! g (sin θ - μ_d cos θ) per second. What the solver does (measured, docs/scenes.md):
 //! each contact has one cone per step (μ_s if it sticks when the step begins,
 //! μ_d if it slides) and a sliding contact's friction is put on the rim
 //! against its slip with the normal impulse solved again. It holds the box up

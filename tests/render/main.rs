@@ -6,6 +6,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod architecture_layout;
 mod check_causes;
 mod detect_rows;
 mod detect_snapshots;
@@ -24,7 +25,6 @@ mod latex_compiles;
 mod movement_bounds;
 mod one_minus_sign;
 mod previous_frame;
-mod readme_layout;
 mod resolve_snapshots;
 mod scene_snapshots;
 mod solve_snapshots;

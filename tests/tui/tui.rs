@@ -409,12 +409,12 @@ fn tui_subcommand_needs_a_terminal() {
 }
 
 #[test]
-fn readme_lists_every_tui_key() {
-    let readme = include_str!("../../README.md");
+fn docs_tui_lists_every_tui_key() {
+    let keys_page = include_str!("../../docs/tui.md");
     for (k, what) in contact_lab::tui::keys::help(contact_lab::tui::event::KEYS) {
         assert!(
-            readme.contains(&format!("| {k} | {what} |")),
-            "README lacks {k}"
+            keys_page.contains(&format!("| {k} | {what} |")),
+            "docs/tui.md lacks {k}"
         );
     }
 }

@@ -103,12 +103,12 @@ fn the_help_lists_the_detection_keys() {
     assert_eq!(a.mode, Mode::Help);
     let help = joined(&screen(&a, 120, 50));
     assert!(help.contains("Keys · detection"), "{help}");
-    let readme = include_str!("../../README.md");
+    let keys_page = include_str!("../../docs/tui.md");
     for (k, what) in contact_lab::tui::keys::help(DETECT_KEYS) {
         assert!(help.contains(what), "{what} is not in the help:\n{help}");
         assert!(
-            readme.contains(&format!("| {k} | {what} |")),
-            "README lacks {k}"
+            keys_page.contains(&format!("| {k} | {what} |")),
+            "docs/tui.md lacks {k}"
         );
     }
 }

@@ -199,8 +199,8 @@ fn clicks_select_table_rows_and_contacts_in_the_picture() {
 }
 
 #[test]
-fn help_lists_each_screens_keys_and_the_readme_has_them() {
-    let readme = include_str!("../../README.md");
+fn help_lists_each_screens_keys_and_docs_tui_has_them() {
+    let keys_page = include_str!("../../docs/tui.md");
     for (lesson, list) in [("stack-5", RUN_KEYS), ("box-stack", RESOLVER_KEYS)] {
         let mut a = open(lesson);
         key(&mut a, KeyCode::Char('?'));
@@ -210,8 +210,8 @@ fn help_lists_each_screens_keys_and_the_readme_has_them() {
         for (k, what) in contact_lab::tui::keys::help(list) {
             assert!(shown.contains(k), "{lesson}: help lacks {k}\n{shown}");
             assert!(
-                readme.contains(&format!("| {k} | {what} |")),
-                "README lacks {k}"
+                keys_page.contains(&format!("| {k} | {what} |")),
+                "docs/tui.md lacks {k}"
             );
         }
         key(&mut a, KeyCode::Char('x'));

@@ -181,17 +181,43 @@ pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
         );
     }
     let o = right.at([0.0, 0.0]);
+    // The result's arrow from O, on the page: its length and direction.
+    let result = m.arrow.map(|(to, label)| {
+        let b = right.at(to);
+        let (dx, dy) = (b[0] - o[0], b[1] - o[1]);
+        (to, label, dx.hypot(dy), [dx, dy])
+    });
+    // O's label sits up and to the right, or on the side away from the
+    // result's arrow when there is one (its label is at its tip: a short
+    // arrow's would land on O's).
+    let at = match result {
+        Some((_, _, len, [dx, dy])) if len > NEAR_O => {
+            [o[0] - 16.0 * dx / len - 5.0, o[1] - 16.0 * dy / len + 5.0]
+        }
+        _ => [o[0] + 8.0, o[1] - 8.0],
+    };
     let _ = writeln!(
         out,
         r#"  <circle cx="{:.1}" cy="{:.1}" r="5" fill="black"/>
   <text x="{:.1}" y="{:.1}" font-size="14">O</text>"#,
-        o[0],
-        o[1],
-        o[0] + 8.0,
-        o[1] - 8.0
+        o[0], o[1], at[0], at[1]
     );
-    if let Some((to, label)) = m.arrow {
-        arrow(&mut out, &right, [0.0, 0.0], to, "#2ca02c", label);
+    match result {
+        Some((to, label, len, _)) if len > NEAR_O => {
+            arrow(&mut out, &right, [0.0, 0.0], to, "#2ca02c", label);
+        }
+        Some((_, label, _, _)) => {
+            // No arrow to draw (a depth or distance below a pixel): said
+            // below O, not over it, as v_k is.
+            let _ = writeln!(
+                out,
+                r##"  <text x="{:.1}" y="{:.1}" font-size="15" fill="#2ca02c">{} ≈ 0</text>"##,
+                o[0] + 8.0,
+                o[1] + 20.0,
+                xml(label)
+            );
+        }
+        None => {}
     }
     let stop = super::steps::stops(p).get(stop).copied();
     if let Some(stop) = stop {
@@ -451,6 +477,10 @@ pub(crate) fn arrow(out: &mut String, f: &Fit, from: P, to: P, colour: &str, lab
         xml(label)
     );
 }
+
+/// The result's arrow from O shorter than this (page units, a pixel) has
+/// no direction to draw: its value is said below O instead.
+const NEAR_O: f64 = 1.0;
 
 /// A panel's mapping from the view plane to the page (y up).
 pub(crate) struct Fit {

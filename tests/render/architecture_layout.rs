@@ -1,19 +1,17 @@
-//! The README's "How it is built" names the folders as they are: every
-//! `src/…` path it names exists, and every folder of `src/` and of
+//! docs/architecture.md ("How it is built") names the folders as they are:
+//! every `src/…` path it names exists, and every folder of `src/` and of
 //! `src/physics/` is named there.
 
 use std::path::Path;
 
 fn block() -> String {
     let root = env!("CARGO_MANIFEST_DIR");
-    let readme = std::fs::read_to_string(Path::new(root).join("README.md")).unwrap();
-    let start = readme.find("## How it is built").expect("the section");
-    let rest = &readme[start + 3..];
-    rest[..rest.find("\n## ").unwrap_or(rest.len())].to_string()
+    std::fs::read_to_string(Path::new(root).join("docs/architecture.md"))
+        .expect("docs/architecture.md")
 }
 
 #[test]
-fn every_path_the_readme_names_exists() {
+fn every_path_the_page_names_exists() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let text = block();
     let paths: Vec<&str> = text
@@ -24,7 +22,7 @@ fn every_path_the_readme_names_exists() {
     for p in paths {
         assert!(
             root.join(p).exists(),
-            "README names {p}, which does not exist"
+            "docs/architecture.md names {p}, which does not exist"
         );
     }
 }
@@ -41,7 +39,7 @@ fn every_folder_of_src_is_named() {
                 let short = format!(" {}/", entry.file_name().to_string_lossy());
                 assert!(
                     text.contains(&name) || (dir == "src/physics" && text.contains(&short)),
-                    "README's How it is built does not name {name}"
+                    "docs/architecture.md does not name {name}"
                 );
             }
         }
