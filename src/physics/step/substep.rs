@@ -1,19 +1,22 @@
 //! Continuous detection in the step ("Lecture IV Collisions", the time
 //! issue). After the step's contacts are resolved, the positions are not
 //! simply moved by v Δt: with `ccd` on, the pairs whose movement bounds
-//! ([`super::swept`]) meet over what is left of the step get their time of
-//! collision ([`crate::physics::detect::toi_sweep`]); every moving body
-//! advances to the earliest, that pair's contact is resolved there (the
-//! velocity phase, one contact), and the rest of the step is spent the same
-//! way, earliest first. A body the resolution changes moves from then on,
-//! woken if it slept ([`Spent::woken`]). Pairs already in contact at the
-//! step's start are the discrete resolver's, and a pair resolved here is
-//! not searched again in the same step.
+//! ([`super::swept`]) meet over what is left of the step, and each moving
+//! body with each half-space it can reach ([`super::ccd_pairs`]), get their
+//! time of collision ([`crate::physics::detect::toi_sweep`]); every moving
+//! body advances to the earliest, that pair's contacts are resolved there
+//! (the velocity phase, [`super::toi_resolve`]), and the rest of the step
+//! is spent the same way, earliest first. A body the resolution changes
+//! moves from then on, woken if it slept ([`Spent::woken`]). Pairs already
+//! in contact at the step's start are the discrete resolver's; a pair
+//! resolved here is searched again only while its gap can still shrink
+//! (a spinning body), past the touch it is leaving.
 //!
-//! At most [`MAX_SUBSTEPS`] collisions are resolved in one step; when the
-//! cap is hit the rest of the step is one plain move (the tunnelling auditor
-//! still watches it). Each sub-step costs a swept broad phase and one search
-//! per candidate pair (docs/ccd.md).
+//! At most [`MAX_SUBSTEPS`] collisions and [`MAX_ROUNDS`] searches are run
+//! in one step; when a cap is hit the rest of the step is one plain move
+//! (the tunnelling auditor still watches it, and a pair resolved in the
+//! step that crosses in it is reported). Each sub-step costs a swept broad
+//! phase and one search per candidate pair (docs/ccd.md).
 
 use super::ccd::{self, Tunnelled};
 use super::ccd_pairs;
