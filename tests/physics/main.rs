@@ -35,6 +35,7 @@ mod rollback;
 mod scale_invariance;
 mod scenes;
 mod sequential;
+mod shape_matrix;
 mod swept_reuse;
 mod truth;
 mod tunnelling;
