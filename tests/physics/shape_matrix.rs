@@ -4,7 +4,7 @@
 //! their top is a place to rest), each resting, dropped from 1 m and sliding
 //! at 2 m/s, under deepest-first and warm sequential impulses, with the
 //! default settings (sleep on; without sleep the deepest-first order leaves
-//! a resting body creeping, see `resting_face`). What every run must keep:
+//! a resting body creeping, see `resting_convex.rs`). What every run must keep:
 //!
 //! - at rest (after a second's settling) the body moves less than 1 mm in
 //!   5 s;
