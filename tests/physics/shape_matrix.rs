@@ -414,3 +414,21 @@ fn millimetre_and_kilometre_bodies_rest_as_metre_ones() {
     }
     verdict(failures);
 }
+
+#[test]
+fn a_buried_body_is_reported_once_for_its_pair_not_once_per_contact() {
+    // Every shape started 2 sizes under a half-space's surface: wholly
+    // inside at step 1, an event for the pair (a box has 8 contacts there,
+    // a tetrahedron 4; each was its own event before).
+    for up in UPPERS {
+        let mut sim = scene(up, "half_space", 1.0, Motion::Resting, Solver::DeepestFirst);
+        sim.world.bodies[0].state.position.y -= 2.0;
+        let r = sim.advance().expect("no blow-up");
+        let inside = r
+            .events
+            .iter()
+            .filter(|e| matches!(e, Event::WhollyInside { .. }))
+            .count();
+        assert_eq!(inside, 1, "{up}: {:?}", r.events);
+    }
+}
