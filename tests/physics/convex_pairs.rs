@@ -266,3 +266,52 @@ fn a_capsule_from_a_lesson_lies_down_on_the_box() {
     assert!(axis.y.abs() < 0.05, "lying down, axis {axis}");
     assert!(pill.velocity.norm() < 0.05, "{} m/s", pill.velocity.norm());
 }
+
+/// A tetrahedron hull on its face on a box, tilted by `tilt` about z and
+/// sunk `sink` at its lowest corner: the contacts within a 5 mm margin.
+fn tetra_on_box(tilt: f64, sink: f64) -> Vec<f64> {
+    use contact_lab::physics::detect::ConvexHull;
+    let corners = [
+        [0.5, -0.2, 0.0],
+        [-0.25, -0.2, 0.4330127018922193],
+        [-0.25, -0.2, -0.4330127018922193],
+        [0.0, 0.6, 0.0],
+    ];
+    let tetra = Shape::Hull(std::sync::Arc::new(ConvexHull::new(&corners).unwrap()));
+    let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), tilt);
+    // The lowest corner at y = 0.5 − sink (the box's top face is y = 0.5).
+    let lowest = corners
+        .iter()
+        .map(|p| (q * Vector3::from(*p)).y)
+        .fold(f64::INFINITY, f64::min);
+    let pa = Pose::from_unit(Vector3::new(0.0, 0.5 - sink - lowest, 0.0), &q);
+    let pb = Pose::at(Vector3::zeros());
+    let options = Options {
+        tolerance: 0.005,
+        ..Options::default()
+    };
+    let mut out = Vec::new();
+    collide_with((&tetra, &pa), (&BOX, &pb), &options, &mut out);
+    out.iter().map(|c| c.penetration).collect()
+}
+
+#[test]
+fn a_hull_face_on_a_box_keeps_its_corners_when_it_tilts_by_a_rounding_error() {
+    // Flat: three corners, each 1 µm deep.
+    let flat = tetra_on_box(0.0, 1e-6);
+    assert_eq!(flat.len(), 3, "{flat:?}");
+    // Tilted by 1e-9 rad (a rounding error's worth after a few steps): the
+    // corners 0.75 nm up stay contacts (before, the manifold dropped them
+    // and the tetrahedron tipped about the rest).
+    for tilt in [1e-9, -1e-9, 1e-12] {
+        let tilted = tetra_on_box(tilt, 1e-6);
+        assert_eq!(tilted.len(), 3, "tilt {tilt}: {tilted:?}");
+        let deepest = tilted.iter().cloned().fold(f64::MIN, f64::max);
+        assert!((deepest - 1e-6).abs() < 1e-9, "{tilted:?}");
+        assert!(tilted.iter().all(|d| *d >= -0.005), "{tilted:?}");
+    }
+    // Corners farther up (0.75 mm: in the contact margin's gap, beyond a
+    // rounding error) are not contacts.
+    let steep = tetra_on_box(1e-3, 1e-6);
+    assert!(steep.len() < 3, "{steep:?}");
+}

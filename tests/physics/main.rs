@@ -37,6 +37,7 @@ mod rollback;
 mod scale_invariance;
 mod scenes;
 mod sequential;
+mod shape_matrix;
 mod sleep_holds;
 mod swept_reuse;
 mod table_budget;

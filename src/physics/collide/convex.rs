@@ -11,7 +11,7 @@ use nalgebra::Vector3;
 
 use super::{ContactPoint, Feature, Pose, Side};
 use crate::physics::detect::{
-    manifold, query, Convex, EpaOptions, GjkOptions, GjkVerdict, Penetration, QueryOptions,
+    manifold_within, query, Convex, EpaOptions, GjkOptions, GjkVerdict, Penetration, QueryOptions,
 };
 use crate::physics::detect::{FeatureKind, FeaturePair, ManifoldPoint, PenetrationSource};
 use crate::physics::{Real, Shape};
@@ -54,12 +54,14 @@ pub(super) fn convex_pair<T: Real>(
         }
         None => return,
     };
-    // The manifold at the touching pose: A moved by −gap·n.
+    // The manifold at the touching pose: A moved by −gap·n; points up to
+    // the tolerance less the gap above the reference face are kept (their
+    // penetration less the gap is then at least −tolerance).
     let touching = Pose {
         position: pa.position - pen.normal * gap,
         rotation: pa.rotation,
     };
-    let mut points = manifold(&a, &touching, &b, pb, &pen);
+    let mut points = manifold_within(&a, &touching, &b, pb, &pen, tolerance - gap);
     // A cylinder's cap is a polygon of `CAP_SIDES` sides starting at the
     // rim's deepest point; where clipping loses that point (a cap as the
     // reference face, or hanging over the other face's edge), EPA's point

@@ -48,7 +48,7 @@ pub use gjk::{
     gjk, GjkEnd, GjkIteration, GjkObserver, GjkOptions, GjkRecorder, GjkResult, GjkVerdict,
 };
 pub use hull::{ConvexHull, HullError, HullFace, MassProperties};
-pub use manifold::{manifold, ManifoldPoint};
+pub use manifold::{manifold, manifold_within, ManifoldPoint};
 pub use query::{query, Penetration, PenetrationSource, Query, QueryOptions};
 pub use sat::{sat, Polyhedron, SatResult};
 pub use support::{plane_depth, Capsule, Convex, Support};

@@ -52,8 +52,10 @@ impl<T: Real> Simulation<T> {
             let same_normal = same_pair.is_some_and(|(l, _)| l.input.normal == k.input.normal);
             last = Some((k, thin));
             if let Some(width) = overlap::wholly_inside_below(&self.world, k, thin) {
+                // Once per pair when it starts (a manifold has several
+                // points, each of them deep).
                 let pair = (k.body1, k.body2);
-                if !self.inside_before.contains(&pair) {
+                if self.inside.insert(pair) && !self.inside_before.contains(&pair) {
                     events.push(Event::WhollyInside {
                         body1: k.body1,
                         body2: k.body2,
@@ -61,7 +63,6 @@ impl<T: Real> Simulation<T> {
                         width,
                     });
                 }
-                self.inside.insert(pair);
             }
             if same_normal {
                 continue;

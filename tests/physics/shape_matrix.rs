@@ -1,0 +1,434 @@
+//! The shape matrix: every kind of movable shape (sphere, box, cylinder,
+//! capsule, convex hull) on every kind of lower body (half-space, box,
+//! cylinder, convex hull, sphere, capsule; the round ones large, so that
+//! their top is a place to rest), each resting, dropped from 1 m and sliding
+//! at 2 m/s, under deepest-first and warm sequential impulses, with the
+//! default settings (sleep on; without sleep the deepest-first order leaves
+//! a resting body creeping, see `resting_convex.rs`). What every run must keep:
+//!
+//! - at rest (after a second's settling) the body moves less than 1 mm in
+//!   5 s;
+//! - after the position phase no contact is deeper than the position
+//!   epsilon the step used (the documented slop), and the body's centre
+//!   never ends below the lower body's top;
+//! - every rise of total energy above the total-energy audit's tolerance
+//!   (plus the position phase's settling lift, m |g| × the step's deepest
+//!   penetration) comes with an energy event in the run.
+//!
+//! Scale variants (1 mm and 1 km bodies) run the resting column on a
+//! half-space and on a box, the movement bound scaled with the body (1 µm
+//! for a 1 mm body). The runs that do not hold today are listed in
+//! [`KNOWN`] with their measured figure and why. (Shots at 1e3 m/s with
+//! continuous detection are not part of this matrix.)
+
+use contact_lab::lesson::validate::parse;
+use contact_lab::physics::step::{total_audit, Event, Simulation, StepReport};
+use contact_lab::physics::Solver;
+use nalgebra::Vector3;
+
+/// The movable shapes at size `l`: the lesson's shape (and orientation)
+/// and the height of the centre (the position) above the top when resting.
+const UPPERS: [&str; 5] = ["sphere", "box", "cylinder", "capsule", "hull"];
+/// The lower bodies, immovable, their top at y = 0.
+const LOWERS: [&str; 6] = ["half_space", "box", "cylinder", "hull", "sphere", "capsule"];
+
+/// Quarter turn about z: a body's y axis along world x.
+const LYING: &str = "[0.7071067811865476, 0, 0, 0.7071067811865476]";
+
+fn upper(kind: &str, l: f64) -> (String, f64) {
+    match kind {
+        "sphere" => (format!("shape = {{ sphere = {} }}", 0.5 * l), 0.5 * l),
+        "box" => (format!("shape = {{ box = [{l}, {l}, {l}] }}"), 0.5 * l),
+        // Standing on its cap.
+        "cylinder" => (
+            format!("shape = {{ cylinder = [{}, {l}] }}", 0.5 * l),
+            0.5 * l,
+        ),
+        // Lying on its side.
+        "capsule" => (
+            format!(
+                "shape = {{ capsule = [{}, {l}] }}\norientation = {LYING}",
+                0.25 * l
+            ),
+            0.25 * l,
+        ),
+        // A tetrahedron on its face: the position is the file frame's
+        // origin, on the face (the centroid is 0.2 l above it).
+        "hull" => {
+            let s = |x: f64| x * l;
+            (
+                format!(
+                    "shape = {{ convex = [[{}, 0, 0], [{}, 0, {}], [{}, 0, {}], [0, {}, 0]] }}",
+                    s(0.5),
+                    s(-0.25),
+                    s(0.4330127018922193),
+                    s(-0.25),
+                    s(-0.4330127018922193),
+                    s(0.8)
+                ),
+                0.0,
+            )
+        }
+        _ => unreachable!("{kind}"),
+    }
+}
+
+/// The lower body's shape, position and orientation at size `l` (top at y = 0).
+fn lower(kind: &str, l: f64) -> String {
+    let (w, h) = (8.0 * l, l);
+    let big = 50.0 * l;
+    match kind {
+        "half_space" => "shape = \"half_space\"\nposition = [0, 0, 0]".into(),
+        "box" => format!(
+            "shape = {{ box = [{w}, {h}, {w}] }}\nposition = [0, {}, 0]",
+            -h / 2.0
+        ),
+        "cylinder" => format!(
+            "shape = {{ cylinder = [{}, {h}] }}\nposition = [0, {}, 0]",
+            w / 2.0,
+            -h / 2.0
+        ),
+        "hull" => {
+            let (a, b) = (w / 2.0, h / 2.0);
+            let corners: Vec<String> = (0..8)
+                .map(|i| {
+                    let sx = if i & 1 == 0 { -a } else { a };
+                    let sy = if i & 2 == 0 { -b } else { b };
+                    let sz = if i & 4 == 0 { -a } else { a };
+                    format!("[{sx}, {sy}, {sz}]")
+                })
+                .collect();
+            format!(
+                "shape = {{ convex = [{}] }}\nposition = [0, {}, 0]",
+                corners.join(", "),
+                -h / 2.0
+            )
+        }
+        "sphere" => format!("shape = {{ sphere = {big} }}\nposition = [0, {}, 0]", -big),
+        "capsule" => format!(
+            "shape = {{ capsule = [{big}, {w}] }}\nposition = [0, {}, 0]\norientation = {LYING}",
+            -big
+        ),
+        _ => unreachable!("{kind}"),
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Motion {
+    Resting,
+    Dropped,
+    Sliding,
+}
+
+/// The scene: `up` on `low` at size `l`, friction 0.5, restitution 0.2.
+fn scene(up: &str, low: &str, l: f64, motion: Motion, solver: Solver) -> Simulation<f64> {
+    let (shape, rest) = upper(up, l);
+    let (y, v) = match motion {
+        Motion::Resting => (rest, 0.0),
+        Motion::Dropped => (rest + 1.0, 0.0),
+        Motion::Sliding => (rest, 2.0),
+    };
+    let text = format!(
+        r#"id = "matrix"
+title = "A shape on a lower body"
+source = "Lecture IV Collisions"
+summary = "One movable shape on an immovable one."
+
+[world]
+restitution = 0.2
+friction = 0.5
+
+[step]
+dt = 0.016666666666666666
+steps = 360
+
+[[body]]
+name = "upper"
+mass = 1.0
+{shape}
+position = [0, {y}, 0]
+velocity = [{v}, 0, 0]
+
+[[body]]
+name = "lower"
+mass = inf
+{}
+"#,
+        lower(low, l)
+    );
+    let lesson = parse("shape_matrix.rs", &text).expect("a valid scene");
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = Simulation::new(world, params, lesson.simulation.unwrap().materials);
+    if solver == Solver::SequentialImpulse {
+        sim.params.resolver.solver = Solver::SequentialImpulse;
+        sim.params.resolver.warm_start = true;
+    }
+    sim
+}
+
+/// What a run showed.
+#[derive(Debug)]
+struct Run {
+    /// The centre's largest distance from where it was at 1 s, over 1–6 s.
+    moved: f64,
+    /// The deepest penetration left by a position phase, over its epsilon.
+    deepest_left: f64,
+    /// The centre's lowest height (y).
+    lowest: f64,
+    /// Steps whose total energy rose above the tolerance.
+    rises: Vec<(u64, f64)>,
+    /// Energy events (gain, rise, projection lift).
+    energy_events: usize,
+    /// Burial and pass-through events (wholly inside, pushed through,
+    /// tunnelled).
+    overlap_events: usize,
+}
+
+fn run(mut sim: Simulation<f64>, steps: usize) -> Run {
+    let g = sim.params.world.gravity;
+    let dt = sim.params.dt;
+    let mass = sim.world.bodies[0].dynamic().map_or(0.0, |b| b.mass);
+    let eps_v = sim.lowered_tolerances();
+    let velocity_epsilon = eps_v
+        .iter()
+        .find(|l| l.which == contact_lab::physics::step::tolerance::Tolerance::VelocityEpsilon)
+        .map_or(sim.params.resolver.velocity_epsilon, |l| l.used);
+    let position_epsilon = eps_v
+        .iter()
+        .find(|l| l.which == contact_lab::physics::step::tolerance::Tolerance::PositionEpsilon)
+        .map_or(sim.params.resolver.position_epsilon, |l| l.used);
+    let tolerance = total_audit::tolerance(mass, g.norm(), velocity_epsilon, dt);
+    let energy = |s: &Simulation<f64>| contact_lab::physics::step::energy::total(&s.world, &g);
+    let mut before = energy(&sim);
+    let mut out = Run {
+        moved: 0.0,
+        deepest_left: 0.0,
+        lowest: f64::INFINITY,
+        rises: Vec::new(),
+        energy_events: 0,
+        overlap_events: 0,
+    };
+    let mut at_one: Option<Vector3<f64>> = None;
+    for _ in 0..steps {
+        let r: StepReport = sim.advance().expect("no blow-up");
+        let now = energy(&sim);
+        let lift = mass * g.norm() * r.max_penetration.max(0.0);
+        let rounding = 1e-9 * before.abs().max(1e-12);
+        if now - before > tolerance + lift + rounding {
+            out.rises.push((r.step, now - before));
+        }
+        before = now;
+        out.energy_events += r
+            .events
+            .iter()
+            .filter(|e| {
+                matches!(
+                    e,
+                    Event::EnergyGain { .. }
+                        | Event::EnergyRise { .. }
+                        | Event::ProjectionLift { .. }
+                )
+            })
+            .count();
+        out.overlap_events += r
+            .events
+            .iter()
+            .filter(|e| {
+                matches!(
+                    e,
+                    Event::WhollyInside { .. }
+                        | Event::PushedThrough { .. }
+                        | Event::Tunnelled { .. }
+                )
+            })
+            .count();
+        out.deepest_left = out
+            .deepest_left
+            .max(r.max_penetration_after - position_epsilon);
+        let x = sim.world.bodies[0].state.position;
+        out.lowest = out.lowest.min(x.y);
+        if r.time >= 1.0 - 1e-9 {
+            let start = *at_one.get_or_insert(x);
+            out.moved = out.moved.max((x - start).norm());
+        }
+    }
+    out
+}
+
+/// Runs that do not keep the promises today, each with the figure measured
+/// (the body's largest movement at rest, m) held as a bound: a change that
+/// makes one worse fails, one that mends it fails too (take it off the list).
+/// - a lying capsule on a lying capsule: one contact point for two parallel
+///   sides (the manifold has no segment–segment clipping); it rolls;
+/// - a tetrahedron on a lying capsule's side: the face touches a line and
+///   the tetrahedron rolls over it;
+/// - 1 mm bodies: gravity moves a body 2.7 mm in a step (dt = 1/60 s), more
+///   than its size: the lecture's order rocks a 1 mm box or can on a
+///   half-space (energy events say so), and on a box 1 mm thick every shape
+///   but the sphere ends up through it (a pushed-through or tunnelled event
+///   says so).
+const KNOWN: [(&str, f64); 18] = [
+    ("capsule on capsule, DeepestFirst, resting", 6.647e-3),
+    ("capsule on capsule, SequentialImpulse, resting", 6.423e-3),
+    ("hull on capsule, DeepestFirst, resting", 7.023e-2),
+    ("hull on capsule, SequentialImpulse, resting", 2.162e-1),
+    ("0.001 m box on half_space, DeepestFirst, resting", 1.461e-2),
+    (
+        "0.001 m box on half_space, SequentialImpulse, resting",
+        1.131e-5,
+    ),
+    ("0.001 m box on box, DeepestFirst, resting", 1.456e2),
+    ("0.001 m box on box, SequentialImpulse, resting", 1.289e2),
+    (
+        "0.001 m cylinder on half_space, DeepestFirst, resting",
+        1.466e-2,
+    ),
+    (
+        "0.001 m cylinder on half_space, SequentialImpulse, resting",
+        3.279e-4,
+    ),
+    ("0.001 m cylinder on box, DeepestFirst, resting", 1.626e2),
+    (
+        "0.001 m cylinder on box, SequentialImpulse, resting",
+        1.673e2,
+    ),
+    (
+        "0.001 m capsule on half_space, DeepestFirst, resting",
+        1.588e-5,
+    ),
+    ("0.001 m capsule on box, DeepestFirst, resting", 1.611e2),
+    (
+        "0.001 m hull on half_space, DeepestFirst, resting",
+        4.054e-5,
+    ),
+    (
+        "0.001 m hull on half_space, SequentialImpulse, resting",
+        2.907e-6,
+    ),
+    ("0.001 m hull on box, DeepestFirst, resting", 1.674e2),
+    ("0.001 m hull on box, SequentialImpulse, resting", 1.673e2),
+];
+
+/// A run's broken promises (`rest`: the body should stand still), one
+/// line each. A run on the [`KNOWN`] list must move within 10 % of its
+/// figure, and where it sinks or passes through, an event must say so.
+fn check(name: &str, r: &Run, l: f64, rest: bool, failures: &mut Vec<String>) {
+    if let Some(&(_, figure)) = KNOWN.iter().find(|(k, _)| *k == name) {
+        if (r.moved - figure).abs() > 0.1 * figure {
+            failures.push(format!(
+                "{name}: moved {:.3e} m, the known figure is {figure:.3e} m",
+                r.moved
+            ));
+        }
+        if r.lowest <= 0.0 && r.overlap_events + r.energy_events == 0 {
+            failures.push(format!("{name}: sank to {:.3e} m with no event", r.lowest));
+        }
+        return;
+    }
+    if rest && r.moved >= 1e-3 * l {
+        failures.push(format!("{name}: moved {:.3e} m at rest", r.moved));
+    }
+    if r.deepest_left > 1e-9 * l {
+        failures.push(format!(
+            "{name}: {:.3e} m deeper than the position epsilon after the position phase",
+            r.deepest_left
+        ));
+    }
+    if r.lowest <= 0.0 {
+        failures.push(format!("{name}: centre down to {:.3e} m", r.lowest));
+    }
+    if !r.rises.is_empty() && r.energy_events == 0 {
+        failures.push(format!("{name}: energy rose with no event: {:?}", r.rises));
+    }
+}
+
+/// Fails listing every broken promise.
+fn verdict(failures: Vec<String>) {
+    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
+}
+
+fn solvers() -> [Solver; 2] {
+    [Solver::DeepestFirst, Solver::SequentialImpulse]
+}
+
+#[test]
+fn every_shape_rests_still_on_every_lower_body_under_both_solvers() {
+    let mut failures = Vec::new();
+    for up in UPPERS {
+        for low in LOWERS {
+            for solver in solvers() {
+                let name = format!("{up} on {low}, {solver:?}, resting");
+                let r = run(scene(up, low, 1.0, Motion::Resting, solver), 360);
+                check(&name, &r, 1.0, true, &mut failures);
+            }
+        }
+    }
+    verdict(failures);
+}
+
+#[test]
+fn every_shape_dropped_from_a_metre_lands_within_the_slop_under_both_solvers() {
+    let mut failures = Vec::new();
+    for up in UPPERS {
+        for low in LOWERS {
+            for solver in solvers() {
+                let name = format!("{up} on {low}, {solver:?}, dropped");
+                let r = run(scene(up, low, 1.0, Motion::Dropped, solver), 150);
+                check(&name, &r, 1.0, false, &mut failures);
+            }
+        }
+    }
+    verdict(failures);
+}
+
+#[test]
+fn every_shape_sliding_at_two_metres_a_second_stays_out_under_both_solvers() {
+    let mut failures = Vec::new();
+    for up in UPPERS {
+        for low in LOWERS {
+            for solver in solvers() {
+                let name = format!("{up} on {low}, {solver:?}, sliding");
+                let r = run(scene(up, low, 1.0, Motion::Sliding, solver), 90);
+                check(&name, &r, 1.0, false, &mut failures);
+            }
+        }
+    }
+    verdict(failures);
+}
+
+#[test]
+fn millimetre_and_kilometre_bodies_rest_as_metre_ones() {
+    let mut failures = Vec::new();
+    for l in [1e-3, 1e3] {
+        for up in UPPERS {
+            for low in ["half_space", "box"] {
+                for solver in solvers() {
+                    let name = format!("{l} m {up} on {low}, {solver:?}, resting");
+                    let r = run(scene(up, low, l, Motion::Resting, solver), 360);
+                    check(&name, &r, l, true, &mut failures);
+                }
+            }
+        }
+    }
+    verdict(failures);
+}
+
+#[test]
+fn a_buried_body_is_reported_once_for_its_pair_not_once_per_contact() {
+    // Every shape started 2 sizes under a half-space's surface: wholly
+    // inside at step 1, an event for the pair (a box has 8 contacts there,
+    // a tetrahedron 4; each was its own event before).
+    for up in UPPERS {
+        let mut sim = scene(up, "half_space", 1.0, Motion::Resting, Solver::DeepestFirst);
+        sim.world.bodies[0].state.position.y -= 2.0;
+        let r = sim.advance().expect("no blow-up");
+        let inside = r
+            .events
+            .iter()
+            .filter(|e| matches!(e, Event::WhollyInside { .. }))
+            .count();
+        assert_eq!(inside, 1, "{up}: {:?}", r.events);
+    }
+}
