@@ -38,6 +38,11 @@ pub fn bar(total: u64, unit: &str, plan: &str) -> Progress {
         ProgressDrawTarget::hidden()
     };
     let bar = ProgressBar::with_draw_target(Some(total), target);
+    // Redrawn on its own thread too: a step that takes long still shows
+    // the time going by.
+    if terminal {
+        bar.enable_steady_tick(Duration::from_millis(250));
+    }
     bar.set_style(
         ProgressStyle::with_template(&format!(
             "{{bar:40}} {{pos}}/{{len}} {unit} · {{msg}} · {{elapsed}} elapsed, about {{eta}} left"
@@ -48,6 +53,30 @@ pub fn bar(total: u64, unit: &str, plan: &str) -> Progress {
         bar,
         last: Instant::now(),
     }
+}
+
+/// Ctrl-C as a request: the first sets the flag returned (a long command
+/// checks it between its units of work, stops there and ends its output
+/// cleanly); a second, with the flag still set, ends the process at once
+/// (exit 130). The handlers are installed once per process; each call
+/// clears the flag.
+pub fn interrupted() -> &'static std::sync::atomic::AtomicBool {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::{Arc, OnceLock};
+    static FLAG: OnceLock<Arc<AtomicBool>> = OnceLock::new();
+    let flag = FLAG.get_or_init(|| {
+        let flag = Arc::new(AtomicBool::new(false));
+        #[cfg(unix)]
+        {
+            use signal_hook::consts::SIGINT;
+            let _ =
+                signal_hook::flag::register_conditional_shutdown(SIGINT, 130, Arc::clone(&flag));
+            let _ = signal_hook::flag::register(SIGINT, Arc::clone(&flag));
+        }
+        flag
+    });
+    flag.store(false, Ordering::SeqCst);
+    flag
 }
 
 /// A spinner with `text`, ticking on its own thread, on a terminal only.

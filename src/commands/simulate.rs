@@ -71,7 +71,15 @@ pub fn simulate(
     let buffered = std::io::BufWriter::with_capacity(1 << 16, folded);
     let mut w = RunWriter::begin(buffered, kind, &trace).map_err(io)?;
     w.frame(&mut trace, &RunTrace::initial(&sim)).map_err(io)?;
+    let interrupted = progress::interrupted();
     for n in 1..=steps {
+        if interrupted.load(std::sync::atomic::Ordering::SeqCst) {
+            // The output written so far stays one document, ending here.
+            let e = interruption(&lesson, n - 1, steps);
+            trace.stopped = Some(e.to_string());
+            w.end(&trace).map_err(io)?;
+            return Err(e);
+        }
         match sim.advance() {
             Ok(report) => {
                 trace.add_events(&report);
@@ -121,7 +129,15 @@ fn film(
     keep(&mut trace, RunTrace::initial(&sim), false);
     let mut failure = None;
     let mut pending = false;
+    let interrupted = progress::interrupted();
     for n in 1..=steps {
+        if interrupted.load(std::sync::atomic::Ordering::SeqCst) {
+            // The film strip up to the stop is still drawn.
+            let e = interruption(lesson, n - 1, steps);
+            trace.stopped = Some(e.to_string());
+            failure = Some(e);
+            break;
+        }
         match sim.advance() {
             Ok(report) => {
                 let before = trace.events.len();
@@ -147,6 +163,14 @@ fn film(
     out.write_all(run::svg(&trace, plane(args.plane)).as_bytes())
         .map_err(io)?;
     failure.map_or(Ok(()), Err)
+}
+
+/// A run stopped by Ctrl-C after `done` of its `steps` steps.
+fn interruption(lesson: &Lesson, done: u64, steps: u64) -> AppError {
+    AppError::Runtime(format!(
+        "{}: interrupted (Ctrl-C) after step {done} of {steps}; the output ends there",
+        lesson.id
+    ))
 }
 
 fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {

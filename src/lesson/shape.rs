@@ -42,23 +42,49 @@ pub fn from_raw(raw: &RawShape) -> Result<(Shape, Vector3<f64>), HullError> {
 
 /// The hull of `points` moved so that its centroid is at the origin, and
 /// that centroid in the given frame. Refuses repeated points (the same
-/// point twice is a typo in a lesson, not a shape).
+/// point twice is a typo in a lesson, not a shape). Only the hull's
+/// vertices are kept (the points inside it or on its faces are dropped:
+/// [`dropped_points`] says how many).
 pub fn centred_hull(points: &[[f64; 3]]) -> Result<(ConvexHull, Vector3<f64>), HullError> {
-    for (j, q) in points.iter().enumerate().filter(|_| points.len() >= 4) {
-        if let Some(i) = points[..j].iter().position(|p| p == q) {
-            return Err(HullError::Duplicate {
-                first: i,
-                second: j,
-            });
+    if points.len() >= 4 {
+        // Each point's first index by its bits: one pass, not one per pair.
+        let mut first = std::collections::HashMap::with_capacity(points.len());
+        for (j, q) in points.iter().enumerate() {
+            if q.iter().any(|x| !x.is_finite()) {
+                continue; // the hull says which (never equal to another)
+            }
+            let bits = bits_of(q);
+            if let Some(&i) = first.get(&bits) {
+                return Err(HullError::Duplicate {
+                    first: i,
+                    second: j,
+                });
+            }
+            first.insert(bits, j);
         }
     }
     let hull = ConvexHull::new(points)?;
     let centroid = hull.mass_properties().centroid;
-    let moved: Vec<[f64; 3]> = points
-        .iter()
+    // Built again, moved, from its vertices only, in the order given.
+    let vertices: std::collections::HashSet<[u64; 3]> = (hull.vertices().iter())
+        .map(|v| bits_of(&[v.x, v.y, v.z]))
+        .collect();
+    let moved: Vec<[f64; 3]> = (points.iter())
+        .filter(|p| vertices.contains(&bits_of(p)))
         .map(|p| (Vector3::from(*p) - centroid).into())
         .collect();
     Ok((ConvexHull::new(&moved)?, centroid))
+}
+
+/// A point's coordinates as bits, with −0 as 0 (equal points, equal bits).
+fn bits_of(p: &[f64; 3]) -> [u64; 3] {
+    p.map(|x| if x == 0.0 { 0 } else { x.to_bits() })
+}
+
+/// How many of a hull's `given` points it dropped (inside it, or on a
+/// face or an edge between its vertices): the load warning's number.
+pub fn dropped_points(given: usize, hull: &ConvexHull) -> usize {
+    given.saturating_sub(hull.vertices().len())
 }
 
 /// The shape and its inertia formula, in words (numbers through

@@ -23,6 +23,7 @@ mod output_files;
 mod readme;
 mod resolve_cli;
 mod round_off;
+mod simulate_interrupt;
 mod slide_ready;
 mod study;
 mod tunnelled;

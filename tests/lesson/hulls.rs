@@ -91,3 +91,38 @@ fn a_hull_at_its_centroid_keeps_its_position() {
     let lesson = parse("tetra.toml", &text).unwrap();
     assert_eq!(lesson.bodies[0].position, Vector3::new(0.0, 1.0, 0.0));
 }
+
+/// A hull's points are reduced to its vertices at load, and a load warning
+/// says how many were dropped (a hull of 100,000 points used to keep them
+/// all in the file's order through two builds, and say nothing).
+#[test]
+fn the_points_inside_a_hull_are_dropped_with_a_warning() {
+    let cube: Vec<[f64; 3]> = (0..8)
+        .map(|i| [i & 1, (i >> 1) & 1, (i >> 2) & 1].map(|b| f64::from(b as u8)))
+        .collect();
+    // The centre, a point on a face, a point on an edge: none is a vertex.
+    let extra = [[0.5, 0.5, 0.5], [0.5, 0.5, 0.0], [0.5, 0.0, 0.0]];
+    let points: Vec<String> = (cube.iter().chain(&extra))
+        .map(|p| format!("[{}, {}, {}]", p[0], p[1], p[2]))
+        .collect();
+    let text = format!(
+        "id = \"blob\"\ntitle = \"A hull\"\n[world]\n[[body]]\nname = \"blob\"\nmass = 1.0\nshape = {{ convex = [{}] }}\nposition = [0, 2, 0]\n",
+        points.join(", ")
+    );
+    let lesson = parse("blob.toml", &text).expect("a valid lesson");
+    let Some(Shape::Hull(hull)) = &lesson.bodies[0].shape else {
+        panic!("a hull");
+    };
+    assert_eq!(hull.vertices().len(), 8);
+    let warnings: Vec<&str> = (lesson.warnings.iter())
+        .map(|w| w.message.as_str())
+        .collect();
+    assert_eq!(
+        warnings,
+        ["body 'blob': the convex hull of 11 points has 8 vertices; the 3 points inside it or on its faces were dropped"]
+    );
+    // A hull of its vertices only loads without a word.
+    let only = text.replace(", [0.5, 0.5, 0.5], [0.5, 0.5, 0], [0.5, 0, 0]", "");
+    let lesson = parse("cube.toml", &only).expect("a valid lesson");
+    assert!(lesson.warnings.is_empty(), "{:?}", lesson.warnings);
+}

@@ -208,7 +208,23 @@ impl Validator {
             return (None, Vector3::zeros());
         };
         match crate::lesson::shape::from_raw(raw.get_ref()) {
-            Ok((shape, offset)) => (Some(shape), offset),
+            Ok((shape, offset)) => {
+                if let (raw::RawShape::Convex(points), Shape::Hull(hull)) = (raw.get_ref(), &shape)
+                {
+                    let dropped = crate::lesson::shape::dropped_points(points.len(), hull);
+                    if dropped > 0 {
+                        self.warnings.push(Note::new(
+                            format!(
+                                "{what}: the convex hull of {} points has {} vertices; the {dropped} points inside it or on its faces were dropped",
+                                points.len(),
+                                hull.vertices().len()
+                            ),
+                            raw.span(),
+                        ));
+                    }
+                }
+                (Some(shape), offset)
+            }
             Err(e) => {
                 self.err(
                     raw.span(),
