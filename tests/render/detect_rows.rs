@@ -10,7 +10,7 @@ use crate::common;
 use contact_lab::format::Fmt;
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::collide::NarrowPhase;
-use contact_lab::physics::step::{SimParams, Simulation};
+use contact_lab::physics::step::Simulation;
 use contact_lab::render::detect::steps::{stop_lines, stops, Stop};
 use contact_lab::render::detect::{json, markdown};
 use contact_lab::session::detect_trace;
@@ -19,7 +19,7 @@ use contact_lab::trace::Plane;
 
 /// The detection `detect ID` shows (step 0), the narrow phase as given.
 fn trace(lesson: &Lesson, narrow: Option<NarrowPhase>) -> DetectTrace {
-    let mut params = lesson.sim_params().unwrap_or_else(SimParams::default);
+    let mut params = lesson.sim_params().unwrap_or_default();
     if let Some(n) = narrow {
         params.narrow_phase = n;
     }
