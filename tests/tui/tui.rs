@@ -410,11 +410,14 @@ fn tui_subcommand_needs_a_terminal() {
 
 #[test]
 fn readme_lists_every_tui_key() {
-    let readme = include_str!("../../README.md");
+    let readme = concat!(
+        include_str!("../../README.md"),
+        include_str!("../../docs/tui.md")
+    );
     for (k, what) in contact_lab::tui::keys::help(contact_lab::tui::event::KEYS) {
         assert!(
             readme.contains(&format!("| {k} | {what} |")),
-            "README lacks {k}"
+            "README and docs/tui.md lack {k}"
         );
     }
 }

@@ -200,7 +200,10 @@ fn clicks_select_table_rows_and_contacts_in_the_picture() {
 
 #[test]
 fn help_lists_each_screens_keys_and_the_readme_has_them() {
-    let readme = include_str!("../../README.md");
+    let readme = concat!(
+        include_str!("../../README.md"),
+        include_str!("../../docs/tui.md")
+    );
     for (lesson, list) in [("stack-5", RUN_KEYS), ("box-stack", RESOLVER_KEYS)] {
         let mut a = open(lesson);
         key(&mut a, KeyCode::Char('?'));
@@ -211,7 +214,7 @@ fn help_lists_each_screens_keys_and_the_readme_has_them() {
             assert!(shown.contains(k), "{lesson}: help lacks {k}\n{shown}");
             assert!(
                 readme.contains(&format!("| {k} | {what} |")),
-                "README lacks {k}"
+                "README and docs/tui.md lack {k}"
             );
         }
         key(&mut a, KeyCode::Char('x'));
