@@ -50,6 +50,10 @@ pub enum Mode {
     Confirm(PathBuf),
     /// The lesson picker (`/`): a filter and the lesson under the cursor.
     Pick(super::picker::Picker),
+    /// Quit? The work it would lose, in words.
+    Quit(String),
+    /// The run's events on show, each in full, scrolled this many lines.
+    Events(u16),
 }
 
 /// A one-line message in the key bar until the next key.
@@ -90,6 +94,8 @@ pub struct App {
     pub scroll_max: Cell<u16>,
     /// Rows of text the stage panel shows, as last drawn (a page).
     pub page_rows: Cell<u16>,
+    /// Cells of text in a line of the stage panel, as last drawn.
+    pub panel_width: Cell<u16>,
     /// The picture fills the right-hand side.
     pub zoom: bool,
     pub mode: Mode,
@@ -112,6 +118,8 @@ pub struct App {
     pub opened: Option<Entry>,
     /// Where things were drawn, for the mouse.
     pub targets: Targets,
+    /// Edits carried into the scene's run (lost when the lesson changes).
+    pub run_edits: usize,
 }
 
 impl App {
@@ -162,6 +170,7 @@ impl App {
             scroll: 0,
             scroll_max: Cell::new(0),
             page_rows: Cell::new(0),
+            panel_width: Cell::new(40),
             zoom: false,
             mode: Mode::Normal,
             status: None,
@@ -175,6 +184,7 @@ impl App {
             detect: None,
             opened: None,
             targets: Targets::default(),
+            run_edits: 0,
         };
         app.plane = app.natural_plane();
         if scene {
@@ -251,6 +261,7 @@ impl App {
         self.run = None;
         self.resolver = None;
         self.detect = None;
+        self.run_edits = 0;
         self.screen = Screen::Contact;
         if self.lessons[i].lesson.simulation.is_some() {
             self.open_lesson_screen(false);
@@ -321,6 +332,7 @@ impl App {
             Mode::Normal if self.screen != Screen::Contact => self.screen_key(key),
             Mode::Normal if self.up_key(key) => {}
             Mode::Normal if self.answer_start(key) => {}
+            Mode::Normal if event::ctrl_c(key) => self.quit = true,
             Mode::Normal => {
                 if let Some(a) = event::action(key) {
                     self.update(a);
@@ -332,6 +344,8 @@ impl App {
             Mode::Edit(form) => self.edit_key(form, key),
             Mode::Write { input, error } => self.write_key(input, error, key),
             Mode::Pick(p) => self.picker_key(p, key),
+            Mode::Quit(_) => self.quit_key(key),
+            Mode::Events(at) => self.events_key(at, key),
             Mode::Confirm(path) => match key.code {
                 KeyCode::Char('y') | KeyCode::Char('Y') => self.write_to(path, true),
                 _ => {
@@ -418,7 +432,7 @@ impl App {
             }
             Plane => self.plane = self.plane.next(),
             Zoom => self.zoom = !self.zoom,
-            Symbols => self.symbols = !self.symbols,
+            Symbols => self.toggle_symbols(),
             Write => {
                 self.mode = Mode::Write {
                     input: write::Context::of(self).file_name(),
@@ -432,7 +446,26 @@ impl App {
             PickLesson => self.open_picker(),
             NextGroup => self.jump_group(true),
             PrevGroup => self.jump_group(false),
-            Quit => self.quit = true,
+            Quit => self.request_quit(),
+        }
+    }
+
+    /// `s`: lists the symbols (scrolled into view when below the fold) or hides them.
+    fn toggle_symbols(&mut self) {
+        self.symbols = !self.symbols;
+        if !self.symbols {
+            return;
+        }
+        let Some(at) = super::stage::symbols_line(self) else {
+            return self.say(
+                "the symbols are listed on a stage's page (→ goes to the first)".into(),
+                false,
+            );
+        };
+        // The heading and a line of the list in view, else the list at the top.
+        let rows = self.page_rows.get();
+        if at + 2 > self.scroll + rows || at < self.scroll {
+            self.scroll = at;
         }
     }
 

@@ -40,7 +40,7 @@ impl App {
         let k = self.contact;
         let outcome = form.key(
             key,
-            |f| edit::get(lesson, k, f),
+            |f| super::form::prefill(f, &edit::get(lesson, k, f)),
             |f| edit::next_choice(lesson, k, f),
         );
         match outcome {
@@ -59,10 +59,15 @@ impl App {
                         self.baseline = Some(before);
                         form.input = None;
                         form.error = None;
+                        // Why nothing changed, before the run's edit may leave the contact.
+                        let why = match changed {
+                            0 => self.why_unchanged(&field, &lesson_before),
+                            _ => String::new(),
+                        };
                         let run = self
                             .scene_edited(&field, &lesson_before)
                             .unwrap_or_default();
-                        self.say(format!("{said}: {changed} values changed{run}"), false);
+                        self.say(format!("{said}: {changed} values changed{why}{run}"), false);
                     }
                     Err(e) => form.error = Some(e),
                 }
@@ -71,6 +76,40 @@ impl App {
                     self.mode = Mode::Edit(form);
                 }
             }
+        }
+    }
+}
+
+impl App {
+    /// Why an edit of `field` changed no value of the solution, in words
+    /// after "0 values changed" (read from the trace: the velocity limit
+    /// forcing restitution to 0, a separating contact), or nothing.
+    fn why_unchanged(&self, field: &edit::Field, before: &crate::lesson::Lesson) -> String {
+        let k = self.contact;
+        let now = &self.entry().lesson;
+        if k >= now.contacts.len() || k >= before.contacts.len() {
+            return String::new();
+        }
+        if edit::get(before, k, field) == edit::get(now, k, field) {
+            return " (the value is the one it had)".into();
+        }
+        let Some(dv) = self.trace.stage("desired_delta_velocity") else {
+            return String::new();
+        };
+        let number = |name: &str| dv.lookup(name).and_then(|v| v.numbers().first().copied());
+        let bounce = matches!(field.key, edit::Key::Restitution);
+        match (number("velocity_limit"), number("separating_velocity")) {
+            (Some(limit), Some(vs)) if bounce => format!(
+                " (the closing speed |v_s| = {} m/s is below the velocity limit {} m/s, so restitution is forced to 0 whatever its value)",
+                self.fmt.num(vs.abs()),
+                self.fmt.num(limit)
+            ),
+            (_, Some(vs)) if vs >= 0.0 => format!(
+                " (v_s = {} m/s ≥ 0: the contact is separating or at rest, so no impulse is applied whatever the {})",
+                self.fmt.num(vs),
+                field.label
+            ),
+            _ => String::new(),
         }
     }
 }

@@ -147,7 +147,7 @@ pub const KEYS: &[Binding<Action>] = &[
     },
     Binding {
         label: "q Esc Ctrl-C",
-        help: "quit",
+        help: "quit (q and Esc ask first when edits or a predict score would be lost)",
         keys: &[(KeyCode::Char('q'), Quit), (KeyCode::Esc, Quit)],
     },
 ];
@@ -161,6 +161,11 @@ pub fn action(key: KeyEvent) -> Option<Action> {
         return matches!(key.code, KeyCode::Char('c')).then_some(Action::Quit);
     }
     super::keys::find(KEYS, key.code)
+}
+
+/// Ctrl-C: quits at once, whatever would be lost.
+pub fn ctrl_c(key: KeyEvent) -> bool {
+    key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL)
 }
 
 /// A terminal event the app cares about.

@@ -57,6 +57,7 @@ fn render_lessons(app: &App, area: Rect, buf: &mut Buffer) {
             }
         }
     }
+    let items_len = items.len();
     let block = Block::bordered()
         .border_style(t.border())
         .title(Span::styled(" Lessons [ ] ⇥ ", t.title()));
@@ -65,8 +66,17 @@ fn render_lessons(app: &App, area: Rect, buf: &mut Buffer) {
         .highlight_style(t.selected())
         .highlight_symbol("▶")
         .highlight_spacing(HighlightSpacing::Always);
+    let total = items_len;
     let mut state = ListState::default().with_selected(Some(selected));
     StatefulWidget::render(list, area, buf, &mut state);
+    mark_cut(app, area, total, state.offset(), buf);
+}
+
+/// The list in the box `area` (`total` rows from `first`): how many are cut.
+fn mark_cut(app: &App, area: Rect, total: usize, first: usize, buf: &mut Buffer) {
+    let rows = area.height.saturating_sub(2) as usize;
+    let (above, below) = super::more::hidden(total, first, rows);
+    super::more::mark(app, area, above, below, buf);
 }
 
 fn render_stages(app: &App, area: Rect, buf: &mut Buffer) {
@@ -103,6 +113,7 @@ fn render_stages(app: &App, area: Rect, buf: &mut Buffer) {
         };
         items.push(ListItem::new(line));
     }
+    let total = items.len();
     let block = Block::bordered()
         .border_style(t.border())
         .title(Span::styled(" Stages ←→ ", t.title()));
@@ -113,4 +124,5 @@ fn render_stages(app: &App, area: Rect, buf: &mut Buffer) {
         .highlight_spacing(HighlightSpacing::Always);
     let mut state = ListState::default().with_selected(Some(app.page));
     StatefulWidget::render(list, area, buf, &mut state);
+    mark_cut(app, area, total, state.offset(), buf);
 }

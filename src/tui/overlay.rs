@@ -17,7 +17,7 @@ use super::wrap::{tail, truncate, width, wrap};
 use crate::lesson::edit::{self, Kind};
 
 /// A `w × h` rectangle in the middle of `area` (clipped to it).
-fn centered(area: Rect, w: u16, h: u16) -> Rect {
+pub(super) fn centered(area: Rect, w: u16, h: u16) -> Rect {
     let w = w.min(area.width);
     let h = h.min(area.height);
     Rect {
@@ -28,7 +28,7 @@ fn centered(area: Rect, w: u16, h: u16) -> Rect {
     }
 }
 
-fn frame(app: &App, title: &str, area: Rect, buf: &mut Buffer) -> Rect {
+pub(super) fn frame(app: &App, title: &str, area: Rect, buf: &mut Buffer) -> Rect {
     Clear.render(area, buf);
     let block = Block::bordered()
         .border_style(app.theme.border_focus())
@@ -153,7 +153,7 @@ pub fn help_list(
 /// `lines` in a centred box `w` wide, as tall as they need or the screen
 /// allows, scrolled by `scroll` (as far as it goes; the title says how to
 /// scroll when they do not fit). Returns how far they can scroll.
-fn scrolled(
+pub(crate) fn scrolled(
     app: &App,
     title: &str,
     lines: Vec<Line>,
@@ -216,7 +216,7 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
         .fields
         .iter()
         .map(|f| {
-            let value = edit::get(lesson, k, f);
+            let value = super::form::shown(&app.fmt, f, &edit::get(lesson, k, f));
             let hint = match f.kind() {
                 Kind::Choice(_) => "  (Enter cycles)",
                 _ => "",
@@ -228,6 +228,7 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
             ]))
         })
         .collect();
+    let total = items.len();
     let mut state = ListState::default().with_selected(Some(form.selected));
     StatefulWidget::render(
         List::new(items)
@@ -237,6 +238,8 @@ pub fn form(app: &App, form: &Form, area: Rect, buf: &mut Buffer) {
         buf,
         &mut state,
     );
+    let (above, below) = super::more::hidden(total, state.offset(), list_area.height as usize);
+    super::more::mark(app, rect, above, below, buf);
     let field = &form.fields[form.selected.min(form.fields.len().saturating_sub(1))];
     let mut lines = vec![];
     if let Some(input) = &form.input {

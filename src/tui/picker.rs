@@ -250,6 +250,7 @@ pub fn render(app: &App, p: &Picker, area: Rect, buf: &mut Buffer) {
             room,
         ))));
     }
+    let total = items.len();
     let list = List::new(items)
         .highlight_style(t.selected())
         .highlight_symbol("▶ ");
@@ -264,4 +265,7 @@ pub fn render(app: &App, p: &Picker, area: Rect, buf: &mut Buffer) {
         buf,
         &mut state,
     );
+    let rows = inner.height as usize - 1;
+    let (above, below) = super::more::hidden(total, state.offset(), rows);
+    super::more::mark(app, rect, above, below, buf);
 }

@@ -80,6 +80,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         }
     }
     let overflow = (lines.len() as u16).saturating_sub(inner.height);
+    app.panel_width.set(text_width as u16);
     app.scroll_max.set(overflow);
     app.page_rows.set(inner.height);
     let scroll = app.scroll.min(overflow);
@@ -88,7 +89,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         let hint = if scroll < overflow {
             format!(" ↓ {} more · PgDn ", overflow - scroll)
         } else {
-            " PgUp ↑ ".to_string()
+            format!(" ↑ {scroll} more above · PgUp ")
         };
         block =
             block.title_bottom(Line::from(Span::styled(hint, t.dim())).alignment(Alignment::Right));
@@ -98,6 +99,40 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         .block(block)
         .render(area, buf);
 }
+
+/// The panel's rows on show (the overview or the stage), each as one line
+/// and as the lines it wraps into at the panel's width as last drawn.
+pub fn wrapped_rows(app: &App) -> Vec<(String, Vec<String>)> {
+    let rows = match app.stage() {
+        None => overview(app),
+        Some(s) => stage_rows(app, s),
+    };
+    let width = app.panel_width.get() as usize;
+    rows.into_iter()
+        .map(|r| {
+            let lines = wrap(&r.text, width, r.indent);
+            (r.text, lines)
+        })
+        .collect()
+}
+
+/// The panel line (after wrapping, as last drawn) where the symbols' list
+/// starts on the stage on show, when it lists them.
+pub fn symbols_line(app: &App) -> Option<u16> {
+    let s = app.stage()?;
+    let width = app.panel_width.get() as usize;
+    let mut line = 0;
+    for row in stage_rows(app, s) {
+        if row.text.starts_with(SYMBOLS) {
+            return Some(line);
+        }
+        line += wrap(&row.text, width, row.indent).len() as u16;
+    }
+    None
+}
+
+/// The heading of `s`'s list.
+const SYMBOLS: &str = "Symbols in these formulas";
 
 fn overview(app: &App) -> Vec<Row> {
     let t = &app.theme;
@@ -313,7 +348,7 @@ fn symbol_rows(app: &App, step: &Step, shown: usize) -> Vec<Row> {
         .collect();
     let mut rows = vec![
         Row::new("", Style::new()),
-        Row::new("Symbols in these formulas (s hides)", t.title()),
+        Row::new(format!("{SYMBOLS} (s hides)"), t.title()),
     ];
     for sym in crate::trace::glossary::symbols_in(&text) {
         let unit = if sym.unit.is_empty() {

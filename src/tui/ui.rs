@@ -77,6 +77,8 @@ impl Widget for &App {
             }
             Mode::Confirm(path) => overlay::confirm(self, path, area, buf),
             Mode::Pick(p) => super::picker::render(self, p, area, buf),
+            Mode::Quit(lost) => super::quit::render(self, lost, area, buf),
+            Mode::Events(_) => {}
         }
     }
 }
@@ -167,6 +169,8 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         Mode::Edit(_) => &[("↑↓", "field"), ("Enter", "edit / cycle"), ("Esc", "close")],
         Mode::Write { .. } => &[("Enter", "write"), ("Esc", "cancel")],
         Mode::Confirm(_) => &[("y", "overwrites"), ("any other key", "keeps the file")],
+        Mode::Quit(_) => &[("y", "quits"), ("any other key", "stays")],
+        Mode::Events(_) => &[],
         Mode::Pick(_) => &[
             ("letters", "filter"),
             ("↑↓", "move"),

@@ -120,7 +120,24 @@ impl Wrapper {
         if self.width + ww <= self.max {
             return self.push(word);
         }
-        // A word longer than the line: cut it.
+        if !self.has_text() && ww <= self.max {
+            // Too long for the hanging indent but not for the line: this
+            // line starts further left, so that a number or a unit stays whole.
+            let start = self.max - ww;
+            self.line = " ".repeat(start);
+            self.width = start;
+            return self.push(word);
+        }
+        // A word longer than the whole line: broken after its operators
+        // (never inside a number or a unit), cut only where a piece between
+        // two operators is itself longer than the line.
+        let pieces = operator_pieces(word);
+        if pieces.len() > 1 {
+            for piece in pieces {
+                self.word(piece);
+            }
+            return;
+        }
         for ch in word.chars() {
             let cw = width(ch.encode_utf8(&mut [0; 4]));
             if self.width + cw > self.max && self.has_text() {
@@ -130,6 +147,28 @@ impl Wrapper {
             self.width += cw;
         }
     }
+}
+
+/// `word` split after each operator (`·`, `×`, `+`, `=`, `,`) that stands
+/// between two terms: not the sign of an exponent (`1e+5`), and never at `/`,
+/// which units use (`(m/s)/(N·s)`).
+fn operator_pieces(word: &str) -> Vec<&str> {
+    let mut out = vec![];
+    let mut start = 0;
+    let mut prev = None;
+    for (i, c) in word.char_indices() {
+        let exponent = c == '+' && prev == Some('e');
+        if "·×+=,".contains(c) && !exponent {
+            let end = i + c.len_utf8();
+            if end < word.len() {
+                out.push(&word[start..end]);
+                start = end;
+            }
+        }
+        prev = Some(c);
+    }
+    out.push(&word[start..]);
+    out
 }
 
 /// Cuts `s` to `max` cells, ending in `…` when cut.
@@ -234,6 +273,22 @@ mod tests {
         assert_eq!(joined, "[[0.00416667,0,0],[0,0.00416667,0]]");
         assert_eq!(wrap("", 5, 0), [""]);
         assert_eq!(wrap("abc", 1, 0), ["a", "b", "c"]);
+    }
+
+    #[test]
+    fn numbers_and_units_stay_whole_under_a_deep_indent() {
+        // An indent of 30 leaves 10 cells: a number of 11 starts further left.
+        let text = "Δq̇_t = 0.3 + (0.0750194) · 2 = 0.0750194 (m/s)/(N·s)";
+        let lines = wrap(text, 40, 30);
+        assert!(lines.iter().all(|l| width(l) <= 40), "{lines:?}");
+        let words: Vec<&str> = lines.iter().flat_map(|l| l.split_whitespace()).collect();
+        assert_eq!(words, text.split_whitespace().collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn a_word_longer_than_the_line_breaks_after_an_operator() {
+        let lines = wrap("(1.5)·(2.25)+(3.125e+5)=4", 12, 0);
+        assert_eq!(lines, ["(1.5)·", "(2.25)+", "(3.125e+5)=4"]);
     }
 
     #[test]

@@ -116,6 +116,12 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     if let Mode::Pick(p) = &app.mode {
         crate::tui::picker::render(app, p, area, buf);
     }
+    if let Mode::Events(scroll) = app.mode {
+        super::events::render(app, scroll, area, buf);
+    }
+    if let Mode::Quit(lost) = &app.mode {
+        crate::tui::quit::render(app, lost, area, buf);
+    }
 }
 
 const NOTES: [&str; 4] = [
@@ -193,6 +199,10 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
             ("Enter", "open"),
             ("Esc", "close"),
         ],
+        _ if matches!(app.mode, Mode::Quit(_)) => &[("y", "quits"), ("any other key", "stays")],
+        _ if matches!(app.mode, Mode::Events(_)) => {
+            &[("j k ↑↓ PgDn PgUp", "scroll"), ("any other key", "closes")]
+        }
         _ if matches!(app.mode, Mode::Glossary(_)) => {
             &[("j k ↑↓ PgDn PgUp", "scroll"), ("any other key", "closes")]
         }

@@ -93,7 +93,9 @@ fn render_pairs(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     let skip = d
         .pair
         .saturating_sub(inner.height.saturating_sub(1) as usize);
+    let (above, below) = crate::tui::more::hidden(lines.len(), skip, inner.height as usize);
     Paragraph::new(lines.into_iter().skip(skip).collect::<Vec<_>>()).render(inner, buf);
+    crate::tui::more::mark(app, area, above, below, buf);
 }
 
 fn mark(selected: bool) -> &'static str {

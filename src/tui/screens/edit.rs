@@ -107,6 +107,7 @@ impl App {
         if step == 0 || step > run.player.computed() {
             return Some(format!("; the run stopped before step {step}: unchanged"));
         }
+        self.run_edits += 1;
         if !run.player.edit(step, &edit) {
             // The run computed again stopped before the step edited (a
             // blow-up): the frames before it are kept, the step's resolution

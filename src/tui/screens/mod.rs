@@ -13,6 +13,7 @@ mod detect_nav;
 mod detect_stages;
 mod detect_toi;
 mod edit;
+mod events;
 mod nav;
 mod picture;
 mod resolver;
@@ -94,6 +95,10 @@ pub struct RunView {
     pub event_kind: usize,
     /// Lines the events list is scrolled up from the current event.
     pub events_scroll: usize,
+    /// The events the list showed when last drawn (`i` shows them whole).
+    pub events_shown: Cell<(usize, usize)>,
+    /// How far `i`'s pop-up can scroll, as last drawn.
+    pub events_max: Cell<u16>,
     /// Enter on a large scene: the step's resolution being recorded on
     /// another thread, and since when (the key bar shows it; Esc cancels).
     pub recording: Option<(Recording, std::time::Instant)>,
@@ -179,6 +184,8 @@ pub enum Key {
     PrevPair,
     /// `x` on the detection: the shapes and A - B, the shapes, A - B.
     Picture,
+    /// `i` on the run: the events on show, each in full.
+    Events,
 }
 
 /// What the run screen's picture shows or hides.
@@ -328,6 +335,11 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
         label: "PgUp / PgDn",
         help: "scroll the events list",
         keys: &[(C::PageUp, Key::PageUp), (C::PageDown, Key::PageDown)],
+    },
+    Binding {
+        label: "i",
+        help: "the events the list shows, each in full (a list cuts them at its edge)",
+        keys: &[(C::Char('i'), Key::Events)],
     },
     RUN_TAIL[0],
     RUN_TAIL[1],

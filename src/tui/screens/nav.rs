@@ -28,6 +28,8 @@ impl App {
                 toggles: Toggles::default(),
                 event_kind: 0,
                 events_scroll: 0,
+                events_shown: std::cell::Cell::new((0, 0)),
+                events_max: std::cell::Cell::new(0),
                 recording: None,
                 detecting: None,
             }));
@@ -66,7 +68,7 @@ impl App {
             return;
         };
         match action {
-            Key::Quit => self.quit = true,
+            Key::Quit => self.request_quit(),
             Key::Help => {
                 self.help_scroll = 0;
                 self.mode = Mode::Help;

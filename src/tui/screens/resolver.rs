@@ -178,6 +178,8 @@ fn render_table(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
         lines.push(Line::from(spans));
     }
     Paragraph::new(lines).render(inner, buf);
+    let (above, below) = crate::tui::more::hidden(n, first, rows);
+    crate::tui::more::mark(app, area, above, below, buf);
 }
 
 /// A huge step's stop whose whole table was not kept: what it says, then

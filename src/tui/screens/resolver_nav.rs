@@ -68,7 +68,7 @@ impl App {
                 self.resolver = None;
                 self.screen = Screen::Run;
             }
-            Key::Up => self.quit = true,
+            Key::Up => self.request_quit(),
             _ => {}
         }
     }

@@ -201,6 +201,11 @@ pub fn chart(
         .render(area, buf);
 }
 
+/// An event as the list shows it: time, step, what happened.
+pub fn event_line(e: &crate::trace::run::EventLine) -> String {
+    format!("{:>8.3} s  {:>5}  {}", e.time, e.step, e.text)
+}
+
 fn render_events(app: &App, run: &RunView, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let trace = &run.player.run;
@@ -228,6 +233,7 @@ fn render_events(app: &App, run: &RunView, area: Rect, buf: &mut Buffer) {
     let rows = inner.height as usize;
     let end = shown.saturating_sub(run.events_scroll.min(shown.saturating_sub(rows.min(shown))));
     let start = end.saturating_sub(rows);
+    run.events_shown.set((start, end));
     let w = inner.width as usize;
     let lines: Vec<Line> = trace.events[start..end]
         .iter()
@@ -237,16 +243,25 @@ fn render_events(app: &App, run: &RunView, area: Rect, buf: &mut Buffer) {
             } else {
                 Style::new()
             };
-            Line::styled(
-                truncate(&format!("{:>8.3} s  {:>5}  {}", e.time, e.step, e.text), w),
-                style,
-            )
+            Line::styled(truncate(&event_line(e), w), style)
         })
         .collect();
+    let cut = trace.events[start..end]
+        .iter()
+        .any(|e| crate::tui::wrap::width(&event_line(e)) > w);
     if lines.is_empty() {
         Paragraph::new(Line::styled("no events yet: Space plays, → steps", t.dim()))
             .render(inner, buf);
     } else {
         Paragraph::new(lines).render(inner, buf);
+    }
+    let (above, below) = (start, shown - end);
+    crate::tui::more::mark(app, area, above, below, buf);
+    if cut {
+        // Where the list cuts an event, say how to read it whole.
+        let hint = " i: in full ";
+        if area.width as usize > crate::tui::wrap::width(hint) + 2 {
+            buf.set_string(area.x + 1, area.bottom() - 1, hint, t.dim());
+        }
     }
 }

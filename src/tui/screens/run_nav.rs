@@ -150,6 +150,7 @@ impl App {
             Key::Toggle(Toggle::Sleep) => run.toggles.sleep = !run.toggles.sleep,
             Key::Toggle(Toggle::Names) => run.toggles.names = !run.toggles.names,
             Key::Toggle(Toggle::Bounds) => run.toggles.bounds = !run.toggles.bounds,
+            Key::Events => return self.show_events(),
             Key::PageUp => run.events_scroll += 5,
             Key::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
             Key::Open if run.recording.is_some() => {
@@ -174,7 +175,7 @@ impl App {
                 run.playing = false;
                 return self.open_detect();
             }
-            Key::Up => self.quit = true,
+            Key::Up => return self.request_quit(),
             _ => {}
         }
         if let Some(text) = said {
