@@ -90,8 +90,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let scroll = app.scroll.min(overflow);
     let mut block = block;
     if overflow > 0 {
-        let hint = if scroll < overflow {
-            format!(" ↓ {} more · PgDn ", overflow - scroll)
+        let hint = if scroll == 0 {
+            format!(" ↓ {overflow} more · PgDn ")
+        } else if scroll < overflow {
+            format!(" ↑ {scroll} above · ↓ {} more · PgDn ", overflow - scroll)
         } else {
             format!(" ↑ {scroll} more above · PgUp ")
         };

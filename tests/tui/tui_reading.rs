@@ -194,6 +194,8 @@ fn s_scrolls_to_the_symbols() {
     let after = screen(&a, 80, 24).join("\n");
     assert!(!before.contains("Symbols in these formulas"));
     assert!(after.contains("Symbols in these formulas"), "{after}");
+    // Scrolled to the middle: the panel says what lies above and below.
+    assert!(after.contains(" above · ↓ "), "{after}");
 }
 
 /// The form lists numbers as the formatter writes them; an edit that
