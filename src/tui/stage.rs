@@ -17,6 +17,8 @@ use crate::trace::{Formula, Step};
 /// Gutter marking a line whose numbers changed with the last edit.
 const CHANGED: &str = "● ";
 const PLAIN: &str = "  ";
+/// The indent of a formula's `= …` lines when its left-hand side is long.
+const SHORT_PAD: usize = 5;
 
 /// One logical line before wrapping.
 struct Row {
@@ -40,6 +42,9 @@ impl Row {
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    // The rows below lay out to this width (a border and the gutter aside).
+    app.panel_width
+        .set(area.width.saturating_sub(2 + PLAIN.len() as u16));
     let (title, rows) = match app.stage() {
         None => (" Overview ".to_string(), overview(app)),
         Some(s) => {
@@ -80,14 +85,15 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         }
     }
     let overflow = (lines.len() as u16).saturating_sub(inner.height);
-    app.panel_width.set(text_width as u16);
     app.scroll_max.set(overflow);
     app.page_rows.set(inner.height);
     let scroll = app.scroll.min(overflow);
     let mut block = block;
     if overflow > 0 {
-        let hint = if scroll < overflow {
-            format!(" ↓ {} more · PgDn ", overflow - scroll)
+        let hint = if scroll == 0 {
+            format!(" ↓ {overflow} more · PgDn ")
+        } else if scroll < overflow {
+            format!(" ↑ {scroll} above · ↓ {} more · PgDn ", overflow - scroll)
         } else {
             format!(" ↑ {scroll} more above · PgUp ")
         };
@@ -219,7 +225,12 @@ fn overview(app: &App) -> Vec<Row> {
 fn formula_rows(app: &App, step: &Step, f: &Formula, hide_result: bool) -> Vec<Row> {
     let t = &app.theme;
     let fmt = &app.fmt;
-    let pad = width(&f.lhs) + 3;
+    // The `= …` lines hang under the left-hand side's `=`, unless that
+    // leaves less than half the panel for the numbers: then under a short indent.
+    let pad = match width(&f.lhs) + 3 {
+        pad if 2 * pad > app.panel_width.get() as usize => SHORT_PAD,
+        pad => pad,
+    };
     let changed = |names: &[&str]| names.iter().any(|n| app.changed(step.id.json_name(), n));
     let mut rows = Vec::new();
     let mut first = true;

@@ -21,37 +21,43 @@ fn contact_lessons() -> Vec<(Vec<contact_lab::lesson::Lesson>, usize)> {
 }
 
 /// Every stage page of every contact of every lesson, at the stage panel's
-/// width at 80×24 and 100×30, with and without the symbols: each row of
-/// the panel is broken only at its spaces (so never inside a number such
-/// as `0.0750194` or a unit such as `(m/s)/(N·s)`).
+/// widths at 80×24 and 100×30, with the symbols listed at the narrower
+/// (they only add rows; listing them is slow in a debug build): each row of the panel is broken only at its spaces (so never
+/// inside a number such as `0.0750194` or a unit such as `(m/s)/(N·s)`).
 #[test]
 fn no_line_break_falls_inside_a_number_or_a_unit() {
     let mut rows_checked = 0;
-    for (w, h) in [(80, 24), (100, 30)] {
-        for (lessons, at) in contact_lessons() {
-            let contacts = lessons[at].contacts.len();
-            let mut a = App::new(lessons, at, 0, Theme { color: false });
-            draw(&mut term(w, h), &a);
-            for k in 0..contacts {
-                if k > 0 {
-                    key(&mut a, KeyCode::Tab);
-                }
-                for symbols in [false, true] {
-                    a.symbols = symbols;
-                    for page in 0..a.pages() {
-                        a.page = page;
-                        for (row, pieces) in tui::stage::wrapped_rows(&a) {
-                            let words: Vec<&str> =
-                                pieces.iter().flat_map(|p| p.split_whitespace()).collect();
-                            assert_eq!(
-                                words,
-                                row.split_whitespace().collect::<Vec<_>>(),
-                                "{} contact {k} page {page} at {w}×{h}: a break inside a word:\n{}",
-                                a.trace.lesson,
-                                pieces.join("\n")
-                            );
-                            rows_checked += 1;
-                        }
+    for (lessons, at) in contact_lessons() {
+        let contacts = lessons[at].contacts.len();
+        let mut a = App::new(lessons, at, 0, Theme { color: false });
+        let widths: Vec<u16> = [(80, 24), (100, 30)]
+            .into_iter()
+            .map(|(w, h)| {
+                draw(&mut term(w, h), &a);
+                a.panel_width.get()
+            })
+            .collect();
+        let narrowest = widths.iter().copied().min();
+        for k in 0..contacts {
+            if k > 0 {
+                key(&mut a, KeyCode::Tab);
+            }
+            for &width in &widths {
+                a.panel_width.set(width);
+                a.symbols = Some(width) == narrowest;
+                for page in 0..a.pages() {
+                    a.page = page;
+                    for (row, pieces) in tui::stage::wrapped_rows(&a) {
+                        let words: Vec<&str> =
+                            pieces.iter().flat_map(|p| p.split_whitespace()).collect();
+                        assert_eq!(
+                            words,
+                            row.split_whitespace().collect::<Vec<_>>(),
+                            "{} contact {k} page {page} at {width} cells: a break inside a word:\n{}",
+                            a.trace.lesson,
+                            pieces.join("\n")
+                        );
+                        rows_checked += 1;
                     }
                 }
             }
@@ -194,6 +200,8 @@ fn s_scrolls_to_the_symbols() {
     let after = screen(&a, 80, 24).join("\n");
     assert!(!before.contains("Symbols in these formulas"));
     assert!(after.contains("Symbols in these formulas"), "{after}");
+    // Scrolled to the middle: the panel says what lies above and below.
+    assert!(after.contains(" above · ↓ "), "{after}");
 }
 
 /// The form lists numbers as the formatter writes them; an edit that
