@@ -72,12 +72,16 @@ fn key_text(a: &ShortAnswer) -> String {
 
 fn shape(s: &Option<Shape>) -> String {
     match s {
-        Some(Shape::Box { sides: [x, y, z] }) if x == y && y == z => format!("cube, sides {x}"),
-        Some(Shape::Box { sides: [x, y, z] }) => format!("box {x} × {y} × {z}"),
-        Some(Shape::Sphere { radius: r }) => format!("solid sphere, r = {r}"),
-        Some(Shape::HollowSphere { radius: r }) => format!("hollow sphere, r = {r}"),
-        Some(Shape::Cylinder { radius, height }) => format!("cylinder, r = {radius}, h = {height}"),
-        Some(Shape::Capsule { radius, height }) => format!("capsule, r = {radius}, h = {height}"),
+        Some(Shape::Box { sides: [x, y, z] }) if x == y && y == z => format!("cube, sides {x} m"),
+        Some(Shape::Box { sides: [x, y, z] }) => format!("box {x} × {y} × {z} m"),
+        Some(Shape::Sphere { radius: r }) => format!("solid sphere, r = {r} m"),
+        Some(Shape::HollowSphere { radius: r }) => format!("hollow sphere, r = {r} m"),
+        Some(Shape::Cylinder { radius, height }) => {
+            format!("cylinder, r = {radius} m, h = {height} m")
+        }
+        Some(Shape::Capsule { radius, height }) => {
+            format!("capsule, r = {radius} m, h = {height} m")
+        }
         Some(Shape::Hull(hull)) => format!("convex hull of {} vertices", hull.vertices().len()),
         Some(Shape::HalfSpace { .. }) => "half-space".into(),
         None => "–".into(),
@@ -103,7 +107,7 @@ fn rows(lesson: &Lesson, fmt: &Fmt) -> Vec<(&'static str, Vec<String>)> {
                 .iter()
                 .map(|b| {
                     if b.movable() {
-                        fmt.num(b.mass)
+                        format!("{} kg", fmt.num(b.mass))
                     } else {
                         "∞ (immovable)".into()
                     }
@@ -119,9 +123,12 @@ fn rows(lesson: &Lesson, fmt: &Fmt) -> Vec<(&'static str, Vec<String>)> {
             all(&|b| {
                 b.inertia.map_or("–".into(), |m| {
                     if (0..3).all(|r| (0..3).all(|c| r == c || m[(r, c)] == 0.0)) {
-                        format!("diag({})", fmt.list(&[m[(0, 0)], m[(1, 1)], m[(2, 2)]]))
+                        format!(
+                            "diag({}) kg·m²",
+                            fmt.list(&[m[(0, 0)], m[(1, 1)], m[(2, 2)]])
+                        )
                     } else {
-                        fmt.value(&Value::from(m))
+                        format!("{} kg·m²", fmt.value(&Value::from(m)))
                     }
                 })
             }),
@@ -131,7 +138,7 @@ fn rows(lesson: &Lesson, fmt: &Fmt) -> Vec<(&'static str, Vec<String>)> {
             lesson
                 .bodies
                 .iter()
-                .map(|b| v(b.position.as_slice()))
+                .map(|b| format!("{} m", v(b.position.as_slice())))
                 .collect(),
         ),
         (
@@ -141,12 +148,33 @@ fn rows(lesson: &Lesson, fmt: &Fmt) -> Vec<(&'static str, Vec<String>)> {
                 format!("[{}]", fmt.list(&[q.w, q.i, q.j, q.k]))
             }),
         ),
-        ("velocity v", all(&|b| v(b.velocity.as_slice()))),
+        (
+            "velocity v",
+            all(&|b| format!("{} m/s", v(b.velocity.as_slice()))),
+        ),
         (
             "angular velocity ω",
-            all(&|b| v(b.angular_velocity.as_slice())),
+            all(&|b| format!("{} rad/s", v(b.angular_velocity.as_slice()))),
         ),
     ]
+}
+
+/// The units a cell of the scene table ends with.
+const UNITS: [&str; 5] = ["kg·m²", "m/s", "rad/s", "kg", "m"];
+
+/// A cell of the scene table in LaTeX: its unit upright in maths
+/// (`$\,\mathrm{kg\cdot m^2}$`), the rest as prose.
+fn latex_cell(cell: &str) -> String {
+    for unit in UNITS {
+        if let Some(number) = cell.strip_suffix(unit).and_then(|c| c.strip_suffix(' ')) {
+            return format!(
+                "{}${}$",
+                prose(number),
+                crate::trace::glossary::unit_latex(unit)
+            );
+        }
+    }
+    prose(cell)
 }
 
 /// The contact's data in one sentence.
@@ -155,7 +183,7 @@ fn contact_line(lesson: &Lesson, fmt: &Fmt) -> String {
     let names = lesson.contact_body_names(0);
     let v = |x: &[f64]| format!("({})", fmt.list(x));
     let mut s = format!(
-        "Contact point q = {}; normal d̂ = {}, from {} toward {}; restitution c = {}",
+        "Contact point q = {} m; normal d̂ = {}, from {} toward {}; restitution c = {}",
         v(c.point.as_slice()),
         v(c.normal.as_slice()),
         names.get(1).map_or("the world", String::as_str),
@@ -163,7 +191,7 @@ fn contact_line(lesson: &Lesson, fmt: &Fmt) -> String {
         fmt.num(c.restitution)
     );
     if c.penetration > 0.0 {
-        let _ = write!(s, "; penetration d_pen = {}", fmt.num(c.penetration));
+        let _ = write!(s, "; penetration d_pen = {} m", fmt.num(c.penetration));
     }
     if c.static_friction > 0.0 || c.dynamic_friction > 0.0 {
         if c.static_friction == c.dynamic_friction {
@@ -289,7 +317,7 @@ pub fn latex(exercises: &[Exercise], r: &Request, answers: bool, fmt: &Fmt) -> S
                 .join(" & ")
         );
         for (what, cells) in rows(l, &inputs) {
-            let cells: Vec<String> = cells.iter().map(|c| prose(c)).collect();
+            let cells: Vec<String> = cells.iter().map(|c| latex_cell(c)).collect();
             let _ = writeln!(body, "{} & {} \\\\", prose(what), cells.join(" & "));
         }
         let _ = writeln!(

@@ -360,3 +360,45 @@ fn no_answer_shows_in_a_set_up_figure_or_the_question_sheet() {
     }
     assert!(searched > 2000, "{searched}");
 }
+
+/// Every quantity a sheet shows carries its unit (issue 40): the scene
+/// table and the contact line in Markdown and LaTeX (units upright in
+/// maths), and the set-up figure's legend, which gives ω but not ω′.
+#[test]
+fn a_sheet_and_its_set_up_figure_give_units() {
+    let md = stdout(&["exercise", "--seed", "1", "--count", "2"]);
+    for row in [
+        "| mass m | 8 kg | ∞ (immovable) |",
+        "| shape | cube, sides 12 m | half-space |",
+        "| inertia tensor I | diag(192, 192, 192) kg·m² | – |",
+        "| position p | (3, 13.44, 0) m | (-1.08, 6, 0) m |",
+        "| velocity v | (-2.21, -1.68, 0) m/s | – |",
+        "| angular velocity ω | (0, 0, 0) rad/s | – |",
+    ] {
+        assert!(md.contains(row), "{row}");
+    }
+    assert!(md.contains("Contact point q = (-1.08, 6, 0) m; normal d̂ = (0, 1, 0)"));
+    let tex = stdout(&[
+        "exercise", "--seed", "1", "--count", "1", "--format", "latex",
+    ]);
+    assert!(
+        tex.contains("diag(192, 192, 192)$\\,\\mathrm{kg\\cdot m^2}$"),
+        "{tex}"
+    );
+    assert!(tex.contains("-{}-seed 1"), "a flag is not an en dash");
+    let dir = common::scratch("exercise-units");
+    cli()
+        .args(["exercise", "--seed", "1", "--count", "2", "-o"])
+        .arg(dir.join("week3.md"))
+        .assert()
+        .success();
+    let svg = std::fs::read_to_string(dir.join("week3-2.svg")).unwrap();
+    for line in [
+        "q contact point (14.72, 10, 0) m",
+        "v₁ before (0.91, -1.07, 0) m/s",
+        "ω₁ (0, 0, 0.66) rad/s",
+        "Velocities to scale;",
+    ] {
+        assert!(svg.contains(&format!(">{line}<")), "{line}\n{svg}");
+    }
+}

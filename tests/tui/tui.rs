@@ -424,11 +424,11 @@ fn predict_mode_hides_the_narrative_that_quotes_results() {
     let mut app = tui::open(Some("lecture-2"), None).unwrap();
     let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap();
     terminal.draw(|f| f.render_widget(&app, f.area())).unwrap();
-    assert!(buffer_text(terminal.backend().buffer()).contains("(18.73)"));
+    assert!(buffer_text(terminal.backend().buffer()).contains("(18.73 N·s)"));
     app.key(KeyEvent::from(KeyCode::Char('p')));
     terminal.draw(|f| f.render_widget(&app, f.area())).unwrap();
     let text = buffer_text(terminal.backend().buffer());
-    assert!(!text.contains("(18.73)"), "{text}");
+    assert!(!text.contains("(18.73 N·s)"), "{text}");
     assert!(text.contains("hidden in predict mode"));
 }
 

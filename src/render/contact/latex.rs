@@ -26,13 +26,14 @@ pub fn aligned_rows(f: &Formula, step: &Step, fmt: &Fmt) -> Vec<String> {
         right.push(fmt.fill(&s, step, true));
     }
     if let Some((name, r)) = f.result.as_ref().and_then(|n| Some((n, step.lookup(n)?))) {
-        let r = fmt.value_latex(r);
+        let unit = glossary::unit(step, name);
+        let r = degrees_apart(fmt.value_latex(r), unit);
         if right.last() != Some(&r) {
             right.push(r);
         }
         // The result carries its unit.
         if let Some(last) = right.last_mut() {
-            last.push_str(&glossary::unit_latex(glossary::unit(step, name)));
+            last.push_str(&glossary::unit_latex(unit));
         }
     }
     let mut rows = Vec::new();
@@ -56,11 +57,22 @@ pub fn heading(depth: usize, text: &str) -> String {
     format!("\\{cmd}*{{{text}}}\n")
 }
 
+/// A number in degrees written in powers of ten in parentheses,
+/// `(5.9 \times 10^{-5})^{\circ}`: the degree sign after a bare exponent
+/// reads as part of it.
+fn degrees_apart(number: String, unit: &str) -> String {
+    if unit == "°" && number.contains("\\times 10^") && !number.starts_with('(') {
+        format!("({number})")
+    } else {
+        number
+    }
+}
+
 fn note(text: &str, step: &Step, fmt: &Fmt) -> String {
     fmt.fill_named(text, step, &prose, &|name, v| {
         format!(
             "${}{}$",
-            fmt.value_latex(v),
+            degrees_apart(fmt.value_latex(v), glossary::unit(step, name)),
             glossary::unit_latex(glossary::unit_to_add(
                 text,
                 name,

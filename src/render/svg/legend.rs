@@ -80,7 +80,7 @@ pub fn legend(page: &mut Page, fig: &Figure) {
             }
             LegendItem::ContactPoint { contact, at } => {
                 let q = &fig.contacts[contact].label;
-                out.line(None, &format!("{q} contact point {}", v(at)));
+                out.line(None, &format!("{q} contact point {} m", v(at)));
             }
             LegendItem::Normal { direction, .. } => {
                 out.line(
@@ -91,7 +91,7 @@ pub fn legend(page: &mut Page, fig: &Figure) {
             LegendItem::Impulse { impulse, .. } => {
                 out.line(
                     Some((IMPULSE, false, 5.0)),
-                    &format!("g on body 1 {}", v(impulse)),
+                    &format!("g on body 1 {} N·s", v(impulse)),
                 );
             }
             LegendItem::Reaction { .. } => out.line(None, "(body 2 receives -g)"),
@@ -99,7 +99,7 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                 let n = tag(body);
                 out.line(
                     Some((ARM, true, 2.0)),
-                    &format!("r{n} = q - p{n} {}", v(arm)),
+                    &format!("r{n} = q - p{n} {} m", v(arm)),
                 );
             }
             LegendItem::Velocity {
@@ -117,13 +117,13 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                 if drawn(crate::render::figure::ArrowKind::Velocity) {
                     out.line(
                         Some((BEFORE, true, 3.5)),
-                        &format!("v{n} before {}", v(before)),
+                        &format!("v{n} before {} m/s", v(before)),
                     );
                 }
                 if drawn(crate::render::figure::ArrowKind::VelocityAfter) {
                     out.line(
                         Some((AFTER, false, 3.5)),
-                        &format!("v{n}′ after {}", v(after)),
+                        &format!("v{n}′ after {} m/s", v(after)),
                     );
                 }
             }
@@ -142,26 +142,49 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                         || fig.arrows.iter().any(|a| a.kind == kind)
                 };
                 let text = match (drawn(false), drawn(true)) {
-                    (true, true) => format!("ω{n} {} → {}", v(before), v(after)),
-                    (true, false) => format!("ω{n} {}", v(before)),
-                    _ => format!("ω{n}′ {}", v(after)),
+                    (true, true) => format!("ω{n} {} → {} rad/s", v(before), v(after)),
+                    (true, false) => format!("ω{n} {} rad/s", v(before)),
+                    _ => format!("ω{n}′ {} rad/s", v(after)),
                 };
                 out.line(None, &text);
             }
             LegendItem::Travel { body, distance } => {
-                let moves = format!("projection moves {} by {}", name(body), fmt.num(distance));
+                let moves = format!("projection moves {} by {} m", name(body), fmt.num(distance));
                 out.line(None, &moves);
                 out.line(None, "(beyond the figure)");
             }
             LegendItem::Moved => out.line(Some((MOVED, true, 2.5)), "after projection"),
             LegendItem::Scales => {
                 out.y += 6.0;
-                out.line(None, "Velocities to one scale, the impulse");
-                out.line(None, "to another; ⊙ toward you, ⊗ away.");
+                // Only the scales of what is drawn: a set-up has no impulse.
+                use crate::render::figure::ArrowKind as K;
+                let drawn = |kinds: &[K]| {
+                    fig.arrows
+                        .iter()
+                        .any(|a| kinds.contains(&a.kind) && a.tip(1.0) != a.at)
+                };
+                match (
+                    drawn(&[K::Velocity, K::VelocityAfter]),
+                    drawn(&[K::Impulse, K::Reaction]),
+                ) {
+                    (true, true) => {
+                        out.line(None, "Velocities to one scale, the impulse");
+                        out.line(None, "to another; ⊙ toward you, ⊗ away.");
+                    }
+                    (true, false) => {
+                        out.line(None, "Velocities to scale;");
+                        out.line(None, "⊙ toward you, ⊗ away.");
+                    }
+                    (false, true) => {
+                        out.line(None, "The impulse to scale;");
+                        out.line(None, "⊙ toward you, ⊗ away.");
+                    }
+                    (false, false) => out.line(None, "⊙ toward you, ⊗ away."),
+                }
             }
             LegendItem::OffSurface { body, distance, .. } => {
                 let side = if distance > 0.0 { "outside" } else { "inside" };
-                let off = format!("⚠ q is {} {side} {}", fmt.num(distance.abs()), name(body));
+                let off = format!("⚠ q is {} m {side} {}", fmt.num(distance.abs()), name(body));
                 out.line(None, &off);
                 out.line(None, "as drawn (shape or orientation");
                 out.line(None, "in the lesson do not fit q).");
