@@ -28,6 +28,14 @@ pub fn simulate(
     for l in sim.lowered_tolerances() {
         let _ = writeln!(err, "warning: {}", crate::trace::run::lowered_text(&l));
     }
+    for b in sim.below_rounding() {
+        let name = lesson
+            .bodies
+            .get(b.body)
+            .map_or("a body", |x| x.name.as_str());
+        let text = crate::trace::run::below_rounding_text(name, &b);
+        let _ = writeln!(err, "warning: {text}");
+    }
     if let Some(n) = args.trace_step {
         return trace_step(&lesson, args, sim, steps, n, out);
     }

@@ -413,6 +413,20 @@ pub fn lowered_text(l: &crate::physics::step::tolerance::Lowered) -> String {
     )
 }
 
+/// A body below the rounding of its position, as a warning says it.
+pub fn below_rounding_text(
+    name: &str,
+    b: &crate::physics::step::tolerance::BelowRounding,
+) -> String {
+    let f = crate::format::Fmt::new(3);
+    format!(
+        "{name} (half-width {} m) is smaller than ten times the rounding of its position ({} m, {} of its half-widths): it cannot be placed closer than that, and its contacts' depths are rounding, not geometry",
+        f.num(b.size),
+        f.num(b.rounding),
+        f.num(b.rounding / b.size)
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::apart;

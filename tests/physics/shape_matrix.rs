@@ -432,3 +432,52 @@ fn a_buried_body_is_reported_once_for_its_pair_not_once_per_contact() {
         assert_eq!(inside, 1, "{up}: {:?}", r.events);
     }
 }
+
+#[test]
+fn a_picometre_ball_on_a_terametre_ball_is_found_below_the_rounding_of_its_position() {
+    // The ball can only be placed to within 1.2e-4 m of the big ball's
+    // top, 1.2e8 of its radii (the run says so in a warning).
+    let text = r#"id = "tiny-on-huge"
+title = "A picometre ball on a terametre ball"
+source = "issue 39"
+summary = "Sizes 24 orders of magnitude apart."
+
+[step]
+dt = 0.016666666666666666
+steps = 10
+
+[[body]]
+name = "tiny"
+mass = 1.0
+shape = { sphere = 1e-12 }
+position = [0, 1e12, 0]
+
+[[body]]
+name = "huge"
+mass = inf
+shape = { sphere = 1e12 }
+position = [0, 0, 0]
+"#;
+    let lesson = parse("shape_matrix.rs", text).expect("a valid scene");
+    let params = lesson.sim_params().expect("a scene");
+    let sim = Simulation::new(
+        lesson.world::<f64>(),
+        params,
+        lesson.simulation.unwrap().materials,
+    );
+    let found = sim.below_rounding();
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(found[0].body, 0);
+    let ratio = found[0].rounding / found[0].size;
+    assert!((ratio / 1.22e8 - 1.0).abs() < 0.01, "{ratio}");
+    // A metre ball at 1 km is far above its rounding.
+    let fine = text.replace("1e-12", "1").replace("1e12", "1000");
+    let lesson = parse("shape_matrix.rs", &fine).expect("a valid scene");
+    let params = lesson.sim_params().expect("a scene");
+    let sim = Simulation::new(
+        lesson.world::<f64>(),
+        params,
+        lesson.simulation.unwrap().materials,
+    );
+    assert!(sim.below_rounding().is_empty());
+}

@@ -180,6 +180,12 @@ impl<T: Real> Simulation<T> {
         tolerance::scaled(&self.params, self.size).1
     }
 
+    /// The movable bodies smaller than ten times the rounding of their
+    /// position (see [`tolerance::below_rounding`]).
+    pub fn below_rounding(&self) -> Vec<tolerance::BelowRounding> {
+        tolerance::below_rounding(&self.world)
+    }
+
     /// Runs `f` with the tolerances scaled to the bodies in `params`, and
     /// the parameters as given restored after it.
     fn with_scaled_tolerances<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {

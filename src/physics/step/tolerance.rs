@@ -25,16 +25,61 @@ pub fn smallest_size<T: Real>(world: &World<T>) -> Option<f64> {
         .bodies
         .iter()
         .filter(|b| b.movable)
-        .filter_map(|b| match *b.shape.as_ref()? {
-            Shape::Sphere { radius } | Shape::HollowSphere { radius } => Some(radius),
-            Shape::Box { sides } => Some(sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)) / 2.0),
-            Shape::Cylinder { radius, height } => Some(radius.min(height / 2.0)),
-            Shape::Capsule { radius, .. } => Some(radius),
-            Shape::Hull(ref hull) => Some(hull.inner_radius()),
-            Shape::HalfSpace { .. } => None,
-        })
-        .filter(|s| s.is_finite() && *s > 0.0)
+        .filter_map(|b| half_width(b.shape.as_ref()?))
         .reduce(f64::min)
+}
+
+/// A finite shape's smallest half-width (sphere radius, half the smallest
+/// side of a box, …; `None` for a half-space).
+fn half_width(shape: &Shape) -> Option<f64> {
+    let s = match *shape {
+        Shape::Sphere { radius } | Shape::HollowSphere { radius } => radius,
+        Shape::Box { sides } => sides.iter().fold(f64::INFINITY, |m, s| m.min(*s)) / 2.0,
+        Shape::Cylinder { radius, height } => radius.min(height / 2.0),
+        Shape::Capsule { radius, .. } => radius,
+        Shape::Hull(ref hull) => hull.inner_radius(),
+        Shape::HalfSpace { .. } => return None,
+    };
+    (s.is_finite() && s > 0.0).then_some(s)
+}
+
+/// A movable body whose size is below ten times the rounding of its
+/// position (the spacing of f64 at its largest coordinate): a 1e-12 m ball
+/// at 1e12 m can only be placed to within 1.2e-4 m, 1.2e8 of its radii, so
+/// its contacts' depths are rounding, not geometry.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BelowRounding {
+    pub body: usize,
+    /// Its smallest half-width (m).
+    pub size: f64,
+    /// The spacing of f64 at its position (m).
+    pub rounding: f64,
+}
+
+/// The movable bodies smaller than ten times the rounding of their position.
+pub fn below_rounding<T: Real>(world: &World<T>) -> Vec<BelowRounding> {
+    world
+        .bodies
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.movable)
+        .filter_map(|(body, b)| {
+            let size = half_width(b.shape.as_ref()?)?;
+            let far = b
+                .state
+                .position
+                .iter()
+                .fold(0.0f64, |m, x| m.max(to_f64(*x).abs()));
+            // The spacing of f64 at `far`: its last bit's worth.
+            let rounding =
+                crate::physics::scale::pow2_below(far.max(f64::MIN_POSITIVE)) * f64::EPSILON;
+            (size < 10.0 * rounding).then_some(BelowRounding {
+                body,
+                size,
+                rounding,
+            })
+        })
+        .collect()
 }
 
 /// A tolerance the rule lowered.
