@@ -3,13 +3,13 @@
 
 use std::io::Write;
 
-use super::{io, warn};
+use super::{io, progress, warn};
 use crate::cli::{AdviseArgs, AdviseFormat, PerArg};
 use crate::error::AppError;
 use crate::format::Fmt;
 use crate::lesson::Lesson;
 use crate::render::study::advise as render;
-use crate::study::advise::Per;
+use crate::study::advise::{Per, Watch};
 
 pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     if !(args.error.is_finite() && args.error > 0.0) {
@@ -39,8 +39,26 @@ pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         PerArg::Run => Per::Run,
         PerArg::Step => Per::Step,
     };
-    let Some(advice) = crate::study::advise::advise(&lesson, seconds, solver, args.error, per)
-    else {
+    // Progress on a terminal (a search on a 200-sphere pile runs for
+    // minutes): the stages done, with an estimate of the time left.
+    let shown = Shown {
+        progress: progress::bar(
+            1,
+            "stages",
+            &format!(
+                "advise: the cheapest model of {} within {} m of its reference ({} s per run), searched in stages; the time left is estimated from the stages done",
+                lesson.id,
+                Fmt::new(3).num(args.error),
+                Fmt::new(3).num(seconds)
+            ),
+        ),
+        begun: std::cell::Cell::new(0),
+        stage: std::cell::RefCell::new(String::new()),
+    };
+    let advice =
+        crate::study::advise::advise_watched(&lesson, seconds, solver, args.error, per, &shown);
+    drop(shown);
+    let Some(advice) = advice else {
         return Err(AppError::Runtime(format!("{} cannot be run", lesson.id)));
     };
     let fmt = Fmt::new(args.digits as usize);
@@ -50,4 +68,32 @@ pub fn advise(args: &AdviseArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         AdviseFormat::Json => render::json(&advice),
     };
     out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// The search's progress as a bar of stages, the current one and the
+/// configurations run named beside it.
+struct Shown {
+    progress: progress::Progress,
+    begun: std::cell::Cell<u64>,
+    stage: std::cell::RefCell<String>,
+}
+
+impl Watch for Shown {
+    fn plan(&self, stages: usize) {
+        self.progress.bar.set_length(stages as u64);
+    }
+
+    fn stage(&self, what: &str) {
+        self.progress.bar.set_position(self.begun.get());
+        self.begun.set(self.begun.get() + 1);
+        self.progress.bar.set_message(what.to_string());
+        *self.stage.borrow_mut() = what.to_string();
+    }
+
+    fn ran(&self, runs: usize, steps: usize) {
+        self.progress.bar.set_message(format!(
+            "{}: {runs} configurations, {steps} steps",
+            self.stage.borrow()
+        ));
+    }
 }

@@ -56,6 +56,11 @@ pub struct Lesson {
     pub warnings: Vec<LessonDiagnostic>,
     /// `[figure]`: how the pictures correct the lesson's geometry, if at all.
     pub figure: Option<FigureDef>,
+    /// Every scene-wide knob the file sets (`[settings]`, `[world]`,
+    /// `[step]`, `[sleep]`): its table, the knob and the key as the file
+    /// spells it (the knob's name or an old one: `[sleep] enabled`), so that
+    /// what is written back into the file replaces the same key.
+    pub spellings: Vec<(crate::physics::knobs::Table, &'static str, String)>,
 }
 
 /// A lesson's text as contact-lab shows it: the Unicode minus sign (U+2212)

@@ -118,7 +118,8 @@ struct Validator {
     /// The scene-wide knobs set so far (`[settings]`, `[world]`, `[step]`,
     /// `[sleep]`) and the table each was set in: a knob set in two of them
     /// is said, since the table read last silently wins.
-    scene_knobs: Vec<(&'static str, crate::physics::knobs::Table)>,
+    /// The key as the file spells it comes third.
+    scene_knobs: Vec<(&'static str, crate::physics::knobs::Table, String)>,
 }
 
 fn v3(a: [f64; 3]) -> Vector3<f64> {
@@ -264,6 +265,11 @@ impl Validator {
             resolver,
             warnings: Vec::new(),
             figure,
+            spellings: self
+                .scene_knobs
+                .iter()
+                .map(|(knob, table, key)| (*table, *knob, key.clone()))
+                .collect(),
         }
     }
 

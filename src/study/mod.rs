@@ -124,6 +124,8 @@ pub struct Row {
     pub config: Config,
     /// µs per step: median, min and max over the timed runs (None: --no-timing).
     pub microseconds: Option<[f64; 3]>,
+    /// µs per simulated second: the same timings × steps per second.
+    pub microseconds_per_second: Option<[f64; 3]>,
     /// Contact visits (both phases) per step, mean over the run.
     pub visits_per_step: f64,
     /// Continuous detection's time-of-collision tests (GJK calls) per step,
@@ -132,6 +134,10 @@ pub struct Row {
     /// Steps in which a phase stopped at its limit with work left.
     pub limit_steps: usize,
     pub steps: usize,
+    /// Work per simulated second, advise's cost ([`advise::cost`]):
+    /// (contact visits + continuous detection's tests + 1) per step ×
+    /// steps per simulated second. The front is drawn against it.
+    pub work_per_second: f64,
     pub max_penetration: f64,
     pub max_closing_velocity: f64,
     pub energy_gain: f64,
@@ -139,7 +145,7 @@ pub struct Row {
     /// Tunnelled events over the run (missed collisions).
     pub missed_collisions: usize,
     pub error_vs_reference: f64,
-    /// On the Pareto front of (cost, error) among this scene's rows.
+    /// On the Pareto front of ([`Row::cost`], error) among this scene's rows.
     pub pareto: bool,
     /// Why the run stopped early (the scene blew up); its numbers are NaN.
     pub failure: Option<String>,
@@ -152,10 +158,11 @@ impl Row {
         self.visits_per_step + self.ccd_tests_per_step
     }
 
-    /// The cost the front is drawn against: µs per step when timed, else
-    /// the work per step ([`Row::work`]).
+    /// The cost the front is computed on and the chart plots: the work
+    /// per simulated second (deterministic; a smaller time step pays for
+    /// its extra steps).
     pub fn cost(&self) -> f64 {
-        self.microseconds.map_or(self.work(), |m| m[0])
+        self.work_per_second
     }
 }
 

@@ -11,10 +11,22 @@ use crate::physics::Solver;
 const ERROR_TIE_RELATIVE: f64 = 1e-6;
 const ERROR_TIE_ABSOLUTE: f64 = 1e-12;
 
-/// A row's cost for the front: its work per step (contact visits and
-/// continuous detection's tests, deterministic: [`Row::work`]).
+/// A row's cost for the front: its work per simulated second
+/// ([`Row::cost`], deterministic: advise's cost), the axis the chart plots.
 fn cost_of(r: &Row) -> f64 {
-    r.work()
+    r.cost()
+}
+
+/// Work per simulated second, a count: whole from 10 up (`1262`, not
+/// `1.26e3`), the formatter's below ("—" when not a number).
+pub fn work_text(fmt: &Fmt, x: f64) -> String {
+    if !x.is_finite() {
+        "—".into()
+    } else if x >= 10.0 {
+        format!("{x:.0}")
+    } else {
+        fmt.num(x)
+    }
 }
 
 /// `a` below `b` beyond round-off.
@@ -22,12 +34,13 @@ fn less_error(a: f64, b: f64) -> bool {
     a < b - (ERROR_TIE_RELATIVE * b.abs()).max(ERROR_TIE_ABSOLUTE)
 }
 
-/// True when `j` dominates `i`: `j` does no more work (contact visits) and
-/// is either cheaper in work and no less accurate, or more accurate beyond
-/// round-off. Timing does not decide: a rule on the timed min–max ranges
-/// (a row dominated only when slower beyond both ranges) still moved the
-/// marks between two runs wherever two ranges nearly touched, so the marks
-/// follow the work, and the table shows each row's timed range beside it.
+/// True when `j` dominates `i`: `j` does no more work per simulated second
+/// and is either cheaper in work and no less accurate, or more accurate
+/// beyond round-off. Timing does not decide: a rule on the timed min–max
+/// ranges (a row dominated only when slower beyond both ranges) still moved
+/// the marks between two runs wherever two ranges nearly touched, so the
+/// marks follow the work, and the table shows each row's timed range
+/// beside it.
 fn dominates(j: (f64, f64), i: (f64, f64)) -> bool {
     let ((jv, ej), (iv, ei)) = (j, i);
     if jv > iv {
@@ -57,13 +70,14 @@ pub fn mark(rows: &mut [Row]) {
     }
 }
 
-/// The rows of the front, cheapest first: by contact visits (deterministic),
-/// then by error, so that the order does not follow timing noise.
+/// The rows of the front, cheapest first: by work per simulated second
+/// (deterministic), then by error, so that the order does not follow
+/// timing noise.
 pub fn front(rows: &[Row]) -> Vec<&Row> {
     let mut f: Vec<&Row> = rows.iter().filter(|r| r.pareto).collect();
     f.sort_by(|a, b| {
-        a.work()
-            .total_cmp(&b.work())
+        a.cost()
+            .total_cmp(&b.cost())
             .then(b.error_vs_reference.total_cmp(&a.error_vs_reference))
     });
     f
@@ -110,7 +124,7 @@ fn rollback_sentence(study: &SceneStudy, fmt: &Fmt) -> Option<String> {
     let pairs = [
         (other.max_penetration, default.max_penetration),
         (other.energy_gain, default.energy_gain),
-        (other.work(), default.work()),
+        (other.cost(), default.cost()),
         (other.error_vs_reference, default.error_vs_reference),
     ];
     if pairs.iter().all(|&(a, b)| compared(a, b) == "the same") {
@@ -119,7 +133,7 @@ fn rollback_sentence(study: &SceneStudy, fmt: &Fmt) -> Option<String> {
         ));
     }
     Some(format!(
-        "Rollback: with rollback = {to} instead of {from} (the default) the run leaves {} penetration ({} m against {} m), gains {} energy ({} J against {} J), does {} work ({} against {} visits/step) and ends {} the reference ({} m against {} m).",
+        "Rollback: with rollback = {to} instead of {from} (the default) the run leaves {} penetration ({} m against {} m), gains {} energy ({} J against {} J), does {} work ({} against {} per simulated second) and ends {} the reference ({} m against {} m).",
         compared(pairs[0].0, pairs[0].1),
         fmt.num(pairs[0].0),
         fmt.num(pairs[0].1),
@@ -127,8 +141,8 @@ fn rollback_sentence(study: &SceneStudy, fmt: &Fmt) -> Option<String> {
         fmt.num(pairs[1].0),
         fmt.num(pairs[1].1),
         compared(pairs[2].0, pairs[2].1),
-        fmt.num(pairs[2].0),
-        fmt.num(pairs[2].1),
+        work_text(fmt, pairs[2].0),
+        work_text(fmt, pairs[2].1),
         match compared(pairs[3].0, pairs[3].1) {
             "less" => "nearer to",
             "more" => "further from",
@@ -141,23 +155,11 @@ fn rollback_sentence(study: &SceneStudy, fmt: &Fmt) -> Option<String> {
 
 /// One sentence: the cheapest and the most accurate configuration of the
 /// front, and the two solvers at equal work (8 visits per contact). Costs
-/// are quoted in contact visits per step (deterministic) whether or not
+/// are quoted as work per simulated second (deterministic) whether or not
 /// timing is on, so the same study gives the same sentence.
 pub fn verdict(study: &SceneStudy) -> String {
     let fmt = Fmt::new(2);
-    // Work as the table shows it: continuous detection's tests named
-    // where a row made any.
-    let work = |r: &Row| {
-        if r.ccd_tests_per_step > 0.0 {
-            format!(
-                "{} visits + {} ccd tests/step",
-                fmt.num(r.visits_per_step),
-                fmt.num(r.ccd_tests_per_step)
-            )
-        } else {
-            format!("{} visits/step", fmt.num(r.visits_per_step))
-        }
-    };
+    let work = |r: &Row| format!("work {}/s", work_text(&fmt, r.cost()));
     let f = front(&study.rows);
     let (Some(cheap), Some(best)) = (f.first(), f.last()) else {
         return "No configuration finished: nothing to compare.".into();

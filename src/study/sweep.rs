@@ -69,11 +69,14 @@ pub fn study(specs: &[SceneSpec], o: &Options, progress: &mut dyn FnMut(usize, &
             } else {
                 run::rms_distance(&m.positions, &reference.positions)
             };
+            let per_second = m.steps as f64 / spec.seconds;
             rows.push(Row {
                 knob,
                 value,
                 config,
                 microseconds,
+                microseconds_per_second: microseconds.map(|t| t.map(|x| x * per_second)),
+                work_per_second: super::advise::cost(&m, spec.seconds),
                 visits_per_step: m.visits_per_step,
                 ccd_tests_per_step: m.ccd_tests_per_step,
                 limit_steps: m.limit_steps,

@@ -154,7 +154,7 @@ fn quick_agrees_with_full_on_the_solvers_or_says_it_is_partial() {
 }
 
 #[test]
-fn the_study_svg_keeps_its_legend_inside_one_style_per_row_front_and_reference() {
+fn the_study_svg_keeps_its_legend_inside_one_family_per_colour_front_and_reference() {
     let o = sweep::Options {
         timed: false,
         repeats: 1,
@@ -196,18 +196,21 @@ fn the_study_svg_keeps_its_legend_inside_one_style_per_row_front_and_reference()
         };
         assert!(end <= width, "text runs off the canvas at {end}: {body}");
     }
-    let rows = st.scenes[0].rows.len();
-    let styles: std::collections::HashSet<_> = (0..rows)
-        .map(|k| {
-            let (colour, mark) = contact_lab::render::study::svg::style(k);
-            (colour, format!("{mark:?}"))
-        })
-        .collect();
-    assert_eq!(styles.len(), rows, "one colour and marker per row");
+    // Every row in the legend once, in its family's colour with a marker
+    // of its own within the family (tests/cli/study.rs holds the rest).
+    let families = contact_lab::render::study::svg::families(&st.scenes[0].rows);
+    assert!(families.len() <= contact_lab::render::study::svg::MAX_FAMILIES);
+    assert_eq!(
+        families.iter().map(|f| f.members.len()).sum::<usize>(),
+        st.scenes[0].rows.len()
+    );
     assert!(svg.contains("<polyline"), "the front is drawn");
     assert!(svg.contains("reference: sequential impulses, warm-started"));
-    for r in &st.scenes[0].rows {
-        assert!(svg.contains(&contact_lab::render::study::svg::row_name(r).replace('&', "&amp;")));
+    for f in &families {
+        assert!(svg.contains(&f.name.replace('&', "&amp;")), "{}", f.name);
+        for (_, _, value) in &f.members {
+            assert!(svg.contains(&value.replace('&', "&amp;")), "{value}");
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 mod common;
 
 mod advise;
+mod advise_agrees;
 mod advise_per_step;
 mod ccd_simulate;
 mod check_rows;

@@ -51,7 +51,7 @@ fn no_timing_text_and_markdown_are_held_as_snapshots() {
 #[test]
 fn json_rows_carry_the_contract_and_mark_a_front() {
     let v: J = serde_json::from_str(&quick("json")).unwrap();
-    assert_eq!(v["cost"], "contact_visits_per_step");
+    assert_eq!(v["cost"], "work_per_second");
     let scenes = v["scenes"].as_array().unwrap();
     assert_eq!(scenes.len(), 2);
     for s in scenes {
@@ -203,4 +203,123 @@ fn bad_input_gets_a_clear_error_and_its_exit_code() {
     assert!(err.contains("unknown knob 'colour'"), "{err}");
     let (code, _, err) = run(&["study", "ball-drop", "--seconds", "-1"]);
     assert_eq!(code, Some(2), "{err}");
+}
+
+/// The front is computed on the cost the chart plots, advise's work per
+/// simulated second: on resting-box a smaller time step pays for its extra
+/// steps (dt = 1/480 costs more than 1/120; per step it looked cheaper),
+/// and no starred row is dominated by another row on (work per simulated
+/// second, error), recomputed from the JSON.
+#[test]
+fn the_front_is_computed_on_work_per_simulated_second() {
+    let (code, out, err) = run(&["study", "resting-box", "--no-timing", "--format", "json"]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: J = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["cost"], "work_per_second");
+    let scene = &v["scenes"][0];
+    let rows = scene["rows"].as_array().unwrap();
+    let seconds = scene["seconds"].as_f64().unwrap();
+    let cost = |r: &J| r["work_per_second"].as_f64().unwrap();
+    let error = |r: &J| r["error_vs_reference"].as_f64();
+    // advise's cost: (visits + ccd tests + 1) per step × steps per second.
+    for r in rows {
+        let per_step = r["contact_visits_per_step"].as_f64().unwrap()
+            + r["ccd_tests_per_step"].as_f64().unwrap()
+            + 1.0;
+        let steps = r["steps"].as_f64().unwrap();
+        let expected = per_step * steps / seconds;
+        assert!((cost(r) - expected).abs() <= 1e-9 * expected, "{r}");
+    }
+    let dt = |label: &str| {
+        rows.iter()
+            .find(|r| r["knob"] == "dt" && r["value"] == label)
+            .unwrap_or_else(|| panic!("a dt = {label} row"))
+    };
+    assert!(
+        cost(dt("1/480")) > cost(dt("1/120")),
+        "{} vs {}",
+        cost(dt("1/480")),
+        cost(dt("1/120"))
+    );
+    let point = |r: &J| {
+        let e = error(r)?;
+        (r["failure"].is_null() && e.is_finite()).then_some((cost(r), e))
+    };
+    let mut starred = 0;
+    for (i, a) in rows.iter().enumerate() {
+        if a["pareto"] != true {
+            continue;
+        }
+        starred += 1;
+        let (ca, ea) = point(a).expect("a starred row has numbers");
+        for (j, b) in rows.iter().enumerate() {
+            let Some((cb, eb)) = point(b) else { continue };
+            let dominated =
+                j != i && ((cb < ca && eb <= ea) || (cb <= ca && eb < ea - (1e-6 * ea).max(1e-12)));
+            assert!(!dominated, "starred {a}\n is dominated by {b}");
+        }
+    }
+    assert!(starred > 0);
+}
+
+/// The chart on a slide: the same rows as the JSON, at most eight legend
+/// entries (one colour per family), one marker per value within a family,
+/// and the front a staircase (every segment level or upright) through the
+/// starred rows.
+#[test]
+fn the_chart_has_a_legend_of_families_and_a_staircase_front() {
+    use contact_lab::render::study::svg;
+    let o = contact_lab::study::sweep::Options {
+        timed: false,
+        repeats: 1,
+        quick: false,
+        grid: Vec::new(),
+    };
+    let lesson = contact_lab::lesson::Lesson::load(std::ffi::OsStr::new("stack-5")).unwrap();
+    let spec = contact_lab::study::sweep::SceneSpec {
+        lesson,
+        seconds: 0.25,
+        reference_solver: contact_lab::physics::Solver::SequentialImpulse,
+    };
+    let st = contact_lab::study::sweep::study(&[spec], &o, &mut |_, _| {});
+    let rows = &st.scenes[0].rows;
+    let families = svg::families(rows);
+    assert!(families.len() <= svg::MAX_FAMILIES, "{families:?}");
+    let colours: std::collections::HashSet<_> = families.iter().map(|f| f.colour).collect();
+    assert_eq!(colours.len(), families.len(), "one colour per family");
+    let mut seen: Vec<usize> = families
+        .iter()
+        .flat_map(|f| f.members.iter().map(|m| m.0))
+        .collect();
+    seen.sort();
+    assert_eq!(seen, (0..rows.len()).collect::<Vec<_>>(), "every row once");
+    for f in &families {
+        let marks: std::collections::HashSet<_> =
+            f.members.iter().map(|m| format!("{:?}", m.1)).collect();
+        assert_eq!(marks.len(), f.members.len(), "one marker per value: {f:?}");
+    }
+    let doc = svg::render(&st);
+    assert!(doc.contains(svg::X_LABEL), "the x axis is the front's cost");
+    let front = doc
+        .split("<polyline points=\"")
+        .nth(1)
+        .expect("the front is drawn")
+        .split('"')
+        .next()
+        .unwrap();
+    let points: Vec<(f64, f64)> = front
+        .split(' ')
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect();
+    for w in points.windows(2) {
+        let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+        assert!(x0 == x1 || y0 == y1, "a staircase: {w:?}");
+        assert!(
+            x1 >= x0 && y1 >= y0,
+            "cheaper to dearer, error falling: {w:?}"
+        );
+    }
 }

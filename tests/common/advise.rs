@@ -12,8 +12,11 @@ pub fn lesson(id: &str) -> Lesson {
     Lesson::load(id).unwrap()
 }
 
-/// The scene's file with the snippet's tables merged over its own (a key
-/// the snippet sets replaces the scene's, old spellings included).
+/// The scene's file with the snippet's tables merged over its own by the
+/// rule advise prints: a key the scene already sets is replaced, the same
+/// key (as written) and nothing else, so the snippet must spell each knob
+/// as the scene does (`[sleep] enabled`, not `sleep`, where the scene says
+/// `enabled`), or the scene is refused for setting a knob twice.
 pub fn pasted(id: &str, snippet: &str) -> Lesson {
     let mut file: toml::Table = embedded::find(id).unwrap().parse().unwrap();
     let add: toml::Table = snippet.parse().expect("the snippet is TOML");
@@ -24,10 +27,6 @@ pub fn pasted(id: &str, snippet: &str) -> Lesson {
             .as_table_mut()
             .unwrap();
         for (key, value) in keys.as_table().unwrap() {
-            let knob = contact_lab::physics::knobs::find(key);
-            for old in knob.map_or(&[][..], |k| k.old_names) {
-                target.remove(*old);
-            }
             target.insert(key.clone(), value.clone());
         }
     }

@@ -74,7 +74,7 @@ impl Validator {
         if matches!(table, Table::Contact | Table::ContactSettings) {
             return;
         }
-        if let Some((_, first)) = self.scene_knobs.iter().find(|(k, _)| *k == knob) {
+        if let Some((_, first, _)) = self.scene_knobs.iter().find(|(k, _, _)| *k == knob) {
             let message = format!(
                 "{knob} is set in {} and again in {}: {} is read later, so its value is the one used",
                 first.name(),
@@ -83,7 +83,7 @@ impl Validator {
             );
             self.warnings.push(Note::new(message, key.span()));
         }
-        self.scene_knobs.push((knob, table));
+        self.scene_knobs.push((knob, table, key.get_ref().clone()));
     }
 
     /// A key that is no knob of `table`: a knob of another table, or unknown.

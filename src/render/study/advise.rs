@@ -6,11 +6,59 @@
 use serde_json::{json, Value};
 
 use crate::format::Fmt;
-use crate::study::advise::{settings_snippet, Advice};
+use crate::study::advise::{settings_snippet, value_of, Advice};
 use crate::study::exercised::findings;
 
 fn num(fmt: &Fmt, x: f64) -> String {
     super::num(fmt, x)
+}
+
+/// A searched dimension's value as a reader reads it: the time step with
+/// its unit (`1/30 s`).
+fn shown(name: &str, value: &str) -> String {
+    match name {
+        "dt" => format!("{value} s"),
+        _ => value.to_string(),
+    }
+}
+
+/// The dimensions the advice sets away from the scene's own values:
+/// `name: scene's → advice's`.
+fn changed(a: &Advice) -> Vec<String> {
+    a.values
+        .iter()
+        .filter_map(|(name, v)| {
+            let own = value_of(&a.default, name);
+            (own != *v).then(|| format!("{name} {} → {}", shown(name, &own), shown(name, v)))
+        })
+        .collect()
+}
+
+/// Said before anything else when the scene as written, or its reference,
+/// blows up: the advice is then not the scene as written.
+pub fn warning(a: &Advice) -> Option<String> {
+    let own = a
+        .default_failure
+        .as_ref()
+        .map(|why| format!("the scene's own run (its settings as written) blows up ({why})"));
+    let reference = a
+        .reference_failure
+        .as_ref()
+        .map(|why| format!("its reference run blows up ({why}), so the errors below are measured against a run that failed"));
+    let what: Vec<String> = own.into_iter().chain(reference).collect();
+    if what.is_empty() {
+        return None;
+    }
+    let changes = changed(a);
+    Some(format!(
+        "Warning: {}. The advice does not model the scene as written: it changes {}.",
+        what.join("; "),
+        if changes.is_empty() {
+            "nothing the search turns".to_string()
+        } else {
+            changes.join(", ")
+        }
+    ))
 }
 
 /// The parts both human formats show, as (heading, lines).
@@ -49,7 +97,7 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
         ),
         a.values
             .iter()
-            .map(|(k, v)| format!("{k} = {v}"))
+            .map(|(k, v)| format!("{k} = {}", shown(k, v)))
             .collect::<Vec<_>>()
             .join(", "),
     ]);
@@ -65,17 +113,31 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
                     format!(
                         "{} = {} (cheap: {}): error {} m without it",
                         n.knob,
-                        n.value,
-                        n.cheap,
+                        shown(n.knob, &n.value),
+                        shown(n.knob, &n.cheap),
                         num(fmt, n.error_without)
                     )
                 })
                 .collect()
         },
     ));
+    // A knob the scene does not need is at its cheapest value, which the
+    // snippet sets: named with that value, so the two agree.
     out.push((
-        "What the scene does not need (at its cheapest setting within the target)".into(),
-        vec![a.not_needed.join(", ")],
+        "Fine at their cheapest value, which the snippet sets (the scene does not need more)"
+            .into(),
+        vec![if a.not_needed.is_empty() {
+            "none: every knob is kept above its cheapest value".into()
+        } else {
+            a.not_needed
+                .iter()
+                .map(|k| {
+                    let v = a.values.iter().find(|(n, _)| n == k).map_or("", |(_, v)| v);
+                    format!("{k} = {}", shown(k, v))
+                })
+                .collect::<Vec<_>>()
+                .join(", ")
+        }],
     ));
     out.push((
         "What the run exercised (the reference run)".into(),
@@ -124,7 +186,8 @@ fn sections(a: &Advice, fmt: &Fmt) -> Vec<(String, Vec<String>)> {
 }
 
 pub fn text(a: &Advice, fmt: &Fmt) -> String {
-    let mut out = format!(
+    let mut out = warning(a).map_or_else(String::new, |w| w + "\n\n");
+    out += &format!(
         "{}  ({}, {} s): the cheapest model within {} m of the reference, per {}\n\nMerge into the scene's tables (a key the scene already sets is replaced):\n\n",
         a.title,
         a.scene,
@@ -146,11 +209,12 @@ pub fn text(a: &Advice, fmt: &Fmt) -> String {
 
 pub fn markdown(a: &Advice, fmt: &Fmt) -> String {
     let mut out = format!(
-        "# {} (`{}`): the cheapest model within {} m, per {}\n\nMerge into the scene's tables (a key the scene already sets is replaced):\n\n```toml\n{}```\n",
+        "# {} (`{}`): the cheapest model within {} m, per {}\n\n{}Merge into the scene's tables (a key the scene already sets is replaced):\n\n```toml\n{}```\n",
         a.title,
         a.scene,
         num(fmt, a.target),
         a.per.name(),
+        warning(a).map_or_else(String::new, |w| format!("**{w}**\n\n")),
         settings_snippet(a)
     );
     for (head, lines) in sections(a, fmt) {
@@ -179,6 +243,9 @@ pub fn json(a: &Advice) -> String {
             "knob": n.knob, "value": n.value, "cheap": n.cheap, "error_without": number(n.error_without),
         })).collect::<Vec<_>>(),
         "not_needed": a.not_needed,
+        "warning": warning(a),
+        "scene_run_failure": a.default_failure,
+        "reference_failure": a.reference_failure,
         "not_searched": a.held.iter().map(|h| json!({ "knob": h.name, "why": h.why })).collect::<Vec<_>>(),
         "exercised": findings(&a.exercised).iter().map(|f| json!({
             "feature": f.feature, "present": f.present, "evidence": f.evidence, "calls_for": f.calls_for,

@@ -35,6 +35,7 @@ pub fn render(study: &Study) -> String {
             "microseconds_per_step",
             "microseconds_min",
             "microseconds_max",
+            "microseconds_per_second",
         ]);
     }
     head.extend([
@@ -42,6 +43,7 @@ pub fn render(study: &Study) -> String {
         "ccd_tests_per_step",
         "limit_steps",
         "steps",
+        "work_per_second",
         "max_penetration",
         "max_closing_velocity",
         "energy_gain",
@@ -64,13 +66,15 @@ fn line(scene: &str, r: &Row, timed: bool) -> String {
     f.extend(r.config.knobs().into_iter().map(|(_, v)| field(&v)));
     if timed {
         let [m, lo, hi] = r.microseconds.unwrap_or([f64::NAN; 3]);
-        f.extend([number(m), number(lo), number(hi)]);
+        let per_second = r.microseconds_per_second.map_or(f64::NAN, |t| t[0]);
+        f.extend([number(m), number(lo), number(hi), number(per_second)]);
     }
     f.extend([
         number(r.visits_per_step),
         number(r.ccd_tests_per_step),
         r.limit_steps.to_string(),
         r.steps.to_string(),
+        number(r.work_per_second),
         number(r.max_penetration),
         number(r.max_closing_velocity),
         number(r.energy_gain),

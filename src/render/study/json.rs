@@ -1,6 +1,8 @@
 //! The study as JSON (docs/study.md): `{ "scenes": [ { "scene", "reference",
-//! "rows": [ { "config": {…}, "microseconds_per_step", …, "pareto" } ] } ] }`.
-//! Not-a-number values are `null`; without timing the timing keys are absent.
+//! "rows": [ { "config": {…}, "microseconds_per_step", …, "work_per_second",
+//! …, "pareto" } ] } ] }`, the top-level `"cost"` naming the field the front
+//! is computed on (`work_per_second`). Not-a-number values are `null`;
+//! without timing the timing keys are absent.
 
 use serde_json::{json, Map, Value};
 
@@ -44,6 +46,14 @@ fn row(r: &Row) -> Value {
             json!([number(lo), number(hi)]),
         );
     }
+    if let Some([median, lo, hi]) = r.microseconds_per_second {
+        o.insert("microseconds_per_second".into(), number(median));
+        o.insert(
+            "microseconds_per_second_spread".into(),
+            json!([number(lo), number(hi)]),
+        );
+    }
+    o.insert("work_per_second".into(), number(r.work_per_second));
     o.insert("contact_visits_per_step".into(), number(r.visits_per_step));
     o.insert("ccd_tests_per_step".into(), number(r.ccd_tests_per_step));
     o.insert("limit_steps".into(), json!(r.limit_steps));
@@ -80,14 +90,8 @@ pub fn render(study: &Study) -> String {
         })
         .collect();
     let mut top = Map::new();
-    top.insert(
-        "cost".into(),
-        json!(if study.timed {
-            "microseconds_per_step"
-        } else {
-            "contact_visits_per_step"
-        }),
-    );
+    // The field the front (`pareto`) is computed on, timed or not.
+    top.insert("cost".into(), json!("work_per_second"));
     if study.timed {
         top.insert("repeats".into(), json!(study.repeats));
     }

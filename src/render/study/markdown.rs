@@ -19,7 +19,7 @@ pub fn render(study: &Study, fmt: &Fmt) -> String {
          accumulated, clamped impulses), at equal work counted in contact visits. Every \
          configuration is compared with the most accurate one of the same scene, the \
          reference. ★ marks the Pareto front: no other configuration is both cheaper \
-         in work (contact visits) and more accurate.\n\n",
+         in work per simulated second and more accurate.\n\n",
     );
     out.push_str("How each number is measured:\n\n");
     for m in MEASURES {

@@ -13,8 +13,9 @@ use crate::format::Fmt;
 use crate::study::{Row, Study};
 
 /// How each number is measured, in words (text and Markdown say it once).
-pub const MEASURES: [&str; 8] = [
-    "µs/step: the whole step (contacts, integration, resolution, sleep), median of the timed runs with min–max; without timing the cost is the work per step (visits/step)",
+pub const MEASURES: [&str; 9] = [
+    "work/s: the cost, advise's: (contact visits + ccd tests + 1 for the step's own work) per step × steps per simulated second, so a smaller time step pays for its extra steps; deterministic; the front (★) is computed on it and the chart plots it",
+    "µs/s: the whole step (contacts, integration, resolution, sleep) timed, × steps per simulated second: median of the timed runs with min–max (shown beside the work, not deciding the front)",
     "visits/step: contact visits of both phases per step (one deepest-first iteration or one sequential-impulse contact update is one visit), mean over the run, plus continuous detection's time-of-collision tests (`+ N ccd`: GJK calls, each counted as one visit); limit: steps where a phase used its whole budget",
     "pen. left: deepest overlap after any step (the shapes collided again, no margin), m",
     "closing left: fastest closing normal velocity after any step at the contacts it resolved, m/s",
@@ -33,12 +34,17 @@ pub fn num(fmt: &Fmt, x: f64) -> String {
     }
 }
 
-/// The cost cell: median (min–max) µs, or visits without timing.
+/// The timed cell: median (min–max) µs per simulated second.
 pub fn cost_cell(fmt: &Fmt, r: &Row) -> String {
-    match r.microseconds {
+    match r.microseconds_per_second {
         Some([m, lo, hi]) => format!("{} ({}–{})", fmt.num(m), fmt.num(lo), fmt.num(hi)),
         None => "—".into(),
     }
+}
+
+/// Work per simulated second as the verdict quotes it.
+pub fn work(fmt: &Fmt, x: f64) -> String {
+    crate::study::pareto::work_text(fmt, x)
 }
 
 /// The work cell: contact visits per step, and continuous detection's
@@ -55,9 +61,20 @@ pub fn visits_cell(fmt: &Fmt, r: &Row) -> String {
     }
 }
 
-/// The cells of one row, in the column order of [`HEADERS`].
+/// The cells of one row, in the column order of [`headers`]: the front's
+/// two axes and its mark first, then the timing and the other measures.
 pub fn cells(fmt: &Fmt, r: &Row, timed: bool) -> Vec<String> {
-    let mut c = vec![r.knob.clone(), r.value.clone()];
+    let mut c = vec![
+        r.knob.clone(),
+        r.value.clone(),
+        work(fmt, r.work_per_second),
+        num(fmt, r.error_vs_reference),
+        match (&r.failure, r.pareto) {
+            (Some(_), _) => "blew up".into(),
+            (None, true) => "★".into(),
+            (None, false) => String::new(),
+        },
+    ];
     if timed {
         c.push(cost_cell(fmt, r));
     }
@@ -69,21 +86,15 @@ pub fn cells(fmt: &Fmt, r: &Row, timed: bool) -> Vec<String> {
         num(fmt, r.energy_gain),
         num(fmt, r.drift),
         r.missed_collisions.to_string(),
-        num(fmt, r.error_vs_reference),
-        match (&r.failure, r.pareto) {
-            (Some(_), _) => "blew up".into(),
-            (None, true) => "★".into(),
-            (None, false) => String::new(),
-        },
     ]);
     c
 }
 
-/// Column headings (µs/step only when timed).
+/// Column headings (µs/s only when timed).
 pub fn headers(timed: bool) -> Vec<&'static str> {
-    let mut h = vec!["knob", "value"];
+    let mut h = vec!["knob", "value", "work/s", "error", "front"];
     if timed {
-        h.push("µs/step (min–max)");
+        h.push("µs/s (min–max)");
     }
     h.extend([
         "visits/step",
@@ -93,8 +104,6 @@ pub fn headers(timed: bool) -> Vec<&'static str> {
         "energy gain",
         "drift",
         "missed",
-        "error",
-        "front",
     ]);
     h
 }
@@ -104,7 +113,7 @@ pub fn headers(timed: bool) -> Vec<&'static str> {
 pub fn text(study: &Study, fmt: &Fmt, width: usize) -> String {
     let mut out = String::new();
     out.push_str("Speed against accuracy: each scene under one knob at a time around its default, and the iteration budget of each solver.\n");
-    out.push_str("★ marks the Pareto front of work (contact visits and ccd tests, deterministic) against error: no other row does less work and is more accurate; ties stay.\n");
+    out.push_str("★ marks the Pareto front of work per simulated second (deterministic) against error: no other row does less work per simulated second and is more accurate; ties stay.\n");
     for m in MEASURES {
         out.push_str(&format!("   · {m}\n"));
     }

@@ -24,7 +24,7 @@ use crate::lesson::Lesson;
 use crate::physics::knobs::{Kind, Needs};
 
 pub use search::{cost, MAX_ESCAPES, MAX_PASSES};
-pub use snippet::settings_snippet;
+pub use snippet::{settings_snippet, snippet};
 
 /// One dimension searched: a name (the study's) and its values as text,
 /// cheap or simple first (ties in cost go to the earlier value).
@@ -128,6 +128,16 @@ pub struct Advice {
     pub capped: bool,
     /// What the reference run exercised (the evidence).
     pub exercised: super::exercised::Exercised,
+    /// The scene's own spelling of each knob it sets (`Lesson::spellings`):
+    /// the snippet writes the same key, so that merged by its rule (a key
+    /// the scene already sets is replaced) it replaces it.
+    pub spellings: Vec<(crate::physics::knobs::Table, &'static str, String)>,
+    /// The scene's own configuration, and why its run (the scene as
+    /// written) or the reference's blew up, if it did: the advice then
+    /// does not model the scene as written, and says so first.
+    pub default: Config,
+    pub default_failure: Option<String>,
+    pub reference_failure: Option<String>,
 }
 
 /// How far past the target a per-run choice's worst step must be for the
@@ -255,6 +265,18 @@ pub fn run_of(lesson: &Lesson) -> Option<(f64, crate::physics::Solver)> {
     )
 }
 
+/// What a search tells as it goes, for a progress display (nothing here
+/// prints): how many stages it will take, each stage as it begins, and
+/// each configuration run (runs and steps so far).
+pub trait Watch {
+    fn plan(&self, _stages: usize) {}
+    fn stage(&self, _what: &str) {}
+    fn ran(&self, _runs: usize, _steps: usize) {}
+}
+
+/// Nobody watching.
+impl Watch for () {}
+
 /// Searches `lesson` for the cheapest configuration whose error against
 /// the reference stays at or below `target` (m), the error measured `per`
 /// run or per step.
@@ -265,12 +287,35 @@ pub fn advise(
     target: f64,
     per: Per,
 ) -> Option<Advice> {
+    advise_watched(lesson, seconds, reference_solver, target, per, &())
+}
+
+/// [`advise`], telling `watch` how the search goes.
+pub fn advise_watched(
+    lesson: &Lesson,
+    seconds: f64,
+    reference_solver: crate::physics::Solver,
+    target: f64,
+    per: Per,
+    watch: &dyn Watch,
+) -> Option<Advice> {
     let started = std::time::Instant::now();
     let default = grid::default_config(lesson)?;
     let reference_config = grid::reference(&default, reference_solver);
     let features = grid::features(lesson);
     let (dims, held) = dimensions(&default, &reference_config, features);
+    // The stages: the reference and the scene's own run, the per-step seed
+    // (per run), the first search, one per time step, the other solver,
+    // what each knob buys.
+    let time_steps = dims
+        .iter()
+        .find(|d| d.name == "dt")
+        .map_or(0, |d| d.values.len());
+    watch.plan(4 + usize::from(per == Per::Run) + time_steps);
+    watch.stage("the reference and the scene's own run");
     let (reference_run, exercised) = super::exercised::measure(lesson, &reference_config, seconds);
+    // The scene as written: a run that blows up is said up front.
+    let default_failure = run::measure(lesson, &default, seconds).failure;
     // The reference run again, its positions kept at every step (both
     // measures compare steps with it: per run the last tenth, per step all).
     let trajectory = run::trajectory(lesson, &reference_config, seconds);
@@ -287,6 +332,7 @@ pub fn advise(
         hits: 0,
         reruns: 0,
         finished: Vec::new(),
+        watch,
     };
     let reference_eval = Eval {
         config: reference_config,
@@ -314,7 +360,9 @@ pub fn advise(
             hits: 0,
             reruns: 0,
             finished: Vec::new(),
+            watch,
         };
+        watch.stage("the descent against the per-step error");
         let (seed, _, _) = search::descend(&mut by_step, &dims, reference_config, target);
         ev.runs += by_step.runs;
         ev.steps += by_step.steps;
@@ -328,9 +376,12 @@ pub fn advise(
         }
         seeds.push(seed);
     }
+    watch.stage("the descent from the reference");
     let mut searched = search::search(&mut ev, &dims, &seeds, target);
     starts::from_each_time_step(&mut ev, &dims, &reference_config, &mut searched, target);
+    watch.stage("the other solver");
     starts::with_the_other_solver(&mut ev, &dims, &reference_config, &mut searched, target);
+    watch.stage("what each knob buys");
     let current = searched.config;
     let choice = ev.eval(&current, f64::INFINITY);
     // The choice once more, every step compared: its end and worst step.
@@ -381,5 +432,9 @@ pub fn advise(
         reruns: ev.reruns,
         capped: searched.capped,
         exercised,
+        spellings: lesson.spellings.clone(),
+        default,
+        default_failure,
+        reference_failure: reference_run.failure.clone(),
     })
 }

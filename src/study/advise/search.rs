@@ -63,6 +63,8 @@ pub(super) struct Evaluator<'a> {
     /// search against the per-step error hands them to the one against the
     /// run's, which then need not run them again.
     pub finished: Vec<Eval>,
+    /// Told of every configuration run (a long search's progress).
+    pub watch: &'a dyn super::Watch,
 }
 
 impl Evaluator<'_> {
@@ -99,6 +101,7 @@ impl Evaluator<'_> {
         );
         self.runs += 1;
         self.steps += m.steps;
+        self.watch.ran(self.runs, self.steps);
         // The run's settled error: the end's (against the reference's final
         // positions) or the last tenth's, the larger.
         let settled = if m.failed {

@@ -26,6 +26,7 @@ pub(super) fn from_each_time_step(
     let (time_step, other_dims): (Vec<Dimension>, Vec<Dimension>) =
         dims.iter().cloned().partition(|d| d.name == "dt");
     for v in time_step.iter().flat_map(|d| &d.values) {
+        ev.watch.stage(&format!("from dt = {v} s"));
         let mut c = *reference_config;
         if grid::set(&mut c, "dt", v).is_err()
             || c == *reference_config
