@@ -177,7 +177,9 @@ fn has_number(hay: &str, needle: &str) -> bool {
     hay.match_indices(needle).any(|(i, _)| {
         let before = hay[..i].chars().next_back();
         let after = hay[i + needle.len()..].chars().next();
-        !part(before) && !(before == Some('-') && !needle.starts_with('-')) && !part(after)
+        // `-0.5` does not hold the answer 0.5.
+        let negated = before == Some('-') && !needle.starts_with('-');
+        !part(before) && !negated && !part(after)
     })
 }
 
