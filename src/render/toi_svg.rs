@@ -7,7 +7,10 @@
 
 use std::fmt::Write;
 
-use super::detect::svg::{movement_bounds, movement_extent, xml, Fit, H, PANEL, W};
+use super::detect::legend::legend;
+use super::detect::svg::{
+    movement_bounds, movement_extent, movement_legend, xml, Fit, H, PANEL, W,
+};
 use crate::format::Fmt;
 use crate::physics::Shape;
 use crate::render::figure::{outline, Outline, Silhouette, P};
@@ -89,6 +92,9 @@ pub fn svg(p: &ToiPicture, plane: Plane) -> String {
     let _ = writeln!(out, "  </defs>");
     movement_bounds(&mut out, &left, &moving, &flat);
     movement_bounds(&mut out, &right, &moving, &flat);
+    if !moving.is_empty() {
+        legend(&mut out, 20.0, &movement_legend());
+    }
     for (k, b) in p.bodies.iter().enumerate() {
         let colour = COLOURS[k];
         let start_pose = start[k].as_ref();

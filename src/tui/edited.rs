@@ -98,7 +98,10 @@ impl App {
         };
         let number = |name: &str| dv.lookup(name).and_then(|v| v.numbers().first().copied());
         let bounce = matches!(field.key, edit::Key::Restitution);
-        match (number("velocity_limit"), number("separating_velocity")) {
+        match (
+            number(crate::trace::contact::VELOCITY_LIMIT),
+            number("separating_velocity"),
+        ) {
             (Some(limit), Some(vs)) if bounce => format!(
                 " (the closing speed |v_s| = {} m/s is below the velocity limit {} m/s, so restitution is forced to 0 whatever its value)",
                 self.fmt.num(vs.abs()),

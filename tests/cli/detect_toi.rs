@@ -206,7 +206,10 @@ fn the_toi_figure_draws_the_pair_at_the_start_and_at_the_time_found() {
         let svg = std::fs::read_to_string(&path).expect("the figure is written");
         assert!(svg.starts_with("<svg"), "{svg}");
         assert!(svg.contains("time of collision (bisection)"), "{svg}");
-        assert!(svg.contains("movement bounds over the next step"), "{svg}");
+        assert!(
+            svg.contains("the box each body sweeps over the next step"),
+            "{svg}"
+        );
         // Each body drawn twice: at t = 0 and at the time found.
         let names = svg.matches("text-anchor=\"middle\"").count();
         let planes = usize::from(scene == "ball-floor-fast");

@@ -6,7 +6,7 @@
 mod blocks;
 mod json;
 mod layout;
-mod legend;
+pub(crate) mod legend;
 pub mod minkowski;
 pub mod steps;
 pub(crate) mod svg;

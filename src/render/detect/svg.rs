@@ -125,14 +125,7 @@ pub fn svg_at(t: &DetectTrace, k: usize, stop: usize) -> Option<String> {
         ));
     }
     if !moving.is_empty() {
-        left_legend.push((
-            Swatch::Line("#7f7f7f", "8 4"),
-            "the box each body sweeps over the next step (ccd)".to_string(),
-        ));
-        left_legend.push((
-            Swatch::Line("#7f7f7f", "2 4"),
-            "the sphere each body sweeps over the next step (ccd)".to_string(),
-        ));
+        left_legend.extend(movement_legend());
     }
     legend(&mut out, 20.0, &left_legend);
     // Right: the Minkowski difference, the origin, the simplex, the normal
@@ -250,6 +243,21 @@ pub(crate) fn movement_extent(m: &Movement, flat: &impl Fn(&V3) -> P) -> Vec<P> 
         hi,
         [c[0] - m.radius, c[1] - m.radius],
         [c[0] + m.radius, c[1] + m.radius],
+    ]
+}
+
+/// The legend lines of [`movement_bounds`]' marks (the detect and the
+/// time-of-collision figures).
+pub(crate) fn movement_legend() -> [(Swatch, String); 2] {
+    [
+        (
+            Swatch::Line("#7f7f7f", "8 4"),
+            "the box each body sweeps over the next step (ccd)".to_string(),
+        ),
+        (
+            Swatch::Line("#7f7f7f", "2 4"),
+            "the sphere each body sweeps over the next step (ccd)".to_string(),
+        ),
     ]
 }
 

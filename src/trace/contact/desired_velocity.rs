@@ -5,6 +5,10 @@ use super::builder::{SolvedContact, B};
 use crate::physics::StageId;
 use crate::trace::Step;
 
+/// The name of the stage's velocity-limit value, present when the limit
+/// forced restitution to 0 (the TUI's edit message reads it).
+pub const VELOCITY_LIMIT: &str = "velocity_limit";
+
 /// v_c = Cᵀ (q̇₁ - q̇₂) and Δv = -v_acc - (1 + c)(v_s - v_acc).
 pub fn desired_velocity(c: &SolvedContact) -> Step {
     let mut b = B::new(StageId::DesiredDeltaVelocity);
@@ -80,7 +84,7 @@ pub fn desired_velocity(c: &SolvedContact) -> Step {
     }
     b.value("desired", dv.desired);
     if dv.restitution_limited {
-        b.input("velocity_limit", c.problem.contact.settings.velocity_limit);
+        b.input(VELOCITY_LIMIT, c.problem.contact.settings.velocity_limit);
         b.note("The closing speed |v_s| is below velocity_limit ({velocity_limit}), so restitution is forced from {c_given} to 0: a slow contact does not bounce.");
     }
     if dv.separating() < 0.0 {

@@ -49,7 +49,7 @@ pub use apply_impulse::apply_impulse;
 pub use builder::SolvedContact;
 pub use checks::{check_values, checks, verdicts};
 pub use contact_frame::contact_frame;
-pub use desired_velocity::desired_velocity;
+pub use desired_velocity::{desired_velocity, VELOCITY_LIMIT};
 pub use exact_curves::impact_curves;
 pub use exact_impact::{exact_impact, phase_line};
 pub use friction::{friction, regime_name};
