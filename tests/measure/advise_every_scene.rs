@@ -84,8 +84,12 @@ const TARGET: f64 = 0.01;
 /// converged, `position_epsilon` 10⁻³, `velocity_epsilon` 0.1, rollback),
 /// within 1 cm at every step too, and the search reaches it from its
 /// time-step starts (before them, 2492; before the rule, 2414, 4 cm at its
-/// worst step and 2.2 cm a tenth before the end).
-const MASS_RATIO_SEARCH: f64 = 2120.0;
+/// worst step and 2.2 cm a tenth before the end). Since the merge of the
+/// resting-manifold, sleep and continuous-detection changes (session 14),
+/// the search finds 1857 (the default with the budget converged, f64:
+/// 2.8 mm at its worst step), cheaper than that hand-picked 2120; which of
+/// those changes let the converged budget alone meet 1 cm was not measured.
+const MASS_RATIO_SEARCH: f64 = 1857.0;
 
 /// The scan's cheapest configuration within 1 cm settled and at every step (above).
 const MASS_RATIO_BEST_EVERY_STEP: f64 = 2120.0;
@@ -97,9 +101,13 @@ const MASS_RATIO_BEST_EVERY_STEP: f64 = 2120.0;
 /// the time-step starts). The time-step starts brought sliding-box 440 →
 /// 194. ramp-stick costs 48 where it cost 46 before the rule (its 46 is
 /// settled too, but the descent's path changed with the measure; see
-/// docs/study.md).
-const BEFORE: [(&str, f64); 23] = [
-    ("ball-drop", 242.0),
+/// docs/study.md). ball-drop 242 → 482 (session 14): continuous detection
+/// now searches a body against a half-space, so the reference (which runs
+/// with ccd) bounces the ball at the time it meets the floor, and the
+/// advice needs dt = 1/480 s with conservative advancement to stay within
+/// 1 cm of it. ball-floor-fast (new) costs 66.
+const BEFORE: [(&str, f64); 24] = [
+    ("ball-drop", 482.0),
     ("resting-box", 38.0),
     ("sliding-box", 194.0),
     ("ramp-stick", 48.0),
@@ -122,6 +130,7 @@ const BEFORE: [(&str, f64); 23] = [
     ("plate-drop", 122.0),
     ("tetra-on-floor", 30.0),
     ("capsule-on-slope", 46.0),
+    ("ball-floor-fast", 66.0),
 ];
 const MASS_RATIO_BEST_SCANNED: f64 = 1523.0;
 
