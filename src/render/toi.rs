@@ -57,8 +57,9 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
     if !p.record.scan.is_empty() {
         let hit = p.record.scan.iter().find(|x| x.hit);
         s.push_str(&format!(
-            "  scan: {} pieces tested, each {} s long; {}\n",
+            "  scan: {} piece{} tested, each {} s long; {}\n",
             p.record.scan.len(),
+            if p.record.scan.len() == 1 { "" } else { "s" },
             f.num(p.record.scan[0].t1 - p.record.scan[0].t0),
             match hit {
                 Some(x) => format!(
