@@ -307,25 +307,38 @@ pub fn write_prompt(app: &App, input: &str, error: Option<&str>, area: Rect, buf
 }
 
 pub fn confirm(app: &App, path: &Path, area: Rect, buf: &mut Buffer) {
-    let t = &app.theme;
-    let w = 70.min(area.width.saturating_sub(4));
     let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let mut lines: Vec<Line> = wrap(
-        &format!("{name} already exists."),
-        w.saturating_sub(3) as usize,
-        0,
-    )
-    .into_iter()
-    .map(|l| Line::raw(format!(" {l}")))
-    .collect();
+    yes_or_no(
+        app,
+        (" File exists ", &format!("{name} already exists.")),
+        "overwrites it · any other key keeps it",
+        area,
+        buf,
+    );
+}
+
+/// A question over whatever screen is on show: its (title, text) wrapped,
+/// then "y" and what it does.
+pub fn yes_or_no(
+    app: &App,
+    (title, text): (&str, &str),
+    y_does: &str,
+    area: Rect,
+    buf: &mut Buffer,
+) {
+    let w = 70.min(area.width.saturating_sub(4));
+    let mut lines: Vec<Line> = wrap(text, w.saturating_sub(3) as usize, 0)
+        .into_iter()
+        .map(|l| Line::raw(format!(" {l}")))
+        .collect();
     lines.push(Line::from(vec![
-        Span::styled(" y", t.key()),
-        Span::raw(" overwrites it · any other key keeps it"),
+        Span::styled(" y", app.theme.key()),
+        Span::raw(format!(" {y_does}")),
     ]));
     let rect = centered(area, w, lines.len() as u16 + 2);
-    let inner = frame(app, " File exists ", rect, buf);
+    let inner = frame(app, title, rect, buf);
     Paragraph::new(lines).render(inner, buf);
 }

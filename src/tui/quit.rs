@@ -5,11 +5,8 @@
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::layout::Rect;
-use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget};
 
 use super::app::{App, Mode};
-use super::wrap::wrap;
 
 impl App {
     /// What quitting now would lose, in words; empty when nothing.
@@ -64,21 +61,11 @@ impl App {
 
 /// The question, over whatever screen is on show.
 pub fn render(app: &App, lost: &str, area: Rect, buf: &mut Buffer) {
-    let t = &app.theme;
-    let w = 70.min(area.width.saturating_sub(4));
-    let mut lines: Vec<Line> = wrap(
-        &format!("Quit? This loses {lost}."),
-        w.saturating_sub(3) as usize,
-        0,
-    )
-    .into_iter()
-    .map(|l| Line::raw(format!(" {l}")))
-    .collect();
-    lines.push(Line::from(vec![
-        Span::styled(" y", t.key()),
-        Span::raw(" quits · any other key stays"),
-    ]));
-    let rect = super::overlay::centered(area, w, lines.len() as u16 + 2);
-    let inner = super::overlay::frame(app, " Quit? ", rect, buf);
-    Paragraph::new(lines).render(inner, buf);
+    super::overlay::yes_or_no(
+        app,
+        (" Quit? ", &format!("Quit? This loses {lost}.")),
+        "quits · any other key stays",
+        area,
+        buf,
+    );
 }
