@@ -17,7 +17,7 @@ pub mod contact;
 pub mod detect;
 pub mod exact;
 pub mod hull;
-mod hull_faces;
+pub mod hull_faces;
 pub mod knobs;
 pub mod params;
 pub mod pose;

@@ -7,10 +7,8 @@
 
 use std::fmt::Write;
 
-use super::detect::legend::legend;
-use super::detect::svg::{
-    movement_bounds, movement_extent, movement_legend, xml, Fit, H, PANEL, W,
-};
+use super::detect::legend::{legend, xml};
+use super::detect::svg::{movement_bounds, movement_extent, movement_legend, Fit, H, PANEL, W};
 use crate::format::Fmt;
 use crate::physics::Shape;
 use crate::render::figure::{outline, Outline, Silhouette, P};
