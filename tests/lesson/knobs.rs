@@ -4,8 +4,8 @@
 //! docs/knobs.md, and spelled as a string nowhere else in src/.
 
 use assert_cmd::Command;
+use contact_lab::knobs::{Cli, Kind, Knob, Level, Offered, Range, Table, Value, KNOBS};
 use contact_lab::lesson::{edit, knob_value, validate, Lesson};
-use contact_lab::physics::knobs::{Cli, Kind, Knob, Level, Offered, Range, Table, Value, KNOBS};
 use contact_lab::study::{self, grid};
 
 /// A value the knob accepts that differs from its default.
@@ -25,7 +25,7 @@ fn sample(knob: &Knob) -> Value {
         Kind::Number { .. } => vec![Value::Number(0.125), Value::Number(0.375)],
         Kind::Count { .. } => vec![Value::Count(3), Value::Count(5)],
         Kind::Flag => vec![Value::Flag(true), Value::Flag(false)],
-        Kind::Choice { choices, .. } => choices.iter().map(|(c, _)| Value::Choice(c)).collect(),
+        Kind::Choice { choices } => choices.iter().map(|c| Value::Choice(c.name)).collect(),
         Kind::Vector => vec![Value::Vector([0.0, -1.0, 0.0])],
     };
     candidates
@@ -108,7 +108,7 @@ fn a_refused_value_is_refused_in_a_file_and_on_the_command_line_alike() {
         ("duration", "0"),
     ];
     for (name, text) in cases {
-        let knob = contact_lab::physics::knobs::find(name).unwrap();
+        let knob = contact_lab::knobs::find(name).unwrap();
         let cli = knob_value::from_text(knob, text).unwrap_err();
         let file = validate::parse("probe.toml", &lesson_with(knob.tables[0], name, text))
             .map(|_| ())
