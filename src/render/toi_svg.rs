@@ -67,7 +67,7 @@ pub fn svg(p: &ToiPicture, plane: Plane) -> String {
         Some(t) => format!(
             "t = {} s: time of collision ({})",
             f.num(t),
-            p.method.json_name()
+            crate::knobs::toi_method_name(p.method)
         ),
         None => format!("no time of collision: {}", end_text(p.end)),
     };

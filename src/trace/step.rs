@@ -6,7 +6,8 @@
 use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
 use super::stop::{Stop, Table};
 use super::{BodyView, ContactView};
-use crate::lesson::{ContactDef, Lesson, Settings};
+use crate::lesson::{ContactDef, Lesson};
+use crate::physics::params::ContactSettings;
 use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
 use crate::physics::step::previous_frame::previous_normal;
 use crate::physics::step::{BlowUp, Simulation};
@@ -203,7 +204,7 @@ impl StepTrace {
                         restitution: i.restitution,
                         static_friction: i.static_friction,
                         dynamic_friction: i.dynamic_friction,
-                        settings: Settings::of_contact(
+                        settings: ContactSettings::of_contact(
                             &i.settings,
                             c.duration.unwrap_or(duration),
                             i.friction_model,
