@@ -40,6 +40,7 @@ pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         Format::Md => show::markdown(&trace, &f),
         Format::Latex => show::latex(&trace, &f),
         Format::Json => show::json(&trace),
+        Format::Html => return Err(super::html_elsewhere("detect")),
     };
     out.write_all(text.as_bytes()).map_err(io)
 }
