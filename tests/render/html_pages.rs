@@ -78,6 +78,30 @@ fn no_page_reaches_the_network_and_every_formula_is_mathml() {
 }
 
 #[test]
+fn no_resolve_page_reaches_the_network() {
+    use contact_lab::physics::resolver::Implementation;
+    for lesson in common::all_lessons() {
+        if lesson.contacts.is_empty() {
+            continue;
+        }
+        let trace = contact_lab::trace::resolver::describe(
+            &lesson,
+            &lesson.resolver,
+            Implementation::Indexed,
+            true,
+        );
+        let page = html::resolve::document(&trace, &[vec![], vec![]], &Fmt::new(6));
+        assert!(
+            network_urls(&page).is_empty(),
+            "{}: {:?}",
+            lesson.id,
+            network_urls(&page)
+        );
+        assert!(page.contains("data-step"), "{}", lesson.id);
+    }
+}
+
+#[test]
 fn a_worked_solution_page_is_under_300_kb() {
     for id in ["lecture-1", "lecture-2", "lecture-3", "friction-cube"] {
         let lesson = contact_lab::lesson::Lesson::load(id).unwrap();

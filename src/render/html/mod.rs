@@ -8,7 +8,7 @@
 pub mod figure;
 pub mod mathml;
 pub mod page;
-// pub mod resolve;
+pub mod resolve;
 pub mod solve;
 
 /// Text escaped for HTML content and double-quoted attributes.

@@ -90,7 +90,15 @@ fn stage_figure(trace: &Trace, step: &Step, key: &str) -> String {
     }
 }
 
-fn stage(out: &mut String, trace: &Trace, n: usize, i: usize, step: &Step, fmt: &Fmt) {
+fn stage(
+    out: &mut String,
+    trace: &Trace,
+    n: usize,
+    i: usize,
+    step: &Step,
+    fmt: &Fmt,
+    figures: bool,
+) {
     let id = stage_id(n, step);
     let title = format!("{}. {}", i + 1, step.title);
     let _ = writeln!(
@@ -142,7 +150,9 @@ fn stage(out: &mut String, trace: &Trace, n: usize, i: usize, step: &Step, fmt: 
         out.push_str("</ul>\n");
     }
     out.push_str("</div>\n");
-    out.push_str(&stage_figure(trace, step, &id));
+    if figures {
+        out.push_str(&stage_figure(trace, step, &id));
+    }
     out.push_str("</div>\n</section>\n");
 }
 
@@ -167,15 +177,16 @@ pub fn after_table(bodies: &[(String, crate::trace::AfterState)], fmt: &Fmt) -> 
     out
 }
 
-/// One contact's stages and the state after: an `<article>`.
-pub fn contact(out: &mut String, trace: &Trace, n: usize, fmt: &Fmt) {
+/// One contact's stages and the state after: an `<article>`; each stage's
+/// figure when `figures` (the state after has its figure always).
+pub fn contact(out: &mut String, trace: &Trace, n: usize, fmt: &Fmt, figures: bool) {
     let _ = writeln!(
         out,
         "<article class=\"contact\" aria-labelledby=\"c{n}\">\n<h2 id=\"c{n}\">Contact {}</h2>",
         esc(&trace.contact_label)
     );
     for (i, step) in trace.stages.iter().enumerate() {
-        stage(out, trace, n, i, step, fmt);
+        stage(out, trace, n, i, step, fmt, figures);
     }
     let id = format!("c{n}-after");
     let _ = writeln!(
@@ -269,7 +280,7 @@ pub fn document(traces: &[Trace], fmt: &Fmt, note: Option<&str>) -> String {
     body.push_str(&stage_list(traces));
     body.push_str("<main>\n");
     for (n, t) in traces.iter().enumerate() {
-        contact(&mut body, t, n, fmt);
+        contact(&mut body, t, n, fmt, true);
     }
     body.push_str("</main>\n</div>");
     page::page(
