@@ -65,7 +65,7 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
 /// `--format html` on a command that has no page yet: a usage error.
 pub(crate) fn html_elsewhere(command: &str) -> AppError {
     AppError::Usage(format!(
-        "{command} has no web page yet: --format html applies to solve and resolve"
+        "{command} has no web page yet: --format html applies to solve, resolve and detect"
     ))
 }
 

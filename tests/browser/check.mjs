@@ -28,6 +28,7 @@ const pages = [
   ['solve-friction-cube.html', ['solve', 'friction-cube'], 'stages'],
   ['solve-box-four-corners-all.html', ['solve', 'box-four-corners', '--all-contacts'], 'stages'],
   ['resolve-box-four-corners.html', ['resolve', 'box-four-corners'], 'steps'],
+  ['detect-epa-edge-edge.html', ['detect', 'epa-edge-edge'], 'detect'],
 ];
 
 const flags = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
@@ -80,7 +81,7 @@ for (const [name, args, kind] of pages) {
     const sizes = await page.evaluate(() => Array.from(document.querySelectorAll('math'))
       .map((m) => { const r = m.getBoundingClientRect(); return [r.width, r.height]; }));
     const empty = sizes.filter(([w, h]) => !(w > 0 && h > 0)).length;
-    check(sizes.length > 0 && empty === 0, `without JavaScript: ${sizes.length} <math> elements, ${empty} of zero size`);
+    check((kind === 'detect' || sizes.length > 0) && empty === 0, `without JavaScript: ${sizes.length} <math> elements, ${empty} of zero size`);
     const steps = await visible(page);
     check(steps.length > 1, `without JavaScript every step shows (${steps.length})`);
     await page.screenshot({ path: file.replace(/\.html$/, '-plain.png'), fullPage: false });
@@ -121,6 +122,10 @@ for (const [name, args, kind] of pages) {
       await input.press('Enter');
       check(await wrong.evaluate((e) => e.className) === 'right', `the right value (${shown}) is graded right`);
       await page.screenshot({ path: file.replace(/\.html$/, '-predict.png'), fullPage: false });
+    } else if (kind === 'detect') {
+      // The first iteration: its Minkowski picture shows.
+      const figure = page.locator('[data-step].current svg.figure');
+      check(await figure.count() === 1 && await figure.isVisible(), 'an iteration shows its Minkowski picture');
     } else {
       const row = page.locator('[data-step].current tr[data-open]').first();
       if (await row.count()) {

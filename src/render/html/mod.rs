@@ -5,6 +5,7 @@
 //! script a page reads top to bottom; with it, one stage (or iteration) at
 //! a time. docs/html.md says what each page holds and how large it is.
 
+pub mod detect;
 pub mod figure;
 pub mod mathml;
 pub mod page;

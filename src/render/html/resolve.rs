@@ -32,6 +32,13 @@ fn contacts_table(rows: &[ContactRow], fmt: &Fmt) -> String {
     out
 }
 
+fn capital(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map(|f| f.to_uppercase().chain(c).collect())
+        .unwrap_or_default()
+}
+
 fn step_open(out: &mut String, id: &str, title: &str) {
     let _ = writeln!(
         out,
@@ -69,7 +76,7 @@ fn phase(
         step_open(
             out,
             &format!("{key}-phase"),
-            &format!("{} phase", p.phase.name()),
+            &format!("{} phase", capital(p.phase.name())),
         );
         let _ = writeln!(out, "<p>{}</p>", esc(&head));
         for note in phase_notes(p, fmt) {
@@ -88,10 +95,9 @@ fn phase(
             out,
             &id,
             &format!(
-                "{} iteration {}: contact {} ({label})",
-                p.phase.name(),
-                it.iteration,
-                it.contact
+                "{} iteration {}: contact {label}",
+                capital(p.phase.name()),
+                it.iteration
             ),
         );
         if n == 0 {
@@ -143,7 +149,7 @@ fn phase(
             };
             let _ = writeln!(
                 out,
-                "<tr{open}{}><th scope=\"row\">{k} {}</th><td>{}</td><td>{}</td></tr>",
+                "<tr{open}{}><th scope=\"row\">{}</th><td>{}</td><td>{}</td></tr>",
                 if taken { " class=\"taken\"" } else { "" },
                 esc(&r.label),
                 show(value[k]),
@@ -154,7 +160,7 @@ fn phase(
         if let Some(Some(t)) = worked.get(n) {
             let _ = writeln!(
                 out,
-                "<div class=\"worked\" id=\"{panel}\">\n<p class=\"meta\">Contact {} alone, the bodies as this iteration finds them (`resolve --show {key}:{}`).</p>",
+                "<div class=\"worked\" id=\"{panel}\">\n<p class=\"meta\">Contact {} alone, the bodies as this iteration finds them (<code>resolve --show {key}:{}</code>).</p>",
                 it.contact, it.iteration
             );
             let mut inner = String::new();
