@@ -32,6 +32,9 @@ pub struct DetectArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub fold: super::WidthArg,
     /// Also write an SVG figure of the (first) pair: both shapes, the

@@ -101,6 +101,9 @@ pub enum Format {
     /// A standalone LaTeX document (article + amsmath).
     #[value(alias = "tex")]
     Latex,
+    /// One self-contained web page (solve): MathML formulas, inline SVG
+    /// figures, one stage at a time with the script on (docs/html.md).
+    Html,
 }
 
 /// `--width`: the columns plain text folds to, on every command that
@@ -149,6 +152,9 @@ pub struct SolveArgs {
     /// Markdown: write an SVG figure of each contact to DIR and link it.
     #[arg(long, value_name = "DIR")]
     pub figures: Option<std::path::PathBuf>,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub fold: WidthArg,
     #[command(flatten)]

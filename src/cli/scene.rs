@@ -12,6 +12,9 @@ pub enum ResolveFormat {
     /// Markdown: headings and tables.
     #[value(alias = "markdown")]
     Md,
+    /// One self-contained web page: the iterations one at a time, Enter on
+    /// the taken contact opens its worked stages (docs/html.md).
+    Html,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -70,6 +73,9 @@ pub struct ResolveArgs {
     /// Significant digits of human formats (JSON always carries full f64).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub fold: WidthArg,
     /// A contact's and the resolver's knobs, each over the lesson's.

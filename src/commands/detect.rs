@@ -40,8 +40,12 @@ pub fn detect(args: &DetectArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         Format::Md => show::markdown(&trace, &f),
         Format::Latex => show::latex(&trace, &f),
         Format::Json => show::json(&trace),
+        Format::Html => crate::render::html::detect::document(&trace, &f),
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
 }
 
 /// The stop (an index into [`show::steps::stops`]: GJK's iterations, then

@@ -49,7 +49,7 @@ pub fn detect_toi(args: &DetectArgs, lesson: &Lesson, out: &mut dyn Write) -> Re
             super::text_width(args.fold.width),
         ),
         Format::Json => render::json(&detected),
-        Format::Md | Format::Latex => {
+        Format::Md | Format::Latex | Format::Html => {
             return Err(AppError::Usage(
                 "detect --toi prints text or JSON (--format text|json)".into(),
             ))

@@ -55,10 +55,18 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), App
                 Format::Json => glossary::json(),
                 Format::Md => glossary::markdown(),
                 Format::Latex => glossary::latex(),
+                Format::Html => return Err(html_elsewhere("glossary")),
             };
             out.write_all(text.as_bytes()).map_err(io)
         }
     }
+}
+
+/// `--format html` on a command that has no page yet: a usage error.
+pub(crate) fn html_elsewhere(command: &str) -> AppError {
+    AppError::Usage(format!(
+        "{command} has no web page yet: --format html applies to solve, resolve and detect"
+    ))
 }
 
 /// The width plain text is folded to: `--width` when given (0: never),

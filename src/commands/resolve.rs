@@ -142,6 +142,49 @@ pub fn resolve(
             let trace = crate::trace::resolver::describe(&lesson, &params, implementation, true);
             resolve::markdown::render(&trace, &fmt)
         }
+        ResolveFormat::Html => {
+            let trace = crate::trace::resolver::describe(&lesson, &params, implementation, true);
+            let worked = worked(&lesson, &params, implementation, &trace, &fmt);
+            crate::render::html::resolve::document(&trace, &worked, &fmt)
+        }
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => super::write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
+}
+
+/// Iterations whose worked stages a web page carries, per phase: enough for
+/// a lesson, and a page that stays small for a large scene.
+pub const WORKED_PER_PHASE: usize = 24;
+
+/// The worked solution of each of the first [`WORKED_PER_PHASE`] iterations'
+/// contacts, per phase (as `--show` makes it).
+fn worked(
+    lesson: &crate::lesson::Lesson,
+    params: &ResolverParams,
+    implementation: Implementation,
+    trace: &crate::trace::resolver::ResolverTrace,
+    fmt: &Fmt,
+) -> crate::render::html::resolve::Worked {
+    let phase = |p: &crate::trace::resolver::PhaseTrace, velocity: bool| {
+        p.log
+            .iter()
+            .enumerate()
+            .map(|(n, it)| {
+                (n < WORKED_PER_PHASE)
+                    .then(|| {
+                        let show = crate::cli::Show {
+                            velocity,
+                            iteration: it.iteration,
+                        };
+                        super::show::at_iteration(lesson, params, implementation, show, fmt)
+                            .ok()
+                            .map(|(t, _)| t)
+                    })
+                    .flatten()
+            })
+            .collect()
+    };
+    [phase(&trace.position, false), phase(&trace.velocity, true)]
 }

@@ -106,6 +106,31 @@ pub fn show(
     fmt: &Fmt,
     out: &mut dyn Write,
 ) -> Result<(), AppError> {
+    let (trace, preamble) = at_iteration(lesson, params, implementation, show, fmt)?;
+    let text = match format {
+        ResolveFormat::Json => render::contact::json::render(&trace),
+        ResolveFormat::Text => {
+            format!("{preamble}\n{}", render::contact::text::render(&trace, fmt))
+        }
+        ResolveFormat::Md => format!(
+            "> {}\n\n{}",
+            render::contact::markdown::escape(preamble.trim_end()).replace('\n', "\n> "),
+            render::contact::markdown::document(&[trace], fmt, &[])
+        ),
+        ResolveFormat::Html => render::html::solve::document(&[trace], fmt, Some(&preamble)),
+    };
+    out.write_all(text.as_bytes()).map_err(io)
+}
+
+/// The worked solution of the contact iteration `show` takes, with the
+/// bodies as that iteration finds them, and the words that say so.
+pub(crate) fn at_iteration(
+    lesson: &Lesson,
+    params: &ResolverParams,
+    implementation: Implementation,
+    show: Show,
+    fmt: &Fmt,
+) -> Result<(crate::trace::Trace, String), AppError> {
     let world = lesson.world::<f64>();
     let mut resolver = Resolver::prepare(&world, params);
     let mut capture = Capture {
@@ -148,19 +173,7 @@ pub fn show(
     let k = moment.contact;
     at.contacts[k].penetration = if show.velocity { 0.0 } else { moment.value };
     let trace = crate::worked_solution(&at, k);
-    let preamble = preamble(lesson, show, &moment, fmt);
-    let text = match format {
-        ResolveFormat::Json => render::contact::json::render(&trace),
-        ResolveFormat::Text => {
-            format!("{preamble}\n{}", render::contact::text::render(&trace, fmt))
-        }
-        ResolveFormat::Md => format!(
-            "> {}\n\n{}",
-            render::contact::markdown::escape(preamble.trim_end()).replace('\n', "\n> "),
-            render::contact::markdown::document(&[trace], fmt, &[])
-        ),
-    };
-    out.write_all(text.as_bytes()).map_err(io)
+    Ok((trace, preamble(lesson, show, &moment, fmt)))
 }
 
 fn preamble(lesson: &Lesson, show: Show, m: &Moment, fmt: &Fmt) -> String {

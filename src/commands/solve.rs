@@ -14,7 +14,7 @@ use crate::render::svg::{self, Plane};
 
 fn usage(args: &SolveArgs) -> Result<(), AppError> {
     let bad = |m: &str| Err(AppError::Usage(m.to_string()));
-    if args.compare_friction && matches!(args.format, Format::Md | Format::Latex) {
+    if args.compare_friction && matches!(args.format, Format::Md | Format::Latex | Format::Html) {
         return bad("--compare-friction prints text or JSON (--format text|json)");
     }
     if args.compare_friction && args.all_contacts {
@@ -65,7 +65,7 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
                 )
             }
         };
-        return out.write_all(text.as_bytes()).map_err(io);
+        return emit(args, &text, out);
     }
     let contacts: Vec<usize> = if args.all_contacts {
         (0..lesson.contacts.len()).collect()
@@ -100,6 +100,11 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
             render::contact::markdown::document(&traces, &fmt, &figures)
         }
         Format::Latex => render::contact::latex::document(&traces, &fmt, args.fragment),
+        Format::Html => {
+            let note = (args.all_contacts && lesson.contacts.len() > 1)
+                .then(|| alone_words(&lesson.id).replace('`', ""));
+            render::html::solve::document(&traces, &fmt, note.as_deref())
+        }
     };
     let text = if args.all_contacts && lesson.contacts.len() > 1 {
         alone_note(&text, &lesson.id, args.format)
@@ -110,7 +115,15 @@ pub fn solve(args: &SolveArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         Format::Text => crate::render::wrap::wrap(&text, super::text_width(args.fold.width)),
         _ => text,
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    emit(args, &text, out)
+}
+
+/// The output to `-o FILE` (atomically) or stdout.
+fn emit(args: &SolveArgs, text: &str, out: &mut dyn Write) -> Result<(), AppError> {
+    match &args.output {
+        Some(path) => write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
 }
 
 /// Contact `k` solved; an exact impact integration that could not finish is
@@ -125,14 +138,18 @@ fn solved(lesson: &crate::lesson::Lesson, k: usize) -> Result<Solution<f64>, App
 
 /// `--all-contacts` solves each contact alone, from the scene as given: say so
 /// at the top of the output (JSON keeps its contract) and point to `resolve`.
-fn alone_note(text: &str, id: &str, format: Format) -> String {
-    let note = format!(
+fn alone_words(id: &str) -> String {
+    format!(
         "Each contact below is solved alone, from the scene as given: the results are \
          independent of each other. To resolve the contacts together, in order, each \
          resolution updating the others, run `contact-lab resolve {id}`."
-    );
+    )
+}
+
+fn alone_note(text: &str, id: &str, format: Format) -> String {
+    let note = alone_words(id);
     match format {
-        Format::Json => text.to_string(),
+        Format::Json | Format::Html => text.to_string(),
         Format::Text => format!("{note}\n\n{text}"),
         Format::Md => format!("> {}\n\n{text}", render::contact::markdown::escape(&note)),
         Format::Latex => {

@@ -7,6 +7,7 @@ pub mod errata;
 pub mod figure;
 pub mod fill;
 pub mod glossary;
+pub mod html;
 pub mod knobs;
 pub mod previous_frame;
 pub mod resolve;

@@ -19,6 +19,7 @@ mod figure_stages;
 mod figure_strokes;
 mod film_strip;
 mod glossary;
+mod html_pages;
 mod huge_step;
 mod instructor_snapshots;
 mod latex_compiles;
