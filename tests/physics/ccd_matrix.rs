@@ -99,16 +99,6 @@ mass = inf
     )
 }
 
-/// The cases that end beyond unreported today, pinned so that a change
-/// shows (nothing else may): conservative advancement lets a tetrahedron
-/// bullet falling face first through a 20 cm slab of box, cylinder or hull
-/// (77 m beyond the box, no `tunnelled` event). Open: issue 39.
-const KNOWN_THROUGH: [(&str, &str, Ccd); 3] = [
-    ("hull", "box", Ccd::Conservative),
-    ("hull", "cylinder", Ccd::Conservative),
-    ("hull", "hull", Ccd::Conservative),
-];
-
 #[test]
 fn every_upper_kind_at_every_lower_kind_bounces_or_says_it_tunnelled() {
     let mut through = Vec::new();
@@ -143,8 +133,9 @@ fn every_upper_kind_at_every_lower_kind_bounces_or_says_it_tunnelled() {
             }
         }
     }
-    assert_eq!(
-        through, KNOWN_THROUGH,
-        "the bullets that end beyond unreported"
-    );
+    // Conservative advancement let a tetrahedron bullet through a 20 cm
+    // slab of box, cylinder or hull (77 m beyond the box, no event): spun
+    // off one vertex, it met its own touch again at once and was taken for
+    // a pair apart for good.
+    assert!(through.is_empty(), "ends beyond unreported: {through:?}");
 }
