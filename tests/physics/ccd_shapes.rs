@@ -10,10 +10,10 @@ use contact_lab::physics::step::ccd_mode::Ccd;
 use contact_lab::physics::step::{Event, Simulation, StepReport};
 use nalgebra::Vector3;
 
-const KINDS: [&str; 5] = ["sphere", "box", "cylinder", "capsule", "hull"];
+pub(crate) const KINDS: [&str; 5] = ["sphere", "box", "cylinder", "capsule", "hull"];
 
 /// The shape of a bullet of kind `kind` about `l` across.
-fn shape(kind: &str, l: f64) -> String {
+pub(crate) fn shape(kind: &str, l: f64) -> String {
     let h = l / 2.0;
     match kind {
         "sphere" => format!("{{ sphere = {h} }}"),
@@ -84,7 +84,7 @@ mass = inf
 }
 
 /// The bullet's lowest point along `n` (its support along −n), relative to the origin.
-fn lowest(sim: &Simulation<f64>, n: [f64; 3]) -> f64 {
+pub(crate) fn lowest(sim: &Simulation<f64>, n: [f64; 3]) -> f64 {
     use contact_lab::physics::detect::{Convex, Support};
     use contact_lab::physics::pose::Pose;
     let b = &sim.world.bodies[0];
@@ -99,7 +99,7 @@ fn lowest(sim: &Simulation<f64>, n: [f64; 3]) -> f64 {
 /// velocities after the step are the ones that collision left it with, and
 /// its centre moved straight since: the contact point's velocity there,
 /// v + ω × (point − (x_end − v (t_end − t_hit))), along the normal.
-fn check_separating(sim: &Simulation<f64>, r: &StepReport, what: &str) {
+pub(crate) fn check_separating(sim: &Simulation<f64>, r: &StepReport, what: &str) {
     let Some(h) = r.events.iter().rev().find_map(|e| match e {
         Event::Toi(h) => Some(*h),
         _ => None,

@@ -11,6 +11,8 @@ mod common;
 mod exact_support;
 
 mod blow_up_rule;
+mod ccd_manifold;
+mod ccd_matrix;
 mod ccd_shapes;
 mod ccd_step;
 mod collide;

@@ -373,12 +373,18 @@ where
             return done(Some(t), 0, ToiEnd::AtStart);
         }
         let near = hit || distance <= options.tolerance;
-        // A touch just resolved, the pair leaving it: not a meeting.
+        // A touch just resolved, the pair leaving it: not a meeting. Still
+        // overlapping where the search starts (the touch was found inside
+        // the tolerance), it has no gap to watch grow: it is the touch
+        // just resolved, stepped past the same way (taken as a meeting, a
+        // tetrahedron spun off one vertex met itself again at once, was
+        // found closing nowhere and let through a 20 cm slab).
         let receding = near
             && options.skip_receding
-            && pair
-                .gap_rate(t, &options.gjk)
-                .is_some_and(|r| r > T::zero());
+            && ((hit && index == 0)
+                || pair
+                    .gap_rate(t, &options.gjk)
+                    .is_some_and(|r| r > T::zero()));
         let close = near && !receding;
         // μ = −v_rel·n + spin, n from B toward A.
         let normal = if distance > T::zero() {

@@ -270,6 +270,7 @@ impl<T: Real> Simulation<T> {
                 &mut events,
             );
         }
+        self.keep_resolved_speeds();
         // 5. Positions of the awake bodies with the resolved velocities,
         // through the step's collisions with continuous detection on, and
         // the tunnelling audit of each pair's swept motion (substep.rs).

@@ -146,10 +146,23 @@ impl<T: Real> Simulation<T> {
         wake_sleep::relative_point_velocity(&self.world, k)
     }
 
-    /// Contact made or lost, bounces, sticking and sliding, per touching pair.
-    fn contact_events(&mut self, before: &[T], events: &mut Vec<Event>) {
+    /// Each contact's relative normal and tangential speed as the step's
+    /// resolution left them, kept for the contact events: read before the
+    /// bodies move (a contact's point is where it was generated, and a
+    /// collision continuous detection resolves later in the step is its
+    /// own event), so a bounce's "separating" is the velocity that
+    /// resolution gave the pair, not one measured at a point the body has
+    /// since left (a spinning body's ω × v Δt) or after another collision.
+    pub(super) fn keep_resolved_speeds(&mut self) {
         let mut after = std::mem::take(&mut self.closing_after);
         self.normal_velocities(&mut after);
+        self.closing_after = after;
+    }
+
+    /// Contact made or lost, bounces, sticking and sliding, per touching
+    /// pair, from the speeds [`Self::keep_resolved_speeds`] kept.
+    fn contact_events(&mut self, before: &[T], events: &mut Vec<Event>) {
+        let after = std::mem::take(&mut self.closing_after);
         let limit = to_f64(self.params.contact.velocity_limit).max(0.05);
         let contacts = &self.world.contacts;
         self.touching
