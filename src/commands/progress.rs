@@ -79,6 +79,60 @@ pub fn interrupted() -> &'static std::sync::atomic::AtomicBool {
     flag
 }
 
+/// Ctrl-C ends the process at once with exit code 130: for a command
+/// whose output is written only at its end (`detect`, `resolve`), so there
+/// is nothing to end cleanly. Installed once per process.
+pub fn exit_on_interrupt() {
+    #[cfg(unix)]
+    {
+        use std::sync::atomic::AtomicBool;
+        use std::sync::{Arc, Once};
+        static ONCE: Once = Once::new();
+        ONCE.call_once(|| {
+            let at_once = Arc::new(AtomicBool::new(true));
+            let _ = signal_hook::flag::register_conditional_shutdown(
+                signal_hook::consts::SIGINT,
+                130,
+                at_once,
+            );
+        });
+    }
+}
+
+/// How long work runs before [`later`] shows that it is working.
+pub const SHOW_AFTER: Duration = Duration::from_millis(500);
+
+/// A counter of `unit`s (none: a spinner) with `text` that shows on a terminal only once the
+/// work has run [`SHOW_AFTER`] (a quick command draws nothing), then ticks
+/// on its own thread (a long unit still shows the time going by); its
+/// length is set when the work knows it ([`Progress::of`]).
+pub fn later(text: String, unit: &str) -> Progress {
+    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::hidden());
+    let template = match unit {
+        "" => "{spinner} {msg} · {elapsed}".to_string(),
+        unit => format!("{{spinner}} {{msg}} · {{pos}} of {{len}} {unit} · {{elapsed}}"),
+    };
+    bar.set_style(
+        ProgressStyle::with_template(&template)
+            .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+    );
+    bar.set_message(text);
+    if std::io::stderr().is_terminal() {
+        let shown = bar.clone();
+        std::thread::spawn(move || {
+            std::thread::sleep(SHOW_AFTER);
+            if !shown.is_finished() {
+                shown.set_draw_target(ProgressDrawTarget::stderr_with_hz(10));
+                shown.enable_steady_tick(Duration::from_millis(100));
+            }
+        });
+    }
+    Progress {
+        bar,
+        last: Instant::now(),
+    }
+}
+
 /// A spinner with `text`, ticking on its own thread, on a terminal only.
 pub fn spinner(text: String) -> Progress {
     let target = if std::io::stderr().is_terminal() {
@@ -106,6 +160,14 @@ pub struct Progress {
 }
 
 impl Progress {
+    /// `done` units of `total` (the length set on the first call).
+    pub fn of(&mut self, done: usize, total: usize) {
+        if self.bar.length() != Some(total as u64) {
+            self.bar.set_length(total as u64);
+        }
+        self.at(done as u64);
+    }
+
     /// Sets the position, at most twenty times a second (a step of a fast
     /// run costs less than drawing it would).
     pub fn at(&mut self, done: u64) {

@@ -58,7 +58,8 @@ fn time(
 }
 
 /// A note when the indexed phases' neighbour table would outgrow its budget
-/// and they scan the contacts instead (the same results).
+/// and they find the neighbours through the body → contacts adjacency
+/// instead (the same results).
 fn table_note(
     lesson: &crate::lesson::Lesson,
     params: &ResolverParams,
@@ -72,7 +73,7 @@ fn table_note(
     if r.table_over_budget() {
         let _ = writeln!(
             err,
-            "note: {}: the neighbour table of these contacts would hold {} entries (one body's contacts, squared), over its budget of {}: the indexed phases scan the contacts instead, as --implementation scan does (the same contacts in the same order, the same results)",
+            "note: {}: the neighbour table of these contacts would hold {} entries (one body's contacts, squared), over its budget of {}: the indexed phases find each contact's neighbours through its bodies' contact lists instead (the same contacts in the same order, the same results)",
             lesson.id,
             r.table_entries(),
             r.table_budget
@@ -85,7 +86,13 @@ pub fn resolve(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<(), AppError> {
+    // Ctrl-C exits 130 at once (nothing is written before the end); a
+    // large lesson's loading says that it works, on a terminal after half
+    // a second.
+    super::progress::exit_on_interrupt();
+    let loading = super::progress::later(format!("{}: loading", args.lesson.to_string_lossy()), "");
     let lesson = load(&args.lesson, &super::overrides(&args.knobs)?, None)?;
+    drop(loading);
     warn(&lesson, err);
     if lesson.contacts.is_empty() {
         // Only a scene may write no contact: its contacts come from its shapes.
@@ -100,7 +107,7 @@ pub fn resolve(
     let implementation = implementation(args);
     let n = lesson.contacts.len();
     // A large resolve says that it works (on a terminal), until it prints.
-    let _spinner = (n >= super::progress::RESOLVE_SPINNER_FROM).then(|| {
+    let spinner = (n >= super::progress::RESOLVE_SPINNER_FROM).then(|| {
         super::progress::spinner(format!(
             "{}: resolving {n} contacts (checked first, then up to {} position and {} velocity iterations{})",
             lesson.id,
@@ -148,6 +155,8 @@ pub fn resolve(
             crate::render::html::resolve::document(&trace, &worked, &fmt)
         }
     };
+    // The spinner's line cleared before the output.
+    drop(spinner);
     match &args.output {
         Some(path) => super::write_atomic(path, text.as_bytes()),
         None => out.write_all(text.as_bytes()).map_err(io),

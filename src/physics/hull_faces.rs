@@ -2,6 +2,8 @@
 //! within 1e-9, every vertex within ε of the plane) merged, their boundary
 //! chained counter-clockwise, vertices on a straight stretch of it dropped.
 
+use std::collections::{HashMap, HashSet};
+
 use nalgebra::Vector3;
 
 /// A polygon face: vertex indices counter-clockwise seen from outside, the
@@ -22,6 +24,12 @@ pub(super) fn merge(
     eps: f64,
 ) -> Vec<HullFace> {
     let edges_of = |t: &[usize; 3]| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]];
+    // Each directed edge's triangle: a triangle's neighbour across edge
+    // a → b is the one holding b → a (a lookup, not a pass over every
+    // triangle: 100,000 vertices make 200,000 triangles).
+    let across: HashMap<[usize; 2], usize> = (triangles.iter().enumerate())
+        .flat_map(|(t, tri)| edges_of(tri).map(|e| (e, t)))
+        .collect();
     let mut group = vec![usize::MAX; triangles.len()];
     let mut faces = Vec::new();
     for seed in 0..triangles.len() {
@@ -45,11 +53,12 @@ pub(super) fn merge(
             let t = members[k];
             k += 1;
             for [a, b] in edges_of(&triangles[t]) {
-                for (u, other) in triangles.iter().enumerate() {
-                    if group[u] == usize::MAX && edges_of(other).contains(&[b, a]) && coplanar(u) {
-                        group[u] = id;
-                        members.push(u);
-                    }
+                let Some(&u) = across.get(&[b, a]) else {
+                    continue;
+                };
+                if group[u] == usize::MAX && coplanar(u) {
+                    group[u] = id;
+                    members.push(u);
                 }
             }
         }
@@ -58,9 +67,10 @@ pub(super) fn merge(
                 .iter()
                 .flat_map(|&t| edges_of(&triangles[t]))
                 .collect();
+            let inner: HashSet<[usize; 2]> = all.iter().copied().collect();
             all.iter()
                 .copied()
-                .filter(|&[a, b]| !all.contains(&[b, a]))
+                .filter(|&[a, b]| !inner.contains(&[b, a]))
                 .collect()
         };
         let ring = chain(&boundary);

@@ -4,15 +4,19 @@
 //! outcome and may cancel (the work stops where it checks, or finishes and
 //! its outcome is dropped).
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-use super::detect::detect_trace;
+use super::detect::detect_trace_watched;
 use super::Player;
 use crate::lesson::Lesson;
 use crate::trace::detect::DetectTrace;
 use crate::trace::step::StepTrace;
 use crate::trace::Plane;
+
+/// The vertices from which a hull's detection goes to another thread in
+/// the TUI: a hull of 100,000 vertices took over 10 s on the UI thread.
+pub const DETECT_LATER_VERTICES: usize = 1_000;
 
 /// The outcome when its thread is done (`None` inside: it could not be made).
 type Slot<T> = Arc<Mutex<Option<Option<T>>>>;
@@ -24,6 +28,8 @@ pub struct Job<T> {
     pub step: u64,
     slot: Slot<T>,
     cancel: Arc<AtomicBool>,
+    /// The work's units done and their number (0 of 0: not counted).
+    counts: Arc<[AtomicUsize; 2]>,
 }
 
 /// A step's resolution being recorded on another thread.
@@ -44,11 +50,21 @@ impl<T: Send + 'static> Job<T> {
         step: u64,
         work: impl FnOnce(&AtomicBool) -> Option<T> + Send + 'static,
     ) -> Job<T> {
+        Job::spawn_counted(step, move |stop, _| work(stop))
+    }
+
+    /// [`Job::spawn`], `work` also handed the counts to keep up to date
+    /// (units done, of how many) for [`Job::progress`].
+    pub fn spawn_counted(
+        step: u64,
+        work: impl FnOnce(&AtomicBool, &[AtomicUsize; 2]) -> Option<T> + Send + 'static,
+    ) -> Job<T> {
         let slot: Slot<T> = Arc::new(Mutex::new(None));
         let cancel = Arc::new(AtomicBool::new(false));
-        let (out, stop) = (Arc::clone(&slot), Arc::clone(&cancel));
+        let counts = Arc::new([AtomicUsize::new(0), AtomicUsize::new(0)]);
+        let (out, stop, count) = (Arc::clone(&slot), Arc::clone(&cancel), Arc::clone(&counts));
         std::thread::spawn(move || {
-            let done = work(&stop);
+            let done = work(&stop, &count);
             if stop.load(Ordering::Relaxed) {
                 return;
             }
@@ -56,7 +72,19 @@ impl<T: Send + 'static> Job<T> {
                 *s = Some(done);
             }
         });
-        Job { step, slot, cancel }
+        Job {
+            step,
+            slot,
+            cancel,
+            counts,
+        }
+    }
+
+    /// The units done and their number, once the work has counted them.
+    pub fn progress(&self) -> Option<(usize, usize)> {
+        let [done, total] = &*self.counts;
+        let total = total.load(Ordering::Relaxed);
+        (total > 0).then(|| (done.load(Ordering::Relaxed), total))
     }
 
     /// The outcome once the thread is done (taken: later calls give `None`);
@@ -72,9 +100,15 @@ impl<T: Send + 'static> Job<T> {
 }
 
 impl Player {
-    /// Whether `d` (a step's detection) goes to another thread: a large scene.
+    /// Whether `d` (a step's detection) goes to another thread: a large
+    /// scene, or a hull of [`DETECT_LATER_VERTICES`] vertices or more (one
+    /// pair's GJK and EPA then walk them all at every iteration).
     pub fn detects_later(&self) -> bool {
         self.heavy()
+            || self.sim.world.bodies.iter().any(|b| match &b.shape {
+                Some(crate::physics::Shape::Hull(h)) => h.vertices().len() >= DETECT_LATER_VERTICES,
+                _ => false,
+            })
     }
 
     /// [`Player::detect`] on another thread, for every pair (`None` for a
@@ -86,13 +120,17 @@ impl Player {
         let (_, from) = self.checkpoints.iter().rev().find(|(s, _)| *s <= step)?;
         let mut sim = from.clone();
         let lesson = lesson.clone();
-        Some(Job::spawn(step, move |stop| {
+        Some(Job::spawn_counted(step, move |stop, [done, total]| {
             while sim.step < step {
                 if stop.load(Ordering::Relaxed) || sim.advance().is_err() {
                     return None;
                 }
             }
-            Some(detect_trace(&sim, &lesson, step, plane, None))
+            detect_trace_watched(&sim, &lesson, step, plane, None, &mut |d, of| {
+                done.store(d, Ordering::Relaxed);
+                total.store(of, Ordering::Relaxed);
+                !stop.load(Ordering::Relaxed)
+            })
         }))
     }
 }

@@ -4,7 +4,7 @@
 
 use super::Player;
 use crate::lesson::Lesson;
-use crate::physics::collide::record::detect as record;
+use crate::physics::collide::record;
 use crate::physics::collide::Options;
 use crate::physics::detect::toi::Motion;
 use crate::physics::detect::Convex;
@@ -30,14 +30,45 @@ pub fn detect_trace(
     plane: Plane,
     only: Option<(usize, usize)>,
 ) -> DetectTrace {
-    let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
+    let found = record::detect(&sim.world.bodies, &options_of(sim), sim.params.dt, only);
+    build_trace(sim, lesson, step, plane, &found)
+}
+
+/// The step's contact generation options.
+fn options_of(sim: &Simulation<f64>) -> Options<f64> {
     let p = &sim.params;
-    let options = Options {
+    Options {
         box_box: p.box_box,
         tolerance: p.contact_margin,
         narrow_phase: p.narrow_phase,
-    };
-    let found = record(&sim.world.bodies, &options, p.dt, only);
+    }
+}
+
+/// [`detect_trace`], telling `watch` the pairs done (of how many) as the
+/// narrow phase goes; `None` when `watch` says stop (returns false).
+pub fn detect_trace_watched(
+    sim: &Simulation<f64>,
+    lesson: &Lesson,
+    step: u64,
+    plane: Plane,
+    only: Option<(usize, usize)>,
+    watch: &mut dyn FnMut(usize, usize) -> bool,
+) -> Option<DetectTrace> {
+    let (bodies, dt) = (&sim.world.bodies, sim.params.dt);
+    let found = record::detect_watched(bodies, &options_of(sim), dt, only, watch)?;
+    Some(build_trace(sim, lesson, step, plane, &found))
+}
+
+/// The trace of `found`, the detection of `sim`'s bodies.
+fn build_trace(
+    sim: &Simulation<f64>,
+    lesson: &Lesson,
+    step: u64,
+    plane: Plane,
+    found: &record::DetectRecord,
+) -> DetectTrace {
+    let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
+    let p = &sim.params;
     let cx = Context {
         lesson: &lesson.id,
         title: &lesson.title,
@@ -48,7 +79,7 @@ pub fn detect_trace(
         names: &names,
         bodies: &sim.world.bodies,
     };
-    let mut trace = build(&cx, &found);
+    let mut trace = build(&cx, found);
     if p.ccd.method().is_some() {
         // The bounds the next step's swept broad phase makes (docs/ccd.md).
         let (world, moving) = sim.resolved_next();

@@ -8,7 +8,7 @@ mod background;
 mod detect;
 mod edit;
 pub use background::{Detecting, Job, Recording};
-pub use detect::{detect_trace, toi_picture, toi_trace, PairToiRun};
+pub use detect::{detect_trace, detect_trace_watched, toi_picture, toi_trace, PairToiRun};
 pub use edit::SceneEdit;
 
 use crate::lesson::Lesson;

@@ -17,6 +17,7 @@ mod exercise_asks;
 mod exercise_figures;
 mod grading;
 mod instructor;
+mod interrupt_at_once;
 mod io_cli;
 mod io_exercise;
 mod io_simulate;

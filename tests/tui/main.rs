@@ -13,6 +13,7 @@ mod previous_frame;
 mod tui;
 mod tui_detect;
 mod tui_detect_stages;
+mod tui_detect_worker;
 mod tui_huge_step;
 mod tui_labels;
 mod tui_lesson_picker;

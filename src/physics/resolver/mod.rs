@@ -17,6 +17,7 @@
 //! (sequential impulses, `solver = "sequential_impulse"`). Each iteration is reported to an
 //! [`Observer`]; [`Silent`] reports nowhere.
 
+pub mod adjacent;
 pub mod checks;
 pub mod indexed;
 mod lean_prepare;
@@ -122,7 +123,7 @@ pub struct Resolver<T: Real> {
     pub sequential: sequential::State<T>,
     /// The most entries the indexed phases' neighbour table may hold
     /// ([`neighbours::TABLE_BUDGET`]; lower it to try the fallback on a
-    /// small scene): beyond it they scan ([`Resolver::table_over_budget`]).
+    /// small scene): beyond it they go through the adjacency ([`Resolver::table_over_budget`]).
     pub table_budget: usize,
 }
 
@@ -258,9 +259,10 @@ impl<T: Real> Resolver<T> {
 
     /// Whether the deepest-first order's neighbour table for these contacts
     /// would hold more entries than [`Resolver::table_budget`]: then the
-    /// indexed implementation scans the contacts instead (the same contacts
-    /// in the same order, so the same results; one body with tens of
-    /// thousands of contacts asks for billions of entries).
+    /// indexed implementation finds each taken contact's neighbours through
+    /// the body → contacts adjacency instead ([`adjacent`]: the same
+    /// contacts in the same order, so the same results; one body with tens
+    /// of thousands of contacts asks for billions of entries).
     pub fn table_over_budget(&self) -> bool {
         self.params.solver != Solver::SequentialImpulse
             && self.neighbours.wanted() > self.table_budget.min(neighbours::TABLE_BUDGET)
@@ -288,7 +290,9 @@ impl<T: Real> Resolver<T> {
             return sequential::position_phase(self, obs);
         }
         match implementation {
-            Implementation::Indexed if self.table_over_budget() => scan::position_phase(self, obs),
+            Implementation::Indexed if self.table_over_budget() => {
+                adjacent::position_phase(self, obs)
+            }
             Implementation::Scan => scan::position_phase(self, obs),
             Implementation::Indexed => indexed::position_phase(self, obs),
         }
@@ -305,7 +309,9 @@ impl<T: Real> Resolver<T> {
             return sequential::velocity_phase(self, obs);
         }
         match implementation {
-            Implementation::Indexed if self.table_over_budget() => scan::velocity_phase(self, obs),
+            Implementation::Indexed if self.table_over_budget() => {
+                adjacent::velocity_phase(self, obs)
+            }
             Implementation::Scan => scan::velocity_phase(self, obs),
             Implementation::Indexed => indexed::velocity_phase(self, obs),
         }

@@ -27,8 +27,9 @@ pub(super) const SLOT_PATTERNS: [[u8; 2]; 6] = [
 /// contacts of the contacts of their bodies, so it grows as the square of
 /// one body's contacts (70,000 on one body would ask for 4.9 × 10⁹, beyond
 /// the 32-bit numbering and the memory). Beyond it the indexed phases
-/// scan the contacts instead, as [`super::scan`] does (the same contacts
-/// in the same order: the same results), and the resolver says so
+/// find each taken contact's neighbours through the body → contacts
+/// adjacency instead ([`super::adjacent`]: the same contacts in the same
+/// order, the same results), and the resolver says so
 /// ([`super::Resolver::table_over_budget`]).
 pub const TABLE_BUDGET: usize = 1 << 26;
 
@@ -85,7 +86,7 @@ impl Neighbours {
         let most: usize = r.contacts.iter().map(width).sum();
         self.wanted = most;
         if most > TABLE_BUDGET {
-            // Over the budget: the phases scan instead (never built).
+            // Over the budget: the phases go through the adjacency (never built).
             return;
         }
         let widest = r.contacts.iter().map(width).max().unwrap_or(0);

@@ -467,8 +467,14 @@ pub(crate) fn detecting(run: &RunView) -> String {
     };
     let spin = ["⠋", "⠙", "⠹", "⠸", "⠼", "⠴", "⠦", "⠧", "⠇", "⠏"];
     let elapsed = since.elapsed();
+    // The narrow phase's pairs done, once the worker has counted them.
+    let counted = match d.progress() {
+        Some((done, 1)) => format!(", {done} of 1 pair"),
+        Some((done, total)) => format!(", {done} of {total} pairs"),
+        None => String::new(),
+    };
     format!(
-        "{} working: detecting step {}'s contacts ({:.0} s; a large scene) · Esc cancels · q quits",
+        "{} working: detecting step {}'s contacts{counted} ({:.0} s; a large scene) · Esc cancels · q quits",
         spin[(elapsed.as_millis() / 100) as usize % spin.len()],
         d.step,
         elapsed.as_secs_f64().floor()
