@@ -8,6 +8,7 @@
 #[allow(dead_code)] // the pile of spheres is the other benches'
 mod common;
 
+use contact_lab::knobs::Choice;
 use contact_lab::physics::step::ccd_mode::Ccd;
 use contact_lab::physics::step::Simulation;
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};

@@ -3,6 +3,7 @@
 //! throughout, sliding then sticking, sliding throughout, slip reversing
 //! (closed form, no integration) and slip turning in 3D (Dormand–Prince).
 
+use contact_lab::knobs::Choice;
 use std::hint::black_box;
 
 use contact_lab::lesson::Lesson;
@@ -74,7 +75,7 @@ fn bench(c: &mut Criterion) {
                 tolerance: Tolerance::default(),
                 ..input.clone()
             };
-            group.bench_function(format!("integrate_{}", law.name()), |b| {
+            group.bench_function(format!("integrate_{}", Some(law).name()), |b| {
                 b.iter(|| integrate(black_box(&input)).unwrap())
             });
         }

@@ -2,7 +2,8 @@
 //! (Millington's impulse-based resolver).
 //!
 //! Physics computes ([`physics`]), the trace describes ([`trace`]), renderers
-//! show ([`render`], [`tui`]). [`lesson`] reads scenes; [`commands`] wires
+//! show ([`render`], [`tui`]). [`knobs`] declares every tunable once;
+//! [`lesson`] reads scenes; [`commands`] wires
 //! the CLI; [`errata`] compares the lectures' printed numbers with the
 //! computed ones; [`exercise`] draws exercises. One contact lives in
 //! `physics::contact` and is described stage by stage in `trace::contact`;
@@ -15,6 +16,7 @@ pub mod errata;
 pub mod error;
 pub mod exercise;
 pub mod format;
+pub mod knobs;
 pub mod lesson;
 pub mod output_file;
 pub mod physics;

@@ -1,5 +1,5 @@
 //! The knobs on the command line: one flag per knob of the levels a command
-//! takes, built from the knob table (`physics::knobs`), so a new knob needs
+//! takes, built from the knob table (`knobs`), so a new knob needs
 //! no line here. Values stay text until `commands` checks them with the
 //! lesson's rules (`lesson::knob_value`).
 
@@ -7,7 +7,7 @@ use std::marker::PhantomData;
 
 use clap::{Arg, ArgAction, ArgMatches, Args, Command, FromArgMatches};
 
-use crate::physics::knobs::{of_levels, Cli, Kind, Knob, Level};
+use crate::knobs::{of_levels, Cli, Kind, Knob, Level};
 
 /// The levels of knobs a command takes.
 pub trait Levels: Clone + std::fmt::Debug + Send + Sync + 'static {
@@ -56,7 +56,7 @@ pub fn flag(knob: &Knob) -> &'static str {
     static FLAGS: std::sync::OnceLock<Vec<(&'static str, &'static str)>> =
         std::sync::OnceLock::new();
     let flags = FLAGS.get_or_init(|| {
-        crate::physics::knobs::KNOBS
+        crate::knobs::KNOBS
             .iter()
             .map(|k| {
                 let f: &'static str = Box::leak(k.name.replace('_', "-").into_boxed_str());
@@ -86,7 +86,7 @@ fn help(knob: &Knob) -> String {
             " [{}]",
             choices
                 .iter()
-                .map(|(c, _)| *c)
+                .map(|c| c.name)
                 .collect::<Vec<_>>()
                 .join(", ")
         ),

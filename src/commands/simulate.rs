@@ -9,8 +9,8 @@ use crate::cli::{RunFormat, SimulateArgs};
 use crate::error::AppError;
 use crate::format::exact;
 use crate::format::Fmt;
-use crate::lesson::{knob_value, Lesson};
-use crate::physics::knobs::{Kind, Level, Range, Value, KNOBS, MAX_STEPS};
+use crate::knobs::{Value, ANGULAR_DAMPING, LINEAR_DAMPING, MAX_STEPS, STEPS};
+use crate::lesson::{knob_value, Lesson, Overrides};
 use crate::physics::step::Simulation;
 use crate::render::run;
 use crate::render::run_stream::{RunWriter, Streamed};
@@ -21,9 +21,10 @@ pub fn simulate(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<(), AppError> {
-    let lesson = Lesson::load(&args.lesson)?;
+    let overrides = overrides(args)?;
+    let lesson = super::load(&args.lesson, &overrides, None)?;
     warn(&lesson, err);
-    let (mut sim, steps) = simulation(&lesson, args)?;
+    let (mut sim, steps) = simulation(&lesson, args, &overrides)?;
     warn_knobs(&sim.params.resolver, err);
     for l in sim.lowered_tolerances() {
         let _ = writeln!(err, "warning: {}", crate::trace::run::lowered_text(&l));
@@ -247,10 +248,26 @@ fn trace_step(
     out.write_all(text.as_bytes()).map_err(io)
 }
 
-/// The simulation a lesson and the command line describe, and how many steps to run.
-pub fn simulation(
+/// The knobs the command line sets: one flag per knob, and `--damping`,
+/// which sets both dampings, each checked by its rule.
+fn overrides(args: &SimulateArgs) -> Result<Overrides, AppError> {
+    let mut overrides = super::overrides(&args.knobs)?;
+    if let Some(d) = args.damping {
+        for knob in [&LINEAR_DAMPING, &ANGULAR_DAMPING] {
+            knob_value::check(knob, Value::Number(d))
+                .map_err(|e| AppError::Usage(format!("--damping: {e}")))?;
+            overrides.set(knob, Value::Number(d));
+        }
+    }
+    Ok(overrides)
+}
+
+/// The simulation a lesson (loaded with the command line's `overrides`)
+/// describes, and how many steps to run.
+fn simulation(
     lesson: &Lesson,
     args: &SimulateArgs,
+    overrides: &Overrides,
 ) -> Result<(Simulation<f64>, u64), AppError> {
     if lesson.simulation.is_none() {
         return Err(AppError::Usage(format!(
@@ -259,30 +276,9 @@ pub fn simulation(
         )));
     }
     let usage = |what: &str| Err(AppError::Usage(what.to_string()));
-    let mut overrides = super::overrides(&args.knobs)?;
-    if let Some(d) = args.damping {
-        // `--damping` sets both dampings, checked by their rule.
-        for knob in KNOBS
-            .iter()
-            .filter(|k| k.kind.range() == Some(Range::Damping))
-        {
-            knob_value::check(knob, Value::Number(d))
-                .map_err(|e| AppError::Usage(format!("--damping: {e}")))?;
-            overrides.set(knob, Value::Number(d));
-        }
-    }
-    let mut lesson = lesson.clone();
-    lesson.apply(&overrides);
     let scene = lesson.simulation.clone().unwrap_or_default();
     let p = lesson.sim_params().unwrap_or_default();
-    let steps_given = overrides.0.iter().any(|(k, _)| {
-        k.kind
-            == Kind::Count {
-                max: MAX_STEPS,
-                optional: false,
-            }
-            && k.level == Level::Step
-    });
+    let steps_given = overrides.0.iter().any(|(k, _)| **k == STEPS);
     let steps = match args.seconds {
         Some(t) if !steps_given => {
             if !(t.is_finite() && t >= 0.0) {

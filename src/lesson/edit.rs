@@ -8,7 +8,7 @@ use super::knob_value::{self, echo};
 use super::validate::rules;
 use super::Lesson;
 use crate::format::exact;
-use crate::physics::knobs::{self, Kind as KnobKind, Knob, Level, Offered, Value};
+use crate::knobs::{self, Kind as KnobKind, Knob, Level, Offered, Spelling, Value};
 
 /// What an editable field holds.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -17,7 +17,7 @@ pub enum Key {
     StaticFriction,
     DynamicFriction,
     Penetration,
-    /// A knob of the table (`physics::knobs`).
+    /// A knob of the table (`knobs`).
     Knob(&'static Knob),
     Mass,
     Velocity,
@@ -33,7 +33,7 @@ pub enum Kind {
     /// Three numbers `x, y, z`.
     Vector,
     /// One of a fixed list of names; entering cycles through them.
-    Choice(&'static [(&'static str, &'static str)]),
+    Choice(&'static [Spelling]),
 }
 
 /// One editable input of contact `k`: a contact field, or a field of the body
@@ -46,14 +46,25 @@ pub struct Field {
     pub label: String,
 }
 
-const FLAG: &[(&str, &str)] = &[("true", ""), ("false", "")];
+const FLAG: &[Spelling] = &[
+    Spelling {
+        name: "true",
+        aliases: &[],
+        doc: "",
+    },
+    Spelling {
+        name: "false",
+        aliases: &[],
+        doc: "",
+    },
+];
 
 impl Field {
     pub fn kind(&self) -> Kind {
         match self.key {
             Key::Velocity | Key::AngularVelocity | Key::Acceleration => Kind::Vector,
             Key::Knob(knob) => match knob.kind {
-                KnobKind::Choice { choices, .. } => Kind::Choice(choices),
+                KnobKind::Choice { choices } => Kind::Choice(choices),
                 KnobKind::Flag => Kind::Choice(FLAG),
                 KnobKind::Vector => Kind::Vector,
                 _ => Kind::Number,
@@ -154,8 +165,8 @@ pub fn next_choice(lesson: &Lesson, k: usize, field: &Field) -> Option<String> {
         return None;
     };
     let now = get(lesson, k, field);
-    let i = names.iter().position(|(n, _)| *n == now).unwrap_or(0);
-    Some(names[(i + 1) % names.len()].0.to_string())
+    let i = names.iter().position(|n| n.name == now).unwrap_or(0);
+    Some(names[(i + 1) % names.len()].name.to_string())
 }
 
 fn number(text: &str) -> Result<f64, String> {
@@ -318,9 +329,9 @@ mod tests {
         let e = put(&mut l, "cube: velocity", "1, 2").unwrap_err();
         assert!(e.contains("three numbers"), "{e}");
         // A share knob (in (0, 1]) refuses 0.
-        let share = crate::physics::knobs::KNOBS
+        let share = crate::knobs::KNOBS
             .iter()
-            .find(|k| k.kind.range() == Some(crate::physics::knobs::Range::Share))
+            .find(|k| k.kind.range() == Some(crate::knobs::Range::Share))
             .unwrap();
         let e = put(&mut l, share.name, "0").unwrap_err();
         assert!(e.contains("(0, 1]"), "{e}");
@@ -394,7 +405,7 @@ mod tests {
             assert_eq!(next, law);
             set(&mut l, 0, &f, &next).unwrap();
             assert_eq!(
-                l.contacts[0].settings.exact.map_or("none", |x| x.name()),
+                crate::knobs::Choice::name(l.contacts[0].settings.exact),
                 law
             );
         }

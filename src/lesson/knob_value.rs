@@ -1,10 +1,10 @@
 //! A knob's value read from a lesson file, a command line, the TUI's edit
 //! form or the study's `--grid`, checked against the knob's range rule and
-//! worded the same way everywhere (`physics::knobs` declares the rules).
+//! worded the same way everywhere (`knobs` declares the rules).
 
 use crate::format::exact;
+use crate::knobs::{Kind, Knob, Range, Value, MAX_DT};
 use crate::lesson::ranges;
-use crate::physics::knobs::{Kind, Knob, Range, Value, MAX_DT};
 
 /// Why `value` is refused for `knob` (`Ok` when it is accepted).
 pub fn check(knob: &Knob, value: Value) -> Result<(), String> {
@@ -104,7 +104,7 @@ pub fn expected(knob: &Knob) -> String {
             "one of {}",
             choices
                 .iter()
-                .map(|(c, _)| format!("\"{c}\""))
+                .map(|c| format!("\"{}\"", c.name))
                 .collect::<Vec<_>>()
                 .join(", ")
         ),

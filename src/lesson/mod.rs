@@ -18,13 +18,9 @@ pub mod validate;
 
 use nalgebra::{Matrix3, Quaternion, Vector3};
 
-use crate::physics::knobs::{Knob, Level, Value};
-/// The `[settings]` table of a lesson file, as validated: a contact's knobs.
-pub use crate::physics::params::ContactSettings as Settings;
+use crate::knobs::{Knob, Level, Value};
 pub use crate::physics::params::Material;
-/// What `simulate` needs beyond the bodies: forces, the step, sleep, and the
-/// coefficients of generated contacts.
-pub use crate::physics::params::SceneSettings as Simulation;
+use crate::physics::params::{ContactSettings, SceneSettings};
 use crate::physics::step::SimParams;
 pub use crate::physics::Shape;
 use crate::physics::{
@@ -46,10 +42,10 @@ pub struct Lesson {
     pub bodies: Vec<BodyDef>,
     pub contacts: Vec<ContactDef>,
     pub printed: Vec<Printed>,
-    /// The lesson's `[settings]` table (defaults where absent).
-    pub settings: Settings,
+    /// The lesson's `[settings]` table as validated, defaults where absent: a contact's knobs.
+    pub settings: ContactSettings,
     /// Time stepping, when the lesson has `[world]`, `[step]` or `[sleep]`.
-    pub simulation: Option<Simulation>,
+    pub simulation: Option<SceneSettings>,
     /// How `resolve` resolves the contacts together (`[settings]`, defaults where absent).
     pub resolver: ResolverParams,
     /// Non-fatal findings (normalised normal, shape vs tensor, …).
@@ -60,7 +56,7 @@ pub struct Lesson {
     /// `[step]`, `[sleep]`): its table, the knob and the key as the file
     /// spells it (the knob's name or an old one: `[sleep] enabled`), so that
     /// what is written back into the file replaces the same key.
-    pub spellings: Vec<(crate::physics::knobs::Table, &'static str, String)>,
+    pub spellings: Vec<(crate::knobs::Table, &'static str, String)>,
 }
 
 /// A lesson's text as contact-lab shows it: the Unicode minus sign (U+2212)
@@ -129,7 +125,7 @@ pub struct ContactDef {
     pub dynamic_friction: f64,
     /// `[settings]` with this contact's `settings` table over it (and its
     /// own `friction_model`).
-    pub settings: Settings,
+    pub settings: ContactSettings,
     /// A scene step's penetrating contact: the normal from the closest
     /// points one frame earlier (t − Δt), when the pair was apart then
     /// (physics/step/previous_frame.rs). Never written in a file.
@@ -197,8 +193,8 @@ impl Overrides {
     pub fn from_pairs(pairs: &[(&str, &str)]) -> Result<Overrides, String> {
         let mut o = Overrides::default();
         for (name, text) in pairs {
-            let knob = crate::physics::knobs::find(name)
-                .ok_or_else(|| format!("no knob is named '{name}'"))?;
+            let knob =
+                crate::knobs::find(name).ok_or_else(|| format!("no knob is named '{name}'"))?;
             o.set(knob, knob_value::from_text(knob, text)?);
         }
         Ok(o)

@@ -9,8 +9,9 @@
 //! `resolve` applies the stages repeatedly: [`check_resolve`] guards it.
 
 use super::Lesson;
+use crate::knobs::Choice;
+use crate::knobs::{self, Range};
 use crate::physics::contact::numbers::Numbers;
-use crate::physics::knobs::{self, Range};
 use crate::physics::FrictionModel;
 
 /// The largest magnitude a stage's result may have.

@@ -54,7 +54,7 @@ pub struct RawFigureBody {
 
 /// A table of knobs (`[settings]`, a contact's `settings`, `[world]`,
 /// `[step]`, `[sleep]`) as written: each key and value with its span, read
-/// against the knob table (`physics::knobs`) by the validator.
+/// against the knob table (`knobs`) by the validator.
 pub type KnobTable = BTreeMap<S<String>, S<toml::Value>>;
 
 #[derive(Debug, Deserialize)]
@@ -123,7 +123,7 @@ pub struct RawContact {
     pub friction: Option<S<f64>>,
     pub static_friction: Option<S<f64>>,
     pub dynamic_friction: Option<S<f64>>,
-    /// A knob of the contact's own (`physics::knobs`, table `[[contact]]`).
+    /// A knob of the contact's own (`knobs`, table `[[contact]]`).
     pub friction_model: Option<S<toml::Value>>,
     pub settings: Option<KnobTable>,
     /// Load warnings the lesson means (`"normal-into-body"`,

@@ -15,9 +15,9 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 use super::raw::{self, RawBody, RawContact, RawLesson, S};
 use super::source::{LessonDiagnostic, LessonError, Note};
 use super::syntax;
-use super::Settings;
 use super::{BodyDef, ContactDef, Lesson, Shape};
-use crate::physics::knobs::Table;
+use crate::knobs::Table;
+use crate::physics::params::ContactSettings;
 
 /// Rules shared by the file validator and the TUI's edit form: each returns
 /// the reason a value is refused.
@@ -119,7 +119,7 @@ struct Validator {
     /// `[sleep]`) and the table each was set in: a knob set in two of them
     /// is said, since the table read last silently wins.
     /// The key as the file spells it comes third.
-    scene_knobs: Vec<(&'static str, crate::physics::knobs::Table, String)>,
+    scene_knobs: Vec<(&'static str, crate::knobs::Table, String)>,
 }
 
 fn v3(a: [f64; 3]) -> Vector3<f64> {
@@ -278,7 +278,7 @@ impl Validator {
         raw: &RawContact,
         (by_name, raw_bodies): (&HashMap<&str, usize>, &[RawBody]),
         bodies: &[BodyDef],
-        defaults: Settings,
+        defaults: ContactSettings,
     ) -> ContactDef {
         self.contact_spans.push(raw.bodies.span());
         if let Some(n) = &raw.name {

@@ -11,6 +11,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::hull_faces::{merge, HullFace};
+
 /// Why a point cloud has no solid hull.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum HullError {
@@ -26,15 +28,6 @@ pub enum HullError {
     Collinear,
     #[error("all points lie in one plane: the hull has no volume")]
     Coplanar,
-}
-
-/// A polygon face: vertex indices counter-clockwise seen from outside, the
-/// unit outward normal, and the plane offset (n·x = offset on the face).
-#[derive(Debug, Clone, PartialEq)]
-pub struct HullFace {
-    pub vertices: Vec<usize>,
-    pub normal: Vector3<f64>,
-    pub offset: f64,
 }
 
 /// Volume, centroid and inertia tensor (about the centroid, body axes) of a
@@ -105,7 +98,7 @@ impl ConvexHull {
         }
         let triangles: Vec<[usize; 3]> = tris.iter().map(|t| t.v.map(|i| map[i])).collect();
         let normals: Vec<Vector3<f64>> = tris.iter().map(|t| t.n).collect();
-        let faces = super::hull_faces::merge(&vertices, &triangles, &normals, eps);
+        let faces = merge(&vertices, &triangles, &normals, eps);
         let mut edges: Vec<[usize; 2]> = faces
             .iter()
             .flat_map(|f| {

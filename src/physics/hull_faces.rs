@@ -4,7 +4,14 @@
 
 use nalgebra::Vector3;
 
-use super::hull::HullFace;
+/// A polygon face: vertex indices counter-clockwise seen from outside, the
+/// unit outward normal, and the plane offset (n·x = offset on the face).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HullFace {
+    pub vertices: Vec<usize>,
+    pub normal: Vector3<f64>,
+    pub offset: f64,
+}
 
 /// Groups `triangles` (counter-clockwise from outside, unit `normals`) into
 /// polygon faces.

@@ -2,8 +2,8 @@
 //! that f32 and f64 runs can be compared.
 //!
 //! - [`body`], [`shape`], [`world`]: bodies by id, their shapes, the world of a scene;
-//! - [`knobs`]: every tunable declared once (name, level, doc, default, range);
-//! - [`params`]: the structs the knobs are held in, one per level;
+//! - [`params`]: the typed parameters, one struct per level (the knob table
+//!   that names them is `crate::knobs`, above physics);
 //! - [`contact`]: ONE contact — frame, problem view, stages, solve, checks
 //!   and the causes of their verdicts;
 //! - [`scale`]: scale-invariant norms and inverse (power-of-two scaling);
@@ -17,8 +17,7 @@ pub mod contact;
 pub mod detect;
 pub mod exact;
 pub mod hull;
-mod hull_faces;
-pub mod knobs;
+pub mod hull_faces;
 pub mod params;
 pub mod pose;
 pub mod resolver;

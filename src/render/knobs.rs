@@ -2,8 +2,9 @@
 //! `contact-lab knobs`): every tunable, where it lives, what it trades, its
 //! default, its values, and where it can be set.
 
+use crate::knobs::{Choice, Cli, Kind, Knob, Level, Offered, KNOBS, RELAXATION};
 use crate::lesson::knob_value::expected;
-use crate::physics::knobs::{Cli, Kind, Knob, Level, Offered, KNOBS};
+use crate::physics::Solver;
 
 fn surfaces(k: &Knob) -> String {
     let flag = k.name.replace('_', "-");
@@ -25,17 +26,18 @@ fn surfaces(k: &Knob) -> String {
 
 fn values(k: &Knob) -> String {
     match k.kind {
-        Kind::Choice { choices, aliases } => {
+        Kind::Choice { choices } => {
             let mut s: Vec<String> = choices
                 .iter()
-                .map(|(c, what)| format!("`{c}` ({what})"))
+                .map(|c| format!("`{}` ({})", c.name, c.doc))
                 .collect();
+            let aliases: Vec<&str> = choices.iter().flat_map(|c| c.aliases).copied().collect();
             if !aliases.is_empty() {
                 s.push(format!(
                     "old spellings still read: {}",
                     aliases
                         .iter()
-                        .map(|(a, _)| format!("`{a}`"))
+                        .map(|a| format!("`{a}`"))
                         .collect::<Vec<_>>()
                         .join(", ")
                 ));
@@ -48,16 +50,19 @@ fn values(k: &Knob) -> String {
 
 /// The page, in Markdown.
 pub fn markdown() -> String {
-    let mut out = String::from(
+    // The examples are a knob and a choice by their handles.
+    let mut out = format!(
         "# Knobs\n\n\
-         Every tunable of contact-lab, declared once in `src/physics/knobs/mod.rs`; this page is\n\
+         Every tunable of contact-lab, declared once in `src/knobs/`; this page is\n\
          generated from that table (`contact-lab knobs`; a test keeps it current).\n\n\
          A knob has one name: the key in a lesson file's table, the key in JSON and in the\n\
-         study's `--grid`, and, with `-` for `_`, the command-line flag (`relaxation`,\n\
-         `--relaxation`). Choices are spelled in kebab-case (`deepest-first`); the old\n\
+         study's `--grid`, and, with `-` for `_`, the command-line flag (`{knob}`,\n\
+         `--{knob}`). Choices are spelled in kebab-case (`{choice}`); the old\n\
          spellings stay accepted. Material coefficients (`restitution`, `friction`,\n\
          `static_friction`, `dynamic_friction`) are data of a contact, a body or `[world]`, not\n\
          knobs: `friction` sets both μ_s and μ_d, and μ_d defaults to μ_s wherever they are written.\n",
+        knob = RELAXATION.name,
+        choice = Solver::DeepestFirst.name(),
     );
     for level in Level::ALL {
         out.push_str(&format!("\n## {} knobs\n\n", level.name()));

@@ -38,9 +38,9 @@ pub fn text(d: &DetectToi, f: &Fmt) -> String {
         if p.method != d.method {
             s.push_str(&format!(
                 "  ({}'s scan would need more than {} pieces to certify the step: {} instead)\n",
-                d.method.json_name(),
+                crate::knobs::toi_method_name(d.method),
                 crate::physics::detect::toi_sweep::MAX_PIECES,
-                p.method.json_name()
+                crate::knobs::toi_method_name(p.method)
             ));
         }
     }
@@ -198,7 +198,7 @@ fn pair_json(p: &PairToi) -> Value {
         "b": p.b,
         "movement_bounds": { "aabbs_overlap": p.aabbs_overlap, "spheres_meet": p.spheres_meet },
         "toi": {
-            "method": p.method.json_name(),
+            "method": crate::knobs::toi_method_name(p.method),
             "time": p.time,
             "end": end_name(p.end),
             "tests": p.tests,

@@ -7,10 +7,8 @@
 
 use std::fmt::Write;
 
-use super::detect::legend::legend;
-use super::detect::svg::{
-    movement_bounds, movement_extent, movement_legend, xml, Fit, H, PANEL, W,
-};
+use super::detect::legend::{legend, xml};
+use super::detect::svg::{movement_bounds, movement_extent, movement_legend, Fit, H, PANEL, W};
 use crate::format::Fmt;
 use crate::physics::Shape;
 use crate::render::figure::{outline, Outline, Silhouette, P};
@@ -69,7 +67,7 @@ pub fn svg(p: &ToiPicture, plane: Plane) -> String {
         Some(t) => format!(
             "t = {} s: time of collision ({})",
             f.num(t),
-            p.method.json_name()
+            crate::knobs::toi_method_name(p.method)
         ),
         None => format!("no time of collision: {}", end_text(p.end)),
     };

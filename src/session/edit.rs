@@ -5,7 +5,7 @@
 use nalgebra::Vector3;
 
 use super::Player;
-use crate::physics::knobs::{Knob, Value};
+use crate::knobs::{Knob, Value};
 use crate::physics::step::Simulation;
 use crate::physics::Settings;
 

@@ -5,8 +5,8 @@
 //! (`--grid KNOB=V1,V2`).
 
 use super::{Budget, Config, Precision};
+use crate::knobs::Needs;
 use crate::lesson::Lesson;
-use crate::physics::knobs::Needs;
 use crate::physics::{SimParams, Solver};
 
 /// The default scenes, how long each runs (s), and which solver the

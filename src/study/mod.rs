@@ -11,7 +11,7 @@ pub mod pareto;
 pub mod run;
 pub mod sweep;
 
-use crate::physics::knobs::{Knob, Offered, Value, KNOBS};
+use crate::knobs::{Knob, Offered, Value, KNOBS};
 use crate::physics::{Settings, SimParams, Solver};
 
 /// Visits per contact that stand for "to convergence": the phases stop at

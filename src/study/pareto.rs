@@ -4,6 +4,7 @@
 
 use super::{Budget, Row, SceneStudy};
 use crate::format::Fmt;
+use crate::knobs::Choice;
 use crate::physics::Solver;
 
 /// Errors this close (relative, or absolute in metres) are a tie: the runs

@@ -5,7 +5,7 @@
 //! before and after — and the other stops keep what changed.
 
 use super::resolver::{ContactRow, ResolverTrace};
-use super::step::{Stop, Table};
+use super::stop::{Stop, Table};
 use crate::physics::resolver::Phase;
 
 /// A huge step's stops: the whole table at the first and last stop of each

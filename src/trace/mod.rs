@@ -27,6 +27,7 @@ pub mod run;
 mod scene;
 mod stage_names;
 pub mod step;
+pub mod stop;
 pub mod symbols;
 pub mod toi;
 mod worked;

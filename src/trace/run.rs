@@ -316,7 +316,7 @@ impl RunTrace {
                 "toi",
                 format!(
                     "time of collision ({}, {} tests): {} met at t = {} s near ({}, {}, {}); resolved there, closing at {} m/s and separating at {} m/s, then the rest of the step",
-                    h.method.json_name(),
+                    crate::knobs::toi_method_name(h.method),
                     h.tests,
                     self.pair(h.body1, Some(h.body2)),
                     f.num(h.time),

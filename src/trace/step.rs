@@ -4,39 +4,14 @@
 //! contact table (penetration, desired Δv) at every stop of both phases.
 
 use super::resolver::{describe_prepared, describe_world, Names, ResolverTrace};
+use super::stop::{Stop, Table};
 use super::{BodyView, ContactView};
-use crate::lesson::{ContactDef, Lesson, Settings};
+use crate::lesson::{ContactDef, Lesson};
+use crate::physics::params::ContactSettings;
 use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
 use crate::physics::step::previous_frame::previous_normal;
 use crate::physics::step::{BlowUp, Simulation};
 use crate::physics::World;
-
-/// A moment of the resolution: before iteration `iteration` of `phase`
-/// (`iteration` = iterations used: the phase is done).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Stop {
-    pub phase: Phase,
-    pub iteration: usize,
-}
-
-/// The contact table at a stop. A huge step (its recording elided, see
-/// [`crate::trace::resolver::ROW_BUDGET`]) keeps the whole table only at the
-/// first and last stop of each phase; the others keep what changed.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Table {
-    pub stop: Stop,
-    /// The resolver's bookkeeping, per contact (both empty when `elided`).
-    pub penetration: Vec<f64>,
-    pub desired: Vec<f64>,
-    /// The contact the next iteration takes (`None` when the phase is done).
-    pub next: Option<usize>,
-    /// What the iteration just before this stop changed: contact, from, to
-    /// (its own contact included; the other contacts only when that
-    /// iteration's rows were kept).
-    pub changed: Vec<(usize, f64, f64)>,
-    /// True when this stop's whole table was not kept.
-    pub elided: bool,
-}
 
 /// One resolution, recorded for stepping through.
 #[derive(Debug, Clone)]
@@ -229,7 +204,7 @@ impl StepTrace {
                         restitution: i.restitution,
                         static_friction: i.static_friction,
                         dynamic_friction: i.dynamic_friction,
-                        settings: Settings::of_contact(
+                        settings: ContactSettings::of_contact(
                             &i.settings,
                             c.duration.unwrap_or(duration),
                             i.friction_model,

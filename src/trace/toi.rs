@@ -139,7 +139,7 @@ pub struct DetectToi {
 /// The search's name in words.
 pub fn method_words(m: ToiMethod) -> &'static str {
     match m {
-        ToiMethod::Bisection => "bisection",
+        ToiMethod::Bisection => crate::knobs::toi_method_name(m),
         ToiMethod::Conservative => "conservative advancement",
     }
 }

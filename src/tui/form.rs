@@ -4,8 +4,8 @@
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use crate::format::Fmt;
+use crate::knobs::Range;
 use crate::lesson::edit::{Field, Key, Kind};
-use crate::physics::knobs::Range;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Form {
@@ -166,7 +166,7 @@ fn unit(field: &Field) -> &'static str {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::physics::knobs::KNOBS;
+    use crate::knobs::KNOBS;
 
     fn field(name: &str) -> Field {
         let knob = KNOBS.iter().find(|k| k.name == name).expect("knob");

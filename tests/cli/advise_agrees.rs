@@ -115,7 +115,7 @@ fn what_the_scene_does_not_need_is_the_value_the_snippet_sets() {
         let keys: Vec<&str> = match knob {
             "budget" => vec!["visits_per_contact"],
             _ => {
-                let k = contact_lab::physics::knobs::find(knob).unwrap();
+                let k = contact_lab::knobs::find(knob).unwrap();
                 std::iter::once(k.name)
                     .chain(k.old_names.iter().copied())
                     .collect()

@@ -4,8 +4,8 @@
 //! docs/knobs.md, and spelled as a string nowhere else in src/.
 
 use assert_cmd::Command;
+use contact_lab::knobs::{Cli, Kind, Knob, Level, Offered, Range, Table, Value, KNOBS};
 use contact_lab::lesson::{edit, knob_value, validate, Lesson};
-use contact_lab::physics::knobs::{Cli, Kind, Knob, Level, Offered, Range, Table, Value, KNOBS};
 use contact_lab::study::{self, grid};
 
 /// A value the knob accepts that differs from its default.
@@ -25,7 +25,7 @@ fn sample(knob: &Knob) -> Value {
         Kind::Number { .. } => vec![Value::Number(0.125), Value::Number(0.375)],
         Kind::Count { .. } => vec![Value::Count(3), Value::Count(5)],
         Kind::Flag => vec![Value::Flag(true), Value::Flag(false)],
-        Kind::Choice { choices, .. } => choices.iter().map(|(c, _)| Value::Choice(c)).collect(),
+        Kind::Choice { choices } => choices.iter().map(|c| Value::Choice(c.name)).collect(),
         Kind::Vector => vec![Value::Vector([0.0, -1.0, 0.0])],
     };
     candidates
@@ -108,7 +108,7 @@ fn a_refused_value_is_refused_in_a_file_and_on_the_command_line_alike() {
         ("duration", "0"),
     ];
     for (name, text) in cases {
-        let knob = contact_lab::physics::knobs::find(name).unwrap();
+        let knob = contact_lab::knobs::find(name).unwrap();
         let cli = knob_value::from_text(knob, text).unwrap_err();
         let file = validate::parse("probe.toml", &lesson_with(knob.tables[0], name, text))
             .map(|_| ())
@@ -278,9 +278,9 @@ fn docs_knobs_md_is_the_table() {
 
 #[test]
 fn a_knob_name_is_spelled_once() {
-    // Outside physics/ (its declaration and its physics), a knob's name is
-    // not written as a string: lesson/, cli/, commands/, study/, tui/ read
-    // the table. `relaxation` is the example of the issue that asked for it.
+    // Outside knobs/ (its declaration) and physics/ (its physics), a knob's
+    // name is not written as a string: lesson/, cli/, commands/, study/,
+    // tui/ read the table. `relaxation` is the example of the issue that asked for it.
     let mut offenders = Vec::new();
     for entry in walk(concat!(env!("CARGO_MANIFEST_DIR"), "/src")) {
         let rel = entry
@@ -288,7 +288,7 @@ fn a_knob_name_is_spelled_once() {
             .unwrap()
             .to_string_lossy()
             .to_string();
-        let skip = ["src/physics/", "src/trace/", "src/render/"];
+        let skip = ["src/knobs/", "src/physics/", "src/trace/", "src/render/"];
         if skip.iter().any(|s| rel.starts_with(s)) {
             continue;
         }
@@ -375,9 +375,9 @@ fn old_spellings_stay_accepted() {
 
 #[test]
 fn relaxation_is_named_only_by_its_declaration_physics_trace_and_renderer() {
-    // The issue's example: outside physics/ (the table and what computes
-    // with it), trace/ (its stage) and render/ (its docs page) no file names
-    // the knob at all, not even in a comment.
+    // The issue's example: outside knobs/ (the table), physics/ (what
+    // computes with it), trace/ (its stage) and render/ (its docs page) no
+    // file names the knob at all, not even in a comment.
     let mut named = Vec::new();
     for entry in walk(concat!(env!("CARGO_MANIFEST_DIR"), "/src")) {
         let rel = entry
@@ -395,12 +395,48 @@ fn relaxation_is_named_only_by_its_declaration_physics_trace_and_renderer() {
     }
     for rel in &named {
         assert!(
-            ["src/physics/", "src/trace/", "src/render/"]
+            ["src/knobs/", "src/physics/", "src/trace/", "src/render/"]
                 .iter()
                 .any(|p| rel.starts_with(p)),
             "{rel} names relaxation: {named:#?}"
         );
     }
+}
+
+#[test]
+fn each_choice_is_spelled_in_one_list_that_set_and_get_agree_with() {
+    // A choice type's values and spellings are one list (knobs::choices!):
+    // setting a knob to each spelling, or to an old one, reads back the
+    // canonical spelling, and every spelling is a different value.
+    for knob in KNOBS {
+        let Kind::Choice { choices } = knob.kind else {
+            continue;
+        };
+        for c in choices {
+            for typed in std::iter::once(&c.name).chain(c.aliases) {
+                let mut s = contact_lab::physics::Settings::default();
+                (knob.set)(&mut s, Value::Choice(knob.choice(typed).unwrap()));
+                assert_eq!(
+                    (knob.get)(&s),
+                    Value::Choice(c.name),
+                    "{} = {typed}",
+                    knob.name
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_ccd_choices_are_spelled_in_one_source_file() {
+    let mut files = Vec::new();
+    for entry in walk(concat!(env!("CARGO_MANIFEST_DIR"), "/src")) {
+        let text = std::fs::read_to_string(&entry).unwrap();
+        if text.contains("\"bisection\"") || text.contains("\"conservative\"") {
+            files.push(entry);
+        }
+    }
+    assert_eq!(files.len(), 1, "{files:#?}");
 }
 
 /// A number or count knob's boundary values (accepted), and a value just

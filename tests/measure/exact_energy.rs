@@ -2,6 +2,7 @@
 //! `--nocapture` for the report). Where the laws gain energy over random
 //! contacts is counted in `exact_study.rs`.
 
+use contact_lab::knobs::Choice;
 use std::collections::BTreeMap;
 
 use contact_lab::lesson::Lesson;
@@ -28,14 +29,14 @@ fn kane_lesson_by_law() {
         let exact = x.energy_change() / x.energy_before;
         println!(
             "  {:8} exact {:+.4} ({:?}: {})  one-shot {:+.4}  |ΔP|/|P| = {:.3e}",
-            law.name(),
+            Some(law).name(),
             exact,
             x.outcome.regime(),
             names(&x.outcome.phases),
             one_shot,
             x.impulse_difference_relative()
         );
-        gain.insert(law.name(), (exact, one_shot, x.outcome.regime()));
+        gain.insert(Some(law).name(), (exact, one_shot, x.outcome.regime()));
     }
     // The rod's end slides, halts and sticks under every law. Newton then ends
     // at u = (−e u_n0, 0), the one-shot's target: integrating changes nothing

@@ -14,6 +14,7 @@
 //! case is in `cargo bench --bench exact`).
 
 use crate::exact_support;
+use contact_lab::knobs::Choice;
 
 use std::collections::BTreeMap;
 
@@ -195,7 +196,7 @@ fn print_table(table: &BTreeMap<(usize, Regime), Row>, n: usize) {
         let mean = row.evals.iter().sum::<usize>() as f64 / row.evals.len() as f64;
         println!(
             "{:8} {:19} {:>6} {:>6} | {:>9.2e} {:>9.2e} | {:>+9.3} {:>+9.3} {:>+9.3} | {:>5} | {:>6.0} {:>6}",
-            RestitutionLaw::ALL[*l].name(),
+            Some(RestitutionLaw::ALL[*l]).name(),
             regime.name(),
             errors.len(),
             row.one_shot_sticks,

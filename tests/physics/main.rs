@@ -17,6 +17,7 @@ mod collide;
 mod collide_properties;
 mod convex_pairs;
 mod exact_impact;
+mod file_cycles;
 mod floors;
 mod hull_manifolds;
 mod hull_pairs;

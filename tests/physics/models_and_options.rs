@@ -1,6 +1,7 @@
 //! The seeds' friction models, the comparison, and the projection options.
 
 use crate::common;
+use contact_lab::knobs::Choice;
 
 use common::text;
 

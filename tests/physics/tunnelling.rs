@@ -99,13 +99,13 @@ fn a_slow_ball_that_hits_the_wall_is_not_reported() {
     assert!(sim.world.bodies[0].state.velocity.x < 0.0);
 }
 
-/// The audit's set of touching pairs (ccd::contact_pairs) holds exactly the
+/// The audit's set of touching pairs (touching::contact_pairs) holds exactly the
 /// pairs of the step's contacts, whether they come pair by pair in order
 /// (as generated) or in any other order, each pair in either order.
 #[test]
 fn the_touching_pairs_are_the_contacts_pairs_in_any_order() {
     use contact_lab::lesson::Lesson;
-    use contact_lab::physics::step::ccd::{contact_pairs, key};
+    use contact_lab::physics::step::touching::{contact_pairs, key};
     use std::collections::BTreeSet;
     let lesson = Lesson::load("stack-5").unwrap();
     let params = lesson.sim_params().expect("a scene");

@@ -45,3 +45,48 @@ fn every_folder_of_src_is_named() {
         }
     }
 }
+
+/// The page's table of twins and the twins' first lines agree: every file
+/// of src/ whose first line says "Twin of" is in the table, and every file
+/// the table names as a fast twin exists and says so in its first line.
+#[test]
+fn the_table_of_twins_names_every_twin() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = block();
+    let table = text
+        .split("## Twins")
+        .nth(1)
+        .expect("docs/architecture.md has a '## Twins' section");
+    let named: Vec<&str> = table
+        .lines()
+        .filter_map(|l| l.strip_prefix("| `src/"))
+        .map(|l| &l[..l.find('`').unwrap()])
+        .collect();
+    assert!(named.len() >= 5, "{named:?}");
+    for file in &named {
+        let first = std::fs::read_to_string(root.join("src").join(file)).unwrap();
+        assert!(
+            first.starts_with("//! Twin of "),
+            "src/{file} is in the table of twins; its first line should say what it is a twin of"
+        );
+    }
+    let mut stack = vec![root.join("src")];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let p = entry.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if std::fs::read_to_string(&p)
+                .unwrap()
+                .starts_with("//! Twin of ")
+            {
+                let rel = p.strip_prefix(root.join("src")).unwrap();
+                let rel = rel.to_string_lossy();
+                assert!(
+                    named.contains(&rel.as_ref()),
+                    "src/{rel} says it is a twin; docs/architecture.md's table of twins does not name it"
+                );
+            }
+        }
+    }
+}

@@ -5,6 +5,7 @@
 //! fails without a named cause.
 
 use crate::common;
+use contact_lab::knobs::Choice;
 
 use contact_lab::format::Fmt;
 use contact_lab::lesson::{validate, Lesson, Overrides};

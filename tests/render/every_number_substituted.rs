@@ -4,6 +4,7 @@
 //! (velocity scaling's g_contact = M⁻¹(…) once had none). Other stages
 //! have definitions shown by their value alone (C = [d̂ t₀ t₁], [r]×).
 
+use contact_lab::knobs::Choice;
 use contact_lab::lesson::{Lesson, Overrides};
 use contact_lab::physics::{FrictionModel, StageId};
 

@@ -5,6 +5,7 @@
 //! snapshots of the stage under each law for the lessons that show it.
 
 use crate::common;
+use contact_lab::knobs::Choice;
 
 use assert_cmd::Command;
 use contact_lab::format::Fmt;
@@ -15,7 +16,7 @@ use contact_lab::render::fill::Fill;
 use contact_lab::trace::{Trace, Value};
 
 fn with_law(mut lesson: Lesson, law: RestitutionLaw) -> Lesson {
-    lesson.apply(&Overrides::from_pairs(&[("exact", law.name())]).unwrap());
+    lesson.apply(&Overrides::from_pairs(&[("exact", Some(law).name())]).unwrap());
     lesson
 }
 
@@ -309,7 +310,7 @@ fn exact_stage_snapshots() {
             for law in RestitutionLaw::ALL {
                 let lesson = with_law(Lesson::load(id).unwrap(), law);
                 let text = stage_text(&trace(&lesson, k));
-                insta::assert_snapshot!(format!("exact_stage@{id}-{k}-{}", law.name()), text);
+                insta::assert_snapshot!(format!("exact_stage@{id}-{k}-{}", Some(law).name()), text);
             }
         }
     });

@@ -2,6 +2,7 @@
 //! symbol a formula defines is in it, and the unit printed after a result is
 //! the unit the glossary gives its symbol.
 
+use contact_lab::knobs::Choice;
 use std::collections::HashMap;
 
 use contact_lab::lesson::{Lesson, Overrides};

@@ -6,6 +6,7 @@
 //! is what this test forbids.
 
 use crate::common;
+use contact_lab::knobs::Choice;
 
 use contact_lab::lesson::{Lesson, Overrides};
 use contact_lab::physics::{solve, FrictionModel, RigidBody};

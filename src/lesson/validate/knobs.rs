@@ -7,7 +7,7 @@ use super::super::knob_value;
 use super::super::raw::{KnobTable, S};
 use super::super::source::Note;
 use super::Validator;
-use crate::physics::knobs::{self, Table, KNOBS};
+use crate::knobs::{self, Table, KNOBS};
 use crate::physics::Settings;
 
 impl Validator {

@@ -3,9 +3,10 @@
 //! coefficients of generated contacts).
 
 use super::super::raw::{KnobTable, RawBody, RawLesson, S};
-use super::super::{Material, Simulation};
+use super::super::Material;
 use super::{rules, v3, Validator};
-use crate::physics::knobs::Table;
+use crate::knobs::Table;
+use crate::physics::params::SceneSettings;
 use crate::physics::{Settings, Shape};
 
 /// `restitution`, `friction`, `static_friction`, `dynamic_friction` as written.
@@ -28,7 +29,7 @@ impl Validator {
     /// Every knob of the lesson's tables, over the defaults (a scene's when
     /// the lesson has any of `[world]`, `[step]`, `[sleep]`), and the scene,
     /// when it has one.
-    pub(super) fn knobs(&mut self, raw: &RawLesson) -> (Settings, Option<Simulation>) {
+    pub(super) fn knobs(&mut self, raw: &RawLesson) -> (Settings, Option<SceneSettings>) {
         let scene = raw.world.is_some() || raw.step.is_some() || raw.sleep.is_some();
         let mut all = if scene {
             Settings::scene_default()
@@ -91,7 +92,7 @@ impl Validator {
     /// Each body's coefficients: `[world]`'s, overridden by the body's own
     /// fields. Without time stepping the body fields are refused, since
     /// nothing would read them.
-    pub(super) fn body_materials(&mut self, raw: &RawLesson, sim: Option<&mut Simulation>) {
+    pub(super) fn body_materials(&mut self, raw: &RawLesson, sim: Option<&mut SceneSettings>) {
         let Some(sim) = sim else {
             for b in &raw.bodies {
                 let given = [

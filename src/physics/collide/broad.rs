@@ -3,6 +3,7 @@
 
 use nalgebra::Vector3;
 
+use super::bounds::{push_half_space_pairs, Bounds};
 use super::sweep::Sweep;
 use super::{c, Pose, Real, Shape};
 use crate::physics::to_f64;
@@ -92,48 +93,6 @@ struct Kept {
     pairs: Vec<(usize, usize)>,
 }
 
-/// A box as f64.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Bounds {
-    pub(super) min: [f64; 3],
-    pub(super) max: [f64; 3],
-}
-
-impl Bounds {
-    fn of<T: Real>(b: &Aabb<T>) -> Self {
-        Bounds {
-            min: [0, 1, 2].map(|k| to_f64(b.min[k])),
-            max: [0, 1, 2].map(|k| to_f64(b.max[k])),
-        }
-    }
-
-    /// Overlap or touch on every axis.
-    #[inline]
-    fn overlaps(&self, o: &Bounds) -> bool {
-        (0..3).all(|k| self.min[k] <= o.max[k] && o.min[k] <= self.max[k])
-    }
-
-    /// Whether `inner` lies inside (false for a non-finite one).
-    #[inline]
-    fn holds(&self, inner: &Bounds) -> bool {
-        (0..3).all(|k| self.min[k] <= inner.min[k] && inner.max[k] <= self.max[k])
-    }
-
-    /// Grown by 5 % of the smallest half extent on every side; `None` when
-    /// not finite.
-    fn grown(&self) -> Option<Bounds> {
-        let half = (0..3).fold(f64::INFINITY, |m, k| {
-            m.min(0.5 * (self.max[k] - self.min[k]))
-        });
-        let m = 0.05 * half.max(0.0);
-        let g = Bounds {
-            min: self.min.map(|x| x - m),
-            max: self.max.map(|x| x + m),
-        };
-        (g.min.iter().chain(&g.max).all(|x| x.is_finite()) && m.is_finite()).then_some(g)
-    }
-}
-
 impl BroadPhase {
     pub fn new() -> Self {
         Self::default()
@@ -152,7 +111,7 @@ impl BroadPhase {
     ) {
         self.exact.clear();
         self.exact
-            .extend(bounds.iter().map(|b| b.as_ref().map(Bounds::of)));
+            .extend(bounds.iter().map(|b| b.as_ref().map(bounds_of)));
         if !self.kept_holds(half_spaces) {
             self.keep(half_spaces);
         }
@@ -249,21 +208,16 @@ pub fn all_pairs<T: Real>(
     out.dedup();
 }
 
-fn overlap<T: Real>(bounds: &[Option<Aabb<T>>], i: usize, j: usize) -> bool {
-    matches!((&bounds[i], &bounds[j]), (Some(a), Some(b)) if a.overlaps(b))
+/// A box as f64.
+fn bounds_of<T: Real>(b: &Aabb<T>) -> Bounds {
+    Bounds {
+        min: [0, 1, 2].map(|k| to_f64(b.min[k])),
+        max: [0, 1, 2].map(|k| to_f64(b.max[k])),
+    }
 }
 
-/// Adds (body, half-space) for every body with bounds.
-pub(super) fn push_half_space_pairs<B>(
-    bounds: &[Option<B>],
-    half_spaces: &[usize],
-    out: &mut Vec<(usize, usize)>,
-) {
-    for (i, _) in bounds.iter().enumerate().filter(|(_, b)| b.is_some()) {
-        for &h in half_spaces.iter().filter(|&&h| h != i) {
-            out.push((i.min(h), i.max(h)));
-        }
-    }
+fn overlap<T: Real>(bounds: &[Option<Aabb<T>>], i: usize, j: usize) -> bool {
+    matches!((&bounds[i], &bounds[j]), (Some(a), Some(b)) if a.overlaps(b))
 }
 
 #[cfg(test)]

@@ -40,6 +40,7 @@
 //! The broad phase ([`broad`]) finds candidate pairs; [`scene::ContactGenerator`]
 //! runs both phases over a set of bodies.
 
+mod bounds;
 mod box_box;
 mod box_sphere;
 pub mod broad;

@@ -4,7 +4,7 @@
 //! the later boxes that start before it ends and overlap it on the other
 //! two axes; the pairs sorted by a counting sort.
 
-use super::broad::{push_half_space_pairs, Bounds};
+use super::bounds::{push_half_space_pairs, Bounds};
 
 /// The sweep's buffers.
 #[derive(Debug, Clone, Default)]

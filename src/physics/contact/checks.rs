@@ -3,20 +3,13 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use super::causes::{self, Cause};
+use super::causes::{self, tolerance, Cause};
 use super::stages::{
     AppliedImpulse, ContactFrame, DesiredVelocity, FrictionClamp, Impulse, OrientationUpdate,
     Projection,
 };
-use super::{c, Problem, Real};
+use super::{Problem, Real};
 use crate::physics::scale::{stable_hypot, stable_norm as norm, stable_norm_quaternion};
-
-/// Relative tolerance of the checks: 10⁴ ε of the float type (f64: 2.2e-12,
-/// f32: 1.2e-3), applied to the size of the terms each check adds up, so a
-/// check fails only on an error far above round-off.
-pub fn tolerance<T: Real>() -> T {
-    T::default_epsilon() * c(1e4)
-}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CheckKind {

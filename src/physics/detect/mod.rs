@@ -12,7 +12,7 @@
 //! - [`simplex`]: the signed-volumes sub-algorithm; [`gjk`]; [`epa`]
 //!   (+ `epa_start`, growing GJK's simplex to a tetrahedron, `epa_observer`);
 //! - [`query`]: GJK then EPA (or the margins) for one pair;
-//! - [`features`]: feature kinds and every identifier name;
+//! - [`features`]: feature kinds; `names`: every identifier name;
 //! - [`sat`]: exact depth and normal for polyhedra (the tests' reference);
 //! - [`manifold`] (+ `support_face`): the clipped support faces of a resting pair;
 //! - [`toi`]: time of collision over a step, by bisection and by conservative advancement.
@@ -30,6 +30,7 @@ pub mod gjk;
 /// The hull lives in `physics` (a body's shape holds one); re-exported here.
 pub use crate::physics::hull;
 pub mod manifold;
+mod names;
 pub mod query;
 pub mod sat;
 pub mod simplex;
@@ -42,12 +43,13 @@ pub mod toi_sweep;
 #[cfg(test)]
 mod tests;
 
+pub use crate::physics::hull_faces::HullFace;
 pub use epa::{epa, EpaEnd, EpaIteration, EpaObserver, EpaOptions, EpaRecorder, EpaResult};
 pub use features::{FeatureKind, FeaturePair};
 pub use gjk::{
     gjk, GjkEnd, GjkIteration, GjkObserver, GjkOptions, GjkRecorder, GjkResult, GjkVerdict,
 };
-pub use hull::{ConvexHull, HullError, HullFace, MassProperties};
+pub use hull::{ConvexHull, HullError, MassProperties};
 pub use manifold::{manifold, manifold_within, ManifoldPoint};
 pub use query::{query, Penetration, PenetrationSource, Query, QueryOptions};
 pub use sat::{sat, Polyhedron, SatResult};

@@ -71,15 +71,6 @@ pub enum ToiMethod {
     Conservative,
 }
 
-impl ToiMethod {
-    pub fn json_name(self) -> &'static str {
-        match self {
-            ToiMethod::Bisection => "bisection",
-            ToiMethod::Conservative => "conservative",
-        }
-    }
-}
-
 /// Tolerance and cap of a search.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToiOptions<T: Real> {

@@ -24,19 +24,6 @@ impl RestitutionLaw {
         RestitutionLaw::Poisson,
         RestitutionLaw::Stronge,
     ];
-
-    /// The JSON / CLI name (`newton`, `poisson`, `stronge`).
-    pub fn name(self) -> &'static str {
-        match self {
-            RestitutionLaw::Newton => "newton",
-            RestitutionLaw::Poisson => "poisson",
-            RestitutionLaw::Stronge => "stronge",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|l| l.name() == name)
-    }
 }
 
 /// Accuracy and budget of the integration.

@@ -63,6 +63,7 @@
 //! its input from one contact with the existing stages and compares it with
 //! the one-shot impulse of [`crate::physics::solve`].
 
+mod alone;
 mod contact;
 mod input;
 mod integrate;
@@ -72,7 +73,8 @@ mod rotating;
 mod run;
 mod tangent;
 
-pub use contact::{exact_impact, exact_impact_beside, exact_impact_with, ExactImpact};
+pub use alone::{exact_impact, exact_impact_with};
+pub use contact::{exact_impact_beside, ExactImpact};
 pub use input::{ExactError, ImpactInput, RestitutionLaw, Tolerance};
 pub use integrate::integrate;
 pub use outcome::{Cost, ImpactOutcome, Phase, PhaseKind, Regime, Sample};

@@ -21,18 +21,6 @@ pub enum Ccd {
 impl Ccd {
     pub const ALL: [Ccd; 3] = [Ccd::None, Ccd::Bisection, Ccd::Conservative];
 
-    pub fn name(self) -> &'static str {
-        match self {
-            Ccd::None => "none",
-            Ccd::Bisection => "bisection",
-            Ccd::Conservative => "conservative",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Ccd::ALL.into_iter().find(|m| m.name() == name)
-    }
-
     /// The time-of-collision search this mode runs, if any.
     pub fn method(self) -> Option<ToiMethod> {
         match self {
@@ -55,21 +43,6 @@ pub enum Rollback {
     Rollback,
 }
 
-impl Rollback {
-    pub const ALL: [Rollback; 2] = [Rollback::Projection, Rollback::Rollback];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Rollback::Projection => "projection",
-            Rollback::Rollback => "rollback",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Rollback::ALL.into_iter().find(|m| m.name() == name)
-    }
-}
-
 /// Which normal a penetrating contact between two convex bodies takes in a
 /// scene's step ("Lecture IV Collisions": for fast motion, take the normal
 /// from the previous frame).
@@ -81,19 +54,4 @@ pub enum NormalFrom {
     /// The direction from the closest points one frame earlier, when the
     /// pair was apart, with the depth of the overlap along it.
     Previous,
-}
-
-impl NormalFrom {
-    pub const ALL: [NormalFrom; 2] = [NormalFrom::Current, NormalFrom::Previous];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            NormalFrom::Current => "current",
-            NormalFrom::Previous => "previous",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        NormalFrom::ALL.into_iter().find(|m| m.name() == name)
-    }
 }

@@ -7,7 +7,7 @@
 //! - [`WorldParams`], [`SleepParams`]: the forces and sleep of a simulation;
 //! - [`SimParams`]: all of these, for a run in float type `T`;
 //! - [`Settings`]: every knob's value as a lesson or a command line gives it
-//!   (f64), read and written through the knob table (`physics::knobs`).
+//!   (f64), read and written through the knob table (`knobs`).
 
 use nalgebra::Vector3;
 
@@ -39,19 +39,6 @@ impl FrictionModel {
         FrictionModel::KineticDirection,
         FrictionModel::VelocityScaling,
     ];
-
-    /// The name used in lesson files and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            FrictionModel::Millington => "millington",
-            FrictionModel::KineticDirection => "kinetic-direction",
-            FrictionModel::VelocityScaling => "velocity-scaling",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|m| m.name() == name)
-    }
 }
 
 /// How penetration is resolved.
@@ -62,22 +49,6 @@ pub enum ProjectionMethod {
     /// The lecture's nonlinear projection: linear and angular inertia share the move.
     #[default]
     Nonlinear,
-}
-
-impl ProjectionMethod {
-    /// The name used in lesson files and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            ProjectionMethod::Linear => "linear",
-            ProjectionMethod::Nonlinear => "nonlinear",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [ProjectionMethod::Linear, ProjectionMethod::Nonlinear]
-            .into_iter()
-            .find(|m| m.name() == name)
-    }
 }
 
 /// How one contact is resolved.
@@ -157,21 +128,6 @@ pub enum RestitutionFrom {
     Initial,
 }
 
-impl RestitutionFrom {
-    pub fn name(self) -> &'static str {
-        match self {
-            RestitutionFrom::Current => "current",
-            RestitutionFrom::Initial => "initial",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [RestitutionFrom::Current, RestitutionFrom::Initial]
-            .into_iter()
-            .find(|m| m.name() == name)
-    }
-}
-
 /// Which algorithm resolves a set of contacts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Solver {
@@ -182,25 +138,6 @@ pub enum Solver {
     /// Sequential impulses (projected Gauss–Seidel): every contact in turn,
     /// sweep after sweep, with accumulated and clamped impulses.
     SequentialImpulse,
-}
-
-impl Solver {
-    pub const ALL: [Solver; 2] = [Solver::DeepestFirst, Solver::SequentialImpulse];
-
-    /// The name used in lesson files and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Solver::DeepestFirst => "deepest-first",
-            Solver::SequentialImpulse => "sequential-impulse",
-        }
-    }
-
-    /// The solver named `name` (`deepest_first`, the old spelling, too).
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL
-            .into_iter()
-            .find(|m| m.name() == name || m.name().replace('-', "_") == name)
-    }
 }
 
 /// How a set of contacts is resolved together (the lecture's two phases).
@@ -336,21 +273,6 @@ pub enum BoxBoxMode {
     Manifold,
 }
 
-impl BoxBoxMode {
-    pub fn name(self) -> &'static str {
-        match self {
-            BoxBoxMode::Single => "single",
-            BoxBoxMode::Manifold => "manifold",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [BoxBoxMode::Single, BoxBoxMode::Manifold]
-            .into_iter()
-            .find(|m| m.name() == name)
-    }
-}
-
 /// Which routine a convex pair runs (`[world] narrow_phase`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum NarrowPhase {
@@ -360,21 +282,6 @@ pub enum NarrowPhase {
     Analytic,
     /// GJK/EPA and the clipped manifold for every pair but a half-space's.
     Gjk,
-}
-
-impl NarrowPhase {
-    pub fn name(self) -> &'static str {
-        match self {
-            NarrowPhase::Analytic => "analytic",
-            NarrowPhase::Gjk => "gjk",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [NarrowPhase::Analytic, NarrowPhase::Gjk]
-            .into_iter()
-            .find(|m| m.name() == name)
-    }
 }
 
 /// Restitution and friction coefficients: of a contact, a body, or
@@ -453,19 +360,4 @@ pub enum SleepMode {
     /// An island of touching movable bodies sleeps together, once all its
     /// bodies have been slow for `island_time` (Box2D, Bullet, PhysX).
     Island,
-}
-
-impl SleepMode {
-    pub fn name(self) -> &'static str {
-        match self {
-            SleepMode::Body => "body",
-            SleepMode::Island => "island",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [SleepMode::Body, SleepMode::Island]
-            .into_iter()
-            .find(|m| m.name() == name)
-    }
 }

@@ -162,7 +162,7 @@ impl Default for SceneSettings {
     }
 }
 
-/// Every knob's value (see `physics::knobs`): a contact's, the resolver's
+/// Every knob's value (see `knobs`): a contact's, the resolver's
 /// and a run's.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Settings {

@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 
 use super::Resolver;
-use crate::physics::checks::tolerance;
+use crate::physics::causes::tolerance;
 use crate::physics::{BodyId, Real, World};
 
 #[derive(Debug, Clone, PartialEq)]

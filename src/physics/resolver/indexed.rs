@@ -1,3 +1,7 @@
+//! Twin of the scan ([`super::scan`], the lecture's loop), held bit for bit
+//! by `tests/physics/resolver_properties.rs` (random sets, every take and
+//! update) and `tests/physics/lean_position.rs` (lessons, stepped scenes).
+//!
 //! The indexed resolver: the same contacts in the same order as the scan
 //! ([`super::scan`]), found with a priority queue (below 64 contacts a scan
 //! of the values kept side by side, from there on a tournament tree:

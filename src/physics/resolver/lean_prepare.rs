@@ -1,3 +1,7 @@
+//! Twin of [`super::prepare::prepare_into`] (the deepest-first full prepare),
+//! held bit for bit by `tests/physics/lean_prepare.rs`
+//! (`the_deepest_first_lean_prepare_is_the_full_paths_*`).
+//!
 //! The deepest-first order's lean prepare (the per-frame path,
 //! [`super::Resolver::prepare_again`]): every contact's bookkeeping
 //! ([`ResolverContact`]), what its projection and impulse read

@@ -1,3 +1,8 @@
+//! Twin of the friction stage's [`clamp`](crate::physics::stages::friction::clamp)
+//! and of [`stable_hypot`], held bit for bit by the tests below
+//! (`the_lean_clamp_is_the_stage_clamp_to_the_bit`,
+//! `the_planar_norm_is_stable_hypot_to_the_bit`).
+//!
 //! The velocity phase's take on the fast path (nothing records), leaner than
 //! the friction stage's [`clamp`](crate::physics::stages::friction::clamp)
 //! and bit for bit the same impulse (tests below): the lecture's clamp

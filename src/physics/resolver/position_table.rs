@@ -1,3 +1,6 @@
+//! Twin of the scan's position phase ([`super::scan`]), held bit for bit by
+//! `tests/physics/lean_position.rs` and `tests/physics/resolver_properties.rs`.
+//!
 //! The indexed position phase on the neighbour table ([`Neighbours`], built
 //! at the phase's start and kept for the velocity phase while the contacts'
 //! bodies are the same): each taken contact's neighbours in the order
@@ -8,8 +11,7 @@
 //! ([`position::penetration_after_slots`]: the same operations in the same
 //! order as [`position::penetration_after`]). The same contacts are taken in
 //! the same order and the same reports made as by the adjacency loop and the
-//! scan, so the results are bit for bit theirs (tests below and
-//! tests/physics/resolver_properties.rs).
+//! scan, so the results are bit for bit theirs.
 //!
 //! No compact rows: a neighbour update reads the contact's penetration, r
 //! and normal, which a row would only copy (the same loads, plus the copies

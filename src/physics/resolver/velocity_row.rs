@@ -1,3 +1,9 @@
+//! Twin of [`super::velocity::velocity_after`] and [`super::desired_of`],
+//! four contacts at a time, held bit for bit by the tests below
+//! (`the_rows_update_lane_by_lane_as_velocity_after_and_desired_of`,
+//! `the_desired_rule_is_desired_of_to_the_bit`) and, whole phases against
+//! the scan, `tests/physics/lean_position.rs`.
+//!
 //! The deepest-first velocity phase's hot rows ([`VelocityRows`]): what a
 //! neighbour update reads and writes of each contact, in blocks of four
 //! contacts field by field (a field of the four side by side, so four

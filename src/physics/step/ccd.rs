@@ -16,6 +16,7 @@
 use nalgebra::Vector3;
 
 use super::swept::{motion_of, Earlier, SweptPairs};
+use super::touching::{contact_pairs_into, key};
 use crate::physics::detect::gjk::{gjk, GjkOptions, GjkVerdict};
 use crate::physics::detect::toi::{conservative_advancement, MovingPair, ToiEnd, ToiOptions};
 use crate::physics::detect::Convex;
@@ -65,60 +66,6 @@ pub fn tunnelled<T: Real>(
     swept.touching = touching;
     // In the order of the bodies, whatever order the sweep found them in.
     out[from..].sort_by_key(|t| (t.body1, t.body2));
-}
-
-/// The pairs of bodies that have a contact this step, by [`key`].
-pub fn contact_pairs<T: Real>(world: &World<T>) -> ContactPairs {
-    let mut pairs = ContactPairs::default();
-    contact_pairs_into(world, &mut pairs);
-    pairs
-}
-
-/// [`contact_pairs`] into `pairs` (its storage reused).
-pub fn contact_pairs_into<T: Real>(world: &World<T>, pairs: &mut ContactPairs) {
-    let keys = &mut pairs.0;
-    keys.clear();
-    // Generated contacts come pair by pair in sorted order: a pair's
-    // contacts follow one another (kept once as they come), and the keys
-    // are sorted only when they are not (contacts given otherwise).
-    let mut sorted = true;
-    for k in &world.contacts {
-        let Some(b2) = k.body2 else {
-            continue;
-        };
-        let key = (k.body1.0.min(b2.0), k.body1.0.max(b2.0));
-        match keys.last() {
-            Some(&last) if last == key => continue,
-            Some(&last) if last > key => sorted = false,
-            _ => {}
-        }
-        keys.push(key);
-    }
-    if !sorted {
-        keys.sort_unstable();
-        keys.dedup();
-    }
-}
-
-/// A set of body pairs, each as its [`key`]'s indices, sorted (building it
-/// hashes nothing; a step's contacts are already in pair order).
-#[derive(Debug, Clone, Default)]
-pub struct ContactPairs(Vec<(usize, usize)>);
-
-impl ContactPairs {
-    #[inline]
-    pub fn contains(&self, pair: &(BodyId, Option<BodyId>)) -> bool {
-        let (a, Some(b)) = *pair else {
-            return false;
-        };
-        self.0.binary_search(&(a.0, b.0)).is_ok()
-    }
-}
-
-/// A pair of bodies in either order, as one key.
-#[inline]
-pub fn key(i: usize, j: usize) -> (BodyId, Option<BodyId>) {
-    (BodyId(i.min(j)), Some(BodyId(i.max(j))))
 }
 
 fn pair<T: Real>(

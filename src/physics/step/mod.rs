@@ -24,6 +24,7 @@ pub mod toi_pair;
 mod toi_resolve;
 pub mod tolerance;
 pub mod total_audit;
+pub mod touching;
 mod wake_sleep;
 
 /// The `ccd` and `rollback` knobs' choices (declared with the other params).

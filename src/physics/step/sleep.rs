@@ -74,13 +74,10 @@ pub fn put_to_sleep<T: Real>(state: &mut SleepState<T>, body: &mut RigidBody<T>)
     body.acceleration.fill(T::zero());
 }
 
-/// Islands: bodies joined by contacts between two movable bodies (a contact
-/// with the world or an immovable body joins nothing): each body's group root.
-pub use crate::physics::world::groups as islands;
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::physics::world::groups;
     use nalgebra::{Matrix3, Quaternion, Vector3};
 
     fn body(speed: f64) -> RigidBody<f64> {
@@ -135,8 +132,8 @@ mod tests {
 
     #[test]
     fn islands_join_bodies_through_chains_of_contacts() {
-        let roots = islands(6, [(0, 1), (1, 2), (4, 5)].into_iter());
+        let roots = groups(6, [(0, 1), (1, 2), (4, 5)].into_iter());
         assert_eq!(roots, vec![0, 0, 0, 3, 4, 4]);
-        assert_eq!(islands(3, std::iter::empty()), vec![0, 1, 2]);
+        assert_eq!(groups(3, std::iter::empty()), vec![0, 1, 2]);
     }
 }

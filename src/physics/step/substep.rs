@@ -24,6 +24,7 @@ use super::integrate::integrate_position;
 use super::report::ToiEvent;
 use super::swept::{motion_of, Earlier, MovementBound, SweptPairs};
 use super::toi_resolve::{advance_along, apart_for_good, resolve_at, shape, to3};
+use super::touching;
 use crate::physics::detect::toi_sweep::{closing_bound, swept_toi, Later};
 use crate::physics::detect::{
     gjk, Convex, GjkOptions, GjkVerdict, MovingPair, PlanePair, SweptPair, ToiEnd, ToiMethod,
@@ -255,7 +256,7 @@ impl<T: Real> Substeps<T> {
             self.keep_bounds();
         }
         ccd_pairs::plane_pairs(world, &self.moving, left, &mut self.planes);
-        let touching = ccd::contact_pairs(world);
+        let touching = touching::contact_pairs(world);
         let mut best: Option<Found<T>> = None;
         let pairs = self.swept.pairs.iter().chain(&self.planes);
         for &(i, j) in pairs {
@@ -265,7 +266,7 @@ impl<T: Real> Substeps<T> {
                 Some(d) => Some(d.tolerance),
                 None => None,
             };
-            if touching.contains(&ccd::key(i, j)) {
+            if touching.contains(&touching::key(i, j)) {
                 continue;
             }
             let Some(a) = shape(world, i) else {

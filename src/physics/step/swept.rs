@@ -104,7 +104,7 @@ pub struct SweptPairs<T: Real> {
     /// Whether the last call took the earlier pairs instead of sweeping.
     pub reused: bool,
     /// The step's contact pairs (the tunnelling audit's storage, kept).
-    pub touching: super::ccd::ContactPairs,
+    pub touching: super::touching::ContactPairs,
 }
 
 impl<T: Real> Default for SweptPairs<T> {

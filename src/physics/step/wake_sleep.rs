@@ -9,8 +9,9 @@
 use nalgebra::Vector3;
 
 use super::report::{Event, WakeCause};
-use super::sleep::{islands, put_to_sleep, update_motion, SleepMode, SleepState};
+use super::sleep::{put_to_sleep, update_motion, SleepMode, SleepState};
 use crate::physics::params::SimParams;
+use crate::physics::world::groups;
 use crate::physics::{c, BodyId, Contact, Real, World};
 
 /// The velocity of body 1's material point at the contact relative to
@@ -131,13 +132,14 @@ fn shared_with_awake<T: Real>(
     })
 }
 
-/// Island roots of the movable bodies, joined by this step's contacts.
+/// Island roots of the movable bodies, joined by this step's contacts (a
+/// contact with the world or an immovable body joins nothing).
 fn contact_islands<T: Real>(world: &World<T>) -> Vec<usize> {
     let links = world.contacts.iter().filter_map(|k| {
         let b2 = k.body2?;
         (world.body(k.body1).movable && world.body(b2).movable).then_some((k.body1.0, b2.0))
     });
-    islands(world.bodies.len(), links)
+    groups(world.bodies.len(), links)
 }
 
 /// Sleep after the step. A body falls asleep only while it touches

@@ -1,5 +1,6 @@
 //! `solve --compare-friction`: every friction model's result side by side.
 
+use crate::knobs::Choice;
 use crate::render::fill::Fill;
 use serde_json::json;
 

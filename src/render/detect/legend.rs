@@ -84,7 +84,7 @@ pub fn legend(out: &mut String, x: f64, entries: &[(Swatch, String)]) {
             out,
             r#"  <text x="{:.1}" y="{y:.1}" font-size="12">{}</text>"#,
             x + 34.0,
-            super::svg::xml(text)
+            xml(text)
         );
     }
 }
@@ -99,4 +99,12 @@ pub fn diamond(x: f64, y: f64, colour: &str) -> String {
         x + 6.0,
         y + 6.0
     )
+}
+
+/// Text escaped for an SVG element's content (`&`, `<`, `>`; the detect
+/// and time-of-collision figures' labels).
+pub(crate) fn xml(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
 }

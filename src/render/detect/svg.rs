@@ -7,7 +7,7 @@
 
 use std::fmt::Write;
 
-use super::legend::{diamond, legend, Swatch};
+use super::legend::{diamond, legend, xml, Swatch};
 use super::minkowski::{minkowski, Minkowski};
 use super::steps::Stop;
 use crate::render::figure::{outline, Silhouette, P};
@@ -536,10 +536,4 @@ impl Fit {
             .collect::<Vec<_>>()
             .join(" ")
     }
-}
-
-pub(crate) fn xml(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }

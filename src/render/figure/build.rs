@@ -6,6 +6,7 @@ use super::model::*;
 use nalgebra::Vector3;
 
 use super::outline::{outline, rotation, spin_arc_radius, surface_distance};
+use super::view::{flat, V};
 use crate::physics::Shape;
 use crate::trace::{BodyView, ContactView, Plane};
 

@@ -13,12 +13,14 @@ mod stage;
 mod surface_tests;
 #[cfg(test)]
 mod tests;
+mod view;
 
 pub use model::{
-    flat, Arrow, ArrowKind, BodyMarks, Bounds, ContactMarks, Figure, Ink, LegendItem, Point,
-    PointKind, Section, Span, Spin, Surface, FACE_ON, P, ROUND_OFF_MOVE, V,
+    Arrow, ArrowKind, BodyMarks, Bounds, ContactMarks, Figure, Ink, LegendItem, Point, PointKind,
+    Section, Span, Spin, Surface, FACE_ON, ROUND_OFF_MOVE,
 };
 pub use outline::{hull, outline, spin_arc_radius, surface_distance, Outline, Silhouette};
+pub use view::{flat, P, V};
 
 pub use crate::trace::Plane;
 use crate::trace::{BodyView, ContactView, SceneView};

@@ -2,18 +2,9 @@
 //! points and legend items, in view coordinates, with semantic inks.
 
 use super::outline::Outline;
+use super::view::{P, V};
 use crate::physics::Shape;
 use crate::trace::Plane;
-
-/// View coordinates: right and up in the view plane, then toward the viewer.
-pub type V = [f64; 3];
-/// A point in the view plane (right, up).
-pub type P = [f64; 2];
-
-/// The view-plane part of a view vector.
-pub fn flat(v: V) -> P {
-    [v[0], v[1]]
-}
 
 /// A change of pose below this (in any position or quaternion component) is
 /// round-off, not a move worth drawing.

@@ -4,7 +4,7 @@
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
-use super::model::P;
+use super::view::P;
 use crate::physics::Shape;
 use crate::trace::Plane;
 

@@ -8,6 +8,7 @@
 //! up cannot be drawn on a log axis and are left out of the plot; the legend
 //! lists them with "not drawn".
 
+use crate::knobs;
 use crate::render::chart::{escape, marker, Chart, Mark, Scale, Series, PALETTE};
 use crate::study::{Row, Study};
 
@@ -42,16 +43,36 @@ const COLOURS: [&str; MAX_FAMILIES] = [
 /// The families of the study's one-knob rows, by knob: (family, knobs).
 /// A knob not named here is a family of its own.
 const KNOB_FAMILIES: [(&str, &[&str]); 5] = [
-    ("time step", &["dt"]),
-    ("friction", &["friction_model", "velocity_limit"]),
+    ("time step", &[knobs::DT.name]),
+    (
+        "friction",
+        &[knobs::FRICTION_MODEL.name, knobs::VELOCITY_LIMIT.name],
+    ),
     (
         "contact resolution",
-        &["relaxation", "projection", "restitution_from"],
+        &[
+            knobs::RELAXATION.name,
+            knobs::PROJECTION.name,
+            knobs::RESTITUTION_FROM.name,
+        ],
     ),
-    ("detection", &["ccd", "rollback", "box_box", "narrow_phase"]),
+    (
+        "detection",
+        &[
+            knobs::CCD.name,
+            knobs::ROLLBACK.name,
+            knobs::BOX_BOX.name,
+            knobs::NARROW_PHASE.name,
+        ],
+    ),
     (
         "epsilons, float type, sleep",
-        &["position_epsilon", "velocity_epsilon", "precision", "sleep"],
+        &[
+            knobs::POSITION_EPSILON.name,
+            knobs::VELOCITY_EPSILON.name,
+            "precision",
+            knobs::SLEEP.name,
+        ],
     ),
 ];
 

@@ -4,28 +4,8 @@
 //! that finds no free place goes to the legend, with a numbered marker (①,
 //! ②, …) beside its mark where the marker itself finds room.
 
-use super::page::{Page, AREA};
+use super::page::{Page, Pending, Stroke, AREA};
 use crate::render::figure::P;
-
-/// A label not yet placed.
-pub struct Pending {
-    pub at: P,
-    pub size: f64,
-    pub anchor: String,
-    pub weight: String,
-    pub fill: String,
-    pub text: String,
-    /// Other anchors to try, in order, after `at` and its nudges.
-    pub elsewhere: Vec<P>,
-}
-
-/// A straight piece of a stroke on the page and half its width.
-#[derive(Debug, Clone, Copy)]
-pub struct Stroke {
-    pub from: P,
-    pub to: P,
-    pub half_width: f64,
-}
 
 /// The box a label of `size` px takes when written at `at` with `anchor`
 /// (an estimate: 0.55 em a character, combining accents take no room).

@@ -4,7 +4,6 @@
 
 use std::fmt::Write;
 
-use super::labels::{Pending, Stroke};
 use crate::render::figure::{Ink, Section, Silhouette, P, V};
 
 pub const WIDTH: f64 = 1280.0;
@@ -121,6 +120,26 @@ pub struct PageArrow {
     pub label: String,
     pub at: LabelAt,
     pub head: bool,
+}
+
+/// A label not yet placed.
+pub struct Pending {
+    pub at: P,
+    pub size: f64,
+    pub anchor: String,
+    pub weight: String,
+    pub fill: String,
+    pub text: String,
+    /// Other anchors to try, in order, after `at` and its nudges.
+    pub elsewhere: Vec<P>,
+}
+
+/// A straight piece of a stroke on the page and half its width.
+#[derive(Debug, Clone, Copy)]
+pub struct Stroke {
+    pub from: P,
+    pub to: P,
+    pub half_width: f64,
 }
 
 /// The SVG text being written.

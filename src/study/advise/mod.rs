@@ -19,9 +19,9 @@ mod snippet;
 mod starts;
 
 use super::{grid, run, Config};
+use crate::knobs::{Kind, Needs, DT};
 use crate::lesson::knob_value;
 use crate::lesson::Lesson;
-use crate::physics::knobs::{Kind, Needs};
 
 pub use search::{cost, MAX_ESCAPES, MAX_PASSES};
 pub use snippet::{settings_snippet, snippet};
@@ -131,7 +131,7 @@ pub struct Advice {
     /// The scene's own spelling of each knob it sets (`Lesson::spellings`):
     /// the snippet writes the same key, so that merged by its rule (a key
     /// the scene already sets is replaced) it replaces it.
-    pub spellings: Vec<(crate::physics::knobs::Table, &'static str, String)>,
+    pub spellings: Vec<(crate::knobs::Table, &'static str, String)>,
     /// The scene's own configuration, and why its run (the scene as
     /// written) or the reference's blew up, if it did: the advice then
     /// does not model the scene as written, and says so first.
@@ -168,10 +168,10 @@ pub fn dimensions(
     let mut held = Vec::new();
     let mut knobs: Vec<_> = super::study_knobs().collect();
     // The time step first: it divides every other cost.
-    knobs.sort_by_key(|k| k.name != "dt");
+    knobs.sort_by_key(|k| **k != DT);
     let mut budget_pushed = false;
     for k in knobs {
-        if k.name != "dt" && !budget_pushed {
+        if *k != DT && !budget_pushed {
             dims.push(Dimension {
                 name: "budget",
                 values: ["1", "2", "4", "8", "16", "converged"]
@@ -198,7 +198,7 @@ pub fn dimensions(
         let mut values: Vec<String> = match k.kind {
             // The table's default (the lecture's) first: the simpler model.
             Kind::Choice { choices, .. } => std::iter::once(k.default.to_string())
-                .chain(choices.iter().map(|(c, _)| c.to_string()))
+                .chain(choices.iter().map(|c| c.name.to_string()))
                 .collect(),
             Kind::Flag => vec![k.default.to_string(), (k.default != "true").to_string()],
             _ if !k.grid.is_empty() => k
@@ -309,7 +309,7 @@ pub fn advise_watched(
     // what each knob buys.
     let time_steps = dims
         .iter()
-        .find(|d| d.name == "dt")
+        .find(|d| d.name == DT.name)
         .map_or(0, |d| d.values.len());
     watch.plan(4 + usize::from(per == Per::Run) + time_steps);
     watch.stage("the reference and the scene's own run");

@@ -1,8 +1,8 @@
 //! The advice as lesson tables, ready to paste.
 
 use super::Advice;
+use crate::knobs::Table;
 use crate::lesson::knob_value;
-use crate::physics::knobs::Table;
 use crate::study::grid;
 
 /// The tables a scene's knobs are read from, in the order the lesson reads
@@ -38,7 +38,7 @@ pub fn snippet(
         format!("visits_per_contact = {}", c.budget.per_contact()),
     );
     for name in names {
-        let Some(k) = crate::physics::knobs::find(name) else {
+        let Some(k) = crate::knobs::find(name) else {
             continue;
         };
         // The table the scene reads last among the knob's homes, so that
@@ -53,7 +53,7 @@ pub fn snippet(
         };
         let v = c.get(k);
         let toml = match v {
-            crate::physics::knobs::Value::Choice(s) => format!("\"{s}\""),
+            crate::knobs::Value::Choice(s) => format!("\"{s}\""),
             _ => knob_value::text(v),
         };
         // The scene's own spelling where it sets the knob in that table

@@ -23,8 +23,10 @@ pub(super) fn from_each_time_step(
     // s with a loose velocity epsilon and rollback, two changes of which
     // neither alone helps (the epsilon alone costs more and misses,
     // rollback alone changes nothing the cost sees).
-    let (time_step, other_dims): (Vec<Dimension>, Vec<Dimension>) =
-        dims.iter().cloned().partition(|d| d.name == "dt");
+    let (time_step, other_dims): (Vec<Dimension>, Vec<Dimension>) = dims
+        .iter()
+        .cloned()
+        .partition(|d| d.name == crate::knobs::DT.name);
     for v in time_step.iter().flat_map(|d| &d.values) {
         ev.watch.stage(&format!("from dt = {v} s"));
         let mut c = *reference_config;

@@ -1,6 +1,7 @@
 //! The impulse-space curves of an integrated impact (u_n, u_t against P_n)
 //! and the phase changes to mark on them, for the figure.
 
+use crate::knobs::Choice;
 use crate::physics::exact::{Phase, PhaseKind};
 use crate::physics::Solution;
 use crate::trace::ImpactCurves;
@@ -54,7 +55,7 @@ pub fn impact_curves(solution: &Solution<f64>) -> Option<ImpactCurves> {
         return None;
     }
     Some(ImpactCurves {
-        law: o.law.name().to_string(),
+        law: Some(o.law).name().to_string(),
         samples: o
             .samples
             .iter()

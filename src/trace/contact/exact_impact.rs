@@ -2,6 +2,7 @@
 //! normal-impulse domain under one restitution law, its phases, and the
 //! one-shot impulse beside it with the differences.
 
+use crate::knobs::Choice;
 use nalgebra::{Vector2, Vector3};
 
 use super::builder::{skip_reason, SolvedContact, B};
@@ -100,7 +101,7 @@ pub fn exact_impact(c: &SolvedContact) -> Step {
     b.input("u0", x.input.u0);
     b.input("matrix", x.input.k);
     b.input("contact_to_world", x.frame.contact_to_world);
-    b.value("law", o.law.name());
+    b.value("law", Some(o.law).name());
     b.value("regime", o.regime().name());
     b.value(
         "phases",

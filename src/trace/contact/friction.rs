@@ -2,6 +2,7 @@
 //! slides, under the friction model the contact uses.
 
 use super::builder::{skip_reason, SolvedContact, B};
+use crate::knobs::Choice;
 use crate::physics::stages::friction::FrictionIssue;
 use crate::physics::stages::FrictionRegime;
 use crate::physics::{FrictionModel, StageId};

@@ -2,6 +2,7 @@
 //! as linear and angular moves by each body's inertia along the normal.
 
 use super::builder::{skip_reason, through_centre, SolvedContact, B, SUB};
+use crate::knobs::Choice;
 use crate::physics::solve::Skip;
 use crate::physics::{ProjectionMethod, StageId};
 use crate::trace::Step;

@@ -2,9 +2,9 @@
 //! field edited becomes a [`SceneEdit`] from the start of that step, and the
 //! run is computed again from there (the step's resolution recorded anew).
 
+use crate::knobs::{Knob, Offered};
 use crate::lesson::edit::{Field, Key};
 use crate::lesson::Lesson;
-use crate::physics::knobs::{Knob, Offered};
 use crate::session::SceneEdit;
 use crate::tui::app::App;
 
@@ -39,10 +39,10 @@ fn scene_edit(
         },
         (Key::Knob(knob), _) => {
             let mut all = after.knobs();
-            if knob.level == crate::physics::knobs::Level::Contact {
+            if knob.level == crate::knobs::Level::Contact {
                 all.contact = c.settings;
             }
-            if knob.level == crate::physics::knobs::Level::Contact && !knob_in_run(knob) {
+            if knob.level == crate::knobs::Level::Contact && !knob_in_run(knob) {
                 return Err(knob_note(knob));
             }
             SceneEdit::Knob(knob, (knob.get)(&all))

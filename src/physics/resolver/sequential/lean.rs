@@ -1,3 +1,7 @@
+//! Twin of [`super::super::prepare::prepare_into`] then [`super::rows::build`]
+//! (sequential impulses' full prepare), held bit for bit by
+//! `tests/physics/lean_prepare.rs` (`the_lean_rows_are_the_full_paths_*`).
+//!
 //! The lean prepare of sequential impulses: every contact's bookkeeping
 //! ([`ResolverContact`]), what its projection reads ([`ContactSetup`]) and
 //! its Jacobian rows ([`Rows`]) in ONE pass per contact, from the contact

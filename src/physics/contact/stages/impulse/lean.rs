@@ -1,3 +1,7 @@
+//! Twin of [`FactoredMatrix::new`] and of nalgebra's `cholesky()`, held bit
+//! for bit by the test below (`the_lean_factor_is_news_factor_bit_for_bit`)
+//! and `tests/physics/lean_prepare.rs`.
+//!
 //! [`FactoredMatrix::lean`]: the deepest-first prepare's factoring, the
 //! same factor as [`FactoredMatrix::new`] with a cheaper bound of κ, and
 //! nalgebra's 3×3 Cholesky written out ([`cholesky3`]).

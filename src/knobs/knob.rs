@@ -2,8 +2,25 @@
 //! is written, which surfaces offer it, and the [`Knob`] entry itself (the
 //! table of every knob is `KNOBS` in `knobs/mod.rs`).
 
-use super::grid::Needs;
+use super::choice::Spelling;
 use crate::physics::params::Settings;
+
+/// What a scene must have for a knob to matter in it (the study's default
+/// grid tries a knob's `grid` values only where it does).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Needs {
+    Always,
+    /// A friction coefficient above 0.
+    Friction,
+    /// Two boxes or more.
+    BoxPairs,
+    /// Bodies that can end deep in one another: a mass ratio above 10
+    /// between two movable bodies (the light one's contacts give way under
+    /// the heavy one), or a body that crosses half the thinnest other body
+    /// in one step (a tunnelling scene). Only the study's default grid reads
+    /// it: `advise` searches such a knob in every scene.
+    Penetration,
+}
 
 /// A knob's value.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -119,11 +136,10 @@ pub enum Kind {
         optional: bool,
     },
     Flag,
-    /// One name of a list: `(name, what it is)`; the first spelling is the
-    /// canonical one, `aliases` are old spellings still accepted.
+    /// One name of a list (a [`Choice`](super::Choice) type's spellings,
+    /// each with the old spellings still accepted).
     Choice {
-        choices: &'static [(&'static str, &'static str)],
-        aliases: &'static [(&'static str, &'static str)],
+        choices: &'static [Spelling],
     },
     Vector,
 }
@@ -178,7 +194,8 @@ pub struct Knob {
     /// The study's `--grid`.
     pub study: Offered,
     /// The values the study's default grid tries, one at a time around a
-    /// scene's own configuration (empty: not in the default grid).
+    /// scene's own configuration (empty: not in the default grid; a choice
+    /// knob that tries every choice names its type's `NAMES`).
     pub grid: &'static [&'static str],
     /// What a scene must have for the default grid to try the knob.
     pub needs: Needs,
@@ -201,18 +218,54 @@ impl PartialEq for Knob {
 impl Knob {
     /// The canonical choice `name` stands for (an alias or the name itself).
     pub fn choice(&self, name: &str) -> Option<&'static str> {
-        let Kind::Choice { choices, aliases } = self.kind else {
+        let Kind::Choice { choices } = self.kind else {
             return None;
         };
         choices
             .iter()
-            .map(|(c, _)| *c)
-            .find(|c| *c == name)
-            .or_else(|| aliases.iter().find(|(a, _)| *a == name).map(|(_, c)| *c))
+            .find(|c| c.name == name)
+            .or_else(|| choices.iter().find(|c| c.aliases.contains(&name)))
+            .map(|c| c.name)
     }
 
     /// True when a TOML key `key` in `table` is this knob.
     pub fn read_as(&self, table: Table, key: &str) -> bool {
         self.tables.contains(&table) && (self.name == key || self.old_names.contains(&key))
+    }
+}
+
+// The values a knob's `get` and `set` convert (a wrong kind reads as NaN,
+// none, false or "").
+
+pub(super) fn number(v: Value) -> f64 {
+    match v {
+        Value::Number(x) => x,
+        Value::Count(n) => n as f64,
+        _ => f64::NAN,
+    }
+}
+
+pub(super) fn count(v: Value) -> Option<usize> {
+    match v {
+        Value::Count(n) => Some(usize::try_from(n).unwrap_or(usize::MAX)),
+        _ => None,
+    }
+}
+
+pub(super) fn flag(v: Value) -> bool {
+    matches!(v, Value::Flag(true))
+}
+
+pub(super) fn choice(v: Value) -> &'static str {
+    match v {
+        Value::Choice(c) => c,
+        _ => "",
+    }
+}
+
+pub(super) fn vector(v: Value) -> [f64; 3] {
+    match v {
+        Value::Vector(x) => x,
+        _ => [f64::NAN; 3],
     }
 }
