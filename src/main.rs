@@ -9,7 +9,10 @@ use contact_lab::error::AppError;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let (stdout, mut err) = (std::io::stdout().lock(), std::io::stderr().lock());
+    // Standard error unlocked: a progress bar's ticking thread draws on it
+    // too, and a lock held here for the whole command would deadlock the
+    // bar (advise and simulate hung on a terminal at their first tick).
+    let (stdout, mut err) = (std::io::stdout().lock(), std::io::stderr());
     let mut out: Box<dyn Write> = if stdout_probe::closed() {
         Box::new(Closed)
     } else {

@@ -28,7 +28,7 @@ Examples:
   contact-lab detect hull-stack --pair hexagon,octagon   GJK and EPA iteration by iteration
   contact-lab check                                 the lectures' printed numbers vs the computed ones
   contact-lab study stack-5 ramp-stick              speed against accuracy: tables with the Pareto front
-  contact-lab study --format svg > study.svg        error against µs per step, log–log
+  contact-lab study --format svg > study.svg        error against work per simulated second
   contact-lab advise ramp-stick --error 0.001       the cheapest model within 1 mm, to paste
   contact-lab exercise --seed 1 --count 5 --answers --format md
   contact-lab knobs                                 every tunable: what it trades, default, values

@@ -140,7 +140,8 @@ pub enum StudyFormat {
     Text,
     Json,
     Csv,
-    /// Error against µs per step, log–log, one panel per scene.
+    /// Error against work per simulated second (the cost the front is
+    /// computed on), log–log, one panel per scene.
     Svg,
     /// A report to hand out.
     #[value(alias = "markdown")]

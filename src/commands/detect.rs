@@ -163,7 +163,12 @@ fn advanced(lesson: &Lesson, steps: u64) -> Result<Simulation<f64>, AppError> {
     let mut sim = Simulation::new(world, params, materials);
     for k in 0..steps {
         sim.advance().map_err(|e| {
-            AppError::Runtime(format!("{}: step {} blew up: {e:?}", lesson.id, k + 1))
+            AppError::Runtime(format!(
+                "{}: step {} blew up: {}",
+                lesson.id,
+                k + 1,
+                crate::trace::blow_up::plain(&e)
+            ))
         })?;
     }
     Ok(sim)

@@ -109,8 +109,9 @@ fn traced(
     for _ in 1..step {
         sim.advance().map_err(|e| {
             AppError::Runtime(format!(
-                "{}: the run up to step {step} stopped: {e}",
-                lesson.id
+                "{}: the run up to step {step} stopped: {}",
+                lesson.id,
+                crate::trace::blow_up::plain(&e)
             ))
         })?;
     }

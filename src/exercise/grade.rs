@@ -184,7 +184,26 @@ fn by_exercise(list: &[(usize, &str)]) -> String {
             .map(|(_, l)| *l)
             .collect();
         k += labels.len();
-        parts.push(format!("   exercise {}: {}\n", n + 1, labels.join(", ")));
+        // Folded at a label (never inside one) to 80 columns, the labels
+        // after the first line under the first label.
+        let head = format!("   exercise {}: ", n + 1);
+        let mut line = head.clone();
+        for (i, label) in labels.iter().enumerate() {
+            let piece = if i + 1 < labels.len() {
+                format!("{label},")
+            } else {
+                label.to_string()
+            };
+            let fresh = line.chars().count() == head.chars().count();
+            if !fresh && line.chars().count() + 1 + piece.chars().count() > 80 {
+                parts.push(format!("{}\n", line.trim_end()));
+                line = " ".repeat(head.chars().count());
+            } else if !fresh {
+                line.push(' ');
+            }
+            line.push_str(&piece);
+        }
+        parts.push(format!("{line}\n"));
     }
     parts.concat()
 }
@@ -282,6 +301,43 @@ fn kind_name(k: Kind) -> &'static str {
 
 #[cfg(test)]
 mod tests {
+    /// A long list of labels folds at a label, within 80 columns, under
+    /// the first label (a terminal folded it inside "dyn|amic").
+    #[test]
+    fn a_long_list_folds_at_a_label() {
+        let labels = [
+            "v_c (contact coordinates)",
+            "v_s",
+            "Δv",
+            "M (contact coordinates)",
+            "Δq̇_t",
+            "sticking impulse g_contact",
+            "|g_planar|",
+            "g_max = μ_s g_x",
+            "regime (static or dynamic)",
+            "g_world",
+        ];
+        let list: Vec<(usize, &str)> = labels.iter().map(|l| (1, *l)).collect();
+        let text = by_exercise(&list);
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines.len() > 1, "{text}");
+        assert!(lines.iter().all(|l| l.chars().count() <= 80), "{text}");
+        // Under the first label: "   exercise 2: " is 15 columns.
+        assert!(
+            lines[1].starts_with(&" ".repeat(15)) && !lines[1].starts_with(&" ".repeat(16)),
+            "{text}"
+        );
+        assert!(text.contains("regime (static or dynamic)"), "{text}");
+        assert_eq!(
+            text.replace('\n', " ")
+                .split_whitespace()
+                .collect::<Vec<_>>(),
+            format!("exercise 2: {}", labels.join(", "))
+                .split_whitespace()
+                .collect::<Vec<_>>()
+        );
+    }
+
     use super::*;
 
     #[test]

@@ -141,7 +141,7 @@ pub fn svg(run: &RunTrace, plane: Plane) -> String {
 "##,
         escape(&run.title),
         escape(&run.lesson),
-        Fmt::new(4).num(run.dt),
+        crate::study::grid::dt_label(run.dt),
         run.frames.last().map_or(0, |f| f.step)
     );
     super::run_film::film_strip(&mut out, run, plane, (WIDTH, STRIP));

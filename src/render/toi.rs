@@ -75,8 +75,17 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
         s.push_str(&format!("  {}\n", test_line(p, t, f)));
     }
     s.push_str(&format!("  {}\n", outcome_line(p, f)));
+    // What gave the normals: EPA and the closest points, or the plane.
+    let (end_by, start_by) = if p.half_space {
+        (
+            "the half-space's normal, the depth in closed form",
+            "the half-space's normal",
+        )
+    } else {
+        ("EPA", "closest points at the step's start")
+    };
     s.push_str(&format!(
-        "  normal at the step's end (EPA): {}\n",
+        "  normal at the step's end ({end_by}): {}\n",
         p.at_end
             .map_or("none: apart at the step's end".into(), |o| format!(
                 "{}, depth {} m",
@@ -85,7 +94,7 @@ fn pair_text(s: &mut String, p: &PairToi, f: &Fmt) {
             ))
     ));
     s.push_str(&format!(
-        "  normal one frame earlier (closest points at the step's start): {}\n",
+        "  normal one frame earlier ({start_by}): {}\n",
         p.previous_frame
             .map_or("none: overlapping at the step's start".into(), |n| vec3(
                 f, &n
@@ -230,6 +239,7 @@ mod tests {
             },
             at_end: None,
             previous_frame: None,
+            half_space: false,
         };
         let f = Fmt::new(6);
         assert_eq!(p.record.tests().len(), p.tests);

@@ -139,6 +139,12 @@ pub fn toi_trace(
                 depth,
             }),
             previous_frame: s.previous_frame.map(v),
+            half_space: [i, j].iter().any(|k| {
+                matches!(
+                    world.bodies[*k].shape,
+                    Some(crate::physics::Shape::HalfSpace { .. })
+                )
+            }),
         });
     }
     Ok(DetectToi {

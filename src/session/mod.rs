@@ -236,33 +236,11 @@ impl Player {
     }
 }
 
-/// The reason a run stopped, in words.
+/// The reason a run stopped, in words (bodies by name).
 pub fn blew_up(names: &Names, e: &BlowUp) -> String {
-    let name = |body: usize| names.bodies.get(body).map_or("?", String::as_str);
-    match e {
-        BlowUp::NonFinite { body, .. } | BlowUp::Energy { body, .. } => {
-            format!("the scene blew up: {e} (body '{}')", name(*body))
-        }
-        BlowUp::Surge {
-            step,
-            before,
-            after,
-            bound,
-            bodies,
-        } => {
-            let f = crate::format::Fmt::new(3);
-            let list: Vec<String> = bodies
-                .iter()
-                .map(|(b, v0, v1)| format!("'{}' {} → {} m/s", name(*b), f.num(*v0), f.num(*v1)))
-                .collect();
-            format!(
-                "the scene blew up: step {step}: the kinetic energy rose from {} J to {} J in one step, over {} times the {} J that the bodies' speeds and one step of gravity account for; the bodies that sped up most: {}",
-                f.num(*before),
-                f.num(*after),
-                crate::physics::step::report::SURGE_FACTOR,
-                f.num(*bound),
-                list.join(", ")
-            )
-        }
-    }
+    let name = |body: usize| format!("'{}'", names.bodies.get(body).map_or("?", String::as_str));
+    format!(
+        "the scene blew up: {}",
+        crate::trace::blow_up::words(e, &name)
+    )
 }

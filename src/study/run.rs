@@ -267,7 +267,7 @@ fn measure_in<T: Real>(
         let report = match sim.advance() {
             Ok(r) => r,
             Err(e) => {
-                m.failure = Some(e.to_string());
+                m.failure = Some(crate::trace::blow_up::plain(&e));
                 break;
             }
         };

@@ -11,6 +11,7 @@
 //! - [`grade`]: a student's answer graded against a value (predict mode, exercises).
 
 mod acceleration;
+pub mod blow_up;
 pub mod contact;
 pub mod detect;
 mod elided;

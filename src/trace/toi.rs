@@ -112,7 +112,12 @@ pub struct PairToi {
     pub end: ToiEnd,
     pub tests: usize,
     pub record: SearchRecord,
-    /// EPA's at the step's end poses (moved by v Δt), if they overlap.
+    /// Whether one body is a half-space: the normals at either end are
+    /// then the plane's own and the depth its closed form (no EPA, no
+    /// closest points).
+    pub half_space: bool,
+    /// The overlap at the step's end poses (moved by v Δt), if any: EPA's,
+    /// or the half-space's normal and depth.
     pub at_end: Option<Overlap>,
     /// From b's closest point toward a's at the step's start (one frame
     /// before the end), if the pair was apart then.

@@ -296,3 +296,27 @@ fn the_text_prints_as_many_tests_as_the_outcome_counts() {
         "{out}"
     );
 }
+
+/// A half-space pair's normals come from the plane, not from EPA or closest
+/// points (issue 40): the text says what computed each; a pair of two
+/// convex shapes still names EPA.
+#[test]
+fn the_text_says_what_gave_each_normal() {
+    let (code, out, err) = detect(&["ball-floor-fast", "--toi", "--step", "3"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!out.contains("EPA"), "{out}");
+    assert!(!out.contains("closest points"), "{out}");
+    assert!(
+        out.contains(
+            "normal at the step's end (the half-space's normal, the depth in closed form): (0, 1, 0)"
+        ),
+        "{out}"
+    );
+    let (code, out, err) = detect(&["bullet-wall", "--toi", "--pair", "bullet,wall"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("normal at the step's end (EPA): "), "{out}");
+    assert!(
+        out.contains("normal one frame earlier (closest points at the step's start): "),
+        "{out}"
+    );
+}

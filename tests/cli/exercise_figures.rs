@@ -255,7 +255,7 @@ fn no_answer_shows_in_a_set_up_figure_or_the_question_sheet() {
     use contact_lab::trace::Value;
     let formats = [Fmt::new(4), Fmt::default(), Fmt::new(10)];
     let dir = common::scratch("exercise-set-up");
-    let mut searched = 0;
+    let (mut searched, mut moved) = (0, 0);
     for seed in 1..=20u64 {
         let s = seed.to_string();
         let md = dir.join(format!("sheet-{seed}.md"));
@@ -289,6 +289,7 @@ fn no_answer_shows_in_a_set_up_figure_or_the_question_sheet() {
         let tex_parts: Vec<&str> = tex.split("\\subsection*{").skip(1).collect();
         assert_eq!((md_parts.len(), tex_parts.len()), (5, 5));
         for (i, e) in exercises.iter().enumerate() {
+            moved += usize::from(same_set_up_whatever_the_answers(e, seed));
             let sheet = format!("{}\n{}", md_parts[i], tex_parts[i]);
             let file = dir.join(format!("sheet-{seed}-{}.svg", i + 1));
             let svg = std::fs::read_to_string(&file).unwrap();
@@ -361,6 +362,49 @@ fn no_answer_shows_in_a_set_up_figure_or_the_question_sheet() {
         }
     }
     assert!(searched > 2000, "{searched}");
+    assert!(
+        moved > 50,
+        "{moved} of 100 exercises' answers moved with restitution"
+    );
+}
+
+/// The set-up figures (SVG and LaTeX) of exercise `e` are byte for byte
+/// those of the same set-up with another restitution, which changes only
+/// the answers: nothing in them (an arrow's scale, which spins are worth
+/// drawing) is measured on the speeds after the impulse. Whether the
+/// velocities after moved (a penetration exercise's may not).
+fn same_set_up_whatever_the_answers(e: &contact_lab::exercise::Exercise, seed: u64) -> bool {
+    use contact_lab::exercise::sheet::figure_svg;
+    use contact_lab::physics::StageId;
+    use contact_lab::render::contact::latex_figure::picture;
+    let mut lesson = e.lesson.clone();
+    let r = lesson.contacts[0].restitution;
+    lesson.contacts[0].restitution = if r < 0.5 { r + 0.45 } else { r - 0.45 };
+    let solution = contact_lab::physics::solve(&lesson.problem::<f64>(0));
+    let trace = contact_lab::trace::build(&lesson, 0, &solution);
+    let what = format!("seed {seed}, exercise {} ({:?})", e.number, e.kind);
+    let other = contact_lab::exercise::Exercise {
+        lesson,
+        solution,
+        trace,
+        ..e.clone()
+    };
+    let velocity = |t: &contact_lab::trace::Trace| {
+        t.scene
+            .bodies
+            .iter()
+            .map(|b| b.velocity_after)
+            .collect::<Vec<_>>()
+    };
+    let moved = velocity(&e.trace) != velocity(&other.trace);
+    assert_eq!(figure_svg(e), figure_svg(&other), "{what}: the set-up SVG");
+    let stage = Some(StageId::ContactFrame);
+    assert_eq!(
+        picture(&e.trace.scene, stage),
+        picture(&other.trace.scene, stage),
+        "{what}: the set-up LaTeX picture"
+    );
+    moved
 }
 
 /// Every quantity a sheet shows carries its unit (issue 40): the scene

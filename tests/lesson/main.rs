@@ -14,4 +14,5 @@ mod knob_twice;
 mod knobs;
 mod lecture_numbers;
 mod load_warnings;
+mod narrative_units;
 mod overflow_fields;

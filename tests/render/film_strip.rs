@@ -142,3 +142,15 @@ fn no_legend_sits_on_a_curve() {
         legend_clear_of_curves(&film(id, &[]), id);
     }
 }
+
+/// The subtitle gives the time step as the scene writes it (`1/60 s`),
+/// not rounded (`0.01667 s`).
+#[test]
+fn the_subtitle_gives_dt_as_a_fraction() {
+    let svg = film("bullet-wall", &[]);
+    assert!(
+        svg.contains(">bullet-wall · dt = 1/60 s · 30 steps<"),
+        "{}",
+        &svg[..600]
+    );
+}

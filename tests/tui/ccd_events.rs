@@ -82,3 +82,24 @@ fn event_kinds(a: &App) -> Vec<&'static str> {
     let run = a.run.as_ref().unwrap();
     run.player.run.events.iter().map(|e| e.kind).collect()
 }
+
+/// `n` past the last event of any kind says so in plain words: "no event
+/// after step 1", not "no any event" (the filter's name is not a word of
+/// the sentence).
+#[test]
+fn n_past_the_last_event_says_no_event() {
+    let dir = common::scratch("ccd-events-none");
+    let path = dir.join("bullet.toml");
+    std::fs::write(&path, embedded::find("bullet-wall").unwrap()).unwrap();
+    let mut a = tui::open(Some(path.as_os_str()), None).expect("opens");
+    key(&mut a, KeyCode::Char('n'));
+    assert_eq!(
+        a.run.as_ref().unwrap().frame,
+        1,
+        "n jumps to step 1's event"
+    );
+    key(&mut a, KeyCode::Char('n'));
+    let said = a.status.as_ref().map(|s| s.text.clone());
+    assert_eq!(said.as_deref(), Some("no event after step 1"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

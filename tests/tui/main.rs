@@ -10,6 +10,7 @@ mod io_tui_edits;
 mod io_tui_responsive;
 mod movement_bounds;
 mod previous_frame;
+mod progress_terminal;
 mod tui;
 mod tui_detect;
 mod tui_detect_stages;

@@ -164,7 +164,7 @@ fn after_gjk_come_the_epa_iterations_then_the_depth() {
     assert!(epa.contains("faces: -2 +4"), "{epa}");
     key(&mut a, KeyCode::End);
     let end = joined(&screen(&a, 200, 40));
-    assert!(end.contains("depth 0.05 along normal (0, 1, 0)"), "{end}");
+    assert!(end.contains("depth 0.05 m along normal (0, 1, 0)"), "{end}");
     assert!(end.contains("• contacts"), "{end}");
     key(&mut a, KeyCode::Home);
     assert!(joined(&screen(&a, 200, 40)).contains("GJK iteration 1 of 2"));

@@ -78,11 +78,11 @@ fn broad(out: &mut Vec<Block>, t: &DetectTrace, f: &Fmt) {
     out.push(Block::Table {
         head: [
             "body",
-            "box min",
-            "box max",
-            "sphere r",
-            "swept min",
-            "swept max",
+            "box min (m)",
+            "box max (m)",
+            "sphere r (m)",
+            "swept min (m)",
+            "swept max (m)",
         ]
         .map(String::from)
         .to_vec(),
@@ -116,7 +116,7 @@ pub fn mid_phase(p: &PairTrace, f: &Fmt) -> Option<String> {
     let mut mid = vec![];
     if let Some((d, r)) = p.spheres {
         mid.push(format!(
-            "bounding spheres: centres {} apart, radii sum {}: {}",
+            "bounding spheres: centres {} m apart, radii sum {} m: {}",
             f.num(d),
             f.num(r),
             if d <= r { "they overlap" } else { "apart" }
@@ -264,7 +264,7 @@ pub fn epa_result(e: &EpaTrace, f: &Fmt, scale: f64) -> String {
     let v = |f: &Fmt, x: &V3| v_at(f, x, scale);
     if e.source == "margins" {
         return format!(
-            "No EPA: the cores are apart, so the depth is the radii less the cores' distance (exact): {} along normal {} (from B toward A), contact point {} (A's deepest {}, B's {}); features {}.",
+            "No EPA: the cores are apart, so the depth is the radii less the cores' distance (exact): {} m along normal {} (from B toward A), contact point {} m (A's deepest {} m, B's {} m); features {}.",
             f.num_at(e.depth, scale),
             v(f, &e.normal),
             v(f, &e.point),
@@ -274,7 +274,7 @@ pub fn epa_result(e: &EpaTrace, f: &Fmt, scale: f64) -> String {
         );
     }
     format!(
-        "Ended ({}): depth {} along normal {} (from B toward A), contact point {} (A's deepest {}, B's {}); features {}.",
+        "Ended ({}): depth {} m along normal {} (from B toward A), contact point {} m (A's deepest {} m, B's {} m); features {}.",
         e.end,
         f.num_at(e.depth, scale),
         v(f, &e.normal),

@@ -371,7 +371,9 @@ fn legend(fig: &Figure, bodies: &[&BodyView], contacts: &[ContactView]) -> Vec<L
             });
         }
         let (before, after) = (b.angular_velocity, b.angular_velocity_after);
-        if [before, after].iter().any(|w| fig.notable_spin(norm(*w))) {
+        // Any spin at all: the renderer's legend says which are worth a
+        // line at the speeds its stage shows (`Figure::spin_line`).
+        if [before, after].iter().any(|w| norm(*w) > 0.0) {
             items.push(LegendItem::Spin {
                 body,
                 before,

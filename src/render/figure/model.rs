@@ -70,6 +70,25 @@ impl Figure {
         }
     }
 
+    /// Whether a body's spin is worth a legend line, and which phases it
+    /// gives (before, after): those the figure draws (a set-up figure shows
+    /// no ω′), a spin at rest included (`(0, 0, 0) → …`) when the other
+    /// phase is notable at the speeds drawn; `None` when no drawn phase is.
+    pub fn spin_line(&self, before: [f64; 3], after: [f64; 3]) -> Option<(bool, bool)> {
+        let drawn = |after: bool| {
+            let kind = if after {
+                ArrowKind::VelocityAfter
+            } else {
+                ArrowKind::Velocity
+            };
+            self.spins.iter().any(|s| s.after == after)
+                || self.arrows.iter().any(|a| a.kind == kind)
+        };
+        let (b, a) = (drawn(false), drawn(true));
+        let notable = |w: [f64; 3]| self.notable_spin(crate::physics::scale::stable_norm_of(&w));
+        ((b && notable(before)) || (a && notable(after))).then_some((b, a))
+    }
+
     /// Whether the projection carries a body further than three scene lengths.
     pub fn beyond(&self, body: &BodyMarks) -> bool {
         body.travel > 3.0 * self.scene_length

@@ -29,6 +29,16 @@ impl Figure {
         });
         self.spins
             .retain(|s| if s.after { applied } else { before });
+        // Arrows and spins to the scale of the speeds this stage shows: a
+        // set-up scaled with the speeds after the impulse would give their
+        // size away (the arrows' lengths and which spins are worth drawing).
+        self.top_speed = self
+            .bodies
+            .iter()
+            .flat_map(|b| [(b.speed, before), (b.speed_after, applied)])
+            .filter(|(_, shown)| *shown)
+            .map(|(speed, _)| speed)
+            .fold(0.0, f64::max);
         if !projected {
             // Before the projection the bodies have not moved: no outline
             // after, no move from p to p′ (which the question asks for).

@@ -133,18 +133,11 @@ pub fn legend(page: &mut Page, fig: &Figure) {
                 after,
             } => {
                 let n = tag(body);
-                // The phases the figure draws (a set-up figure shows no ω′),
-                // a spin at rest included (`(0, 0, 0) → …`).
-                use crate::render::figure::ArrowKind::{Velocity, VelocityAfter};
-                let drawn = |after: bool| {
-                    let kind = if after { VelocityAfter } else { Velocity };
-                    fig.spins.iter().any(|s| s.after == after)
-                        || fig.arrows.iter().any(|a| a.kind == kind)
-                };
-                let text = match (drawn(false), drawn(true)) {
-                    (true, true) => format!("ω{n} {} → {} rad/s", v(before), v(after)),
-                    (true, false) => format!("ω{n} {} rad/s", v(before)),
-                    _ => format!("ω{n}′ {} rad/s", v(after)),
+                let text = match fig.spin_line(before, after) {
+                    Some((true, true)) => format!("ω{n} {} → {} rad/s", v(before), v(after)),
+                    Some((true, false)) => format!("ω{n} {} rad/s", v(before)),
+                    Some(_) => format!("ω{n}′ {} rad/s", v(after)),
+                    None => continue,
                 };
                 out.line(None, &text);
             }

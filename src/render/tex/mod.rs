@@ -293,7 +293,8 @@ fn symbol(c: char) -> Option<String> {
         '𝟙' => "\\mathbf{1}",
         '′' => "'",
         '″' => "''",
-        '°' => "^{\\circ}",
+        // `{}` keeps 10⁻⁵° from being a double superscript.
+        '°' => "{}^{\\circ}",
         '⊥' => "_{\\perp}",
         '√' => "\\sqrt",
         '∫' => "\\int",

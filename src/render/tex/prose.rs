@@ -249,9 +249,83 @@ fn math_span(text: &str) -> String {
     format!(
         "{}${}${}",
         escape_text(lead),
-        to_latex(core),
+        with_upright_units(core),
         escape_text(tail)
     )
+}
+
+/// Units prose writes after a number, longest first (so `m/s` is not `m`).
+const UNITS: [&str; 23] = [
+    "(m/s)/(N·s)",
+    "kg·m²",
+    "kg·m/s",
+    "N·m·s",
+    "rad/s²",
+    "rad/s",
+    "kg⁻¹",
+    "mm/s",
+    "m/s²",
+    "m/s",
+    "N·s",
+    "µJ",
+    "rad",
+    "kg",
+    "Hz",
+    "mm",
+    "cm",
+    "ms",
+    "°/s",
+    "J",
+    "N",
+    "m",
+    "s",
+];
+
+/// A maths run with each unit after a number set upright
+/// (`22.5 N·s` → `22.5\,\mathrm{N\cdot s}`), as the worked values are. A
+/// one-letter unit is one only where it ends a clause or stands before an
+/// operator (`2/5 m r²`: m is the mass).
+fn with_upright_units(core: &str) -> String {
+    let words: Vec<&str> = core.split(' ').collect();
+    let numeric_end = |w: &str| {
+        let w = w.trim_end_matches([',', ';']);
+        w.ends_with(|c: char| c.is_ascii_digit() || "⁰¹²³⁴⁵⁶⁷⁸⁹".contains(c))
+            || (w.ends_with([')', ']']) && w.contains(|c: char| c.is_ascii_digit()))
+    };
+    // A one-letter unit ends a clause or stands before an operator.
+    let ends = |k: usize| {
+        words[k].len() > 1
+            || words
+                .get(k + 1)
+                .is_none_or(|w| w.starts_with(|c: char| "=/≈×+-<>≤≥·".contains(c)))
+    };
+    // The words between units go to `to_latex` whole (it reads brackets
+    // across words: `[0, Δθ]`); a unit's `\,` takes the space before it.
+    let mut out = String::new();
+    let mut run: Vec<&str> = Vec::new();
+    for (k, w) in words.iter().enumerate() {
+        let unit = UNITS.iter().find(|u| {
+            w.strip_prefix(**u)
+                .is_some_and(|rest| rest.chars().all(|c| "),;:.".contains(c)))
+        });
+        let unit = unit
+            .filter(|u| k > 0 && numeric_end(words[k - 1]) && (u.chars().count() > 1 || ends(k)));
+        match unit {
+            Some(u) => {
+                out.push_str(&to_latex(&run.join(" ")));
+                run.clear();
+                out.push_str(&crate::trace::glossary::unit_latex(
+                    &u.replace('°', "{}^{\\circ}"),
+                ));
+                run.push(&w[u.len()..]);
+            }
+            None => run.push(w),
+        }
+    }
+    // The rest of a unit's word (`)`, `,`) joins the next word without a space.
+    let rest = run.join(" ");
+    out.push_str(&to_latex(&rest));
+    out
 }
 
 #[cfg(test)]
@@ -293,6 +367,15 @@ mod tests {
             (
                 "run `contact-lab check` \"now\"",
                 r"run \texttt{contact-lab check} ``now''",
+            ),
+            // Units in maths are upright, after a number only (m r²: the mass).
+            (
+                "|q - p| = 6.005 m, m·Δv = 22.5 N·s. (I = 2/5 m r²)",
+                r"$|q - p| = 6.005\,\mathrm{m}, m\cdot \Delta v = 22.5\,\mathrm{N\cdot s}$. $(I = 2/5 m r^2)$",
+            ),
+            (
+                "(Δq̇_t = 0.15 (m/s)/(N·s)), Δθ̇ = (0, 0, 0.1715) rad/s, turned 5.9×10⁻⁵°",
+                r"$(\Delta \dot{q}_t = 0.15\,\mathrm{(m/s)/(N\cdot s)}), \Delta \dot{\theta} = (0, 0, 0.1715)$ rad/s, turned $5.9\times 10^{-5}{}^{\circ}$",
             ),
             // A flag stays two hyphens, in text and in code.
             (

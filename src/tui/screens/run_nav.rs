@@ -308,6 +308,12 @@ fn jump_event(run: &mut RunView, next: bool) -> Option<String> {
     let kind = EVENT_KINDS[run.event_kind];
     let step = run.frame as u64;
     let fits = |k: &str| kind == "any" || kind == k;
+    // "no event after step 1", "no tunnelled event after step 1".
+    let kind = if kind == "any" {
+        String::new()
+    } else {
+        format!("{kind} ")
+    };
     if next {
         loop {
             let hit = run
@@ -323,7 +329,7 @@ fn jump_event(run: &mut RunView, next: bool) -> Option<String> {
             }
             match run.player.poll() {
                 Poll::Ready(true) => {}
-                Poll::Ready(false) => return Some(format!("no {kind} event after step {step}")),
+                Poll::Ready(false) => return Some(format!("no {kind}event after step {step}")),
                 Poll::Busy => return Some(computing(run)),
             }
         }
@@ -340,6 +346,6 @@ fn jump_event(run: &mut RunView, next: bool) -> Option<String> {
             run.frame = e.step as usize;
             None
         }
-        None => Some(format!("no {kind} event before step {step}")),
+        None => Some(format!("no {kind}event before step {step}")),
     }
 }
