@@ -260,41 +260,34 @@ fn run(mut sim: Simulation<f64>, steps: usize) -> Run {
 /// Runs that do not keep the promises today, each with the figure measured
 /// (the body's largest movement at rest, m) held as a bound: a change that
 /// makes one worse fails, one that mends it fails too (take it off the list).
-/// - a lying capsule on a lying capsule: one contact point for two parallel
-///   sides (the manifold has no segment–segment clipping); it rolls;
-/// - a tetrahedron on a lying capsule's side: the face touches a line and
-///   the tetrahedron rolls over it;
 /// - 1 mm bodies: gravity moves a body 2.7 mm in a step (dt = 1/60 s), more
-///   than its size: the lecture's order rocks a 1 mm box or can on a
-///   half-space (energy events say so), and on a box 1 mm thick every shape
-///   but the sphere ends up through it (a pushed-through or tunnelled event
-///   says so).
-const KNOWN: [(&str, f64); 16] = [
-    ("capsule on capsule, DeepestFirst, resting", 6.647e-3),
-    ("capsule on capsule, SequentialImpulse, resting", 6.423e-3),
-    ("hull on capsule, DeepestFirst, resting", 7.023e-2),
-    ("hull on capsule, SequentialImpulse, resting", 2.162e-1),
+///   than its size, and each step leaves a closing velocity g Δt of 300
+///   half-widths a second to remove: what the velocity phase leaves within
+///   its epsilon turns the body by radians a second. Sequential impulses
+///   get a velocity epsilon of a thousandth of the size a step there (and
+///   rest, but for a can on a 1 mm box: 1.5 mm); the lecture's order, one
+///   contact at a time, does not converge that far and rocks a 1 mm box or
+///   can on a half-space (energy events say so), and a box or a tetrahedron
+///   ends up through a box 1 mm thick (a pushed-through or tunnelled event
+///   says so), as does a tetrahedron under sequential impulses; a capsule
+///   lying on a 1 mm box creeps 6 µm under the lecture's order.
+const KNOWN: [(&str, f64); 10] = [
     ("0.001 m box on half_space, DeepestFirst, resting", 1.461e-2),
     ("0.001 m box on box, DeepestFirst, resting", 1.456e2),
-    ("0.001 m box on box, SequentialImpulse, resting", 1.289e2),
     (
         "0.001 m cylinder on half_space, DeepestFirst, resting",
         1.466e-2,
     ),
-    (
-        "0.001 m cylinder on half_space, SequentialImpulse, resting",
-        3.279e-4,
-    ),
     ("0.001 m cylinder on box, DeepestFirst, resting", 1.626e2),
     (
         "0.001 m cylinder on box, SequentialImpulse, resting",
-        1.673e2,
+        1.462e-3,
     ),
     (
         "0.001 m capsule on half_space, DeepestFirst, resting",
         1.588e-5,
     ),
-    ("0.001 m capsule on box, DeepestFirst, resting", 1.611e2),
+    ("0.001 m capsule on box, DeepestFirst, resting", 6.211e-6),
     (
         "0.001 m hull on half_space, DeepestFirst, resting",
         4.054e-5,

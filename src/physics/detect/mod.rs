@@ -32,6 +32,7 @@ pub use crate::physics::hull;
 pub mod manifold;
 pub mod query;
 pub mod sat;
+mod segments;
 pub mod simplex;
 pub mod support;
 mod support_face;
