@@ -466,3 +466,65 @@ position = [0, 0, 0]
     );
     assert!(sim.below_rounding().is_empty());
 }
+
+#[test]
+fn a_nanometre_tetrahedron_dropped_a_metre_says_how_long_each_burial_lasts() {
+    // Gravity moves it 2.7 mm a step, 3 million of its sizes: it lands
+    // buried and stays under the floor (with the matrix's restitution and
+    // friction, in one burial to the end). Each burial (the pair wholly inside
+    // at a step's contacts) is said when it starts and, when it lasted
+    // over a step, when it ends with its length (it was said only at the
+    // start: 162 of 200 steps under the floor and 13 events).
+    let text = r#"id = "nm-tetrahedron"
+title = "A 1 nm tetrahedron dropped 1 m"
+source = "issue 39"
+summary = "A hull a billionth of a metre across."
+
+[step]
+dt = 0.016666666666666666
+steps = 200
+
+[[body]]
+name = "tetrahedron"
+mass = 1.0
+shape = { convex = [[0.5e-9, 0, 0], [-0.25e-9, 0, 0.4330127018922193e-9], [-0.25e-9, 0, -0.4330127018922193e-9], [0, 0.8e-9, 0]] }
+position = [0, 1, 0]
+
+[[body]]
+name = "floor"
+mass = inf
+shape = "half_space"
+position = [0, 0, 0]
+"#;
+    let lesson = parse("shape_matrix.rs", text).expect("a valid scene");
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = Simulation::new(world, params, lesson.simulation.unwrap().materials);
+    let (mut run, mut said) = (0u64, 0usize);
+    for _ in 0..200 {
+        // Wholly inside the floor at the poses this step's contacts are
+        // found at: every corner at or below y = 0.
+        let body = &sim.world.bodies[0];
+        let Some(contact_lab::physics::Shape::Hull(hull)) = body.shape.as_ref() else {
+            unreachable!("a hull")
+        };
+        let turn = body.state.rotation();
+        let inside = (hull.vertices().iter()).all(|v| (body.state.position + turn * v).y <= 0.0);
+        let r = sim.advance().expect("no blow-up");
+        let started = (r.events.iter()).any(|e| matches!(e, Event::WhollyInside { .. }));
+        let ended = r.events.iter().find_map(|e| match e {
+            Event::WhollyInsideEnded { steps, .. } => Some(*steps),
+            _ => None,
+        });
+        if inside {
+            assert_eq!(started, run == 0, "step {}: {:?}", r.step, r.events);
+            run += 1;
+        } else {
+            assert_eq!(ended, (run > 1).then_some(run), "step {}", r.step);
+            said += usize::from(run > 1);
+            run = 0;
+        }
+    }
+    assert!(said >= 5, "{said} burials said with their length");
+}
