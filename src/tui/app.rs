@@ -5,9 +5,7 @@
 use std::cell::Cell;
 use std::path::PathBuf;
 
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
-
-use super::event::{self, Action};
+use super::event::Action;
 use super::form::Form;
 use super::screens::{DetectView, ResolverView, RunView, Screen, Targets};
 use super::theme::Theme;
@@ -313,52 +311,8 @@ impl App {
         }
     }
 
-    /// Handles one key press in whatever mode is active.
-    pub fn key(&mut self, key: KeyEvent) {
-        if key.kind != KeyEventKind::Press {
-            return;
-        }
-        self.status = None;
-        if self.too_small.get() {
-            // Nothing of the app is on show: only quitting acts.
-            let ctrl_c =
-                key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL);
-            if ctrl_c || key.code == KeyCode::Char('q') {
-                self.quit = true;
-            }
-            return;
-        }
-        match std::mem::replace(&mut self.mode, Mode::Normal) {
-            Mode::Normal if self.screen != Screen::Contact => self.screen_key(key),
-            Mode::Normal if self.up_key(key) => {}
-            Mode::Normal if self.answer_start(key) => {}
-            Mode::Normal if event::ctrl_c(key) => self.quit = true,
-            Mode::Normal => {
-                if let Some(a) = event::action(key) {
-                    self.update(a);
-                }
-            }
-            Mode::Help => self.help_key(key),
-            Mode::Glossary(at) => self.glossary_key(at, key),
-            Mode::Answer { input, error } => self.answer_key(input, error, key),
-            Mode::Edit(form) => self.edit_key(form, key),
-            Mode::Write { input, error } => self.write_key(input, error, key),
-            Mode::Pick(p) => self.picker_key(p, key),
-            Mode::Quit(_) => self.quit_key(key),
-            Mode::Events(at) => self.events_key(at, key),
-            Mode::Confirm(path) => match key.code {
-                KeyCode::Char('y') | KeyCode::Char('Y') => self.write_to(path, true),
-                _ => {
-                    self.say(
-                        format!("not written: {} is unchanged", path.display()),
-                        false,
-                    );
-                }
-            },
-        }
-    }
-
-    /// The main screen's actions.
+    /// The contact screen's actions (the keys every screen has go to
+    /// [`App::global`]).
     pub fn update(&mut self, action: Action) {
         use Action::*;
         match action {
@@ -386,11 +340,6 @@ impl App {
                 } else {
                     self.goto_contact(k);
                 }
-            }
-            NextLesson => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
-            PrevLesson => {
-                let n = self.lessons.len();
-                self.goto_lesson((self.lesson + n - 1) % n)
             }
             // A page keeps one line of the last in view.
             ScrollDown => self.scroll_by(i32::from(self.page_rows.get().max(2)) - 1),
@@ -430,7 +379,6 @@ impl App {
                     false,
                 );
             }
-            Plane => self.plane = self.plane.next(),
             Zoom => self.zoom = !self.zoom,
             Symbols => self.toggle_symbols(),
             Write => {
@@ -439,14 +387,7 @@ impl App {
                     error: None,
                 }
             }
-            Help => {
-                self.help_scroll = 0;
-                self.mode = Mode::Help;
-            }
-            PickLesson => self.open_picker(),
-            NextGroup => self.jump_group(true),
-            PrevGroup => self.jump_group(false),
-            Quit => self.request_quit(),
+            Global(g) => self.global(g),
         }
     }
 

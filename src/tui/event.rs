@@ -1,7 +1,9 @@
 //! Terminal events, and the keys of the main screen as [`Action`]s.
 //! (The edit form and the write prompt read keys themselves: they take text.)
 
-use super::keys::Binding;
+use super::keys::{
+    down_up, first_last, help_row, lessons_row, plane_row, tab_row, Binding, Global,
+};
 use ratatui::crossterm::event::{
     self, Event as CtEvent, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent,
     MouseEventKind,
@@ -20,8 +22,6 @@ pub enum Action {
     LastStage,
     NextContact,
     PrevContact,
-    NextLesson,
-    PrevLesson,
     ScrollDown,
     ScrollUp,
     LineDown,
@@ -29,17 +29,11 @@ pub enum Action {
     Edit,
     Reset,
     Predict,
-    Plane,
     Zoom,
     Symbols,
     Write,
-    /// `/`: the lesson picker (type to filter, Tab between groups).
-    PickLesson,
-    /// `}` / `{`: the next / previous group's first lesson.
-    NextGroup,
-    PrevGroup,
-    Help,
-    Quit,
+    /// A key every screen has (lessons, plane, help, quit): the router's.
+    Global(Global),
 }
 
 /// The contact screen's keys: what the help shows and what each key does.
@@ -59,42 +53,14 @@ pub const KEYS: &[Binding<Action>] = &[
         help: "next stage; in predict mode first reveal the next result",
         keys: &[(KeyCode::Char(' '), Advance), (KeyCode::Enter, Advance)],
     },
-    Binding {
-        label: "Home g / End G",
-        help: "first / last stage",
-        keys: &[
-            (KeyCode::Home, FirstStage),
-            (KeyCode::Char('g'), FirstStage),
-            (KeyCode::End, LastStage),
-            (KeyCode::Char('G'), LastStage),
-        ],
-    },
-    Binding {
-        label: "Tab / Shift-Tab",
-        help: "next / previous contact",
-        keys: &[(KeyCode::Tab, NextContact), (KeyCode::BackTab, PrevContact)],
-    },
-    Binding {
-        label: "] [ } { /",
-        help: "next / previous lesson, group; / finds a lesson",
-        keys: &[
-            (KeyCode::Char(']'), NextLesson),
-            (KeyCode::Char('['), PrevLesson),
-            (KeyCode::Char('}'), NextGroup),
-            (KeyCode::Char('{'), PrevGroup),
-            (KeyCode::Char('/'), PickLesson),
-        ],
-    },
-    Binding {
-        label: "↓ j / ↑ k",
-        help: "scroll the stage panel a line (the mouse wheel too)",
-        keys: &[
-            (KeyCode::Down, LineDown),
-            (KeyCode::Char('j'), LineDown),
-            (KeyCode::Up, LineUp),
-            (KeyCode::Char('k'), LineUp),
-        ],
-    },
+    first_last!("first / last stage", FirstStage, LastStage),
+    tab_row!("next / previous contact", NextContact, PrevContact),
+    lessons_row!(Action::Global),
+    down_up!(
+        "scroll the stage panel a line (the mouse wheel too)",
+        LineDown,
+        LineUp
+    ),
     Binding {
         label: "PgDn / PgUp",
         help: "scroll the stage panel a page",
@@ -115,11 +81,7 @@ pub const KEYS: &[Binding<Action>] = &[
         help: "predict mode: hide each result until Space reveals it",
         keys: &[(KeyCode::Char('p'), Predict)],
     },
-    Binding {
-        label: "v",
-        help: "view plane of the picture: xy → yz → zx",
-        keys: &[(KeyCode::Char('v'), Plane)],
-    },
+    plane_row!(Action::Global),
     Binding {
         label: "z",
         help: "picture full size / beside the stages",
@@ -140,15 +102,17 @@ pub const KEYS: &[Binding<Action>] = &[
         help: "write this worked solution to a Markdown file",
         keys: &[(KeyCode::Char('w'), Write)],
     },
-    Binding {
-        label: "?",
-        help: "this help; ? again: the glossary of every symbol",
-        keys: &[(KeyCode::Char('?'), Help)],
-    },
+    help_row!(
+        "this help; ? again: the glossary of every symbol",
+        Action::Global
+    ),
     Binding {
         label: "q Esc Ctrl-C",
         help: "quit (q and Esc ask first when edits or a predict score would be lost)",
-        keys: &[(KeyCode::Char('q'), Quit), (KeyCode::Esc, Quit)],
+        keys: &[
+            (KeyCode::Char('q'), Action::Global(Global::Quit)),
+            (KeyCode::Esc, Action::Global(Global::Quit)),
+        ],
     },
 ];
 
@@ -158,7 +122,7 @@ pub fn action(key: KeyEvent) -> Option<Action> {
         return None;
     }
     if key.modifiers.contains(KeyModifiers::CONTROL) {
-        return matches!(key.code, KeyCode::Char('c')).then_some(Action::Quit);
+        return matches!(key.code, KeyCode::Char('c')).then_some(Action::Global(Global::Quit));
     }
     super::keys::find(KEYS, key.code)
 }

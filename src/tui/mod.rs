@@ -1,6 +1,7 @@
 //! The interactive terminal app (ratatui + crossterm), TEA style:
-//! [`app`] holds the state and its update, [`ui`] draws it, [`event`] reads
-//! the terminal. It reads only the trace: no physics here.
+//! [`app`] holds the state and its update, [`router`] hands each key to the
+//! screen on show (and handles the keys every screen has), [`ui`] draws it,
+//! [`event`] reads the terminal. It reads only the trace: no physics here.
 
 pub mod answer;
 pub mod app;
@@ -13,6 +14,7 @@ pub(crate) mod more;
 mod overlay;
 pub mod picker;
 pub(crate) mod quit;
+mod router;
 pub mod scene;
 pub mod screens;
 pub mod stage;

@@ -45,16 +45,8 @@ pub fn help(app: &App, area: Rect, buf: &mut Buffer) {
         "Picture: v before, v′ after, ω spin, g impulse (-g on body 2), d̂ normal, r arms, q contact point.",
         "? again (or PgDn): page 2, the glossary of every symbol. Any other key closes this help.",
     ];
-    if app.detect.is_some() && app.resolver.is_some() {
-        notes.insert(
-            0,
-            "Esc or Backspace: back to the detection this contact came from.",
-        );
-    } else if app.resolver.is_some() {
-        notes.insert(
-            0,
-            "Esc or Backspace: up to the resolver iterations this contact came from.",
-        );
+    if let Some(below) = app.below_contact() {
+        notes.insert(0, below.up_note());
     }
     help_list(app, " Keys ", &super::keys::help(KEYS), &notes, area, buf);
 }

@@ -17,6 +17,7 @@ mod tui_huge_step;
 mod tui_labels;
 mod tui_lesson_picker;
 mod tui_reading;
+mod tui_router;
 mod tui_scenes;
 mod tui_teaching;
 mod tui_terminal;

@@ -7,8 +7,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-use super::{Screen, DETECT_KEYS, RESOLVER_KEYS, RUN_KEYS, SPEEDS};
-use crate::physics::resolver::Phase;
+use super::{Screen, SPEEDS};
 use crate::tui::app::{App, Mode};
 use crate::tui::wrap::{truncate, width};
 
@@ -16,35 +15,7 @@ use crate::tui::wrap::{truncate, width};
 /// 12 › contact 3 › impulse` (as far down as they went).
 pub fn breadcrumb(app: &App) -> String {
     let mut parts = vec![app.lessons[app.lesson].lesson.id.clone()];
-    if let Some(run) = &app.run {
-        let frame = &run.player.run.frames[run.frame];
-        parts.push(format!("t = {:.3} s, step {}", frame.time, frame.step));
-    }
-    if matches!(app.screen, Screen::Detect | Screen::Contact) {
-        if let Some(d) = &app.detect {
-            parts.push(match &d.toi {
-                Some(_) if app.screen == Screen::Detect => "detection › time of collision".into(),
-                _ => "detection".into(),
-            });
-        }
-    }
-    if !matches!(app.screen, Screen::Run | Screen::Detect) {
-        if let (Some(r), Some(_)) = (&app.resolver, &app.detect) {
-            // A contact opened from the detection: the step that resolves it.
-            parts.push(format!("step {}'s resolver", r.trace.step));
-        } else if let Some(r) = &app.resolver {
-            let table = &r.trace.tables[r.stop];
-            let (phase, used) = match table.stop.phase {
-                Phase::Position => ("position", r.trace.resolver.position.iterations_used),
-                Phase::Velocity => ("velocity", r.trace.resolver.velocity.iterations_used),
-            };
-            parts.push(if table.stop.iteration < used {
-                format!("{phase} iteration {}", table.stop.iteration)
-            } else {
-                format!("{phase} phase done ({used} iterations)")
-            });
-        }
-    }
+    parts.extend(app.levels());
     if app.screen == Screen::Contact {
         parts.push(format!("contact {}", app.contact));
         parts.push(match app.stage() {
@@ -79,7 +50,8 @@ pub fn breadcrumb_fit(app: &App, room: usize) -> String {
     truncate(parts.last().copied().unwrap_or(""), room)
 }
 
-/// The run or resolver screen, whole.
+/// The screen on top (run, resolver or detection), whole: the header,
+/// the key bar, the screen's body ([`super::View`]) and the overlay on show.
 pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let [top, body, bottom] = Layout::vertical([
         Constraint::Length(1),
@@ -89,26 +61,13 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     .areas(area);
     header(app, top, buf);
     key_bar(app, bottom, buf);
-    match app.screen {
-        Screen::Run => super::run::render(app, body, buf),
-        Screen::Detect => super::detect::render(app, body, buf),
-        _ => super::resolver::render(app, body, buf),
-    }
-    if app.mode == Mode::Help {
-        let (title, keys, notes) = match app.screen {
-            Screen::Run => (" Keys · run ", crate::tui::keys::help(RUN_KEYS), &NOTES[..]),
-            Screen::Detect => (
-                " Keys · detection ",
-                crate::tui::keys::help(DETECT_KEYS),
-                &DETECT_NOTES[..],
-            ),
-            _ => (
-                " Keys · resolver ",
-                crate::tui::keys::help(RESOLVER_KEYS),
-                &NOTES[..],
-            ),
-        };
-        crate::tui::overlay::help_list(app, title, &keys, notes, area, buf);
+    if let Some(view) = app.top() {
+        view.render(app, body, buf);
+        if app.mode == Mode::Help {
+            let (title, notes) = view.help();
+            let keys = crate::tui::keys::help(view.keys());
+            crate::tui::overlay::help_list(app, title, &keys, notes, area, buf);
+        }
     }
     if let Mode::Glossary(scroll) = app.mode {
         crate::tui::overlay::glossary(app, scroll, area, buf);
@@ -123,19 +82,6 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         crate::tui::quit::render(app, lost, area, buf);
     }
 }
-
-const NOTES: [&str; 4] = [
-    "? again (or PgDn): page 2, the glossary of every symbol.",
-    "Enter goes down a level: a step → its resolver iterations → an iteration's contact and its stages. Esc or Backspace goes back up.",
-    "Mouse: click a contact or a body in the picture, or a table row, to select it; the wheel scrolls.",
-    "The contact screen has its own keys (? there).",
-];
-
-const DETECT_NOTES: [&str; 3] = [
-    "? again (or PgDn): page 2, the glossary of every symbol.",
-    "A - B: the Minkowski difference seen in the view plane through the origin O, with the iteration's simplex (• kept, ✗ dropped), w_k, v_k and d_k; at the result -δn (the penetration) or v (the distance). x puts it beside the shapes, alone, or hides it.",
-    "The iterations are the rows contact-lab detect --step N prints; the time of collision is detect --toi's (docs/detect.md, docs/ccd.md).",
-];
 
 fn header(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
@@ -173,11 +119,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     }
     if let (Screen::Run, Some(run)) = (app.screen, &app.run) {
-        if run.recording.is_some() || run.detecting.is_some() {
-            let text = match run.recording {
-                Some(_) => super::run_nav::recording(run),
-                None => super::background::detecting(run),
-            };
+        if let Some(text) = run.busy() {
             Paragraph::new(Line::styled(
                 truncate(&format!(" {text}"), area.width as usize),
                 t.info(),
@@ -206,44 +148,7 @@ fn key_bar(app: &App, area: Rect, buf: &mut Buffer) {
         _ if matches!(app.mode, Mode::Glossary(_)) => {
             &[("j k ↑↓ PgDn PgUp", "scroll"), ("any other key", "closes")]
         }
-        (false, Screen::Run) => &[
-            ("Space", "play"),
-            ("←→", "step"),
-            ("Enter", "resolver"),
-            ("d", "detection"),
-            ("n", "next event"),
-            ("+-", "speed"),
-            ("g", "restart"),
-            ("cosbm", "show"),
-            ("/", "find"),
-            ("?", "help"),
-            ("q", "quit"),
-        ],
-        (false, Screen::Detect) if app.detect.as_ref().is_some_and(|d| d.toi.is_some()) => &[
-            ("↑↓", "pair"),
-            ("←→", "test"),
-            ("t Esc", "iterations"),
-            ("?", "help"),
-            ("q", "quit"),
-        ],
-        (false, Screen::Detect) => &[
-            ("↑↓", "pair"),
-            ("←→", "iteration"),
-            ("Enter", "stages"),
-            ("x", "picture"),
-            ("t", "time of collision"),
-            ("Esc", "run"),
-            ("?", "help"),
-            ("q", "quit"),
-        ],
-        (false, _) => &[
-            ("←→", "iteration"),
-            ("⇥", "contact"),
-            ("Enter", "stages"),
-            ("Esc", "up"),
-            ("?", "help"),
-            ("q", "quit"),
-        ],
+        _ => app.top().map_or(&[], |v| v.bar()),
     };
     let mut spans = vec![];
     let mut used = 0;

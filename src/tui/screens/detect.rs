@@ -13,17 +13,61 @@ use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 use super::picture::{self, Scene};
 use super::{detect_minkowski, detect_toi};
-use super::{DetectView, Shown, Toggles};
+use super::{DetectView, Key, Shown, Toggles, View, DETECT_KEYS};
 use crate::render::detect::steps::{result_lines, stop_lines, stops, Stop};
 use crate::trace::detect::{DetectTrace, PairTrace, V3};
 use crate::trace::{BodyView, ContactView};
 use crate::tui::app::App;
+use crate::tui::keys::Binding;
 use crate::tui::wrap::truncate;
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
-    let Some(d) = app.detect.as_deref() else {
-        return;
-    };
+impl View for DetectView {
+    fn keys(&self) -> &'static [Binding<Key>] {
+        DETECT_KEYS
+    }
+
+    fn help(&self) -> (&'static str, &'static [&'static str]) {
+        (" Keys · detection ", &NOTES)
+    }
+
+    fn bar(&self) -> &'static [(&'static str, &'static str)] {
+        if self.toi.is_some() {
+            return &[
+                ("↑↓", "pair"),
+                ("←→", "test"),
+                ("t Esc", "iterations"),
+                ("?", "help"),
+                ("q", "quit"),
+            ];
+        }
+        &[
+            ("↑↓", "pair"),
+            ("←→", "iteration"),
+            ("Enter", "stages"),
+            ("x", "picture"),
+            ("t", "time of collision"),
+            ("Esc", "run"),
+            ("?", "help"),
+            ("q", "quit"),
+        ]
+    }
+
+    fn render(&self, app: &App, area: Rect, buf: &mut Buffer) {
+        render(app, self, area, buf)
+    }
+
+    fn up_note(&self) -> &'static str {
+        "Esc or Backspace: back to the detection this contact came from."
+    }
+}
+
+const NOTES: [&str; 3] = [
+    "? again (or PgDn): page 2, the glossary of every symbol.",
+    "A - B: the Minkowski difference seen in the view plane through the origin O, with the iteration's simplex (• kept, ✗ dropped), w_k, v_k and d_k; at the result -δn (the penetration) or v (the distance). x puts it beside the shapes, alone, or hides it.",
+    "The iterations are the rows contact-lab detect --step N prints; the time of collision is detect --toi's (docs/detect.md, docs/ccd.md).",
+];
+
+fn render(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
     let side = (area.width * 11 / 20).clamp(30, 100);
     let [left, right] =
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(side)]).areas(area);
@@ -36,7 +80,11 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     render_pairs(app, d, list, buf);
     render_pictures(app, d, pic, buf);
     match &d.toi {
-        Some((toi, trial)) => detect_toi::render(app, d, &toi.trace, *trial, right, buf),
+        Some((toi, trial)) => {
+            let (a, b, _) = d.selected().unwrap_or(("", "", false));
+            let search = (d.method, d.scene_method);
+            detect_toi::render(app, &toi.trace, *trial, (a, b), search, right, buf)
+        }
         None => render_stops(app, d, right, buf),
     }
 }
@@ -197,10 +245,10 @@ fn render_pictures(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
                 Layout::vertical(halves).areas(area)
             };
             render_picture(app, d, one, buf);
-            detect_minkowski::render(app, d, two, buf);
+            minkowski(app, d, two, buf);
         }
         Shown::Both | Shown::Shapes => render_picture(app, d, area, buf),
-        Shown::Difference => detect_minkowski::render(app, d, area, buf),
+        Shown::Difference => minkowski(app, d, area, buf),
     }
 }
 
@@ -315,4 +363,10 @@ fn marks(p: &PairTrace, stop: usize) -> (Vec<V3>, &'static str) {
             _ => (p.contacts.iter().map(|c| c.point).collect(), "• contacts"),
         },
     }
+}
+
+/// A - B of the selected pair at the stop on show.
+fn minkowski(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
+    let (pair, plane) = (d.narrow(), d.trace.plane);
+    detect_minkowski::render(app, pair, plane, d.stop, d.toi.is_some(), area, buf);
 }

@@ -13,30 +13,35 @@ use ratatui::text::Span;
 use ratatui::widgets::{Block, Widget};
 
 use super::picture::{draw, extent, fit, UNIT};
-use super::DetectView;
 use crate::render::detect::minkowski::minkowski;
 use crate::render::figure::P;
+use crate::trace::detect::PairTrace;
+use crate::trace::Plane;
 use crate::tui::app::App;
 use crate::tui::theme::Ink;
 
 /// What the picture's legend says each mark is.
 pub const LEGEND: &str = "• simplex ✗ dropped w=w_k v=v_k d=d_k";
 
-/// A - B of the selected pair at the stop on show, in `area`.
-pub fn render(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
+/// A - B of the selected pair (`pair`, its narrow phase) at `stop`, seen
+/// in `plane`, in `area`; `toi`: the time of collision is on show.
+pub fn render(
+    app: &App,
+    pair: Option<&PairTrace>,
+    plane: Plane,
+    stop: usize,
+    toi: bool,
+    area: Rect,
+    buf: &mut Buffer,
+) {
     let t = &app.theme;
-    let plane = d.trace.plane;
-    let (m, what) = match d.narrow() {
-        Some(p) if !p.minkowski.is_empty() => (Some(minkowski(plane, p, d.stop)), stop_name(d, p)),
+    let (m, what) = match pair {
+        Some(p) if !p.minkowski.is_empty() => (Some(minkowski(plane, p, stop)), stop_name(stop, p)),
         Some(_) => (None, "a half-space has no support mapping".to_string()),
         None => (None, "no pair".to_string()),
     };
     // The time of collision moves the shapes, not this: say when it is of.
-    let when = if d.toi.is_some() {
-        " (the step's start)"
-    } else {
-        ""
-    };
+    let when = if toi { " (the step's start)" } else { "" };
     let block = Block::bordered()
         .border_style(t.border())
         .title(Span::styled(
@@ -91,9 +96,9 @@ pub fn render(app: &App, d: &DetectView, area: Rect, buf: &mut Buffer) {
 }
 
 /// The stop on show in a few words: `GJK 2`, `EPA 1`, `result`.
-fn stop_name(d: &DetectView, p: &crate::trace::detect::PairTrace) -> String {
+fn stop_name(stop: usize, p: &PairTrace) -> String {
     use crate::render::detect::steps::{stops, Stop};
-    match stops(p).get(d.stop) {
+    match stops(p).get(stop) {
         Some(Stop::Gjk(k)) => format!("GJK iteration {}", k + 1),
         Some(Stop::Epa(k)) => format!("EPA iteration {}", k + 1),
         None => "result".into(),

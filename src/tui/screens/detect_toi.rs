@@ -8,18 +8,20 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
-use super::DetectView;
 use crate::physics::detect::ToiMethod;
 use crate::render::toi::{outcome_line, test_line};
 use crate::trace::toi::{method_words, DetectToi};
 use crate::tui::app::App;
 
 /// The pair's time-of-collision trial on show and the outcome.
+/// `pair`: its two bodies' names; `search`: the search on show and the
+/// scene's (`None`: it runs no continuous detection).
 pub fn render(
     app: &App,
-    d: &DetectView,
     toi: &DetectToi,
     trial: usize,
+    pair: (&str, &str),
+    search: (ToiMethod, Option<ToiMethod>),
     area: Rect,
     buf: &mut Buffer,
 ) {
@@ -33,7 +35,7 @@ pub fn render(
             f.num(toi.time + toi.dt),
             method_words(toi.method)
         )),
-        Line::styled(method_origin(d), t.dim()),
+        Line::styled(method_origin(search), t.dim()),
     ];
     let title = match toi.pairs.first() {
         None => {
@@ -77,7 +79,7 @@ pub fn render(
             }
         }
     };
-    let (a, b, _) = d.selected().unwrap_or(("", "", false));
+    let (a, b) = pair;
     let block = Block::bordered()
         .border_style(t.border())
         .title(Span::styled(
@@ -92,14 +94,14 @@ pub fn render(
 
 /// Where the search comes from: the scene's continuous detection, the
 /// default when it runs none, or `m`.
-fn method_origin(d: &DetectView) -> String {
+fn method_origin((method, scene): (ToiMethod, Option<ToiMethod>)) -> String {
     let name = super::detect_nav::method_name;
-    match d.scene_method {
-        Some(m) if m == d.method => format!(
+    match scene {
+        Some(m) if m == method => format!(
             "The scene's continuous detection (its ccd knob) searches by {}; m: the other search.",
             name(m)
         ),
-        None if d.method == ToiMethod::Bisection => {
+        None if method == ToiMethod::Bisection => {
             "The scene runs no continuous detection (ccd none): bisection, the lecture's; m: conservative advancement.".into()
         }
         Some(m) => format!(

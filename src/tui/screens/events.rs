@@ -11,7 +11,7 @@ use crate::tui::wrap::wrap;
 
 impl App {
     /// Opens the pop-up, or says there is nothing to read yet.
-    pub(super) fn show_events(&mut self) {
+    pub(crate) fn show_events(&mut self) {
         let none = self.run.as_deref().is_none_or(|r| {
             let (start, end) = r.events_shown.get();
             start >= end

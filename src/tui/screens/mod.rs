@@ -2,15 +2,16 @@
 //! play, pause, step, charts, events) and *resolver* (one resolution's
 //! iterations stop by stop). Enter goes down a level (frame → its resolver
 //! iterations → an iteration's contact), Esc or Backspace up. Their state
-//! lives here; [`nav`], [`run_nav`] and [`resolver_nav`] update it, [`run`] and [`resolver`] draw it. They
-//! read the recorded traces ([`Player`], [`StepTrace`]): no physics here.
+//! lives here or in the screen's own file ([`detect_nav`]); each has a
+//! `key()` ([`run_nav`], [`resolver_nav`], [`detect_nav`]) and a [`View`]
+//! (its body drawn by [`run`], [`resolver`], [`detect`]); the router in
+//! [`crate::tui::router`] hands keys to the one on top. They read the
+//! recorded traces ([`Player`], [`StepTrace`]): no physics here.
 
-mod background;
 mod chrome;
 mod detect;
 mod detect_minkowski;
 mod detect_nav;
-mod detect_stages;
 mod detect_toi;
 mod edit;
 mod events;
@@ -23,12 +24,48 @@ mod run_nav;
 
 use std::cell::Cell;
 
+use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
 use crate::session::{Player, Recording};
 use crate::trace::step::StepTrace;
 pub use chrome::{breadcrumb, breadcrumb_fit, render};
+pub(crate) use detect_nav::At;
 pub use detect_nav::{DetectView, Shown, DETECT_KEYS};
+
+/// What a screen's key asks of the router ([`crate::tui::router`]).
+#[derive(Debug)]
+pub(crate) enum Outcome {
+    /// Done inside the screen.
+    Done,
+    /// A line in the key bar.
+    Say(String),
+    /// The screen named, one level down (the router builds it).
+    Open(Screen),
+    /// The resolver on this resolution (Enter on the run).
+    Resolver(Box<StepTrace>),
+    /// The events on show, each in full (`i` on the run).
+    Events,
+    /// Esc: up a level (quits at the top).
+    Up,
+}
+
+/// A screen above the contact stepper, as the chrome draws it: its body,
+/// its key table (dispatch and help), its help notes and its key bar.
+pub(crate) trait View {
+    /// The key table: what each key does and what the help says.
+    fn keys(&self) -> &'static [Binding<Key>];
+    /// The help overlay's title and the notes under the keys.
+    fn help(&self) -> (&'static str, &'static [&'static str]);
+    /// The key bar's short list (help and quit last: they always show).
+    fn bar(&self) -> &'static [(&'static str, &'static str)];
+    /// The body, between the header and the key bar.
+    fn render(&self, app: &crate::tui::app::App, area: Rect, buf: &mut Buffer);
+    /// The first line of the contact screen's help, when opened from here.
+    fn up_note(&self) -> &'static str {
+        ""
+    }
+}
 
 /// The screen on show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -163,17 +200,8 @@ pub enum Key {
     PrevContact,
     /// Esc / Backspace: up a level (quits at the top).
     Up,
-    Plane,
-    NextLesson,
-    PrevLesson,
-    /// `/`: the lesson picker.
-    PickLesson,
-    NextGroup,
-    PrevGroup,
     LineDown,
     LineUp,
-    Help,
-    Quit,
     /// `d` on the run: the step's detection.
     Detect,
     /// `t` on the detection: the pair's time of collision.
@@ -186,6 +214,8 @@ pub enum Key {
     Picture,
     /// `i` on the run: the events on show, each in full.
     Events,
+    /// A key every screen has (lessons, plane, help, quit): the router's.
+    Global(Global),
 }
 
 /// What the run screen's picture shows or hides.
@@ -198,66 +228,22 @@ pub enum Toggle {
     Bounds,
 }
 
-use crate::tui::keys::Binding;
+use crate::tui::keys::{
+    down_up, first_last, forward_back, help_row, lessons_row, plane_row, tab_row, Binding, Global,
+};
 use ratatui::crossterm::event::KeyCode as C;
 
-/// The rows both screens end with: lessons, help, quit (and the line
-/// scroll, whose list differs).
-macro_rules! tail_rows {
-    ($scroll:expr, $quit:expr, $quit_keys:expr) => {
-        [
-            Binding {
-                label: "↓ j / ↑ k",
-                help: $scroll,
-                keys: &[
-                    (C::Down, Key::LineDown),
-                    (C::Char('j'), Key::LineDown),
-                    (C::Up, Key::LineUp),
-                    (C::Char('k'), Key::LineUp),
-                ],
-            },
-            Binding {
-                label: "] [ } { /",
-                help: "next / previous lesson, group; / finds a lesson",
-                keys: &[
-                    (C::Char(']'), Key::NextLesson),
-                    (C::Char('['), Key::PrevLesson),
-                    (C::Char('}'), Key::NextGroup),
-                    (C::Char('{'), Key::PrevGroup),
-                    (C::Char('/'), Key::PickLesson),
-                ],
-            },
-            Binding {
-                label: "?",
-                help: "this help",
-                keys: &[(C::Char('?'), Key::Help)],
-            },
-            Binding {
-                label: "q Ctrl-C",
-                help: $quit,
-                keys: $quit_keys,
-            },
-        ]
+/// The quit row: `q` (and Esc where Esc is not up a level).
+macro_rules! quit_row {
+    ($help:expr, $keys:expr) => {
+        Binding {
+            label: "q Ctrl-C",
+            help: $help,
+            keys: $keys,
+        }
     };
 }
-
-pub(crate) const PLANE: Binding<Key> = Binding {
-    label: "v",
-    help: "view plane of the picture: xy → yz → zx",
-    keys: &[(C::Char('v'), Key::Plane)],
-};
-
-const RUN_TAIL: [Binding<Key>; 4] = tail_rows!(
-    "scroll the events list a line (the mouse wheel too)",
-    "quit",
-    &[(C::Char('q'), Key::Quit), (C::Esc, Key::Quit)]
-);
-
-const RESOLVER_TAIL: [Binding<Key>; 4] = tail_rows!(
-    "scroll the contacts table (the mouse wheel too)",
-    "quit (Esc too, at the top)",
-    &[(C::Char('q'), Key::Quit)]
-);
+pub(crate) use quit_row;
 
 /// The run screen's keys: what the help shows and what each key does.
 pub const RUN_KEYS: &[Binding<Key>] = &[
@@ -266,26 +252,12 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
         help: "play / pause",
         keys: &[(C::Char(' '), Key::PlayPause)],
     },
-    Binding {
-        label: "→ l / ← h",
-        help: "one step forward / back (pauses)",
-        keys: &[
-            (C::Right, Key::Forward),
-            (C::Char('l'), Key::Forward),
-            (C::Left, Key::Back),
-            (C::Char('h'), Key::Back),
-        ],
-    },
-    Binding {
-        label: "Home g / End G",
-        help: "restart at step 0 / last step computed",
-        keys: &[
-            (C::Home, Key::First),
-            (C::Char('g'), Key::First),
-            (C::End, Key::Last),
-            (C::Char('G'), Key::Last),
-        ],
-    },
+    forward_back!("one step forward / back (pauses)", Key::Forward, Key::Back),
+    first_last!(
+        "restart at step 0 / last step computed",
+        Key::First,
+        Key::Last
+    ),
     Binding {
         label: "+ / -",
         help: "speed ¼× … 4×",
@@ -330,7 +302,7 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
             (C::Char('m'), Key::Toggle(Toggle::Bounds)),
         ],
     },
-    PLANE,
+    plane_row!(Key::Global),
     Binding {
         label: "PgUp / PgDn",
         help: "scroll the events list",
@@ -341,39 +313,35 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
         help: "the events the list shows, each in full (a list cuts them at its edge)",
         keys: &[(C::Char('i'), Key::Events)],
     },
-    RUN_TAIL[0],
-    RUN_TAIL[1],
-    RUN_TAIL[2],
-    RUN_TAIL[3],
+    down_up!(
+        "scroll the events list a line (the mouse wheel too)",
+        Key::LineDown,
+        Key::LineUp
+    ),
+    lessons_row!(Key::Global),
+    help_row!("this help", Key::Global),
+    quit_row!(
+        "quit",
+        &[
+            (C::Char('q'), Key::Global(Global::Quit)),
+            (C::Esc, Key::Global(Global::Quit)),
+        ]
+    ),
 ];
 
 /// The resolver screen's keys: what the help shows and what each key does.
 pub const RESOLVER_KEYS: &[Binding<Key>] = &[
-    Binding {
-        label: "→ l / ← h",
-        help: "next / previous iteration (position phase, then velocity)",
-        keys: &[
-            (C::Right, Key::Forward),
-            (C::Char('l'), Key::Forward),
-            (C::Left, Key::Back),
-            (C::Char('h'), Key::Back),
-        ],
-    },
-    Binding {
-        label: "Home g / End G",
-        help: "first stop / last stop",
-        keys: &[
-            (C::Home, Key::First),
-            (C::Char('g'), Key::First),
-            (C::End, Key::Last),
-            (C::Char('G'), Key::Last),
-        ],
-    },
-    Binding {
-        label: "Tab / Shift-Tab",
-        help: "select the next / previous contact",
-        keys: &[(C::Tab, Key::NextContact), (C::BackTab, Key::PrevContact)],
-    },
+    forward_back!(
+        "next / previous iteration (position phase, then velocity)",
+        Key::Forward,
+        Key::Back
+    ),
+    first_last!("first stop / last stop", Key::First, Key::Last),
+    tab_row!(
+        "select the next / previous contact",
+        Key::NextContact,
+        Key::PrevContact
+    ),
     Binding {
         label: "Enter",
         help: "this contact's stages, bodies as this iteration finds them",
@@ -384,11 +352,18 @@ pub const RESOLVER_KEYS: &[Binding<Key>] = &[
         help: "up to the run (a scene)",
         keys: &[(C::Esc, Key::Up), (C::Backspace, Key::Up)],
     },
-    PLANE,
-    RESOLVER_TAIL[0],
-    RESOLVER_TAIL[1],
-    RESOLVER_TAIL[2],
-    RESOLVER_TAIL[3],
+    plane_row!(Key::Global),
+    down_up!(
+        "scroll the contacts table (the mouse wheel too)",
+        Key::LineDown,
+        Key::LineUp
+    ),
+    lessons_row!(Key::Global),
+    help_row!("this help", Key::Global),
+    quit_row!(
+        "quit (Esc too, at the top)",
+        &[(C::Char('q'), Key::Global(Global::Quit))]
+    ),
 ];
 
 /// The contact screen's keys when a level lies above it.

@@ -1,17 +1,14 @@
-//! Keys, clicks and the wheel shared by the run and resolver screens: the
-//! lesson's top screen, the key table of the screen on show, picking in the
-//! picture. The run's own keys and playback are in [`super::run_nav`], the
-//! resolver's and the moves down to a contact in [`super::resolver_nav`].
+//! Clicks and the wheel on the run and resolver screens, and the lesson's
+//! top screen; picking in the picture. (Keys go through the router: the
+//! run's own are in [`super::run_nav`], the resolver's in
+//! [`super::resolver_nav`].)
 
-use ratatui::crossterm::event::{
-    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
-};
+use ratatui::crossterm::event::{MouseButton, MouseEvent, MouseEventKind};
 
-use super::{Key, Pick, RunView, Screen, Toggles, DETECT_KEYS, RESOLVER_KEYS, RUN_KEYS};
+use super::{Pick, RunView, Screen};
 use crate::session::Player;
 use crate::trace::step::StepTrace;
 use crate::tui::app::{App, Mode};
-use crate::tui::keys;
 
 impl App {
     /// Opens the lesson's top screen: a scene's run; the resolver for a
@@ -19,79 +16,11 @@ impl App {
     pub(crate) fn open_lesson_screen(&mut self, several: bool) {
         let lesson = &self.lessons[self.lesson].lesson;
         if let Some(player) = Player::new(lesson) {
-            self.run = Some(Box::new(RunView {
-                player,
-                frame: 0,
-                playing: false,
-                speed: 2,
-                owed: 0.0,
-                toggles: Toggles::default(),
-                event_kind: 0,
-                events_scroll: 0,
-                events_shown: std::cell::Cell::new((0, 0)),
-                events_max: std::cell::Cell::new(0),
-                recording: None,
-                detecting: None,
-            }));
+            self.run = Some(Box::new(RunView::new(player)));
             self.screen = Screen::Run;
         } else if several && lesson.contacts.len() > 1 {
             let trace = StepTrace::of_lesson(lesson);
             self.show_resolver(trace);
-        }
-    }
-
-    /// A key on the run or resolver screen, through the screen's key table.
-    pub(crate) fn screen_key(&mut self, key: KeyEvent) {
-        if key.modifiers.contains(KeyModifiers::CONTROL) {
-            if key.code == KeyCode::Char('c') {
-                self.quit = true;
-            }
-            return;
-        }
-        if self.screen == Screen::Run && key.code == KeyCode::Esc {
-            if let Some(step) = self.cancel_recording() {
-                return self.say(
-                    format!("cancelled: step {step}'s resolver iterations are not recorded"),
-                    false,
-                );
-            }
-            if let Some(step) = self.cancel_detecting() {
-                return self.say(format!("cancelled: step {step}'s detection"), false);
-            }
-        }
-        let table = match self.screen {
-            Screen::Run => RUN_KEYS,
-            Screen::Detect => DETECT_KEYS,
-            _ => RESOLVER_KEYS,
-        };
-        let Some(action) = keys::find(table, key.code) else {
-            return;
-        };
-        match action {
-            Key::Quit => self.request_quit(),
-            Key::Help => {
-                self.help_scroll = 0;
-                self.mode = Mode::Help;
-            }
-            Key::Plane => {
-                self.plane = self.plane.next();
-                if self.screen == Screen::Detect {
-                    self.redetect();
-                }
-            }
-            Key::NextLesson => self.goto_lesson((self.lesson + 1) % self.lessons.len()),
-            Key::PrevLesson => {
-                let n = self.lessons.len();
-                self.goto_lesson((self.lesson + n - 1) % n)
-            }
-            Key::PickLesson => self.open_picker(),
-            Key::NextGroup => self.jump_group(true),
-            Key::PrevGroup => self.jump_group(false),
-            Key::LineDown => self.wheel(false),
-            Key::LineUp => self.wheel(true),
-            _ if self.screen == Screen::Run => self.run_key(action),
-            _ if self.screen == Screen::Detect => self.detect_key(action),
-            _ => self.resolver_key(action),
         }
     }
 
@@ -147,7 +76,8 @@ impl App {
         }
     }
 
-    fn wheel(&mut self, up: bool) {
+    /// The mouse wheel, or `j` / `k`: scrolls the screen's list or panel.
+    pub(crate) fn wheel(&mut self, up: bool) {
         match self.screen {
             Screen::Run => {
                 if let Some(run) = self.run.as_deref_mut() {
@@ -164,7 +94,6 @@ impl App {
                     r.scroll.set(if up { s.saturating_sub(1) } else { s + 1 });
                 }
             }
-            Screen::Detect => {}
             Screen::Contact => {
                 self.scroll = if up {
                     self.scroll.saturating_sub(1)
@@ -172,6 +101,8 @@ impl App {
                     (self.scroll + 1).min(self.scroll_max.get())
                 }
             }
+            // The detection screen's lists follow the selection.
+            _ => {}
         }
     }
 
@@ -180,7 +111,7 @@ impl App {
     /// the next of them.
     fn pick(&self, col: u16, row: u16) -> Option<Pick> {
         let area = self.targets.picture.get();
-        if matches!(self.screen, Screen::Contact | Screen::Detect) || !contains(area, col, row) {
+        if !matches!(self.screen, Screen::Run | Screen::Resolver) || !contains(area, col, row) {
             return None;
         }
         let [x0, x1, y0, y1] = self.targets.bounds.get();

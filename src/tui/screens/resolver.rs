@@ -12,16 +12,44 @@ use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 use super::picture::{self, Scene};
 use super::run::chart;
-use super::{ResolverView, Toggles};
+use super::run::NOTES;
+use super::{Key, ResolverView, Toggles, View, RESOLVER_KEYS};
 use crate::format::Fmt;
 use crate::physics::resolver::Phase;
 use crate::tui::app::App;
+use crate::tui::keys::Binding;
 use crate::tui::wrap::truncate;
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
-    let Some(r) = app.resolver.as_deref() else {
-        return;
-    };
+impl View for ResolverView {
+    fn keys(&self) -> &'static [Binding<Key>] {
+        RESOLVER_KEYS
+    }
+
+    fn help(&self) -> (&'static str, &'static [&'static str]) {
+        (" Keys · resolver ", &NOTES)
+    }
+
+    fn bar(&self) -> &'static [(&'static str, &'static str)] {
+        &[
+            ("←→", "iteration"),
+            ("⇥", "contact"),
+            ("Enter", "stages"),
+            ("Esc", "up"),
+            ("?", "help"),
+            ("q", "quit"),
+        ]
+    }
+
+    fn render(&self, app: &App, area: Rect, buf: &mut Buffer) {
+        render(app, self, area, buf)
+    }
+
+    fn up_note(&self) -> &'static str {
+        "Esc or Backspace: up to the resolver iterations this contact came from."
+    }
+}
+
+fn render(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     let left_w = (area.width * 9 / 20).max(20);
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_w), Constraint::Fill(1)]).areas(area);

@@ -3,14 +3,13 @@
 
 use std::cell::Cell;
 
-use ratatui::crossterm::event::{KeyCode, KeyEvent};
-
-use super::{Key, ResolverView, Screen};
+use super::{Key, Outcome, ResolverView, Screen};
+use crate::physics::resolver::Phase;
 use crate::trace::step::StepTrace;
 use crate::tui::app::{App, Entry};
 
 impl App {
-    pub(super) fn show_resolver(&mut self, trace: StepTrace) {
+    pub(crate) fn show_resolver(&mut self, trace: StepTrace) {
         let selected = trace.tables.first().and_then(|t| t.next).unwrap_or(0);
         self.resolver = Some(Box::new(ResolverView {
             trace,
@@ -21,60 +20,8 @@ impl App {
         self.screen = Screen::Resolver;
     }
 
-    /// Esc or Backspace on the stepper: up a level when there is one (the
-    /// resolver, or the detection the contact was opened from).
-    pub(crate) fn up_key(&mut self, key: KeyEvent) -> bool {
-        if !matches!(key.code, KeyCode::Esc | KeyCode::Backspace) || self.resolver.is_none() {
-            return false;
-        }
-        self.opened = None;
-        self.baseline = None;
-        if self.detect.is_some() {
-            // Opened from the detection (Enter on a pair's contact): back there.
-            self.resolver = None;
-            self.screen = Screen::Detect;
-        } else {
-            self.screen = Screen::Resolver;
-        }
-        true
-    }
-
-    pub(super) fn resolver_key(&mut self, action: Key) {
-        let Some(r) = self.resolver.as_deref_mut() else {
-            return;
-        };
-        let last = r.trace.tables.len().saturating_sub(1);
-        let contacts = r.trace.world.contacts.len();
-        let stop = match action {
-            Key::Forward => Some((r.stop + 1).min(last)),
-            Key::Back => Some(r.stop.saturating_sub(1)),
-            Key::First => Some(0),
-            Key::Last => Some(last),
-            _ => None,
-        };
-        if let Some(s) = stop {
-            r.stop = s;
-            if let Some(k) = r.trace.tables[s].next {
-                r.selected = k;
-            }
-            return;
-        }
-        match action {
-            Key::NextContact if contacts > 0 => r.selected = (r.selected + 1) % contacts,
-            Key::PrevContact if contacts > 0 => r.selected = (r.selected + contacts - 1) % contacts,
-            Key::Open if contacts == 0 => self.say("this step has no contacts".into(), false),
-            Key::Open => self.open_contact(),
-            Key::Up if self.run.is_some() => {
-                self.resolver = None;
-                self.screen = Screen::Run;
-            }
-            Key::Up => self.request_quit(),
-            _ => {}
-        }
-    }
-
     /// The stepper on the selected contact, bodies as the stop finds them.
-    pub(super) fn open_contact(&mut self) {
+    pub(crate) fn open_contact(&mut self) {
         let Some(r) = self.resolver.as_deref() else {
             return;
         };
@@ -91,5 +38,55 @@ impl App {
         self.baseline = None;
         self.recompute();
         self.screen = Screen::Contact;
+    }
+}
+
+impl ResolverView {
+    /// A key of the resolver's table (the router has taken the shared ones).
+    pub(crate) fn key(&mut self, action: Key) -> Outcome {
+        let r = self;
+        let last = r.trace.tables.len().saturating_sub(1);
+        let contacts = r.trace.world.contacts.len();
+        let stop = match action {
+            Key::Forward => Some((r.stop + 1).min(last)),
+            Key::Back => Some(r.stop.saturating_sub(1)),
+            Key::First => Some(0),
+            Key::Last => Some(last),
+            _ => None,
+        };
+        if let Some(s) = stop {
+            r.stop = s;
+            if let Some(k) = r.trace.tables[s].next {
+                r.selected = k;
+            }
+            return Outcome::Done;
+        }
+        match action {
+            Key::NextContact if contacts > 0 => r.selected = (r.selected + 1) % contacts,
+            Key::PrevContact if contacts > 0 => r.selected = (r.selected + contacts - 1) % contacts,
+            Key::Open if contacts == 0 => return Outcome::Say("this step has no contacts".into()),
+            Key::Open => return Outcome::Open(Screen::Contact),
+            Key::Up => return Outcome::Up,
+            _ => {}
+        }
+        Outcome::Done
+    }
+
+    /// The resolver's level in the breadcrumb: the iteration on show, or,
+    /// under a contact opened from the detection, the step it resolves.
+    pub(crate) fn crumb(&self, from_detection: bool) -> String {
+        if from_detection {
+            return format!("step {}'s resolver", self.trace.step);
+        }
+        let table = &self.trace.tables[self.stop];
+        let (phase, used) = match table.stop.phase {
+            Phase::Position => ("position", self.trace.resolver.position.iterations_used),
+            Phase::Velocity => ("velocity", self.trace.resolver.velocity.iterations_used),
+        };
+        if table.stop.iteration < used {
+            format!("{phase} iteration {}", table.stop.iteration)
+        } else {
+            format!("{phase} phase done ({used} iterations)")
+        }
     }
 }

@@ -10,10 +10,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph, Widget};
 
 use super::picture::{self, Scene};
-use super::{RunView, EVENT_KINDS};
+use super::{Key, RunView, View, EVENT_KINDS, RUN_KEYS};
 use crate::trace::run::{Frame, RunTrace};
 use crate::trace::{BodyView, ContactView};
 use crate::tui::app::App;
+use crate::tui::keys::Binding;
 use crate::tui::wrap::truncate;
 
 /// Every body of `frame` as the picture draws it.
@@ -39,10 +40,45 @@ pub fn body_views(run: &RunTrace, frame: &Frame) -> Vec<BodyView> {
         .collect()
 }
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
-    let Some(run) = app.run.as_deref() else {
-        return;
-    };
+impl View for RunView {
+    fn keys(&self) -> &'static [Binding<Key>] {
+        RUN_KEYS
+    }
+
+    fn help(&self) -> (&'static str, &'static [&'static str]) {
+        (" Keys · run ", &NOTES)
+    }
+
+    fn bar(&self) -> &'static [(&'static str, &'static str)] {
+        &[
+            ("Space", "play"),
+            ("←→", "step"),
+            ("Enter", "resolver"),
+            ("d", "detection"),
+            ("n", "next event"),
+            ("+-", "speed"),
+            ("g", "restart"),
+            ("cosbm", "show"),
+            ("/", "find"),
+            ("?", "help"),
+            ("q", "quit"),
+        ]
+    }
+
+    fn render(&self, app: &App, area: Rect, buf: &mut Buffer) {
+        render(app, self, area, buf)
+    }
+}
+
+/// The help's notes on the run and the resolver.
+pub(super) const NOTES: [&str; 4] = [
+    "? again (or PgDn): page 2, the glossary of every symbol.",
+    "Enter goes down a level: a step → its resolver iterations → an iteration's contact and its stages. Esc or Backspace goes back up.",
+    "Mouse: click a contact or a body in the picture, or a table row, to select it; the wheel scrolls.",
+    "The contact screen has its own keys (? there).",
+];
+
+fn render(app: &App, run: &RunView, area: Rect, buf: &mut Buffer) {
     let trace = &run.player.run;
     let frame = &trace.frames[run.frame];
     let events_h = (area.height / 5).clamp(3, 7);

@@ -2,7 +2,7 @@
 //! large scene's step computed (or its resolution recorded) on another
 //! thread.
 
-use super::{Key, RunView, Screen, Toggle, EVENT_KINDS, SPEEDS};
+use super::{Key, Outcome, RunView, Screen, Toggle, Toggles, EVENT_KINDS, SPEEDS};
 use crate::session::Poll;
 use crate::tui::app::{App, Mode, Status};
 
@@ -106,80 +106,138 @@ impl App {
         r.cancel();
         Some(r.step)
     }
+}
 
-    pub(super) fn run_key(&mut self, action: Key) {
-        let Some(run) = self.run.as_deref_mut() else {
-            return;
-        };
-        let mut said = None;
-        match action {
+impl RunView {
+    /// The run at step 0, paused, at 1× speed.
+    pub(crate) fn new(player: crate::session::Player) -> Self {
+        RunView {
+            player,
+            frame: 0,
+            playing: false,
+            speed: 2,
+            owed: 0.0,
+            toggles: Toggles::default(),
+            event_kind: 0,
+            events_scroll: 0,
+            events_shown: std::cell::Cell::new((0, 0)),
+            events_max: std::cell::Cell::new(0),
+            recording: None,
+            detecting: None,
+        }
+    }
+
+    /// A key of the run's table (the router has taken the shared ones).
+    pub(crate) fn key(&mut self, action: Key) -> Outcome {
+        let run = self;
+        let said = match action {
             Key::PlayPause => {
                 if !run.playing && run.frame as u64 >= run.player.steps {
                     run.frame = 0;
                 }
                 run.playing = !run.playing;
                 run.owed = 0.0;
+                None
             }
             Key::Forward => {
                 run.playing = false;
                 match forward(run) {
-                    Forward::Moved => {}
-                    Forward::End => said = Some(end_of_run(run)),
-                    Forward::Busy => said = Some(computing(run)),
+                    Forward::Moved => None,
+                    Forward::End => Some(end_of_run(run)),
+                    Forward::Busy => Some(computing(run)),
                 }
             }
             Key::Back => {
                 run.playing = false;
                 run.frame = run.frame.saturating_sub(1);
+                None
             }
             Key::First => {
                 run.playing = false;
                 run.frame = 0;
+                None
             }
             Key::Last => {
                 run.playing = false;
                 run.frame = run.player.computed() as usize;
+                None
             }
-            Key::Faster => run.speed = (run.speed + 1).min(SPEEDS.len() - 1),
-            Key::Slower => run.speed = run.speed.saturating_sub(1),
-            Key::EventKind => run.event_kind = (run.event_kind + 1) % EVENT_KINDS.len(),
-            Key::NextEvent => said = jump_event(run, true),
-            Key::PrevEvent => said = jump_event(run, false),
-            Key::Toggle(Toggle::Contacts) => run.toggles.contacts = !run.toggles.contacts,
-            Key::Toggle(Toggle::Normals) => run.toggles.normals = !run.toggles.normals,
-            Key::Toggle(Toggle::Sleep) => run.toggles.sleep = !run.toggles.sleep,
-            Key::Toggle(Toggle::Names) => run.toggles.names = !run.toggles.names,
-            Key::Toggle(Toggle::Bounds) => run.toggles.bounds = !run.toggles.bounds,
-            Key::Events => return self.show_events(),
-            Key::PageUp => run.events_scroll += 5,
-            Key::PageDown => run.events_scroll = run.events_scroll.saturating_sub(5),
-            Key::Open if run.recording.is_some() => {
-                said = Some(recording(run));
+            Key::Faster => {
+                run.speed = (run.speed + 1).min(SPEEDS.len() - 1);
+                None
             }
+            Key::Slower => {
+                run.speed = run.speed.saturating_sub(1);
+                None
+            }
+            Key::EventKind => {
+                run.event_kind = (run.event_kind + 1) % EVENT_KINDS.len();
+                None
+            }
+            Key::NextEvent => jump_event(run, true),
+            Key::PrevEvent => jump_event(run, false),
+            Key::Toggle(t) => {
+                let on = match t {
+                    Toggle::Contacts => &mut run.toggles.contacts,
+                    Toggle::Normals => &mut run.toggles.normals,
+                    Toggle::Sleep => &mut run.toggles.sleep,
+                    Toggle::Names => &mut run.toggles.names,
+                    Toggle::Bounds => &mut run.toggles.bounds,
+                };
+                *on = !*on;
+                None
+            }
+            Key::Events => return Outcome::Events,
+            Key::PageUp => {
+                run.events_scroll += 5;
+                None
+            }
+            Key::PageDown => {
+                run.events_scroll = run.events_scroll.saturating_sub(5);
+                None
+            }
+            Key::Open if run.recording.is_some() => Some(recording(run)),
             Key::Open if run.player.records_later() && run.frame > 0 => {
                 // A large scene: recorded on another thread (the key bar says
                 // so; Esc cancels), shown by `tick` when done.
                 run.playing = false;
                 let at = std::time::Instant::now();
                 run.recording = run.player.record_later(run.frame as u64).map(|r| (r, at));
+                None
             }
             Key::Open => {
                 run.playing = false;
                 let frame = run.frame as u64;
                 match run.player.record(frame) {
-                    Some(trace) => self.show_resolver(trace),
-                    None => said = Some("step 0 is the state before the first step: nothing is resolved yet (→ takes a step)".into()),
+                    Some(trace) => return Outcome::Resolver(Box::new(trace)),
+                    None => Some("step 0 is the state before the first step: nothing is resolved yet (→ takes a step)".into()),
                 }
             }
             Key::Detect => {
                 run.playing = false;
-                return self.open_detect();
+                return Outcome::Open(Screen::Detect);
             }
-            Key::Up => return self.request_quit(),
-            _ => {}
-        }
-        if let Some(text) = said {
-            self.say(text, false);
+            Key::Up => return Outcome::Up,
+            _ => None,
+        };
+        said.map_or(Outcome::Done, Outcome::Say)
+    }
+
+    /// The run's level in the breadcrumb: the frame on show.
+    pub(crate) fn crumb(&self) -> String {
+        let frame = &self.player.run.frames[self.frame];
+        format!("t = {:.3} s, step {}", frame.time, frame.step)
+    }
+
+    /// What the key bar says while work runs on another thread (a step's
+    /// resolution recorded, its detection computed).
+    pub(crate) fn busy(&self) -> Option<String> {
+        if self.recording.is_some() {
+            Some(recording(self))
+        } else if self.detecting.is_some() {
+            Some(super::detect_nav::detecting(self))
+        } else {
+            None
         }
     }
 }
