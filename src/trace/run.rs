@@ -274,6 +274,18 @@ impl RunTrace {
                     f.num(width)
                 ),
             ),
+            Event::WhollyInsideEnded {
+                body1,
+                body2,
+                steps,
+            } => (
+                "overlap",
+                format!(
+                    "no longer wholly inside: {}, after {steps} steps ({} s) inside one another",
+                    self.pair(body1, body2),
+                    f.num(steps as f64 * self.dt)
+                ),
+            ),
             Event::PushedThrough { body, through } => (
                 "overlap",
                 format!(

@@ -315,3 +315,36 @@ fn a_hull_face_on_a_box_keeps_its_corners_when_it_tilts_by_a_rounding_error() {
     let steep = tetra_on_box(1e-3, 1e-6);
     assert!(steep.len() < 3, "{steep:?}");
 }
+
+#[test]
+fn two_parallel_capsules_touch_at_their_overlaps_two_ends() {
+    // Two capsules lying along x (radius 0.25, core 1 m), the upper one
+    // shifted 0.4 m along x and 1 cm into the lower: the overlap of their
+    // sides runs x ∈ [−0.1, 0.5], each end 1 cm deep, normal +y (lower →
+    // upper). One point (the penetration's) let the upper one roll.
+    let lying = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
+    let capsule = Shape::Capsule {
+        radius: 0.25,
+        height: 1.0,
+    };
+    let upper = Pose::from_unit(Vector3::new(0.4, 0.49, 0.0), &lying);
+    let lower = Pose::from_unit(Vector3::zeros(), &lying);
+    let mut out = Vec::new();
+    collide_with(
+        (&capsule, &upper),
+        (&capsule, &lower),
+        &Options::<f64>::default(),
+        &mut out,
+    );
+    assert_eq!(out.len(), 2, "{out:?}");
+    let mut xs: Vec<f64> = out.iter().map(|c| c.point.x).collect();
+    xs.sort_by(f64::total_cmp);
+    assert!(
+        (xs[0] + 0.1).abs() < 1e-9 && (xs[1] - 0.5).abs() < 1e-9,
+        "{xs:?}"
+    );
+    for c in &out {
+        assert!((c.normal - Vector3::y()).norm() < 1e-9, "{c:?}");
+        assert!((c.penetration - 0.01).abs() < 1e-9, "{c:?}");
+    }
+}

@@ -260,41 +260,34 @@ fn run(mut sim: Simulation<f64>, steps: usize) -> Run {
 /// Runs that do not keep the promises today, each with the figure measured
 /// (the body's largest movement at rest, m) held as a bound: a change that
 /// makes one worse fails, one that mends it fails too (take it off the list).
-/// - a lying capsule on a lying capsule: one contact point for two parallel
-///   sides (the manifold has no segment–segment clipping); it rolls;
-/// - a tetrahedron on a lying capsule's side: the face touches a line and
-///   the tetrahedron rolls over it;
 /// - 1 mm bodies: gravity moves a body 2.7 mm in a step (dt = 1/60 s), more
-///   than its size: the lecture's order rocks a 1 mm box or can on a
-///   half-space (energy events say so), and on a box 1 mm thick every shape
-///   but the sphere ends up through it (a pushed-through or tunnelled event
-///   says so).
-const KNOWN: [(&str, f64); 16] = [
-    ("capsule on capsule, DeepestFirst, resting", 6.647e-3),
-    ("capsule on capsule, SequentialImpulse, resting", 6.423e-3),
-    ("hull on capsule, DeepestFirst, resting", 7.023e-2),
-    ("hull on capsule, SequentialImpulse, resting", 2.162e-1),
+///   than its size, and each step leaves a closing velocity g Δt of 300
+///   half-widths a second to remove: what the velocity phase leaves within
+///   its epsilon turns the body by radians a second. Sequential impulses
+///   get a velocity epsilon of a thousandth of the size a step there (and
+///   rest, but for a can on a 1 mm box: 1.5 mm); the lecture's order, one
+///   contact at a time, does not converge that far and rocks a 1 mm box or
+///   can on a half-space (energy events say so), and a box or a tetrahedron
+///   ends up through a box 1 mm thick (a pushed-through or tunnelled event
+///   says so), as does a tetrahedron under sequential impulses; a capsule
+///   lying on a 1 mm box creeps 6 µm under the lecture's order.
+const KNOWN: [(&str, f64); 10] = [
     ("0.001 m box on half_space, DeepestFirst, resting", 1.461e-2),
     ("0.001 m box on box, DeepestFirst, resting", 1.456e2),
-    ("0.001 m box on box, SequentialImpulse, resting", 1.289e2),
     (
         "0.001 m cylinder on half_space, DeepestFirst, resting",
         1.466e-2,
     ),
-    (
-        "0.001 m cylinder on half_space, SequentialImpulse, resting",
-        3.279e-4,
-    ),
     ("0.001 m cylinder on box, DeepestFirst, resting", 1.626e2),
     (
         "0.001 m cylinder on box, SequentialImpulse, resting",
-        1.673e2,
+        1.462e-3,
     ),
     (
         "0.001 m capsule on half_space, DeepestFirst, resting",
         1.588e-5,
     ),
-    ("0.001 m capsule on box, DeepestFirst, resting", 1.611e2),
+    ("0.001 m capsule on box, DeepestFirst, resting", 6.211e-6),
     (
         "0.001 m hull on half_space, DeepestFirst, resting",
         4.054e-5,
@@ -472,4 +465,66 @@ position = [0, 0, 0]
         lesson.simulation.unwrap().materials,
     );
     assert!(sim.below_rounding().is_empty());
+}
+
+#[test]
+fn a_nanometre_tetrahedron_dropped_a_metre_says_how_long_each_burial_lasts() {
+    // Gravity moves it 2.7 mm a step, 3 million of its sizes: it lands
+    // buried and stays under the floor (with the matrix's restitution and
+    // friction, in one burial to the end). Each burial (the pair wholly inside
+    // at a step's contacts) is said when it starts and, when it lasted
+    // over a step, when it ends with its length (it was said only at the
+    // start: 162 of 200 steps under the floor and 13 events).
+    let text = r#"id = "nm-tetrahedron"
+title = "A 1 nm tetrahedron dropped 1 m"
+source = "issue 39"
+summary = "A hull a billionth of a metre across."
+
+[step]
+dt = 0.016666666666666666
+steps = 200
+
+[[body]]
+name = "tetrahedron"
+mass = 1.0
+shape = { convex = [[0.5e-9, 0, 0], [-0.25e-9, 0, 0.4330127018922193e-9], [-0.25e-9, 0, -0.4330127018922193e-9], [0, 0.8e-9, 0]] }
+position = [0, 1, 0]
+
+[[body]]
+name = "floor"
+mass = inf
+shape = "half_space"
+position = [0, 0, 0]
+"#;
+    let lesson = parse("shape_matrix.rs", text).expect("a valid scene");
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = Simulation::new(world, params, lesson.simulation.unwrap().materials);
+    let (mut run, mut said) = (0u64, 0usize);
+    for _ in 0..200 {
+        // Wholly inside the floor at the poses this step's contacts are
+        // found at: every corner at or below y = 0.
+        let body = &sim.world.bodies[0];
+        let Some(contact_lab::physics::Shape::Hull(hull)) = body.shape.as_ref() else {
+            unreachable!("a hull")
+        };
+        let turn = body.state.rotation();
+        let inside = (hull.vertices().iter()).all(|v| (body.state.position + turn * v).y <= 0.0);
+        let r = sim.advance().expect("no blow-up");
+        let started = (r.events.iter()).any(|e| matches!(e, Event::WhollyInside { .. }));
+        let ended = r.events.iter().find_map(|e| match e {
+            Event::WhollyInsideEnded { steps, .. } => Some(*steps),
+            _ => None,
+        });
+        if inside {
+            assert_eq!(started, run == 0, "step {}: {:?}", r.step, r.events);
+            run += 1;
+        } else {
+            assert_eq!(ended, (run > 1).then_some(run), "step {}", r.step);
+            said += usize::from(run > 1);
+            run = 0;
+        }
+    }
+    assert!(said >= 5, "{said} burials said with their length");
 }

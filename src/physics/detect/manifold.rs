@@ -50,7 +50,10 @@ pub fn manifold<T: Real>(
 /// by a rounding error (a tetrahedron on a box: its third corner 7e-13 m
 /// up after one step) and the body tips about the corners left. Points
 /// farther up, in the contact margin's gap, are still dropped: resolved as
-/// touching they would let a kicked body climb into the margin.
+/// touching they would let a kicked body climb into the margin; but the
+/// ends of an incident segment (a side lying on a face) are kept up to the
+/// margin, and two parallel sides get their overlap's two ends
+/// (`segments.rs`).
 pub fn manifold_within<T: Real>(
     a: &Convex,
     pose_a: &Pose<T>,
@@ -75,6 +78,14 @@ pub fn manifold_within<T: Real>(
     // face must be within 1° of the normal (cos 1° = 0.99985).
     let polygon = |f: &SupportFace<T>, align: T| f.points.len() >= 3 && align >= c(0.99985);
     if !polygon(&fa, align_a) && !polygon(&fb, align_b) {
+        // Two sides (capsule or cylinder) lying parallel: their overlap's
+        // two ends, so that the pair does not rest on one point and roll.
+        if fa.points.len() == 2 && fb.points.len() == 2 {
+            if let Some(two) = super::segments::parallel_sides(&fa.points, &fb.points, pen, margin)
+            {
+                return two;
+            }
+        }
         return single;
     }
     let (reference, incident, side) = match (fa.points.len() >= 3, fb.points.len() >= 3) {
@@ -101,7 +112,17 @@ pub fn manifold_within<T: Real>(
         .iter()
         .map(|p| (p - reference.points[0]).norm())
         .fold(pen.depth, T::max);
-    let tol = c::<T>(1e-9) * size + margin.max(T::zero()).min(c::<T>(1e-6) * size);
+    // An incident segment (a capsule's or cylinder's side on a face) keeps
+    // both ends up to the margin: a line contact has no third point to
+    // lean on, and with one end dropped at a tilt of a few µrad the body
+    // tips over the other (a tetrahedron on a lying capsule rolled off).
+    let keep = margin.max(T::zero());
+    let keep = if incident.points.len() == 2 {
+        keep
+    } else {
+        keep.min(c::<T>(1e-6) * size)
+    };
+    let tol = c::<T>(1e-9) * size + keep;
     let r0 = reference.points[0];
     let mut points: Vec<ManifoldPoint<T>> = clipped
         .into_iter()

@@ -33,6 +33,7 @@ pub mod manifold;
 mod names;
 pub mod query;
 pub mod sat;
+mod segments;
 pub mod simplex;
 pub mod support;
 mod support_face;

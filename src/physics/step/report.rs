@@ -73,6 +73,14 @@ pub enum Event {
         penetration: f64,
         width: f64,
     },
+    /// A pair wholly inside one another for more than one step is no longer
+    /// (reported when it ends, with how long it lasted: the start was a
+    /// [`Event::WhollyInside`]; a one-step burial has that event alone).
+    WhollyInsideEnded {
+        body1: BodyId,
+        body2: Option<BodyId>,
+        steps: u64,
+    },
     /// The position phase is about to push `body` out through the far side
     /// of `through` (the thinner of the two): last step `body` was on the
     /// other side of `through`'s centre.

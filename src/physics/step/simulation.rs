@@ -79,6 +79,8 @@ pub struct Simulation<T: Real> {
     /// Pairs wholly inside one another this step and the last.
     inside: PairSet,
     inside_before: PairSet,
+    /// Steps each pair now wholly inside has been so (its burial's length).
+    inside_steps: super::contact_events::PairMap<u64>,
     /// Continuous detection's scratch.
     substeps: Substeps<T>,
     /// Each body's pose at the start of this step, and at the start of the
@@ -120,6 +122,7 @@ impl<T: Real> Simulation<T> {
             scaled: SimParams::default(),
             inside: PairSet::default(),
             inside_before: PairSet::default(),
+            inside_steps: Default::default(),
             substeps: Substeps::default(),
             frame_start: Vec::new(),
             previous: Vec::new(),

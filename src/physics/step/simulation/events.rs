@@ -74,6 +74,33 @@ impl<T: Real> Simulation<T> {
                 }
             }
         }
+        self.burials_ended(events);
+    }
+
+    /// Each burial's length: a pair wholly inside last step and not now
+    /// ended a burial, said with its length when it lasted over a step.
+    fn burials_ended(&mut self, events: &mut Vec<Event>) {
+        for pair in &self.inside {
+            *self.inside_steps.entry(*pair).or_insert(0) += 1;
+        }
+        if self.inside_before.is_empty() {
+            return;
+        }
+        let mut ended: Vec<_> = (self.inside_before.iter())
+            .filter(|pair| !self.inside.contains(pair))
+            .copied()
+            .collect();
+        ended.sort_unstable();
+        for (body1, body2) in ended {
+            let steps = self.inside_steps.remove(&(body1, body2)).unwrap_or(0);
+            if steps > 1 {
+                events.push(Event::WhollyInsideEnded {
+                    body1,
+                    body2,
+                    steps,
+                });
+            }
+        }
     }
 
     /// The events of the step's end, in their order (module docs); the
