@@ -343,6 +343,50 @@ mod tests {
     }
 
     #[test]
+    fn predict_mode_draws_the_set_up_at_a_scale_the_answers_do_not_set() {
+        // Every embedded lesson's first contact at restitution 0 and 1 (only
+        // the answers differ): with the results hidden, the same marks.
+        use super::picture::{picture, Show};
+        use crate::render::figure::Figure;
+        use crate::trace::Plane;
+        let hidden = Show {
+            before_velocity: true,
+            impulse: false,
+            after_velocity: false,
+            after_pose: false,
+        };
+        let marks = |text: &str| {
+            let lesson = crate::lesson::validate::parse("test.toml", text).unwrap();
+            let trace = crate::worked_solution(&lesson, 0);
+            let fig = Figure::of_contact(&trace.scene, Plane::Xy);
+            format!("{:?}", picture(&fig, &hidden).0.marks)
+        };
+        let with_e = |text: &str, e: &str| {
+            text.lines()
+                .map(|l| {
+                    if l.trim_start().starts_with("restitution =") {
+                        format!("restitution = {e}")
+                    } else {
+                        l.to_string()
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        let mut compared = 0;
+        for id in crate::lesson::embedded::ids() {
+            let text = crate::lesson::embedded::find(id).unwrap();
+            if !text.contains("restitution =") || !text.contains("[[contact") {
+                continue;
+            }
+            let (a, b) = (marks(&with_e(text, "0")), marks(&with_e(text, "1")));
+            assert_eq!(a, b, "{id}: the hidden answers set the picture's scale");
+            compared += 1;
+        }
+        assert!(compared >= 5, "{compared} lessons compared");
+    }
+
+    #[test]
     fn a_spin_arc_grows_with_the_rate() {
         use super::picture::spin_size;
         // ω₁ = 0.0136 against ω₁′ = 0.17 rad/s: visibly different arcs.

@@ -6,6 +6,7 @@ use crate::render::figure::{self, flat, ArrowKind, Bounds, Figure, PointKind, P}
 use crate::tui::theme::Ink;
 
 /// One thing to draw, in plane coordinates.
+#[derive(Debug)]
 pub(super) enum Mark {
     Seg(P, P, Ink),
     /// Text at a point; lower `rank` is placed first when labels compete for
@@ -208,12 +209,14 @@ pub(super) fn picture(fig: &Figure, show: &Show) -> (Picture, [f64; 4]) {
             }
         }
     }
-    // Velocities, one scale for all of them.
+    // Velocities, one scale for all of them: the speeds after only once they
+    // are shown (a scale set by a hidden answer would tell it in predict mode).
+    let after = |x: f64| if show.after_velocity { x } else { 0.0 };
     let vmax = fig
         .bodies
         .iter()
         .filter(|b| b.movable)
-        .flat_map(|b| [b.speed, b.speed_after])
+        .flat_map(|b| [b.speed, after(b.speed_after)])
         .filter(|x| x.is_finite())
         .fold(0.0, f64::max);
     if vmax > 0.0 {
@@ -231,11 +234,11 @@ pub(super) fn picture(fig: &Figure, show: &Show) -> (Picture, [f64; 4]) {
     }
     // Spin about the axis out of the picture: an arc, counter-clockwise
     // for a positive rate, its size growing with |ω| against the fastest
-    // spin of the figure (before and after alike, so revealing one does not
-    // resize the other).
+    // spin shown (the spins after count once they are revealed, as above).
     let wmax = fig
         .spins
         .iter()
+        .filter(|s| show.after_velocity || !s.after)
         .map(|s| s.rate.abs())
         .filter(|w| w.is_finite())
         .fold(0.0, f64::max);
