@@ -7,30 +7,21 @@
 //! farthest from it, the one making the largest triangle with them, and the
 //! one adding the most area beyond that triangle. Boxes, hulls and cylinder
 //! caps (see [`CAP_SIDES`]) are polygons; a cylinder's or capsule's side is
-//! a segment, clipped the same way. Where
-//! neither face is a polygon (spheres, capsule ends, two sides), the single
-//! point of the penetration is the manifold; so it is where no polygon face
+//! a segment, clipped the same way; two parallel sides get their overlap's
+//! two ends (`segments.rs`). Where neither face is a polygon (spheres,
+//! capsule ends, two sides not parallel), the single point of the
+//! penetration is the manifold; so it is where no polygon face
 //! lies within 1° of the normal (two edges crossing).
 
 use nalgebra::Vector3;
 
+pub use super::manifold_point::ManifoldPoint;
 use super::query::Penetration;
 use super::support::Convex;
 pub use super::support_face::CAP_SIDES;
 use super::support_face::{outside_by, support_face, SupportFace};
 use crate::physics::pose::{Pose, Side};
 use crate::physics::{c, Real};
-
-/// One manifold contact: the point on the incident body (`penetration` deep
-/// in the reference body), the normal from B toward A, and which body held
-/// the reference face (`None` for the penetration's single point, midway).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ManifoldPoint<T: Real> {
-    pub point: Vector3<T>,
-    pub normal: Vector3<T>,
-    pub penetration: T,
-    pub reference: Option<Side>,
-}
 
 /// The manifold of `a` at `pose_a` and `b` at `pose_b` overlapping as `pen` says.
 pub fn manifold<T: Real>(

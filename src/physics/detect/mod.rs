@@ -30,6 +30,7 @@ pub mod gjk;
 /// The hull lives in `physics` (a body's shape holds one); re-exported here.
 pub use crate::physics::hull;
 pub mod manifold;
+mod manifold_point;
 mod names;
 pub mod query;
 pub mod sat;

@@ -10,7 +10,7 @@
 
 use nalgebra::Vector3;
 
-use super::manifold::ManifoldPoint;
+use super::manifold_point::ManifoldPoint;
 use super::query::Penetration;
 use crate::physics::pose::Side;
 use crate::physics::{c, Real};
