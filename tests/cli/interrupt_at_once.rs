@@ -62,7 +62,7 @@ fn many_contacts(n: usize) -> std::path::PathBuf {
             (k / 100) as f64 / 100.0 - 1.0,
         );
         s.push_str(&format!(
-            "\n[[contact]]\nbodies = [\"b\", \"floor\"]\npoint = [{x}, -0.05, {z}]\nnormal = [0.0, 1.0, 0.0]\npenetration = 0.05\n"
+            "\n[[contact]]\nbodies = [\"b\", \"floor\"]\npoint = [{x}, -0.05, {z}]\nnormal = [0.0, 1.0, 0.0]\npenetration = 0.05\nrestitution = 0.5\nfriction = 0.5\n"
         ));
     }
     std::fs::write(&path, s).unwrap();
