@@ -8,8 +8,7 @@
 #[cfg(unix)]
 fn interrupted(args: &[&std::ffi::OsStr]) -> (Option<i32>, String) {
     use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
-    let mut child = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+    let child = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .args(args)
         .stdout(Stdio::null())
@@ -17,26 +16,8 @@ fn interrupted(args: &[&std::ffi::OsStr]) -> (Option<i32>, String) {
         .spawn()
         .expect("contact-lab runs");
     // Each run takes far longer (minutes in a debug build): it is well
-    // inside its work by now.
-    std::thread::sleep(Duration::from_millis(1500));
-    assert!(child.try_wait().unwrap().is_none(), "still running");
-    // SAFETY: sending a signal to a child process this test started.
-    let sent = unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
-    assert_eq!(sent, 0);
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            start.elapsed() < Duration::from_secs(10),
-            "still running 10 s after Ctrl-C"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
-    (status.code(), stderr)
+    // inside its work by then.
+    crate::common::cli::interrupt(child, std::time::Duration::from_millis(1500))
 }
 
 #[cfg(unix)]

@@ -7,11 +7,11 @@
 #[test]
 fn ctrl_c_ends_a_long_run_cleanly() {
     use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
+    use std::time::Duration;
     let dir = crate::common::scratch("simulate-interrupt");
     let out_path = dir.join("run.json");
     let out = std::fs::File::create(&out_path).unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
+    let child = Command::new(env!("CARGO_BIN_EXE_contact-lab"))
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .args(["simulate", "ball-drop", "--steps", "10000000"])
         .args(["--format", "json", "--every", "100000"])
@@ -19,25 +19,9 @@ fn ctrl_c_ends_a_long_run_cleanly() {
         .stderr(Stdio::piped())
         .spawn()
         .expect("contact-lab runs");
-    // Ten million steps take minutes: it is well inside the run by now.
-    std::thread::sleep(Duration::from_millis(1500));
-    // SAFETY: sending a signal to a child process this test started.
-    let sent = unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
-    assert_eq!(sent, 0);
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            start.elapsed() < Duration::from_secs(10),
-            "still running 10 s after Ctrl-C"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
-    assert_eq!(status.code(), Some(1), "{stderr}");
+    // Ten million steps take minutes: it is well inside the run by then.
+    let (code, stderr) = crate::common::cli::interrupt(child, Duration::from_millis(1500));
+    assert_eq!(code, Some(1), "{stderr}");
     assert!(
         stderr.starts_with("error: ball-drop: interrupted (Ctrl-C) after step "),
         "{stderr}"

@@ -8,6 +8,7 @@ pub mod json;
 pub mod pile;
 pub mod random;
 pub mod resolver_worlds;
+pub mod src_files;
 pub mod svg;
 pub mod tui;
 

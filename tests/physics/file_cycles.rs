@@ -7,24 +7,13 @@
 //! files, not a loop. (Unit tests, after `#[cfg(test)]`, are not counted.)
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-const SRC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src");
+use crate::common::src_files::{files, SRC};
 
 /// The TUI, whose screens another change restructures (four pairs today,
 /// around `tui/app.rs`): its loops are left to it; drop this after.
 const LOOPS_EXEMPT: &str = "tui/";
-
-fn files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            files(&p, out);
-        } else if p.extension().is_some_and(|x| x == "rs") {
-            out.push(p);
-        }
-    }
-}
 
 /// `physics/contact/stages/impulse/mod.rs` → `physics/contact/stages/impulse`;
 /// `lib.rs` → `` (the crate root).

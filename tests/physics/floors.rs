@@ -4,20 +4,9 @@
 //! below commands/. (Unit tests, after `#[cfg(test)]`, are not counted.)
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-const SRC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src");
-
-fn files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            files(&p, out);
-        } else if p.extension().is_some_and(|x| x == "rs") {
-            out.push(p);
-        }
-    }
-}
+use crate::common::src_files::{files, SRC};
 
 /// `physics/contact/stages/impulse.rs` → module `physics/contact/stages/impulse`.
 fn module_of(rel: &str) -> String {
