@@ -78,4 +78,5 @@ pub static KNOBS: &[Knob] = &[
     SLEEP_EPSILON,
     SLEEP_MODE,
     ISLAND_TIME,
+    BROAD_PHASE,
 ];

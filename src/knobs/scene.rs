@@ -5,7 +5,9 @@ use super::choice::{choices, Choice};
 use super::knob::{choice, count, flag, number, vector};
 use super::knob::{Cli, Kind, Knob, Level, Needs, Offered, Range, Table, Value, MAX_STEPS};
 use crate::physics::detect::ToiMethod;
-use crate::physics::params::{BoxBoxMode, Ccd, NarrowPhase, NormalFrom, Rollback, SleepMode};
+use crate::physics::params::{
+    BoxBoxMode, BroadPhaseMethod, Ccd, NarrowPhase, NormalFrom, Rollback, SleepMode,
+};
 
 const RUN_ONLY: &str = "a run's setting: change it on the run (simulate), not on one contact";
 
@@ -51,6 +53,15 @@ choices!(NarrowPhase {
         "the analytic routine where one exists, GJK/EPA for every other convex pair";
     NarrowPhase::Gjk => "gjk":
         "GJK/EPA and the clipped manifold for every pair but a half-space's";
+});
+
+choices!(BroadPhaseMethod {
+    BroadPhaseMethod::Sweep => "sweep":
+        "sort and sweep: boxes sorted along the axis of largest spread, each met by the later ones that start before it ends";
+    BroadPhaseMethod::Grid => "grid":
+        "a uniform grid (cell: the median box's largest side): each box hashed into the cells it overlaps, each pair tested once in the first cell both share";
+    BroadPhaseMethod::Bvh => "bvh":
+        "a dynamic bounding-volume tree of fat boxes (refitted as bodies move), each body's box queried down it";
 });
 
 choices!(SleepMode {
@@ -406,4 +417,26 @@ pub const ISLAND_TIME: Knob = Knob {
     needs: Needs::Always,
     get: |s| Value::Number(s.scene.sleep.island_time),
     set: |s, v| s.scene.sleep.island_time = number(v),
+};
+
+/// `broad_phase`.
+pub const BROAD_PHASE: Knob = Knob {
+    name: "broad_phase",
+    old_names: &[],
+    level: Level::World,
+    tables: &[Table::World],
+    doc: "How the broad phase finds the pairs whose boxes overlap: trades sort and sweep (cheap when bodies spread along one axis) for a uniform grid (cheap at an even density, poor when bodies cluster or differ much in size) or a dynamic tree (robust to clusters and sizes); every method finds the same pairs in the same order, so a run is the same state for state, only its cost differs (study --broad-phase).",
+    default: "sweep",
+    kind: Kind::Choice { choices: BroadPhaseMethod::SPELLINGS },
+    cli: Cli::Option,
+    edit: Offered::Yes,
+    study: Offered::Yes,
+    grid: &[],
+    needs: Needs::Always,
+    get: |s| Value::Choice(s.scene.broad_phase.name()),
+    set: |s, v| {
+        if let Some(m) = BroadPhaseMethod::from_name(choice(v)) {
+            s.scene.broad_phase = m;
+        }
+    },
 };

@@ -41,6 +41,7 @@ fn options_of(sim: &Simulation<f64>) -> Options<f64> {
         box_box: p.box_box,
         tolerance: p.contact_margin,
         narrow_phase: p.narrow_phase,
+        broad_phase: p.broad_phase,
     }
 }
 

@@ -236,6 +236,7 @@ fn measure_in<T: Real>(
         box_box: sim.params.box_box,
         tolerance: T::zero(),
         narrow_phase: sim.params.narrow_phase,
+        broad_phase: sim.params.broad_phase,
     };
     let mut m = Measured {
         steps: n,

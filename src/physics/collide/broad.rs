@@ -80,6 +80,11 @@ pub struct BroadPhase {
     exact: Vec<Option<Bounds>>,
     /// The grown boxes and their pairs (`valid` false: none kept).
     kept: Kept,
+    /// Box-against-box tests the last call made: the sweep's, when it swept,
+    /// and each kept pair's box test.
+    pub(super) tests: usize,
+    /// Whether the last call swept (false: the kept pairs were filtered).
+    pub(super) swept: bool,
 }
 
 /// The grown boxes of the last sweep and its pairs.
@@ -112,20 +117,31 @@ impl BroadPhase {
         self.exact.clear();
         self.exact
             .extend(bounds.iter().map(|b| b.as_ref().map(bounds_of)));
-        if !self.kept_holds(half_spaces) {
+        self.tests = 0;
+        self.swept = !self.kept_holds(half_spaces);
+        if self.swept {
             self.keep(half_spaces);
+            if self.kept.valid {
+                self.tests += self.sweep.tests;
+            }
         }
         out.clear();
         if !self.kept.valid {
             // Not finite: the sweep over the boxes themselves.
-            return self.sweep.pairs(&self.exact, half_spaces, out);
+            self.sweep.pairs(&self.exact, half_spaces, out);
+            self.tests += self.sweep.tests;
+            return;
         }
         let (exact, is_half) = (&self.exact, &self.kept.is_half);
         out.reserve(self.kept.pairs.len());
         for &(i, j) in &self.kept.pairs {
             // Boxes that overlap, or a body with bounds and a half-space.
             let keep = match (&exact[i], &exact[j]) {
-                (Some(a), Some(b)) => is_half[i] || is_half[j] || a.overlaps(b),
+                (Some(_), Some(_)) if is_half[i] || is_half[j] => true,
+                (Some(a), Some(b)) => {
+                    self.tests += 1;
+                    a.overlaps(b)
+                }
                 (Some(_), None) => is_half[j],
                 (None, Some(_)) => is_half[i],
                 (None, None) => false,
@@ -209,7 +225,7 @@ pub fn all_pairs<T: Real>(
 }
 
 /// A box as f64.
-fn bounds_of<T: Real>(b: &Aabb<T>) -> Bounds {
+pub(super) fn bounds_of<T: Real>(b: &Aabb<T>) -> Bounds {
     Bounds {
         min: [0, 1, 2].map(|k| to_f64(b.min[k])),
         max: [0, 1, 2].map(|k| to_f64(b.max[k])),

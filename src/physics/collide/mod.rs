@@ -37,7 +37,7 @@
 //! (a half-space has no support mapping). Two half-spaces generate nothing.
 //! A half-space's `normal` is a world vector: its pose's rotation is ignored.
 //!
-//! The broad phase ([`broad`]) finds candidate pairs; [`scene::ContactGenerator`]
+//! The broad phase ([`broad`]; by grid or tree: [`partition`]) finds candidate pairs; [`scene::ContactGenerator`]
 //! runs both phases over a set of bodies.
 
 mod bounds;
@@ -46,13 +46,17 @@ mod box_sphere;
 pub mod broad;
 mod clip;
 mod convex;
+mod grid;
+mod partition;
 mod plane;
 pub mod record;
 pub mod scene;
 mod sphere;
 mod sweep;
+mod tree;
 
 pub use broad::{all_pairs, candidate_pairs, Aabb, BroadPhase};
+pub use partition::{BroadCounts, PairFinder};
 pub use scene::{BodyContact, ContactGenerator};
 
 use nalgebra::Vector3;
@@ -66,6 +70,10 @@ pub use super::pose::{Pose, Side};
 /// point–face or edge–edge contact as the reference engine; `Manifold`
 /// (default), the clipped faces, up to 4 points.
 pub use super::params::BoxBoxMode;
+
+/// How the broad phase finds its pairs (`[world] broad_phase`): `Sweep`
+/// (default), `Grid` or `Bvh`; the same pairs whichever.
+pub use super::params::BroadPhaseMethod;
 
 /// Which routine a convex pair runs (`[world] narrow_phase`): `Analytic`
 /// (default) where one exists, GJK/EPA otherwise; `Gjk` for every pair but
@@ -190,6 +198,9 @@ pub struct Options<T: Real> {
     /// Analytic routines where they exist (default), or GJK/EPA for every
     /// convex pair.
     pub narrow_phase: NarrowPhase,
+    /// How the broad phase finds its pairs (default: sweep): the same pairs,
+    /// at a different cost.
+    pub broad_phase: BroadPhaseMethod,
 }
 
 impl<T: Real> Default for Options<T> {
@@ -198,6 +209,7 @@ impl<T: Real> Default for Options<T> {
             box_box: BoxBoxMode::default(),
             tolerance: T::zero(),
             narrow_phase: NarrowPhase::default(),
+            broad_phase: BroadPhaseMethod::default(),
         }
     }
 }

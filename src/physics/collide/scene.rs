@@ -1,7 +1,8 @@
 //! Contacts of a whole set of bodies: broad phase, then the pair functions,
 //! with the buffers kept from step to step.
 
-use super::broad::{all_pairs, Aabb, BroadPhase};
+use super::broad::{all_pairs, Aabb};
+use super::partition::{BroadCounts, PairFinder};
 use super::{c, collide_with, ContactPoint, NarrowPhase, Options, Pose, Real, Shape};
 use crate::physics::{Body, BodyId};
 
@@ -21,7 +22,7 @@ pub struct BodyContact<T: Real> {
 pub struct ContactGenerator<T: Real> {
     /// Test every pair of bounds instead of sweeping (for comparison).
     pub brute_force: bool,
-    broad: BroadPhase,
+    broad: PairFinder,
     bounds: Vec<Option<Aabb<T>>>,
     half_spaces: Vec<usize>,
     pairs: Vec<(usize, usize)>,
@@ -36,7 +37,7 @@ impl<T: Real> Default for ContactGenerator<T> {
     fn default() -> Self {
         ContactGenerator {
             brute_force: false,
-            broad: BroadPhase::new(),
+            broad: PairFinder::new(),
             bounds: Vec::new(),
             half_spaces: Vec::new(),
             pairs: Vec::new(),
@@ -88,8 +89,12 @@ impl<T: Real> ContactGenerator<T> {
         if self.brute_force {
             all_pairs(&self.bounds, &self.half_spaces, &mut self.pairs);
         } else {
-            self.broad
-                .candidate_pairs(&self.bounds, &self.half_spaces, &mut self.pairs);
+            self.broad.candidate_pairs(
+                options.broad_phase,
+                &self.bounds,
+                &self.half_spaces,
+                &mut self.pairs,
+            );
         }
         for &(i, j) in &self.pairs {
             let (body1, body2) = match (movable[i], movable[j]) {
@@ -146,6 +151,12 @@ impl<T: Real> ContactGenerator<T> {
     /// The candidate pairs of the last [`generate`](Self::generate).
     pub fn pairs(&self) -> &[(usize, usize)] {
         &self.pairs
+    }
+
+    /// What the last [`generate`](Self::generate)'s broad phase did (not
+    /// updated by `brute_force`).
+    pub fn broad_counts(&self) -> BroadCounts {
+        self.broad.counts()
     }
 
     /// The boxes of the last call (grown by half the tolerance), by body.

@@ -15,6 +15,9 @@ pub(super) struct Sweep {
     /// Scratch for sorting the pairs.
     counts: Vec<usize>,
     scratch: Vec<(usize, usize)>,
+    /// Box-against-box tests the last sweep made (boxes that start before
+    /// the current one ends, compared on the other two axes).
+    pub(super) tests: usize,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -81,11 +84,13 @@ impl Sweep {
         // Sweep: each box meets the later boxes that start before it ends;
         // of those, the ones that overlap on the other two axes too.
         let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+        self.tests = 0;
         for (k, a) in self.entries.iter().enumerate() {
             for b in &self.entries[k + 1..] {
                 if b.min[axis] > a.max[axis] {
                     break;
                 }
+                self.tests += 1;
                 let across = |w: usize| a.min[w] <= b.max[w] && b.min[w] <= a.max[w];
                 if across(u) && across(v) {
                     out.push((a.index.min(b.index), a.index.max(b.index)));
@@ -101,7 +106,7 @@ impl Sweep {
 /// counting sort on i, O(pairs + bodies), then each run of one i by j (a
 /// comparison sort of all the pairs cost a third of the sweep for 2,000
 /// bodies).
-fn sort_pairs(
+pub(super) fn sort_pairs(
     pairs: &mut Vec<(usize, usize)>,
     bodies: usize,
     counts: &mut Vec<usize>,

@@ -284,6 +284,20 @@ pub enum NarrowPhase {
     Gjk,
 }
 
+/// How the broad phase finds the pairs whose boxes overlap (`[world]
+/// broad_phase`). Every method finds the same pairs in the same order: a
+/// run is the same state for state under each; only the cost differs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum BroadPhaseMethod {
+    /// Sort and sweep on the axis of largest spread (default).
+    #[default]
+    Sweep,
+    /// A uniform grid: each box hashed into every cell it overlaps.
+    Grid,
+    /// A dynamic bounding-volume tree of fat boxes, queried per body.
+    Bvh,
+}
+
 /// Restitution and friction coefficients: of a contact, a body, or
 /// `[world]`'s default. One rule wherever they are written: `friction` sets
 /// both μ_s and μ_d, and μ_d defaults to μ_s ([`Material::with`]).

@@ -5,8 +5,9 @@
 
 use super::ccd_mode::{Ccd, NormalFrom, Rollback};
 use super::{
-    BoxBoxMode, ContactParams, FrictionModel, Material, NarrowPhase, ProjectionMethod,
-    ResolverParams, SleepParams, StepParams, WorldParams, GENERATED_VELOCITY_LIMIT,
+    BoxBoxMode, BroadPhaseMethod, ContactParams, FrictionModel, Material, NarrowPhase,
+    ProjectionMethod, ResolverParams, SleepParams, StepParams, WorldParams,
+    GENERATED_VELOCITY_LIMIT,
 };
 use crate::physics::exact::RestitutionLaw;
 use crate::physics::{c, Real};
@@ -46,6 +47,8 @@ pub struct SimParams<T: Real> {
     pub rollback: Rollback,
     /// A penetrating convex pair's normal: now, or from the previous frame (default: current).
     pub normal_from: NormalFrom,
+    /// How the broad phase finds its pairs (default: sweep); the same pairs whichever.
+    pub broad_phase: BroadPhaseMethod,
 }
 
 impl<T: Real> Default for SimParams<T> {
@@ -139,6 +142,7 @@ pub struct SceneSettings {
     pub ccd: Ccd,
     pub rollback: Rollback,
     pub normal_from: NormalFrom,
+    pub broad_phase: BroadPhaseMethod,
 }
 
 impl Default for SceneSettings {
@@ -158,6 +162,7 @@ impl Default for SceneSettings {
             ccd: Ccd::None,
             rollback: Rollback::Projection,
             normal_from: NormalFrom::Current,
+            broad_phase: BroadPhaseMethod::Sweep,
         }
     }
 }
@@ -206,6 +211,7 @@ impl Settings {
                 ccd: p.ccd,
                 rollback: p.rollback,
                 normal_from: p.normal_from,
+                broad_phase: p.broad_phase,
                 ..SceneSettings::default()
             },
         }
@@ -238,6 +244,7 @@ impl Settings {
             ccd: scene.ccd,
             rollback: scene.rollback,
             normal_from: scene.normal_from,
+            broad_phase: scene.broad_phase,
         }
     }
 }

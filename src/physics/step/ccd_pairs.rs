@@ -83,6 +83,7 @@ pub fn contacts_at<T: Real>(
         box_box: p.box_box,
         tolerance,
         narrow_phase: p.narrow_phase,
+        broad_phase: p.broad_phase,
     };
     let mut out = Vec::new();
     collide_with((a, &pose(i)), (b, &pose(j)), &options, &mut out);

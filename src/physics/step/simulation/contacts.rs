@@ -17,6 +17,7 @@ impl<T: Real> Simulation<T> {
             box_box: self.params.box_box,
             tolerance: self.params.contact_margin,
             narrow_phase: self.params.narrow_phase,
+            broad_phase: self.params.broad_phase,
         };
         self.generator
             .generate_world(&self.world.bodies, &options, &mut self.generated);
