@@ -11,6 +11,7 @@ mod common;
 mod exact_support;
 
 mod blow_up_rule;
+mod broad_methods;
 mod ccd_manifold;
 mod ccd_matrix;
 mod ccd_shapes;
