@@ -148,6 +148,8 @@ pub struct DetectTrace {
     /// Each body's shape and pose, for the figure.
     pub drawn: Vec<Drawn>,
     pub candidate_pairs: usize,
+    /// The step's broad phase on these boxes: method, visits, tests, pairs.
+    pub search: super::broad_search::BroadSearch,
     pub dropped: Vec<Dropped>,
     pub pairs: Vec<PairTrace>,
     /// With continuous detection on, each body's movement bounds over the
@@ -229,6 +231,7 @@ pub fn build(cx: &Context, record: &DetectRecord) -> DetectTrace {
         bodies,
         drawn: drawn(cx.bodies, cx.names),
         candidate_pairs: record.candidates.len(),
+        search: super::broad_search::BroadSearch::of(&record.broad),
         dropped,
         pairs: record.pairs.iter().map(|p| pair(cx, p)).collect(),
         movement: Vec::new(),

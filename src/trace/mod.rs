@@ -12,6 +12,7 @@
 
 mod acceleration;
 pub mod blow_up;
+pub mod broad_search;
 pub mod contact;
 pub mod detect;
 mod elided;

@@ -10,6 +10,7 @@
 use nalgebra::Vector3;
 
 use super::broad::Aabb;
+use super::partition::{BroadCounts, PairFinder};
 use super::{collide_with, ContactPoint, NarrowPhase, Options};
 use crate::physics::detect::epa::EpaRecord;
 use crate::physics::detect::{
@@ -88,6 +89,10 @@ pub struct DetectRecord {
     pub ruled_out: Vec<((usize, usize), RuledOut)>,
     /// The pairs detected: the candidates, or the one asked for.
     pub pairs: Vec<PairRecord>,
+    /// What the step's broad phase (`options.broad_phase`) does to find its
+    /// pairs from these boxes, called afresh (a run's later steps reuse
+    /// its sweep order or tree).
+    pub broad: BroadCounts,
 }
 
 /// True when the lecture (and `collide`) has an analytic routine for the
@@ -118,6 +123,7 @@ pub fn detect(
         candidates: vec![],
         ruled_out: vec![],
         pairs: vec![],
+        broad: BroadCounts::default(),
     })
 }
 
@@ -219,12 +225,31 @@ pub fn detect_watched(
     if !watch(total, total) {
         return None;
     }
+    let broad = broad_counts(bodies, &bounds, options);
     Some(DetectRecord {
         bounds,
         candidates,
         ruled_out,
         pairs,
+        broad,
     })
+}
+
+/// What the step's broad phase does with these boxes (the same boxes and
+/// half-spaces `ContactGenerator` gives it).
+fn broad_counts(
+    bodies: &[Body<f64>],
+    bounds: &[BodyBounds],
+    options: &Options<f64>,
+) -> BroadCounts {
+    let boxes: Vec<Option<Aabb<f64>>> = bounds.iter().map(|b| b.aabb).collect();
+    let half_spaces: Vec<usize> = (bodies.iter().enumerate())
+        .filter(|(_, b)| matches!(b.shape, Some(Shape::HalfSpace { .. })))
+        .map(|(i, _)| i)
+        .collect();
+    let mut finder = PairFinder::new();
+    finder.candidate_pairs(options.broad_phase, &boxes, &half_spaces, &mut vec![]);
+    finder.counts()
 }
 
 /// The broad phase's verdict on bodies `i` and `j`: `None` keeps the pair.

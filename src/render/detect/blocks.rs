@@ -94,6 +94,7 @@ fn broad(out: &mut Vec<Block>, t: &DetectTrace, f: &Fmt) {
         count(t.candidate_pairs, "pair", "pairs"),
         t.dropped.len()
     )));
+    out.push(Block::Para(t.search.words(f)));
     if !t.dropped.is_empty() {
         out.push(Block::Table {
             head: ["pair", "ruled out because"].map(String::from).to_vec(),
