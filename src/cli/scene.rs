@@ -179,6 +179,19 @@ pub struct StudyArgs {
     /// Run even beyond the caps (over 2,000 configurations or 10 million simulated steps).
     #[arg(long)]
     pub force: bool,
+    /// The broad-phase study instead: sort and sweep, the uniform grid and the
+    /// dynamic tree on 10 to 10,000 bodies, scattered and clustered; box tests
+    /// counted and (without --no-timing) each call timed; where each wins.
+    #[arg(long, conflicts_with_all = ["scenes", "grid", "quick"])]
+    pub broad_phase: bool,
+    /// With --broad-phase: the body counts (default 10,100,1000,10000; at most 100,000).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        requires = "broad_phase",
+        value_name = "N,N,…"
+    )]
+    pub bodies: Vec<usize>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -5,6 +5,7 @@
 //! front and says what the trade is. Renderers show the [`Study`].
 
 pub mod advise;
+pub mod broad;
 pub mod exercised;
 pub mod grid;
 pub mod pareto;

@@ -145,6 +145,7 @@ fn step_contact(id: &str, a: usize, b: usize, gjk: bool) -> (f64, [f64; 3]) {
         } else {
             p.narrow_phase
         },
+        broad_phase: p.broad_phase,
     };
     let mut out = vec![];
     ContactGenerator::new().generate_world(&world.bodies, &options, &mut out);

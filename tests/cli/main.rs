@@ -28,4 +28,5 @@ mod round_off;
 mod simulate_interrupt;
 mod slide_ready;
 mod study;
+mod study_broad;
 mod tunnelled;

@@ -12,6 +12,7 @@ mod exact_support;
 
 mod accuracy;
 mod advise_every_scene;
+mod broad_phase;
 mod exact_accuracy;
 mod exact_energy;
 mod exact_study;

@@ -4,6 +4,7 @@
 //! report an instructor can hand out ([`markdown`]).
 
 pub mod advise;
+pub mod broad;
 pub mod csv;
 pub mod json;
 pub mod markdown;
