@@ -430,7 +430,7 @@ pub const BROAD_PHASE: Knob = Knob {
     kind: Kind::Choice { choices: BroadPhaseMethod::SPELLINGS },
     cli: Cli::Option,
     edit: Offered::Yes,
-    study: Offered::Yes,
+    study: Offered::No("the broad phase never changes a run, only what finding its pairs costs: study --broad-phase measures that"),
     grid: &[],
     needs: Needs::Always,
     get: |s| Value::Choice(s.scene.broad_phase.name()),
