@@ -19,7 +19,7 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write) -> Result<(), AppError> {
     } else {
         args.bodies.clone()
     };
-    if let Some(bad) = counts.iter().find(|&&n| n < 2 || n > MAX_BODIES) {
+    if let Some(bad) = counts.iter().find(|&&n| !(2..=MAX_BODIES).contains(&n)) {
         return Err(AppError::Usage(format!(
             "--bodies: each count must be from 2 to {MAX_BODIES}, got {bad}"
         )));

@@ -169,6 +169,9 @@ impl Mix {
     }
 }
 
+/// A body of the study: its shape, position, turn and velocity per frame.
+type Moving = (Shape, Vector3<f64>, UnitQuaternion<f64>, Vector3<f64>);
+
 /// The bodies' boxes in the first frame and the [`FRAMES`] after it: each
 /// body a box or a sphere at a random turn, moving a few centimetres a frame.
 pub fn frames(case: Case, n: usize) -> Vec<Vec<Option<Aabb<f64>>>> {
@@ -176,7 +179,7 @@ pub fn frames(case: Case, n: usize) -> Vec<Vec<Option<Aabb<f64>>>> {
     let side = (8.0 * n as f64).cbrt();
     // The cluster: one small body per litre.
     let cluster = (0.001 * (n - n / 5) as f64).cbrt();
-    let bodies: Vec<(Shape, Vector3<f64>, UnitQuaternion<f64>, Vector3<f64>)> = (0..n)
+    let bodies: Vec<Moving> = (0..n)
         .map(|i| {
             let small = case == Case::Clustered && i % 5 != 0;
             let (size, span) = if small { (0.05, cluster) } else { (0.5, side) };

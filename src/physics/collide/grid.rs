@@ -142,9 +142,9 @@ impl Grid {
 fn origin(boxes: &[Option<Bounds>]) -> [f64; 3] {
     let mut low = [f64::INFINITY; 3];
     for b in boxes.iter().flatten() {
-        for k in 0..3 {
-            if b.min[k].is_finite() {
-                low[k] = low[k].min(b.min[k]);
+        for (l, x) in low.iter_mut().zip(b.min) {
+            if x.is_finite() {
+                *l = l.min(x);
             }
         }
     }
