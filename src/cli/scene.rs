@@ -89,6 +89,9 @@ pub enum RunFormat {
     Json,
     /// A film strip of the scene and charts of energy, penetration and awake bodies.
     Svg,
+    /// One self-contained web page: a player of the recorded frames, the
+    /// energy chart, the events, `--trace-step`'s iterations (docs/html.md).
+    Html,
 }
 
 /// Options of `simulate`: each overrides the lesson's value.
@@ -122,7 +125,8 @@ pub struct SimulateArgs {
     /// both damping knobs.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<f64>,
-    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json).
+    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json);
+    /// with `--format html` the player opens step N's iterations.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub trace_step: Option<u64>,
     /// Every knob (a contact's, the resolver's, the step's, the world's,
@@ -132,6 +136,9 @@ pub struct SimulateArgs {
     /// Run even beyond the work cap (steps × movable bodies over 100 million).
     #[arg(long)]
     pub force: bool,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -146,6 +153,9 @@ pub enum StudyFormat {
     /// A report to hand out.
     #[value(alias = "markdown")]
     Md,
+    /// One self-contained web page: the chart with hover details, the
+    /// tables sortable (docs/html.md).
+    Html,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -179,6 +189,9 @@ pub struct StudyArgs {
     /// Run even beyond the caps (over 2,000 configurations or 10 million simulated steps).
     #[arg(long)]
     pub force: bool,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

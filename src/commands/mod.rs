@@ -11,6 +11,7 @@ mod progress;
 mod resolve;
 mod show;
 mod simulate;
+pub mod simulate_html;
 mod solve;
 mod study;
 

@@ -115,8 +115,12 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         StudyFormat::Csv => render::csv::render(&study),
         StudyFormat::Svg => render::svg::render(&study),
         StudyFormat::Md => render::markdown::render(&study, &fmt),
+        StudyFormat::Html => crate::render::html::study::document(&study, &fmt),
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => super::write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
 }
 
 /// The steps the study will simulate: each configuration's run, and its

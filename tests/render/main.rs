@@ -20,6 +20,7 @@ mod figure_strokes;
 mod film_strip;
 mod glossary;
 mod html_pages;
+mod html_scenes;
 mod huge_step;
 mod instructor_snapshots;
 mod latex_compiles;
