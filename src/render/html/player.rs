@@ -152,7 +152,7 @@ pub fn document(p: &Player, fmt: &Fmt) -> String {
         "<section class=\"summary\" aria-labelledby=\"summary-h\"><h2 id=\"summary-h\">Summary</h2><pre class=\"text\">{}</pre></section>",
         esc(&p.summary)
     );
-    events(&mut body, p);
+    events(&mut body, p, fmt);
     if let Some((k, trace)) = p.traced {
         let _ = writeln!(
             body,
@@ -187,7 +187,7 @@ pub fn document(p: &Player, fmt: &Fmt) -> String {
     )
 }
 
-fn events(body: &mut String, p: &Player) {
+fn events(body: &mut String, p: &Player, fmt: &Fmt) {
     let run = p.run;
     let _ = writeln!(
         body,
@@ -198,7 +198,6 @@ fn events(body: &mut String, p: &Player) {
         body.push_str("<p>No events.</p>\n");
     }
     body.push_str("<ol class=\"events\">\n");
-    let fmt = Fmt::new(4);
     let mut traced = p.traced.map(|(k, _)| k);
     for e in run.events.iter().take(EVENTS) {
         if let Some(k) = traced.filter(|k| *k <= e.step) {
