@@ -179,6 +179,11 @@ pub struct StudyArgs {
     /// Run even beyond the caps (over 2,000 configurations or 10 million simulated steps).
     #[arg(long)]
     pub force: bool,
+    /// The verdict matrix instead: a fixed set of test scenes under every
+    /// solver, each criterion a pass or a fail with its figure (text, json
+    /// or svg; with --quick, reduced sizes).
+    #[arg(long)]
+    pub verdicts: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -13,6 +13,7 @@ mod show;
 mod simulate;
 mod solve;
 mod study;
+mod verdicts;
 
 use std::io::Write;
 
