@@ -59,15 +59,14 @@ fn space_on_a_500_sphere_pile_does_not_freeze_and_q_quits_at_once() {
     let took = timed(&mut app, |a| key(a, KeyCode::Char(' ')));
     assert!(took < ANSWER, "Space took {took:?}");
     assert!(app.playing(), "playing");
-    let mut ticks = 0;
-    let start = Instant::now();
-    while start.elapsed() < Duration::from_millis(600) {
+    // Ticks keep coming: five ticks, each drawn and each answering at
+    // once (counted, not timed against a wall clock, so a loaded machine
+    // cannot make it fail).
+    for _ in 0..5 {
         let took = timed(&mut app, |a| a.tick(1.0 / 60.0));
         assert!(took < ANSWER, "a tick took {took:?}");
         t.draw(|f| f.render_widget(&app, f.area())).unwrap();
-        ticks += 1;
     }
-    assert!(ticks > 3, "the loop kept ticking ({ticks} ticks)");
     let run = app.run.as_ref().unwrap();
     assert_eq!(
         run.player.computing(),
