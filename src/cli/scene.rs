@@ -158,7 +158,8 @@ pub struct StudyArgs {
     /// Leave timing out (the cost is then contact visits per step): deterministic output.
     #[arg(long)]
     pub no_timing: bool,
-    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30.
+    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30
+    /// (with --verdicts: the scenes at reduced sizes).
     #[arg(long)]
     pub quick: bool,
     /// Run the cross product of these knobs' values around each scene's default
