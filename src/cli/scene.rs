@@ -168,7 +168,8 @@ pub struct StudyArgs {
     /// Leave timing out (the cost is then contact visits per step): deterministic output.
     #[arg(long)]
     pub no_timing: bool,
-    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30.
+    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30
+    /// (with --verdicts: the scenes at reduced sizes).
     #[arg(long)]
     pub quick: bool,
     /// Run the cross product of these knobs' values around each scene's default
@@ -192,6 +193,11 @@ pub struct StudyArgs {
     /// Write the output to FILE (atomically) instead of stdout.
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<std::path::PathBuf>,
+    /// The verdict matrix instead: a fixed set of test scenes under every
+    /// solver, each criterion a pass or a fail with its figure (text, json
+    /// or svg; with --quick, reduced sizes).
+    #[arg(long)]
+    pub verdicts: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -14,6 +14,7 @@ mod simulate;
 pub mod simulate_html;
 mod solve;
 mod study;
+mod verdicts;
 
 use std::io::Write;
 

@@ -56,6 +56,9 @@ fn specs(args: &StudyArgs, err: &mut dyn Write) -> Result<Vec<SceneSpec>, AppErr
 }
 
 pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
+    if args.verdicts {
+        return super::verdicts::verdicts(args, out);
+    }
     let mut user = Vec::new();
     for g in &args.grid {
         user.push(grid::parse_grid(g).map_err(|e| AppError::Usage(format!("--grid: {e}")))?);

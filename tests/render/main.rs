@@ -32,3 +32,4 @@ mod scene_snapshots;
 mod solve_snapshots;
 mod trace_step;
 mod verdict_labels;
+mod verdict_matrix;
