@@ -89,6 +89,9 @@ pub enum RunFormat {
     Json,
     /// A film strip of the scene and charts of energy, penetration and awake bodies.
     Svg,
+    /// One self-contained web page: a player of the recorded frames, the
+    /// energy chart, the events, `--trace-step`'s iterations (docs/html.md).
+    Html,
 }
 
 /// Options of `simulate`: each overrides the lesson's value.
@@ -122,7 +125,8 @@ pub struct SimulateArgs {
     /// both damping knobs.
     #[arg(long, allow_negative_numbers = true)]
     pub damping: Option<f64>,
-    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json).
+    /// Print the resolver trace of step N instead (as `resolve` prints one; text or json);
+    /// with `--format html` the player opens step N's iterations.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub trace_step: Option<u64>,
     /// Every knob (a contact's, the resolver's, the step's, the world's,
@@ -132,6 +136,9 @@ pub struct SimulateArgs {
     /// Run even beyond the work cap (steps × movable bodies over 100 million).
     #[arg(long)]
     pub force: bool,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -146,6 +153,9 @@ pub enum StudyFormat {
     /// A report to hand out.
     #[value(alias = "markdown")]
     Md,
+    /// One self-contained web page: the chart with hover details, the
+    /// tables sortable (docs/html.md).
+    Html,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -158,7 +168,8 @@ pub struct StudyArgs {
     /// Leave timing out (the cost is then contact visits per step): deterministic output.
     #[arg(long)]
     pub no_timing: bool,
-    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30.
+    /// A reduced grid: budgets 1, 8 and converged for both solvers, f32, dt = 1/30
+    /// (with --verdicts: the scenes at reduced sizes).
     #[arg(long)]
     pub quick: bool,
     /// Run the cross product of these knobs' values around each scene's default
@@ -179,10 +190,18 @@ pub struct StudyArgs {
     /// Run even beyond the caps (over 2,000 configurations or 10 million simulated steps).
     #[arg(long)]
     pub force: bool,
+    /// Write the output to FILE (atomically) instead of stdout.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+    /// The verdict matrix instead: a fixed set of test scenes under every
+    /// solver, each criterion a pass or a fail with its figure (text, json
+    /// or svg; with --quick, reduced sizes).
+    #[arg(long)]
+    pub verdicts: bool,
     /// The broad-phase study instead: sort and sweep, the uniform grid and the
     /// dynamic tree on 10 to 10,000 bodies, scattered and clustered; box tests
     /// counted and (without --no-timing) each call timed; where each wins.
-    #[arg(long, conflicts_with_all = ["scenes", "grid", "quick"])]
+    #[arg(long, conflicts_with_all = ["scenes", "grid", "quick", "verdicts"])]
     pub broad_phase: bool,
     /// With --broad-phase: the body counts (default 10,100,1000,10000; at most 100,000).
     #[arg(

@@ -49,13 +49,28 @@ pub fn detect_toi(args: &DetectArgs, lesson: &Lesson, out: &mut dyn Write) -> Re
             super::text_width(args.fold.width),
         ),
         Format::Json => render::json(&detected),
-        Format::Md | Format::Latex | Format::Html => {
+        Format::Html => {
+            let plane = super::figure::plane(args.plane);
+            let pictures: Vec<Option<String>> = (0..detected.pairs.len())
+                .take(crate::render::html::toi::PAIRS)
+                .map(|k| {
+                    crate::session::toi_picture(&sim, &lesson, &detected, k)
+                        .map(|p| crate::render::toi_svg::svg(&p, plane))
+                })
+                .collect();
+            let f = Fmt::new(args.digits as usize);
+            crate::render::html::toi::document(&detected, &pictures, &f)
+        }
+        Format::Md | Format::Latex => {
             return Err(AppError::Usage(
-                "detect --toi prints text or JSON (--format text|json)".into(),
+                "detect --toi prints text, JSON or a web page (--format text|json|html)".into(),
             ))
         }
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => super::write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
 }
 
 /// The indices of `--pair A,B`.

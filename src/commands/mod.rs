@@ -11,9 +11,11 @@ mod progress;
 mod resolve;
 mod show;
 mod simulate;
+pub mod simulate_html;
 mod solve;
 mod study;
 mod study_broad;
+mod verdicts;
 
 use std::io::Write;
 

@@ -21,6 +21,20 @@ pub fn simulate(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<(), AppError> {
+    // `-o FILE`: the output written whole, atomically, even where the run
+    // stops (the page writes its own).
+    match &args.output {
+        Some(path) if args.format != RunFormat::Html => {
+            let mut buffer = Vec::new();
+            let result = run(args, &mut buffer, err);
+            super::write_atomic(path, &buffer)?;
+            result
+        }
+        _ => run(args, out, err),
+    }
+}
+
+fn run(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), AppError> {
     let overrides = overrides(args)?;
     let lesson = super::load(&args.lesson, &overrides, None)?;
     warn(&lesson, err);
@@ -37,7 +51,8 @@ pub fn simulate(
         let text = crate::trace::run::below_rounding_text(name, &b);
         let _ = writeln!(err, "warning: {text}");
     }
-    if let Some(n) = args.trace_step {
+    let html = args.format == RunFormat::Html;
+    if let Some(n) = args.trace_step.filter(|_| !html) {
         return trace_step(&lesson, args, sim, steps, n, out);
     }
     let movable = sim.world.bodies.iter().filter(|b| b.movable).count().max(1) as u64;
@@ -46,6 +61,9 @@ pub fn simulate(
             format!("{steps} steps of {movable} movable bodies"),
             "100 million steps × bodies",
         ));
+    }
+    if html {
+        return super::simulate_html::page(&lesson, args, sim, steps, out, err);
     }
     let mut bar = progress::bar(
         steps,
@@ -64,6 +82,7 @@ pub fn simulate(
         RunFormat::Text if args.table => Streamed::Text(Fmt::new(args.digits as usize)),
         RunFormat::Text => Streamed::Summary(Fmt::new(args.digits as usize), Box::default()),
         RunFormat::Json => Streamed::Json,
+        RunFormat::Html => unreachable!("the page is written above"),
     };
     // The summary folds in every step (its extremes are the run's, not a
     // sample's); `--every` thins the table and the JSON.
@@ -244,6 +263,7 @@ fn trace_step(
                 "--trace-step prints text or json, not svg".into(),
             ))
         }
+        RunFormat::Html => unreachable!("the page records the step itself"),
     };
     out.write_all(text.as_bytes()).map_err(io)
 }

@@ -59,6 +59,9 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     if args.broad_phase {
         return super::study_broad::study(args, out);
     }
+    if args.verdicts {
+        return super::verdicts::verdicts(args, out);
+    }
     let mut user = Vec::new();
     for g in &args.grid {
         user.push(grid::parse_grid(g).map_err(|e| AppError::Usage(format!("--grid: {e}")))?);
@@ -118,8 +121,12 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
         StudyFormat::Csv => render::csv::render(&study),
         StudyFormat::Svg => render::svg::render(&study),
         StudyFormat::Md => render::markdown::render(&study, &fmt),
+        StudyFormat::Html => crate::render::html::study::document(&study, &fmt),
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => super::write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
 }
 
 /// The steps the study will simulate: each configuration's run, and its

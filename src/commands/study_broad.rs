@@ -24,6 +24,11 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write) -> Result<(), AppError> {
             "--bodies: each count must be from 2 to {MAX_BODIES}, got {bad}"
         )));
     }
+    if args.format == StudyFormat::Html {
+        return Err(AppError::Usage(
+            "study --broad-phase has no web page: --format text, md, json, csv or svg".into(),
+        ));
+    }
     let total = (counts.len() * broad::Case::ALL.len()) as u64;
     let bar = progress::bar(
         total,
@@ -47,6 +52,10 @@ pub fn study(args: &StudyArgs, out: &mut dyn Write) -> Result<(), AppError> {
         StudyFormat::Json => render::json(&study),
         StudyFormat::Svg => render::svg(&study),
         StudyFormat::Csv => render::csv(&study),
+        StudyFormat::Html => unreachable!("refused above"),
     };
-    out.write_all(text.as_bytes()).map_err(io)
+    match &args.output {
+        Some(path) => super::write_atomic(path, text.as_bytes()),
+        None => out.write_all(text.as_bytes()).map_err(io),
+    }
 }

@@ -132,13 +132,16 @@ pub fn grade(answer: &str, expected: &Value) -> Grade {
     }
 }
 
+/// The fewest decimals a written number's tolerance is counted at.
+pub const MIN_DECIMALS: u32 = 4;
+
 /// The lecture check's tolerance for a number written like `n` (2 units in
 /// its last digit plus 0.1 %), counted at four decimals at most: writing
 /// fewer digits ("20" for 18.7337, "1" for 0.0000007) does not buy a wider
 /// tolerance than the sheet's "work to four decimals".
 pub fn tolerance(n: &PrintedNum) -> f64 {
     PrintedNum {
-        decimals: n.decimals.max(4),
+        decimals: n.decimals.max(MIN_DECIMALS),
         ..*n
     }
     .tolerance()

@@ -11,11 +11,16 @@ pub struct PrintedNum {
     pub decimals: u32,
 }
 
+/// The lecture-check tolerance's units in the last printed digit.
+pub const LAST_DIGIT_UNITS: f64 = 2.0;
+/// The lecture-check tolerance's share of the number's size (0.1 %).
+pub const RELATIVE: f64 = 1e-3;
+
 impl PrintedNum {
     /// The lecture-check tolerance: 2 units in the last printed digit plus
     /// 0.1 % of the number's size.
     pub fn tolerance(&self) -> f64 {
-        2.0 * 10f64.powi(-(self.decimals as i32)) + 1e-3 * self.value.abs()
+        LAST_DIGIT_UNITS * 10f64.powi(-(self.decimals as i32)) + RELATIVE * self.value.abs()
     }
 
     pub fn agrees(&self, computed: f64) -> bool {

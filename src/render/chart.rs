@@ -9,9 +9,12 @@ use crate::format::Fmt;
 
 mod legend;
 mod ticks;
+mod xmap;
 
 use ticks::integer_range;
 pub use ticks::{integer_ticks, ticks};
+pub use xmap::XMap;
+use xmap::{back, tick_range};
 
 /// A scale of one axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -68,6 +71,9 @@ pub struct Chart {
     pub marks: Vec<(f64, String)>,
     /// The y values are counts: whole-number ticks from 0 (or below).
     pub integer_y: bool,
+    /// Hover details of scatter marks: `tips[series][point]`, drawn as the
+    /// mark's `<title>` (a web page shows it on hover); none where empty.
+    pub tips: Vec<Vec<String>>,
 }
 
 /// Colours told apart by colour-blind readers (Okabe–Ito).
@@ -106,29 +112,40 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
 }
 
 impl Chart {
+    /// The x axis and the plot's edges [`Chart::draw`] uses in the box
+    /// `(x, y, width, height)`: a cursor drawn by a page's script lands
+    /// where the chart's own would.
+    pub fn x_map(&self, (x0, y0, w, h): (f64, f64, f64, f64)) -> XMap {
+        let all = || self.series.iter().flat_map(|s| s.points.iter());
+        let (xl, xh) = range(all().map(|p| p.0), self.x_scale);
+        let xt = ticks(back(xl, self.x_scale), back(xh, self.x_scale), self.x_scale);
+        // The axis range widened to the outer ticks.
+        let (lo, hi) = tick_range(&xt, self.x_scale, xl, xh);
+        XMap {
+            left: x0 + 64.0,
+            right: x0 + w - 12.0,
+            lo,
+            hi,
+            top: y0 + 28.0,
+            bottom: y0 + h - 40.0,
+        }
+    }
+
     /// Draws the chart into `out` as an SVG group within the box
     /// `(x, y, width, height)` of the page.
     pub fn draw(&self, out: &mut String, (x0, y0, w, h): (f64, f64, f64, f64)) {
         let fmt = Fmt::new(3);
         let all = || self.series.iter().flat_map(|s| s.points.iter());
-        let (xl, xh) = range(all().map(|p| p.0), self.x_scale);
         let (yl0, yh0) = if self.integer_y && self.y_scale == Scale::Linear {
             integer_range(all().map(|p| p.1))
         } else {
             range(all().map(|p| p.1), self.y_scale)
         };
-        let back = |v: f64, s: Scale| if s == Scale::Log { 10f64.powf(v) } else { v };
+        let map = self.x_map((x0, y0, w, h));
+        let (xl, xh) = range(all().map(|p| p.0), self.x_scale);
         let xt = ticks(back(xl, self.x_scale), back(xh, self.x_scale), self.x_scale);
-        // Axis ranges widened to the outer ticks.
-        let tick_range = |t: &[f64], s: Scale, lo: f64, hi: f64| {
-            let tt: Vec<f64> = t.iter().filter_map(|v| transform(*v, s)).collect();
-            let lo = tt.first().copied().unwrap_or(lo).min(lo);
-            let hi = tt.last().copied().unwrap_or(hi).max(hi);
-            (lo, hi)
-        };
-        let (xl, xh) = tick_range(&xt, self.x_scale, xl, xh);
-        let (left, top, right, bottom) = (x0 + 64.0, y0 + 28.0, x0 + w - 12.0, y0 + h - 40.0);
-        let px = |v: f64| left + (v - xl) / (xh - xl).max(1e-300) * (right - left);
+        let (left, top, right, bottom) = (map.left, map.top, map.right, map.bottom);
+        let px = |v: f64| map.px(v);
         let y_axis = |yh: f64| {
             let yt = if self.integer_y && self.y_scale == Scale::Linear {
                 integer_ticks(yl0, yh)
@@ -229,17 +246,19 @@ impl Chart {
             (top + bottom) / 2.0,
             escape(&self.y_label)
         );
-        for s in &self.series {
-            let pts: Vec<(f64, f64)> = s
-                .points
-                .iter()
-                .filter_map(|p| {
+        for (k, s) in self.series.iter().enumerate() {
+            let placed: Vec<(usize, (f64, f64))> = (s.points.iter().enumerate())
+                .filter_map(|(i, p)| {
                     Some((
-                        px(transform(p.0, self.x_scale)?),
-                        py(transform(p.1, self.y_scale)?),
+                        i,
+                        (
+                            px(transform(p.0, self.x_scale)?),
+                            py(transform(p.1, self.y_scale)?),
+                        ),
                     ))
                 })
                 .collect();
+            let pts: Vec<(f64, f64)> = placed.iter().map(|(_, p)| *p).collect();
             let dash = if s.dashed {
                 r#" stroke-dasharray="6 4""#
             } else {
@@ -252,8 +271,15 @@ impl Chart {
                 | Mark::Diamonds
                 | Mark::Crosses
                 | Mark::Pluses => {
-                    for (x, y) in &pts {
-                        marker(out, s.mark, *x, *y, s.colour);
+                    for (i, (x, y)) in &placed {
+                        let tip = self.tips.get(k).and_then(|t| t.get(*i));
+                        if let Some(tip) = tip.filter(|t| !t.is_empty()) {
+                            let _ = write!(out, "<g class=\"tip\"><title>{}</title>", escape(tip));
+                            marker(out, s.mark, *x, *y, s.colour);
+                            out.push_str("</g>\n");
+                        } else {
+                            marker(out, s.mark, *x, *y, s.colour);
+                        }
                     }
                 }
                 Mark::Line | Mark::Steps => {

@@ -11,6 +11,7 @@ pub mod grid;
 pub mod pareto;
 pub mod run;
 pub mod sweep;
+pub mod verdicts;
 
 use crate::knobs::{Knob, Offered, Value, KNOBS};
 use crate::physics::{Settings, SimParams, Solver};

@@ -10,7 +10,7 @@ use crate::lesson::{ContactDef, Lesson};
 use crate::physics::params::ContactSettings;
 use crate::physics::resolver::{Implementation, Observer, Phase, Resolver, ResolverBody};
 use crate::physics::step::previous_frame::previous_normal;
-use crate::physics::step::{BlowUp, Simulation};
+use crate::physics::step::{BlowUp, Simulation, StepReport};
 use crate::physics::World;
 
 /// One resolution, recorded for stepping through.
@@ -299,13 +299,14 @@ impl Observer<f64> for Grab {
 }
 
 /// A step's world as its resolver was handed it, the resolver as prepared
-/// for it (when it ran), and the names with the step's contacts labelled.
-type Grabbed = (World<f64>, Option<Resolver<f64>>, Names);
+/// for it (when it ran), the names with the step's contacts labelled, and
+/// the step's report.
+type Grabbed = (World<f64>, Option<Resolver<f64>>, Names, StepReport);
 
 /// Advances `sim` one step and grabs what its resolution started from.
 fn grab_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Grabbed, BlowUp> {
     let mut grab = Grab::default();
-    sim.advance_observed(&mut grab)?;
+    let report = sim.advance_observed(&mut grab)?;
     let (world, prepared) = match grab.0 {
         Some((w, r)) => (w, Some(r)),
         None => (sim.world.clone(), None),
@@ -317,7 +318,7 @@ fn grab_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Grabbed, BlowUp
         .enumerate()
         .map(|(k, c)| Names::pair_label(&names.bodies, k, c.body1.0, c.body2.map(|b| b.0)))
         .collect();
-    Ok((world, prepared, names))
+    Ok((world, prepared, names, report))
 }
 
 impl StepTrace {
@@ -346,13 +347,15 @@ pub struct Described {
     /// How many contacts the step resolved.
     pub contacts: usize,
     pub previous: Vec<super::previous_frame::PreviousNormal>,
+    /// The step's report (its frame and events, for `simulate`'s page).
+    pub report: StepReport,
 }
 
 /// Advances `sim` one step and describes its resolution, iterations
 /// recorded (no tables or bodies per stop: what `simulate --trace-step`
 /// prints); with the number of the step's contacts.
 pub fn describe_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Described, BlowUp> {
-    let (world, prepared, names) = grab_next(sim, names)?;
+    let (world, prepared, names, report) = grab_next(sim, names)?;
     let params = sim.params.resolver;
     let normals: Vec<Option<[f64; 3]>> = (world.contacts.iter())
         .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))
@@ -381,13 +384,14 @@ pub fn describe_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Describ
         resolver,
         contacts: world.contacts.len(),
         previous,
+        report,
     })
 }
 
 /// Advances `sim` one step and records its resolution; `names` holds the
 /// lesson's names and its bodies' (contacts are labelled from the step's).
 pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
-    let (world, prepared, names) = grab_next(sim, names)?;
+    let (world, prepared, names, _) = grab_next(sim, names)?;
     let params = sim.params.resolver;
     let previous_normals = (world.contacts.iter())
         .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))

@@ -16,6 +16,7 @@ mod detect_toi;
 mod exercise_asks;
 mod exercise_figures;
 mod grading;
+mod html_cli;
 mod instructor;
 mod interrupt_at_once;
 mod io_cli;

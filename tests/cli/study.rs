@@ -323,3 +323,22 @@ fn the_chart_has_a_legend_of_families_and_a_staircase_front() {
         );
     }
 }
+
+/// `--verdicts` runs its own scenes: scenes, `--grid` and `--seconds` are
+/// refused (2) before anything runs, and so are the formats it does not print.
+#[test]
+fn verdicts_refuse_what_they_do_not_take() {
+    for args in [
+        &["study", "--verdicts", "stack-5"][..],
+        &["study", "--verdicts", "--grid", "budget=1,2"],
+        &["study", "--verdicts", "--seconds", "1"],
+        &["study", "--verdicts", "--format", "csv"],
+        &["study", "--verdicts", "--format", "md"],
+        &["study", "--verdicts", "--format", "html"],
+    ] {
+        let (code, out, err) = run(args);
+        assert_eq!(code, Some(2), "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}");
+        assert!(err.contains("--verdicts"), "{args:?}: {err}");
+    }
+}

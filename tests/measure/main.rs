@@ -18,3 +18,4 @@ mod exact_energy;
 mod exact_study;
 mod slide_angle;
 mod study_quick_full;
+mod verdicts;

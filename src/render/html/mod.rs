@@ -9,8 +9,12 @@ pub mod detect;
 pub mod figure;
 pub mod mathml;
 pub mod page;
+pub mod player;
+pub mod player_frames;
 pub mod resolve;
 pub mod solve;
+pub mod study;
+pub mod toi;
 
 /// Text escaped for HTML content and double-quoted attributes.
 pub fn esc(s: &str) -> String {

@@ -69,8 +69,8 @@
   });
 
   // Predict before you look: the same reading and tolerance as the app's
-  // predict mode (2 units in the last digit written, counted at four
-  // decimals at most, plus 0.1 % of the number).
+  // predict mode; the tolerance's numbers come from the app, in the page's
+  // data (<body data-tolerance>), never restated here.
   function decimalsOf(t) {
     var parts = t.split(/[eE]/);
     var exp = parts.length > 1 ? (parseInt(parts[1], 10) || 0) : 0;
@@ -96,7 +96,11 @@
     if (!nums.length) { return { problem: 'no number in the answer' }; }
     return { nums: nums };
   }
-  function tolerance(n) { return 2 * Math.pow(10, -Math.max(n.decimals, 4)) + 1e-3 * Math.abs(n.value); }
+  var rule = JSON.parse(document.body.getAttribute('data-tolerance'));
+  function tolerance(n) {
+    return rule.last_digit_units * Math.pow(10, -Math.max(n.decimals, rule.min_decimals)) +
+      rule.relative * Math.abs(n.value);
+  }
   function grade(answer, formula) {
     var word = formula.getAttribute('data-word');
     if (word !== null) {

@@ -199,7 +199,19 @@ pub fn document(trace: &ResolverTrace, worked: &Worked, fmt: &Fmt) -> String {
     if let Some(note) = crate::render::resolve::elision_note(trace) {
         let _ = writeln!(head, "<p class=\"note\">{}</p>", esc(&note));
     }
-    let mut body = String::from("<main>\n");
+    let body = format!("<main>\n{}</main>", sections(trace, worked, fmt));
+    page::page(
+        &format!("{} — contacts resolved together", trace.title),
+        page::Steps::Iterations,
+        &head,
+        &body,
+    )
+}
+
+/// The page's steps: the contacts before, each iteration, the state after
+/// (also what `simulate`'s player opens for `--trace-step`).
+pub fn sections(trace: &ResolverTrace, worked: &Worked, fmt: &Fmt) -> String {
+    let mut body = String::new();
     step_open(&mut body, "before", "Contacts before");
     body.push_str(&contacts_table(&trace.before, fmt));
     body.push_str("</section>\n");
@@ -220,11 +232,6 @@ pub fn document(trace: &ResolverTrace, worked: &Worked, fmt: &Fmt) -> String {
             esc(&v.detail)
         );
     }
-    body.push_str("</ul>\n</section>\n</main>");
-    page::page(
-        &format!("{} — contacts resolved together", trace.title),
-        page::Steps::Iterations,
-        &head,
-        &body,
-    )
+    body.push_str("</ul>\n</section>\n");
+    body
 }

@@ -9,6 +9,7 @@ pub mod csv;
 pub mod json;
 pub mod markdown;
 pub mod svg;
+pub mod verdicts;
 
 use crate::format::Fmt;
 use crate::study::{Row, Study};

@@ -256,6 +256,12 @@ fn wrap(text: &str) -> Vec<String> {
 pub const X_LABEL: &str = "work per simulated second (visits + ccd tests + 1 per step)";
 
 pub fn render(study: &Study) -> String {
+    render_with(study, false)
+}
+
+/// [`render`], each mark with its row's hover details as its `<title>`
+/// when `tips` (the web page's chart).
+pub fn render_with(study: &Study, tips: bool) -> String {
     let height = 80.0
         + study
             .scenes
@@ -297,7 +303,16 @@ pub fn render(study: &Study) -> String {
             .filter(|r| drawable(r))
             .map(|r| (r.cost(), r.error_vs_reference))
             .collect();
+        let tips: Vec<Vec<String>> = if tips {
+            families(&s.rows)
+                .iter()
+                .flat_map(|f| f.members.iter().map(|(i, _, _)| vec![tip(&s.rows[*i])]))
+                .collect()
+        } else {
+            Vec::new()
+        };
         let chart = Chart {
+            tips,
             title: format!("{} ({} s)", s.scene, s.seconds),
             x_label: X_LABEL.into(),
             y_label: "error (m)".into(),
@@ -357,4 +372,17 @@ pub fn render(study: &Study) -> String {
     }
     out.push_str("</svg>\n");
     out
+}
+
+/// A row's hover details: its knob and value, the two axes, the front.
+fn tip(r: &crate::study::Row) -> String {
+    let fmt = crate::format::Fmt::new(3);
+    format!(
+        "{} = {}: work/s {}, error {} m{}",
+        r.knob,
+        r.value,
+        super::work(&fmt, r.cost()),
+        super::num(&fmt, r.error_vs_reference),
+        if r.pareto { ", on the front ★" } else { "" }
+    )
 }
