@@ -52,7 +52,7 @@ pub fn detect_toi(args: &DetectArgs, lesson: &Lesson, out: &mut dyn Write) -> Re
         Format::Html => {
             let plane = super::figure::plane(args.plane);
             let pictures: Vec<Option<String>> = (0..detected.pairs.len())
-                .take(crate::render::html::toi::PAIRS)
+                .take(crate::render::html::detect::PAIRS)
                 .map(|k| {
                     crate::session::toi_picture(&sim, &lesson, &detected, k)
                         .map(|p| crate::render::toi_svg::svg(&p, plane))

@@ -99,28 +99,7 @@ pub fn film_strip(out: &mut String, run: &RunTrace, plane: Plane, (width, strip)
     }
     let n = picks.len();
     // One scale for all panels: the bounds of every finite body in every pick.
-    let (mut lo, mut hi) = (
-        (f64::INFINITY, f64::INFINITY),
-        (f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
-    for &k in &picks {
-        let f = &run.frames[k];
-        for (i, b) in f.bodies.iter().enumerate() {
-            let Some(o) = run.shapes[i]
-                .as_ref()
-                .and_then(|s| outline(s, b.position, b.orientation, plane))
-            else {
-                continue;
-            };
-            for p in o.silhouette.points() {
-                lo = (lo.0.min(p[0]), lo.1.min(p[1]));
-                hi = (hi.0.max(p[0]), hi.1.max(p[1]));
-            }
-        }
-    }
-    if !lo.0.is_finite() {
-        (lo, hi) = ((-1.0, -1.0), (1.0, 1.0));
-    }
+    let (lo, hi) = frames_bounds(run, picks.iter().copied(), plane);
     let w = (width - 48.0) / n as f64;
     let span = ((hi.0 - lo.0).max(1e-9), (hi.1 - lo.1).max(1e-9));
     let scale = ((w - 16.0) / span.0).min((strip - 40.0) / span.1);
@@ -350,4 +329,39 @@ fn film_legend(out: &mut String, width: f64, tiny: bool, marks: bool) {
         );
     }
     out.push_str("</g>\n");
+}
+
+/// The bounds, in the figure's plane, of every body's outline in the frames
+/// `frames` (finite points only; a unit square about the origin when there
+/// is none): one scale for a film strip or a player.
+pub fn frames_bounds(
+    run: &RunTrace,
+    frames: impl Iterator<Item = usize>,
+    plane: Plane,
+) -> ((f64, f64), (f64, f64)) {
+    let (mut lo, mut hi) = (
+        (f64::INFINITY, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
+    for k in frames {
+        for (i, b) in run.frames[k].bodies.iter().enumerate() {
+            let Some(o) = run.shapes[i]
+                .as_ref()
+                .and_then(|s| outline(s, b.position, b.orientation, plane))
+            else {
+                continue;
+            };
+            for p in o.silhouette.points() {
+                if p[0].is_finite() && p[1].is_finite() {
+                    lo = (lo.0.min(p[0]), lo.1.min(p[1]));
+                    hi = (hi.0.max(p[0]), hi.1.max(p[1]));
+                }
+            }
+        }
+    }
+    if lo.0.is_finite() {
+        (lo, hi)
+    } else {
+        ((-1.0, -1.0), (1.0, 1.0))
+    }
 }

@@ -165,7 +165,7 @@ fn no_detection_or_time_of_collision_page_reaches_the_network() {
             lesson.id,
             network_urls(&page)
         );
-        let tests: usize = (toi.pairs.iter().take(html::toi::PAIRS))
+        let tests: usize = (toi.pairs.iter().take(html::detect::PAIRS))
             .map(|p| p.record.tests().len().min(html::toi::TESTS) + 1)
             .sum();
         assert_eq!(

@@ -48,3 +48,30 @@ pub(super) fn push_half_space_pairs<B>(
         }
     }
 }
+
+/// The grid's and the tree's loose boxes (those they do not hold): each
+/// tested against every other box, a pair of loose boxes once (from its
+/// lower body); the pairs that overlap go to `out` as (lower, higher).
+/// Returns the tests made.
+pub(super) fn loose_pairs(
+    loose: &[usize],
+    is_loose: &[bool],
+    boxes: &[Option<Bounds>],
+    out: &mut Vec<(usize, usize)>,
+) -> usize {
+    let mut tests = 0;
+    for &i in loose {
+        let p = boxes[i].as_ref().expect("loose boxes have bounds");
+        for (j, q) in boxes.iter().enumerate() {
+            let Some(q) = q else { continue };
+            if j == i || (is_loose[j] && j < i) {
+                continue;
+            }
+            tests += 1;
+            if p.overlaps(q) {
+                out.push((i.min(j), i.max(j)));
+            }
+        }
+    }
+    tests
+}

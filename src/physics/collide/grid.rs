@@ -8,7 +8,7 @@
 //! all-against-all would. The pairs are the boxes that overlap or touch,
 //! unsorted (the caller sorts them).
 
-use super::bounds::Bounds;
+use super::bounds::{loose_pairs, Bounds};
 
 /// Cells along one axis a box may span before it is tested against every
 /// other box instead of being hashed (so one floor does not fill the grid).
@@ -101,20 +101,7 @@ impl Grid {
             }
             start = end;
         }
-        for &i in &self.loose {
-            let p = boxes[i].as_ref().expect("loose boxes have bounds");
-            for (j, q) in boxes.iter().enumerate() {
-                // A loose pair once (from its lower body).
-                let Some(q) = q else { continue };
-                if j == i || (self.is_loose[j] && j < i) {
-                    continue;
-                }
-                self.tests += 1;
-                if p.overlaps(q) {
-                    out.push((i.min(j), i.max(j)));
-                }
-            }
-        }
+        self.tests += loose_pairs(&self.loose, &self.is_loose, boxes, out);
     }
 
     /// The median of the boxes' largest sides (the positive, finite ones);

@@ -10,7 +10,7 @@
 //! pair tested at the leaf of its higher body. A box that is not finite is
 //! loose: tested against every other box.
 
-use super::bounds::Bounds;
+use super::bounds::{loose_pairs, Bounds};
 
 const NONE: usize = usize::MAX;
 
@@ -94,19 +94,7 @@ impl Tree {
                 }
             }
         }
-        for &i in &self.loose {
-            let p = boxes[i].as_ref().expect("loose boxes have bounds");
-            for (j, q) in boxes.iter().enumerate() {
-                let Some(q) = q else { continue };
-                if j == i || (self.is_loose[j] && j < i) {
-                    continue;
-                }
-                self.tests += 1;
-                if p.overlaps(q) {
-                    out.push((i.min(j), i.max(j)));
-                }
-            }
-        }
+        self.tests += loose_pairs(&self.loose, &self.is_loose, boxes, out);
     }
 
     /// Leaves in the tree.

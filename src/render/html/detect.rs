@@ -72,18 +72,26 @@ pub fn document(t: &DetectTrace, f: &Fmt) -> String {
             show::svg_at(t, k, usize::MAX),
         );
     }
-    if t.pairs.len() > PAIRS {
+    finish(
+        body,
+        t.pairs.len(),
+        "detect",
+        &format!("{} — detection", t.title),
+        &head,
+    )
+}
+
+/// Ends a detection page (this one and `detect --toi`'s): the pairs past
+/// [`PAIRS`] said with the command that walks through one (`command`), then
+/// the page.
+pub fn finish(mut body: String, pairs: usize, command: &str, title: &str, head: &str) -> String {
+    if pairs > PAIRS {
         let _ = writeln!(
             body,
-            "<p>{} more pairs: the text above lists them; <code>detect --pair A,B</code> walks through one.</p>",
-            t.pairs.len() - PAIRS
+            "<p>{} more pairs: the text above lists them; <code>{command} --pair A,B</code> walks through one.</p>",
+            pairs - PAIRS
         );
     }
     body.push_str("</main>");
-    page::page(
-        &format!("{} — detection", t.title),
-        page::Steps::Iterations,
-        &head,
-        &body,
-    )
+    page::page(title, page::Steps::Iterations, head, &body)
 }

@@ -40,29 +40,7 @@ impl View {
 
 /// One scale for the whole run: the bounds of every body in every frame.
 pub fn view(run: &RunTrace, plane: Plane) -> View {
-    let (mut lo, mut hi) = (
-        (f64::INFINITY, f64::INFINITY),
-        (f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
-    for f in &run.frames {
-        for (i, b) in f.bodies.iter().enumerate() {
-            let Some(o) = run.shapes[i]
-                .as_ref()
-                .and_then(|s| outline(s, b.position, b.orientation, plane))
-            else {
-                continue;
-            };
-            for p in o.silhouette.points() {
-                if p[0].is_finite() && p[1].is_finite() {
-                    lo = (lo.0.min(p[0]), lo.1.min(p[1]));
-                    hi = (hi.0.max(p[0]), hi.1.max(p[1]));
-                }
-            }
-        }
-    }
-    if !lo.0.is_finite() {
-        (lo, hi) = ((-1.0, -1.0), (1.0, 1.0));
-    }
+    let (lo, hi) = crate::render::run_film::frames_bounds(run, 0..run.frames.len(), plane);
     let span = ((hi.0 - lo.0).max(1e-12), (hi.1 - lo.1).max(1e-12));
     View {
         centre: ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0),

@@ -7,15 +7,15 @@
 
 use std::fmt::Write;
 
-use super::{esc, figure, page};
+use super::{esc, figure};
 use crate::format::Fmt;
 use crate::physics::detect::ToiMethod;
 use crate::render::toi as show;
 use crate::trace::toi::{DetectToi, PairToi, Test};
 
-/// Pairs a page walks through, and tests of each (the text before them
-/// says every test of every pair).
-pub const PAIRS: usize = 8;
+/// Tests of each pair a page walks through (the text before them says
+/// every test of every pair); pairs as the detect page
+/// ([`super::detect::PAIRS`]).
 pub const TESTS: usize = 60;
 
 const W: f64 = 640.0;
@@ -198,22 +198,15 @@ pub fn document(d: &DetectToi, pictures: &[Option<String>], f: &Fmt) -> String {
         &[],
         &format!("<pre class=\"text\">{}</pre>", esc(&show::text(d, f))),
     );
-    for (k, p) in d.pairs.iter().enumerate().take(PAIRS) {
+    for (k, p) in d.pairs.iter().enumerate().take(super::detect::PAIRS) {
         let svg = pictures.get(k).and_then(Option::as_deref);
         pair(&mut body, d, k, p, svg, f);
     }
-    if d.pairs.len() > PAIRS {
-        let _ = writeln!(
-            body,
-            "<p>{} more pairs: the text above lists them; <code>detect --toi --pair A,B</code> walks through one.</p>",
-            d.pairs.len() - PAIRS
-        );
-    }
-    body.push_str("</main>");
-    page::page(
+    super::detect::finish(
+        body,
+        d.pairs.len(),
+        "detect --toi",
         &format!("{} — time of collision", d.lesson),
-        page::Steps::Iterations,
         &head,
-        &body,
     )
 }
