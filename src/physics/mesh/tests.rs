@@ -1,0 +1,480 @@
+//! Mesh tests: mass properties against closed forms, the checks, the OBJ
+//! reader, the tree against brute force, and the mid phase against an
+//! independent closest-point computation over every triangle.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::bvh::overlaps;
+use super::obj;
+use super::query::mesh_convex;
+use super::triangle::closest_point;
+use super::{MeshError, TriMesh};
+use crate::physics::detect::Convex;
+use crate::physics::pose::Pose;
+use crate::physics::Shape;
+
+/// A box of full sides `s` centred at `c`, 12 triangles wound outward.
+pub fn box_mesh(s: [f64; 3], c: [f64; 3]) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
+    let mut v = Vec::new();
+    for i in 0..8 {
+        let sign = |bit: usize| if i & bit != 0 { 0.5 } else { -0.5 };
+        v.push([
+            c[0] + sign(1) * s[0],
+            c[1] + sign(2) * s[1],
+            c[2] + sign(4) * s[2],
+        ]);
+    }
+    let quads = [
+        [0, 2, 3, 1], // -z
+        [4, 5, 7, 6], // +z
+        [0, 1, 5, 4], // -y
+        [2, 6, 7, 3], // +y
+        [0, 4, 6, 2], // -x
+        [1, 3, 7, 5], // +x
+    ];
+    let t = quads
+        .iter()
+        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+        .collect();
+    (v, t)
+}
+
+/// An icosphere of radius r subdivided `level` times.
+pub fn icosphere(r: f64, level: usize) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
+    let g = (1.0 + 5f64.sqrt()) / 2.0;
+    let mut v: Vec<Vector3<f64>> = [
+        [-1.0, g, 0.0],
+        [1.0, g, 0.0],
+        [-1.0, -g, 0.0],
+        [1.0, -g, 0.0],
+        [0.0, -1.0, g],
+        [0.0, 1.0, g],
+        [0.0, -1.0, -g],
+        [0.0, 1.0, -g],
+        [g, 0.0, -1.0],
+        [g, 0.0, 1.0],
+        [-g, 0.0, -1.0],
+        [-g, 0.0, 1.0],
+    ]
+    .iter()
+    .map(|p| Vector3::from(*p).normalize())
+    .collect();
+    let mut t: Vec<[usize; 3]> = vec![
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
+    ];
+    for _ in 0..level {
+        let mut mids = std::collections::HashMap::new();
+        let mut mid = |a: usize, b: usize, v: &mut Vec<Vector3<f64>>| {
+            *mids.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                v.push(((v[a] + v[b]) / 2.0).normalize());
+                v.len() - 1
+            })
+        };
+        let mut next = Vec::new();
+        for [a, b, c] in t {
+            let (ab, bc, ca) = (mid(a, b, &mut v), mid(b, c, &mut v), mid(c, a, &mut v));
+            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+        }
+        t = next;
+    }
+    (v.iter().map(|p| (p * r).into()).collect(), t)
+}
+
+/// A wavy open terrain of n × n squares, side `h`, two triangles each.
+pub fn terrain(n: usize, h: f64) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
+    let mut v = Vec::new();
+    for i in 0..=n {
+        for j in 0..=n {
+            let (x, z) = (i as f64 * h, j as f64 * h);
+            v.push([x, 0.3 * (x * 0.7).sin() * (z * 0.5).cos(), z]);
+        }
+    }
+    let at = |i: usize, j: usize| i * (n + 1) + j;
+    let mut t = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            // Counter-clockwise seen from +y.
+            t.push([at(i, j), at(i, j + 1), at(i + 1, j)]);
+            t.push([at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)]);
+        }
+    }
+    (v, t)
+}
+
+#[test]
+fn a_twelve_triangle_box_is_the_box() {
+    for (s, c) in [
+        ([1.0, 2.0, 3.0], [0.0; 3]),
+        ([0.2, 5.0, 0.7], [3.0, -1.0, 2.5]),
+    ] {
+        let (v, t) = box_mesh(s, c);
+        let mesh = TriMesh::new(&v, &t).unwrap();
+        assert!(mesh.is_closed());
+        let mp = mesh.mass_properties().unwrap();
+        let volume = s[0] * s[1] * s[2];
+        assert!((mp.volume - volume).abs() < 1e-12 * volume);
+        assert!((mp.centroid - Vector3::from(c)).norm() < 1e-12);
+        let m = 7.0;
+        let want = Shape::Box { sides: s }.inertia(m).unwrap();
+        let got = mp.unit_inertia * (m / mp.volume);
+        assert!((got - want).norm() < 1e-12 * want.norm(), "{got} vs {want}");
+    }
+}
+
+#[test]
+fn an_icosphere_converges_to_two_fifths_m_r_squared() {
+    let mut last = f64::INFINITY;
+    for level in 0..5 {
+        let (v, t) = icosphere(2.0, level);
+        let mesh = TriMesh::new(&v, &t).unwrap();
+        let mp = mesh.mass_properties().unwrap();
+        let per_mass = mp.unit_inertia / mp.volume / (2.0 * 2.0);
+        let err = (per_mass - Matrix3::identity() * 0.4).amax();
+        assert!(err < last, "level {level}: {err} not below {last}");
+        assert!(mp.centroid.norm() < 1e-12);
+        last = err;
+    }
+    assert!(last < 1e-3, "level 4 error {last}");
+}
+
+#[test]
+fn bad_meshes_are_refused_with_the_triangle() {
+    let (v, mut t) = box_mesh([1.0; 3], [0.0; 3]);
+    t[3] = [t[3][0], t[3][2], t[3][1]];
+    assert!(matches!(
+        TriMesh::new(&v, &t),
+        Err(MeshError::Inconsistent { .. })
+    ));
+    let (v, mut t) = box_mesh([1.0; 3], [0.0; 3]);
+    t[5] = [0, 0, 1];
+    assert_eq!(TriMesh::new(&v, &t).unwrap_err().triangle(), Some(5));
+    t[5] = [0, 1, 9];
+    assert!(matches!(
+        TriMesh::new(&v, &t),
+        Err(MeshError::OutOfRange { vertex: 9, .. })
+    ));
+    let line = [[0.0; 3], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]];
+    assert!(matches!(
+        TriMesh::new(&line, &[[0, 1, 2]]),
+        Err(MeshError::Degenerate { .. })
+    ));
+    let fan = [
+        [0.0; 3],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, -1.0, 0.0],
+    ];
+    assert!(matches!(
+        TriMesh::new(&fan, &[[0, 1, 2], [1, 0, 3], [0, 1, 4]]),
+        Err(MeshError::NonManifold { .. } | MeshError::Inconsistent { .. })
+    ));
+    let (v, t) = box_mesh([1.0; 3], [0.0; 3]);
+    let open = TriMesh::new(&v, &t[..11]).unwrap();
+    assert!(!open.is_closed() && open.mass_properties().is_none());
+    let inside_out: Vec<[usize; 3]> = t.iter().map(|&[a, b, c]| [a, c, b]).collect();
+    assert!(TriMesh::new(&v, &inside_out)
+        .unwrap()
+        .mass_properties()
+        .is_none());
+}
+
+#[test]
+fn obj_fans_polygons_and_counts_what_it_ignores() {
+    let text = "# a square\nv 0 0 0\nv 1 0 0\nv 1 0 -1\nv 0 0 -1\nvn 0 1 0\ng top\nf 1//1 2//1 3//1 4//1\nf -4 -2 -1\n";
+    let o = obj::parse(text).unwrap();
+    assert_eq!(o.triangles, vec![[0, 1, 2], [0, 2, 3], [0, 2, 3]]);
+    assert_eq!(o.triangle_at[2], (9, 1));
+    assert_eq!(o.ignored, vec![("vn".to_string(), 1), ("g".to_string(), 1)]);
+    let e = obj::parse("v 0 0 0\nv 1 0 0\n  f 1 2 x\n").unwrap_err();
+    assert_eq!((e.line, e.column), (3, 9));
+    let e = obj::parse("v 0 nan 0\n").unwrap_err();
+    assert_eq!((e.line, e.column), (1, 5));
+    let e = obj::parse("v 0 0 0\nf 1 2 3\n").unwrap_err();
+    assert_eq!((e.line, e.column), (2, 5));
+}
+
+#[test]
+fn the_tree_finds_what_brute_force_finds() {
+    let (v, t) = terrain(20, 0.5);
+    let mesh = TriMesh::new(&v, &t).unwrap();
+    assert_eq!(mesh.bvh().nodes().len(), 2 * t.len() - 1);
+    assert!(mesh.bvh().depth() <= 11, "depth {}", mesh.bvh().depth());
+    for k in 0..50 {
+        let x = (k as f64 * 0.37) % 10.0;
+        let z = (k as f64 * 0.61) % 10.0;
+        let q = [
+            Vector3::new(x, -0.2, z),
+            Vector3::new(x + 0.8, 0.3, z + 0.4),
+        ];
+        let (_, got) = mesh.bvh().traverse(&q);
+        let want: Vec<usize> = (0..t.len())
+            .filter(|&i| {
+                let c = mesh.corners(i);
+                let b = [c[0].inf(&c[1]).inf(&c[2]), c[0].sup(&c[1]).sup(&c[2])];
+                overlaps(&b, &q)
+            })
+            .collect();
+        assert_eq!(got, want);
+    }
+}
+
+/// Distance from p to triangle abc without Voronoi regions: the plane's
+/// foot if it is inside (all three edge tests), otherwise the nearest of
+/// the three segments.
+fn independent_distance(p: &Vector3<f64>, [a, b, c]: &[Vector3<f64>; 3]) -> f64 {
+    let n = (b - a).cross(&(c - a)).normalize();
+    let foot = p - n * (p - a).dot(&n);
+    let inside = [(a, b), (b, c), (c, a)]
+        .iter()
+        .all(|(u, w)| (*w - *u).cross(&(foot - *u)).dot(&n) >= 0.0);
+    if inside {
+        return (p - foot).norm();
+    }
+    [(a, b), (b, c), (c, a)]
+        .iter()
+        .map(|(u, w)| {
+            let e = *w - *u;
+            let s = ((p - *u).dot(&e) / e.norm_squared()).clamp(0.0, 1.0);
+            (p - (*u + e * s)).norm()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn closest_points_agree_with_the_independent_distance() {
+    let tri = [
+        Vector3::new(0.0, 0.0, 0.0),
+        Vector3::new(2.0, 0.1, 0.0),
+        Vector3::new(0.5, 0.2, 1.5),
+    ];
+    for i in 0..400 {
+        let f = i as f64;
+        let p = Vector3::new(
+            (f * 0.731).sin() * 3.0,
+            (f * 1.37).cos() * 2.0,
+            (f * 0.419).sin() * 3.0,
+        );
+        let (q, _) = closest_point(&p, &tri);
+        assert!(((p - q).norm() - independent_distance(&p, &tri)).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn mesh_sphere_distance_agrees_with_every_triangle_to_1e_9() {
+    let (v, t) = terrain(12, 0.5);
+    let mesh = TriMesh::new(&v, &t).unwrap();
+    let mesh_pose = Pose::at(Vector3::new(-1.0, 0.5, 2.0));
+    let sphere = Convex::from_shape(&Shape::Sphere { radius: 0.3 }).unwrap();
+    for k in 0..60 {
+        let f = k as f64;
+        let centre = Vector3::new(
+            -1.0 + (f * 0.53) % 6.0,
+            1.0 + 0.4 * (f * 0.9).sin(),
+            2.0 + (f * 0.77) % 6.0,
+        );
+        let pose = Pose::at(centre);
+        let q = mesh_convex(&sphere, &pose, &mesh, &mesh_pose, 0.5, true);
+        let local = mesh_pose.to_local(&centre);
+        let want = (0..t.len())
+            .map(|i| independent_distance(&local, &mesh.corners(i)))
+            .fold(f64::INFINITY, f64::min)
+            - 0.3;
+        if want > 0.0 && want < 0.5 {
+            assert!(
+                (q.distance - want).abs() < 1e-9,
+                "{k}: {} vs {want}",
+                q.distance
+            );
+        }
+        assert!(q.candidates.len() < t.len() / 4, "the tree pruned nothing");
+    }
+}
+
+#[test]
+fn mesh_box_distance_agrees_with_every_triangle_to_1e_9() {
+    let (v, t) = terrain(10, 0.5);
+    let mesh = TriMesh::new(&v, &t).unwrap();
+    let mesh_pose = Pose::at(Vector3::zeros());
+    let cube = Convex::from_shape(&Shape::Box {
+        sides: [0.4, 0.3, 0.5],
+    })
+    .unwrap();
+    let mut checked = 0;
+    for k in 0..60 {
+        let f = k as f64;
+        let rot = nalgebra::UnitQuaternion::from_euler_angles(f * 0.3, f * 0.7, f * 0.11);
+        let pose = Pose::from_unit(
+            Vector3::new(
+                0.5 + (f * 0.53) % 4.0,
+                0.55 + 0.2 * (f * 0.9).sin(),
+                0.5 + (f * 0.77) % 4.0,
+            ),
+            &rot,
+        );
+        let q = mesh_convex(&cube, &pose, &mesh, &mesh_pose, 0.3, true);
+        // Independent: box corners to each triangle, triangle corners to the
+        // box, and the box's edges against the triangle's (segment pairs,
+        // sampled finely then refined by the corners' minimum).
+        let corners: Vec<Vector3<f64>> = (0..8)
+            .map(|i| {
+                let s = |bit: usize, h: f64| if i & bit != 0 { h } else { -h };
+                pose.to_world(&Vector3::new(s(1, 0.2), s(2, 0.15), s(4, 0.25)))
+            })
+            .collect();
+        let to_box = |p: &Vector3<f64>| {
+            let l = pose.to_local(p);
+            let h = Vector3::new(0.2, 0.15, 0.25);
+            let d = l.abs() - h;
+            d.sup(&Vector3::zeros()).norm()
+        };
+        let edges: Vec<(usize, usize)> = (0..8)
+            .flat_map(|i| {
+                [1, 2, 4]
+                    .into_iter()
+                    .filter(move |b| i & b == 0)
+                    .map(move |b| (i, i | b))
+            })
+            .collect();
+        let want = (0..t.len())
+            .map(|i| {
+                let c = mesh.corners(i);
+                let mut d = corners
+                    .iter()
+                    .map(|p| independent_distance(p, &c))
+                    .fold(f64::INFINITY, f64::min);
+                d = d.min(c.iter().map(to_box).fold(f64::INFINITY, f64::min));
+                for &(a, b) in &edges {
+                    for k in 0..3 {
+                        d = d.min(segment_distance(
+                            corners[a],
+                            corners[b],
+                            c[k],
+                            c[(k + 1) % 3],
+                        ));
+                    }
+                    if segment_crosses_triangle(corners[a], corners[b], &c) {
+                        d = 0.0;
+                    }
+                }
+                let h = Vector3::new(0.2, 0.15, 0.25);
+                for k in 0..3 {
+                    let (p, q) = (pose.to_local(&c[k]), pose.to_local(&c[(k + 1) % 3]));
+                    if segment_crosses_box(p, q, h) {
+                        d = 0.0;
+                    }
+                }
+                d
+            })
+            .fold(f64::INFINITY, f64::min);
+        if want > 1e-6 && want < 0.3 {
+            checked += 1;
+            assert!(
+                (q.distance - want).abs() < 1e-9,
+                "{k}: {} vs {want}",
+                q.distance
+            );
+        }
+    }
+    assert!(checked > 10, "only {checked} separated poses");
+}
+
+/// Whether segment pq passes through triangle c (plane crossing inside).
+fn segment_crosses_triangle(p: Vector3<f64>, q: Vector3<f64>, c: &[Vector3<f64>; 3]) -> bool {
+    let n = (c[1] - c[0]).cross(&(c[2] - c[0]));
+    let (dp, dq) = ((p - c[0]).dot(&n), (q - c[0]).dot(&n));
+    if dp * dq > 0.0 || dp == dq {
+        return false;
+    }
+    let x = p + (q - p) * (dp / (dp - dq));
+    (0..3).all(|k| (c[(k + 1) % 3] - c[k]).cross(&(x - c[k])).dot(&n) >= 0.0)
+}
+
+/// Whether segment pq meets the box of half sides h (slab clipping).
+fn segment_crosses_box(p: Vector3<f64>, q: Vector3<f64>, h: Vector3<f64>) -> bool {
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for i in 0..3 {
+        let d = q[i] - p[i];
+        if d.abs() < 1e-300 {
+            if p[i].abs() > h[i] {
+                return false;
+            }
+            continue;
+        }
+        let (t0, t1) = ((-h[i] - p[i]) / d, (h[i] - p[i]) / d);
+        lo = lo.max(t0.min(t1));
+        hi = hi.min(t0.max(t1));
+    }
+    lo <= hi
+}
+
+/// Distance between segments pq and rs (Ericson 5.1.9, written out here).
+fn segment_distance(p: Vector3<f64>, q: Vector3<f64>, r: Vector3<f64>, s: Vector3<f64>) -> f64 {
+    let (d1, d2, w) = (q - p, s - r, p - r);
+    let (a, e, f) = (d1.norm_squared(), d2.norm_squared(), d2.dot(&w));
+    let (b, c) = (d1.dot(&d2), d1.dot(&w));
+    let denom = a * e - b * b;
+    let mut u = if denom > 1e-300 {
+        ((b * f - c * e) / denom).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let mut v = (b * u + f) / e;
+    if v < 0.0 {
+        v = 0.0;
+        u = (-c / a).clamp(0.0, 1.0);
+    } else if v > 1.0 {
+        v = 1.0;
+        u = ((b - c) / a).clamp(0.0, 1.0);
+    }
+    ((p + d1 * u) - (r + d2 * v)).norm()
+}
+
+#[test]
+fn a_flat_shared_edge_gets_the_face_normal_with_fix_and_not_raw() {
+    // Two coplanar triangles; a box corner over their shared diagonal,
+    // sunk 1 cm: the raw EPA normal may lean, the fixed one is +y.
+    let v = [
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, 2.0],
+        [2.0, 0.0, 0.0],
+        [2.0, 0.0, 2.0],
+    ];
+    let t = [[0, 1, 2], [2, 1, 3]];
+    let mesh = TriMesh::new(&v, &t).unwrap();
+    let cube = Convex::from_shape(&Shape::Box { sides: [0.2; 3] }).unwrap();
+    let pose = Pose::from_unit(
+        Vector3::new(1.0, 0.1 * 3f64.sqrt() - 0.01, 1.0),
+        &nalgebra::UnitQuaternion::rotation_between(&Vector3::new(1.0, 1.0, 1.0), &Vector3::y())
+            .unwrap(),
+    );
+    let q = mesh_convex(&cube, &pose, &mesh, &Pose::at(Vector3::zeros()), 0.0, true);
+    assert_eq!(q.candidates, vec![0, 1]);
+    for test in &q.triangles {
+        assert!((test.normal - Vector3::y()).norm() < 1e-12, "{:?}", test);
+        assert!(
+            (test.penetration - 0.01).abs() < 1e-9,
+            "{}",
+            test.penetration
+        );
+    }
+}
