@@ -29,7 +29,7 @@ pub fn mass_properties(
             * (det / 120.0);
     }
     let scale = vertices.iter().map(|v| (v - o).norm()).fold(0.0, f64::max);
-    if !(volume > 1e-12 * scale.powi(3)) {
+    if volume.is_nan() || volume <= 1e-12 * scale.powi(3) {
         return None;
     }
     let g = first / volume;

@@ -64,15 +64,14 @@ pub fn bounds_in_mesh_frame<S: Support<f64> + ?Sized>(
     mesh_pose: &Pose<f64>,
     margin: f64,
 ) -> Aabb {
-    let mut b = [Vector3::zeros(); 2];
-    for i in 0..3 {
-        let axis = mesh_pose.axis(i);
-        let hi = mesh_pose.to_local(&shape.support(pose, &axis))[i];
-        let lo = mesh_pose.to_local(&shape.support(pose, &-axis))[i];
-        b[0][i] = lo - margin;
-        b[1][i] = hi + margin;
-    }
-    b
+    let along = |i: usize, sign: f64| {
+        let axis = mesh_pose.axis(i) * sign;
+        mesh_pose.to_local(&shape.support(pose, &axis))[i]
+    };
+    [
+        Vector3::from_fn(|i, _| along(i, -1.0) - margin),
+        Vector3::from_fn(|i, _| along(i, 1.0) + margin),
+    ]
 }
 
 /// The mid and narrow phase of `shape` against `mesh`; `fix` corrects
