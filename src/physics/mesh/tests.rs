@@ -450,7 +450,7 @@ fn segment_distance(p: Vector3<f64>, q: Vector3<f64>, r: Vector3<f64>, s: Vector
 }
 
 #[test]
-fn a_flat_shared_edge_gets_the_face_normal_with_fix_and_not_raw() {
+fn a_flat_shared_edge_gets_the_face_normal_with_fix() {
     // Two coplanar triangles; a box corner over their shared diagonal,
     // sunk 1 cm: the raw EPA normal may lean, the fixed one is +y.
     let v = [
@@ -477,4 +477,53 @@ fn a_flat_shared_edge_gets_the_face_normal_with_fix_and_not_raw() {
             test.penetration
         );
     }
+}
+
+#[test]
+fn a_box_overlapping_the_next_triangle_by_a_sliver_is_pushed_back_raw_and_up_fixed() {
+    // Two unit squares along x, two triangles each; a box sunk 1 cm whose
+    // front reaches 5 mm over the shared edge x = 1: raw EPA on the next
+    // triangle pushes it back along -x (the ghost bump), the fix lifts it.
+    let v: Vec<[f64; 3]> = (0..3)
+        .flat_map(|i| (0..2).map(move |j| [i as f64, 0.0, j as f64]))
+        .collect();
+    let at = |i: usize, j: usize| i * 2 + j;
+    let t: Vec<[usize; 3]> = (0..2)
+        .flat_map(|i| {
+            [
+                [at(i, 0), at(i, 1), at(i + 1, 0)],
+                [at(i + 1, 0), at(i, 1), at(i + 1, 1)],
+            ]
+        })
+        .collect();
+    let mesh = TriMesh::new(&v, &t).unwrap();
+    let cube = Convex::from_shape(&Shape::Box { sides: [0.2; 3] }).unwrap();
+    let pose = Pose::at(Vector3::new(0.905, 0.09, 0.5));
+    let origin = Pose::at(Vector3::zeros());
+    let raw = mesh_convex(&cube, &pose, &mesh, &origin, 0.0, false);
+    let fixed = mesh_convex(&cube, &pose, &mesh, &origin, 0.0, true);
+    let next = |q: &super::query::MeshQuery| q.triangles.iter().find(|x| x.triangle == 2).cloned();
+    let (r, f) = (next(&raw).unwrap(), next(&fixed).unwrap());
+    assert!(r.normal.x < -0.99 && !r.corrected(), "raw {:?}", r.normal);
+    assert!(
+        (r.penetration - 0.005).abs() < 1e-9,
+        "raw depth {}",
+        r.penetration
+    );
+    assert!(f.corrected() && (f.normal - Vector3::y()).norm() < 1e-12);
+    assert!(
+        (f.penetration - 0.01).abs() < 1e-9,
+        "fixed depth {}",
+        f.penetration
+    );
+    assert_eq!(f.raw_normal, r.raw_normal);
+}
+
+#[test]
+fn a_large_mesh_builds_a_balanced_tree() {
+    // 80,000 triangles: median splits give depth ⌈log2 n⌉ + 1 = 18.
+    let (v, t) = terrain(200, 0.1);
+    let mesh = TriMesh::new(&v, &t).unwrap();
+    assert_eq!(mesh.bvh().nodes().len(), 2 * t.len() - 1);
+    assert_eq!(mesh.bvh().depth(), 18);
 }
