@@ -18,6 +18,7 @@ pub mod detect;
 pub mod exact;
 pub mod hull;
 pub mod hull_faces;
+pub mod mesh;
 pub mod params;
 pub mod pose;
 pub mod resolver;

@@ -1,0 +1,121 @@
+//! Triangle meshes: vertices and triangles in the body frame, checked on
+//! construction (no degenerate triangle, every edge shared by at most two
+//! triangles that wind it in opposite directions), their mass properties
+//! from the surface ([`mass`]), an AABB tree over the triangles ([`bvh`]),
+//! closest points on a triangle ([`triangle`]), the mid phase's query
+//! against a convex shape ([`query`]), and the Wavefront OBJ reader ([`obj`]).
+
+pub mod bvh;
+pub mod edges;
+pub mod mass;
+pub mod obj;
+pub mod query;
+pub mod topology;
+pub mod triangle;
+
+use nalgebra::Vector3;
+
+pub use bvh::Bvh;
+pub use topology::MeshError;
+
+use crate::physics::hull::MassProperties;
+
+/// A triangle mesh in the body frame, with its tree and neighbours.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TriMesh {
+    vertices: Vec<Vector3<f64>>,
+    triangles: Vec<[usize; 3]>,
+    /// For triangle t and its edge k (from vertex k to k+1), the triangle
+    /// across that edge, if any.
+    neighbours: Vec<[Option<usize>; 3]>,
+    closed: bool,
+    bvh: Bvh,
+}
+
+impl TriMesh {
+    /// A mesh from vertices and triangles (counter-clockwise seen from
+    /// outside), or why it is refused.
+    pub fn new(vertices: &[[f64; 3]], triangles: &[[usize; 3]]) -> Result<TriMesh, MeshError> {
+        let vertices: Vec<Vector3<f64>> = vertices.iter().map(|v| Vector3::from(*v)).collect();
+        let (neighbours, closed) = topology::check(&vertices, triangles)?;
+        let bvh = Bvh::build(&vertices, triangles);
+        Ok(TriMesh {
+            vertices,
+            triangles: triangles.to_vec(),
+            neighbours,
+            closed,
+            bvh,
+        })
+    }
+
+    pub fn vertices(&self) -> &[Vector3<f64>] {
+        &self.vertices
+    }
+
+    pub fn triangles(&self) -> &[[usize; 3]] {
+        &self.triangles
+    }
+
+    /// The triangle across each edge (k → k+1) of triangle `t`.
+    pub fn neighbours(&self, t: usize) -> [Option<usize>; 3] {
+        self.neighbours[t]
+    }
+
+    /// True when every edge has two triangles: the mesh bounds a solid.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    pub fn bvh(&self) -> &Bvh {
+        &self.bvh
+    }
+
+    /// Triangle `t`'s corners.
+    pub fn corners(&self, t: usize) -> [Vector3<f64>; 3] {
+        self.triangles[t].map(|i| self.vertices[i])
+    }
+
+    /// Triangle `t`'s unit normal (counter-clockwise: outward).
+    pub fn normal(&self, t: usize) -> Vector3<f64> {
+        let [a, b, c] = self.corners(t);
+        (b - a).cross(&(c - a)).normalize()
+    }
+
+    /// The solid's volume, centroid and unit-density inertia (closed meshes
+    /// only: `None` for an open one or one enclosing no volume).
+    pub fn mass_properties(&self) -> Option<MassProperties> {
+        if !self.closed {
+            return None;
+        }
+        mass::mass_properties(&self.vertices, &self.triangles)
+    }
+
+    /// The same mesh moved by `offset` (the lesson re-centres a movable
+    /// mesh on its centroid).
+    pub fn translated(&self, offset: &Vector3<f64>) -> TriMesh {
+        let vertices: Vec<[f64; 3]> = (self.vertices.iter())
+            .map(|v| (v + offset).into())
+            .collect();
+        TriMesh {
+            vertices: vertices.iter().map(|v| Vector3::from(*v)).collect(),
+            triangles: self.triangles.clone(),
+            neighbours: self.neighbours.clone(),
+            closed: self.closed,
+            bvh: Bvh::build(
+                &vertices
+                    .iter()
+                    .map(|v| Vector3::from(*v))
+                    .collect::<Vec<_>>(),
+                &self.triangles,
+            ),
+        }
+    }
+
+    /// Largest distance of a vertex from the body origin.
+    pub fn bounding_radius(&self) -> f64 {
+        self.vertices.iter().map(|v| v.norm()).fold(0.0, f64::max)
+    }
+}
+
+#[cfg(test)]
+mod tests;
