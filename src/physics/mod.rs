@@ -16,6 +16,7 @@ pub mod collide;
 pub mod contact;
 pub mod detect;
 pub mod exact;
+pub mod lcp;
 pub mod hull;
 pub mod hull_faces;
 pub mod params;
@@ -31,7 +32,7 @@ pub use contact::{causes, checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
 pub use params::{
     ContactParams, ContactSettings, FrictionModel, ProjectionMethod, ResolverParams,
-    RestitutionFrom, SceneSettings, Settings, SimParams, SleepParams, Solver, StepParams,
+    LcpRestitution, RestitutionFrom, SceneSettings, Settings, SimParams, SleepParams, Solver, StepParams,
     WorldParams,
 };
 pub use shape::Shape;
