@@ -27,6 +27,7 @@ mod hull_pairs;
 mod invariants;
 mod kept_energy;
 mod lean_position;
+mod lcp;
 mod lean_prepare;
 mod models_and_options;
 mod previous_normal;
