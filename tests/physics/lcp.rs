@@ -46,7 +46,11 @@ fn rows_of_touching_balls_simultaneously_and_in_sequence() {
         &[-0.6 * v, 0.4 * v, 0.4 * v, 0.4 * v, 0.4 * v],
         "N = 5 simultaneous",
     );
-    assert_close(&after("impact-row-3", Solver::DeepestFirst, 0), &[0.0, 0.0, v], "N = 3 sequence");
+    assert_close(
+        &after("impact-row-3", Solver::DeepestFirst, 0),
+        &[0.0, 0.0, v],
+        "N = 3 sequence",
+    );
     assert_close(
         &after("impact-row-5", Solver::DeepestFirst, 0),
         &[0.0, 0.0, 0.0, 0.0, v],
@@ -141,7 +145,11 @@ fn an_inconsistent_system_is_reported_not_looped_on() {
     let before = w.bodies.clone();
     let r = run(&w, &lesson.resolver);
     let rec = r.lcp.as_ref().unwrap();
-    assert!(matches!(rec.failure(), Some(Failure::Ray(_))), "{:?}", rec.problems);
+    assert!(
+        matches!(rec.failure(), Some(Failure::Ray(_))),
+        "{:?}",
+        rec.problems
+    );
     assert!(rec.pivots().count() <= 4);
     assert_eq!(rec.impulses, vec![0.0, 0.0]);
     assert_eq!(r.bodies[0].velocity, before[1].state.velocity);

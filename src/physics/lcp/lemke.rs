@@ -108,7 +108,10 @@ pub fn solve<T: Real>(a: &[Vec<T>], b: &[T]) -> Run<T> {
     let n = b.len();
     let mut pivots = Vec::new();
     if b.iter().all(|&x| x >= T::zero()) {
-        return Run { pivots, result: Ok(vec![T::zero(); n]) };
+        return Run {
+            pivots,
+            result: Ok(vec![T::zero(); n]),
+        };
     }
     let scale = a
         .iter()
@@ -148,17 +151,33 @@ pub fn solve<T: Real>(a: &[Vec<T>], b: &[T]) -> Run<T> {
                     row = r;
                     tie = tied;
                 }
-                None => return Run { pivots, result: Err(Failure::Ray(entering)) },
+                None => {
+                    return Run {
+                        pivots,
+                        result: Err(Failure::Ray(entering)),
+                    }
+                }
             }
         }
         if pivots.len() == cap {
-            return Run { pivots, result: Err(Failure::PivotCap(cap)) };
+            return Run {
+                pivots,
+                result: Err(Failure::PivotCap(cap)),
+            };
         }
         let leaving = basis[row];
         let ratio = rhs[row] / column[row];
         pivot(&mut t, row, col);
         basis[row] = entering;
-        pivots.push(Pivot { entering, leaving, row, ratio, column, rhs, tie });
+        pivots.push(Pivot {
+            entering,
+            leaving,
+            row,
+            ratio,
+            column,
+            rhs,
+            tie,
+        });
         if leaving == Var::Z0 {
             break;
         }
@@ -170,7 +189,10 @@ pub fn solve<T: Real>(a: &[Vec<T>], b: &[T]) -> Run<T> {
             lambda[*j] = t[r][width - 1].max(T::zero());
         }
     }
-    Run { pivots, result: Ok(lambda) }
+    Run {
+        pivots,
+        result: Ok(lambda),
+    }
 }
 
 /// The row the entering column `col` pivots on: the least ratio rhs/entry
@@ -252,7 +274,10 @@ pub fn rank<T: Real>(a: &[Vec<T>]) -> usize {
     let mut rank = 0;
     for col in 0..n {
         let Some(p) = (rank..n).max_by(|&i, &j| {
-            m[i][col].abs().partial_cmp(&m[j][col].abs()).unwrap_or(std::cmp::Ordering::Equal)
+            m[i][col]
+                .abs()
+                .partial_cmp(&m[j][col].abs())
+                .unwrap_or(std::cmp::Ordering::Equal)
         }) else {
             break;
         };

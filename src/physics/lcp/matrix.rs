@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 
 use crate::physics::resolver::{desired_of, ResolverBody, ResolverContact};
 use crate::physics::stages::desired_velocity::applied_restitution;
-use crate::physics::{RestitutionFrom, Real};
+use crate::physics::{Real, RestitutionFrom};
 
 /// One body's velocity change per unit impulse at a contact.
 struct Response<T: Real> {

@@ -71,7 +71,9 @@ pub struct Record<T: Real> {
 impl<T: Real> Record<T> {
     /// Why no impulses were applied, if so.
     pub fn failure(&self) -> Option<Failure> {
-        self.problems.iter().find_map(|p| p.result.as_ref().err().copied())
+        self.problems
+            .iter()
+            .find_map(|p| p.result.as_ref().err().copied())
     }
 
     /// Every pivot of every problem, in order.
@@ -92,8 +94,7 @@ impl<T: Real> Record<T> {
             ));
         }
         let ties = self.pivots().filter(|(_, p)| p.tie).count();
-        (ties > 0).then(|| {
-            format!("degenerate: {ties} ratio test(s) tied; the lexicographic rule chose")
-        })
+        (ties > 0)
+            .then(|| format!("degenerate: {ties} ratio test(s) tied; the lexicographic rule chose"))
     }
 }

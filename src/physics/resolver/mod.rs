@@ -382,7 +382,12 @@ impl<T: Real> Resolver<T> {
         best
     }
 
-    pub(crate) fn finish<O: Observer<T>>(&self, phase: Phase, used: usize, obs: &mut O) -> PhaseOutcome<T> {
+    pub(crate) fn finish<O: Observer<T>>(
+        &self,
+        phase: Phase,
+        used: usize,
+        obs: &mut O,
+    ) -> PhaseOutcome<T> {
         let (limit, epsilon) = self.limits(phase);
         let (max_after, max_after_contact) = self.max(phase);
         let outcome = PhaseOutcome {

@@ -13,7 +13,12 @@ use crate::physics::{c, LcpRestitution, Real};
 /// Solves one LCP and records it.
 fn solve<T: Real>(stage: Stage, a: &[Vec<T>], b: Vec<T>) -> Problem<T> {
     let run = lemke::solve(a, &b);
-    Problem { stage, b, pivots: run.pivots, result: run.result }
+    Problem {
+        stage,
+        b,
+        pivots: run.pivots,
+        result: run.result,
+    }
 }
 
 /// λ₁ + λ₂ elementwise.

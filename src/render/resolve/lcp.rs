@@ -8,7 +8,7 @@ use serde_json::{json, Value as J};
 
 use crate::format::Fmt;
 use crate::knobs::Choice;
-use crate::physics::lcp::{Pivot, Record};
+use crate::physics::lcp::{Pivot, Record, Var};
 
 /// A pivot in words: who entered, who left, the ratio.
 pub fn pivot_line(k: usize, stage: &str, p: &Pivot<f64>, fmt: &Fmt) -> String {
@@ -18,12 +18,24 @@ pub fn pivot_line(k: usize, stage: &str, p: &Pivot<f64>, fmt: &Fmt) -> String {
         p.leaving.name(),
         p.row,
         fmt.num(p.ratio),
-        if p.tie { " (tied: lexicographic rule)" } else { "" }
+        if p.tie {
+            " (tied: lexicographic rule)"
+        } else {
+            ""
+        }
     )
 }
 
 /// The pivot's ratio test: each row's rhs / column entry where the entry is positive.
 pub fn ratio_test(p: &Pivot<f64>, fmt: &Fmt) -> String {
+    if p.entering == Var::Z0 {
+        return format!(
+            "z0 enters at the most negative b (row {}, b = {}): every w = b + z0 >= 0 once z0 = {}",
+            p.row,
+            fmt.num(p.rhs[p.row]),
+            fmt.num(p.ratio)
+        );
+    }
     let cells: Vec<String> = p
         .column
         .iter()
@@ -51,11 +63,18 @@ pub fn text(out: &mut String, r: &Record<f64>, fmt: &Fmt) {
         "   Simultaneous impact: find lambda >= 0 with w = A lambda + b >= 0 and lambda.w = 0 (Lemke's method, {} restitution)",
         r.restitution.name()
     );
-    let _ = writeln!(out, "   A (contact i's normal velocity change per unit impulse at contact j):");
+    let _ = writeln!(
+        out,
+        "   A (contact i's normal velocity change per unit impulse at contact j):"
+    );
     for row in &r.matrix {
         let _ = writeln!(out, "      [{}]", fmt.list(row));
     }
-    let _ = writeln!(out, "   restitution as applied: [{}]", fmt.list(&r.restitutions));
+    let _ = writeln!(
+        out,
+        "   restitution as applied: [{}]",
+        fmt.list(&r.restitutions)
+    );
     let mut k = 0;
     for p in &r.problems {
         let _ = writeln!(out, "   {} LCP: b = [{}]", p.stage.name(), fmt.list(&p.b));
@@ -77,7 +96,11 @@ pub fn text(out: &mut String, r: &Record<f64>, fmt: &Fmt) {
         }
     }
     let _ = writeln!(out, "   impulses applied: [{}]", fmt.list(&r.impulses));
-    let _ = writeln!(out, "   normal velocities after: [{}]", fmt.list(&r.velocities_after));
+    let _ = writeln!(
+        out,
+        "   normal velocities after: [{}]",
+        fmt.list(&r.velocities_after)
+    );
     for note in notes(r) {
         let _ = writeln!(out, "   · {note}");
     }
