@@ -303,7 +303,7 @@ mod tests {
 
     #[test]
     fn trivial_when_b_is_nonnegative() {
-        let run = solve(&[vec![1.0]], &[0.5]);
+        let run = solve(&[vec![1.0f64]], &[0.5]);
         assert!(run.pivots.is_empty());
         assert_eq!(run.result, Ok(vec![0.0]));
     }
@@ -311,7 +311,7 @@ mod tests {
     #[test]
     fn two_by_two_newton_row() {
         // N = 3 row, unit masses: A = [[2, -1], [-1, 2]], b = [-2v, 0] (e = 1).
-        let a = vec![vec![2.0, -1.0], vec![-1.0, 2.0]];
+        let a = vec![vec![2.0f64, -1.0], vec![-1.0, 2.0]];
         let run = solve(&a, &[-2.0, 0.0]);
         let l = run.result.unwrap();
         assert!((l[0] - 4.0 / 3.0).abs() < 1e-12 && (l[1] - 2.0 / 3.0).abs() < 1e-12);
@@ -322,14 +322,14 @@ mod tests {
     #[test]
     fn inconsistent_system_is_a_ray() {
         // One body between two walls, both contacts asking to separate.
-        let a = vec![vec![1.0, -1.0], vec![-1.0, 1.0]];
+        let a = vec![vec![1.0f64, -1.0], vec![-1.0, 1.0]];
         let run = solve(&a, &[-1.0, -1.0]);
         assert!(matches!(run.result, Err(Failure::Ray(_))));
     }
 
     #[test]
     fn identical_contacts_terminate() {
-        let a = vec![vec![1.0, 1.0], vec![1.0, 1.0]];
+        let a = vec![vec![1.0f64, 1.0], vec![1.0, 1.0]];
         let run = solve(&a, &[-2.0, -2.0]);
         let l = run.result.unwrap();
         assert!((l[0] + l[1] - 2.0).abs() < 1e-12);
