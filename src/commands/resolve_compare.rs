@@ -109,7 +109,7 @@ fn json(pair: [Solver; 2], t: &[ResolverTrace; 2]) -> String {
                 })
                 .collect();
             let mut m = Map::new();
-            m.insert("solver".into(), json!(solver.name()));
+            m.insert(crate::knobs::SOLVER.name.into(), json!(solver.name()));
             m.insert("after".into(), J::Object(after));
             if let Some(l) = &trace.lcp {
                 m.insert("lcp".into(), lcp::json(l));
