@@ -285,11 +285,11 @@ pub fn rank<T: Real>(a: &[Vec<T>]) -> usize {
             continue;
         }
         m.swap(rank, p);
-        for i in rank + 1..n {
-            let f = m[i][col] / m[rank][col];
-            for k in col..n {
-                let v = m[rank][k];
-                m[i][k] -= f * v;
+        let pivot_row = m[rank].clone();
+        for row in m.iter_mut().skip(rank + 1) {
+            let f = row[col] / pivot_row[col];
+            for (x, &v) in row.iter_mut().zip(&pivot_row).skip(col) {
+                *x -= f * v;
             }
         }
         rank += 1;
