@@ -48,6 +48,7 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/ramp-slide.toml",
     "scenes/stack-5.toml",
     "scenes/cradle-over-time.toml",
+    "scenes/cradle-gaps.toml",
     "scenes/sleep-and-wake.toml",
     "scenes/sleep-modes.toml",
     "scenes/kane-rod-bounce.toml",
