@@ -32,6 +32,20 @@ pub struct Show {
     pub iteration: usize,
 }
 
+/// `A,B`: two spellings of the `solver` knob.
+fn parse_compare(s: &str) -> Result<[crate::physics::Solver; 2], String> {
+    use crate::knobs::Choice;
+    let names = crate::physics::Solver::NAMES.join(", ");
+    let one = |x: &str| {
+        crate::physics::Solver::from_name(x.trim())
+            .ok_or_else(|| format!("unknown solver '{x}' (solvers: {names})"))
+    };
+    let (a, b) = s
+        .split_once(',')
+        .ok_or_else(|| format!("expected two solvers A,B (solvers: {names}), got '{s}'"))?;
+    Ok([one(a)?, one(b)?])
+}
+
 fn parse_show(s: &str) -> Result<Show, String> {
     let bad =
         || format!("expected position:K or velocity:K (K an iteration number from 0), got '{s}'");
@@ -67,6 +81,10 @@ pub struct ResolveArgs {
     /// of a phase, with the bodies as they are at that moment.
     #[arg(long, value_name = "PHASE:K", value_parser = parse_show)]
     pub show: Option<Show>,
+    /// Resolve with two solvers and print the answers side by side (text or JSON),
+    /// e.g. `--compare deepest-first,lcp`: the lecture's sequence beside the simultaneous solve.
+    #[arg(long, value_name = "A,B", value_parser = parse_compare, conflicts_with = "show")]
+    pub compare: Option<[crate::physics::Solver; 2]>,
     /// Which implementation runs the phases (both give the same result).
     #[arg(long, value_enum, default_value_t = ImplementationArg::Indexed)]
     pub implementation: ImplementationArg,

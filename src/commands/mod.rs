@@ -9,6 +9,7 @@ mod figure;
 mod list;
 mod progress;
 mod resolve;
+mod resolve_compare;
 mod show;
 mod simulate;
 pub mod simulate_html;

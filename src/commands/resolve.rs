@@ -120,6 +120,21 @@ pub fn resolve(
     crate::lesson::overflow::check_resolve(&lesson, &params, implementation)
         .map_err(|e| AppError::Runtime(format!("{}: {e}", lesson.id)))?;
     let fmt = Fmt::new(args.digits as usize);
+    if let Some(pair) = args.compare {
+        let text = super::resolve_compare::render(
+            &lesson,
+            &params,
+            implementation,
+            pair,
+            args.format,
+            &fmt,
+        )?;
+        drop(spinner);
+        return match &args.output {
+            Some(path) => super::write_atomic(path, text.as_bytes()),
+            None => out.write_all(text.as_bytes()).map_err(io),
+        };
+    }
     if let Some(show) = args.show {
         return super::show::show(
             &lesson,

@@ -5,7 +5,7 @@ use super::choice::{choices, Choice};
 use super::knob::{choice, count, flag, number};
 use super::knob::{Cli, Kind, Knob, Level, Needs, Offered, Range, Table, Value, MAX_ITERATIONS};
 use crate::physics::exact::RestitutionLaw;
-use crate::physics::{FrictionModel, ProjectionMethod, RestitutionFrom, Solver};
+use crate::physics::{FrictionModel, LcpRestitution, ProjectionMethod, RestitutionFrom, Solver};
 
 const CONTACT_TABLES: &[Table] = &[Table::Settings, Table::ContactSettings];
 const RESOLVER_TABLES: &[Table] = &[Table::Settings];
@@ -39,6 +39,15 @@ choices!(Solver {
         "the lecture's: the deepest penetration, the largest desired Δv first";
     Solver::SequentialImpulse => "sequential-impulse" ["sequential_impulse"]:
         "projected Gauss–Seidel with accumulated, clamped impulses";
+    Solver::Lcp => "lcp":
+        "simultaneous impact: one linear complementarity problem over every contact (Lemke's method)";
+});
+
+choices!(LcpRestitution {
+    LcpRestitution::Newton => "newton":
+        "kinematic: each separating velocity after at least -e times the closing velocity before";
+    LcpRestitution::Poisson => "poisson":
+        "kinetic: compression to zero closing velocity, then e times each compression impulse";
 });
 
 choices!(RestitutionFrom {
@@ -379,6 +388,28 @@ pub const RESTITUTION_FROM: Knob = Knob {
     set: |s, v| {
         if let Some(r) = RestitutionFrom::from_name(choice(v)) {
             s.resolver.restitution_from = r;
+        }
+    },
+};
+
+/// `lcp_restitution`.
+pub const LCP_RESTITUTION: Knob = Knob {
+    name: "lcp_restitution",
+    old_names: &[],
+    level: Level::Resolver,
+    tables: RESOLVER_TABLES,
+    doc: "The simultaneous (lcp) solver's restitution law: Newton's targets each contact's velocity after; Poisson's scales each compression impulse (the two differ when contacts are coupled).",
+    default: "newton",
+    kind: Kind::Choice { choices: LcpRestitution::SPELLINGS },
+    cli: Cli::Option,
+    edit: Offered::Yes,
+    study: Offered::No("only the lcp solver reads it, an impact solver the study does not run"),
+    grid: &[],
+    needs: Needs::Always,
+    get: |s| Value::Choice(s.resolver.lcp_restitution.name()),
+    set: |s, v| {
+        if let Some(r) = LcpRestitution::from_name(choice(v)) {
+            s.resolver.lcp_restitution = r;
         }
     },
 };

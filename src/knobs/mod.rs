@@ -61,6 +61,7 @@ pub static KNOBS: &[Knob] = &[
     VELOCITY_EPSILON,
     SLIP_SPEED,
     RESTITUTION_FROM,
+    LCP_RESTITUTION,
     DT,
     STEPS,
     CCD,

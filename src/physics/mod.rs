@@ -18,6 +18,7 @@ pub mod detect;
 pub mod exact;
 pub mod hull;
 pub mod hull_faces;
+pub mod lcp;
 pub mod mesh;
 pub mod params;
 pub mod pose;
@@ -31,9 +32,9 @@ pub use body::RigidBody;
 pub use contact::{causes, checks, frame, problem, solve, stages};
 pub use contact::{ContactInput, Problem, Solution, StageId};
 pub use params::{
-    ContactParams, ContactSettings, FrictionModel, ProjectionMethod, ResolverParams,
-    RestitutionFrom, SceneSettings, Settings, SimParams, SleepParams, Solver, StepParams,
-    WorldParams,
+    ContactParams, ContactSettings, FrictionModel, LcpRestitution, ProjectionMethod,
+    ResolverParams, RestitutionFrom, SceneSettings, Settings, SimParams, SleepParams, Solver,
+    StepParams, WorldParams,
 };
 pub use shape::Shape;
 pub use world::{Body, BodyId, Contact, World};

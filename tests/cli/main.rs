@@ -25,6 +25,7 @@ mod io_simulate;
 mod output_files;
 mod readme;
 mod resolve_cli;
+mod resolve_lcp;
 mod round_off;
 mod simulate_interrupt;
 mod slide_ready;

@@ -26,6 +26,7 @@ mod hull_manifolds;
 mod hull_pairs;
 mod invariants;
 mod kept_energy;
+mod lcp;
 mod lean_position;
 mod lean_prepare;
 mod models_and_options;

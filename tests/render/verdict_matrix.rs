@@ -33,6 +33,9 @@ fn one_core_gives_the_matrix_of_two() {
 fn every_solver_of_the_knob_is_a_column() {
     let labels: Vec<String> = columns().iter().map(|c| c.label()).collect();
     for name in Solver::NAMES {
+        if verdicts::EXCLUDED.iter().any(|(s, _)| s.name() == *name) {
+            continue;
+        }
         assert!(
             labels.iter().any(|l| l == name),
             "{name} has no column: {labels:?}"

@@ -138,6 +138,22 @@ pub enum Solver {
     /// Sequential impulses (projected Gauss–Seidel): every contact in turn,
     /// sweep after sweep, with accumulated and clamped impulses.
     SequentialImpulse,
+    /// Simultaneous impact: the velocity phase as one linear
+    /// complementarity problem over every contact, solved by Lemke's
+    /// method (the position phase is the lecture's projection).
+    Lcp,
+}
+
+/// The restitution law of the simultaneous (LCP) velocity phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LcpRestitution {
+    /// Kinematic: each contact's separating velocity after is at least
+    /// −e times its closing velocity before (one LCP).
+    #[default]
+    Newton,
+    /// Kinetic: a compression LCP to zero closing velocity, then each
+    /// contact's restitution impulse e times its compression impulse.
+    Poisson,
 }
 
 /// How a set of contacts is resolved together (the lecture's two phases).
@@ -176,6 +192,8 @@ pub struct ResolverParams {
     /// The limit of each phase when no explicit count is given, per contact:
     /// trades time for what is left (default: 8, the lecture's 8 × contacts).
     pub visits_per_contact: usize,
+    /// The simultaneous solver's restitution law (default: newton).
+    pub lcp_restitution: LcpRestitution,
 }
 
 impl Default for ResolverParams {
@@ -190,6 +208,7 @@ impl Default for ResolverParams {
             solver: Solver::DeepestFirst,
             warm_start: false,
             visits_per_contact: 8,
+            lcp_restitution: LcpRestitution::Newton,
         }
     }
 }

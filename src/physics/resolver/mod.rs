@@ -32,6 +32,7 @@ pub mod queue;
 pub mod row;
 pub mod scan;
 pub mod sequential;
+pub mod simultaneous;
 pub mod velocity;
 pub mod velocity_row;
 
@@ -125,6 +126,8 @@ pub struct Resolver<T: Real> {
     /// ([`neighbours::TABLE_BUDGET`]; lower it to try the fallback on a
     /// small scene): beyond it they go through the adjacency ([`Resolver::table_over_budget`]).
     pub table_budget: usize,
+    /// The simultaneous (lcp) velocity phase's record, once it ran.
+    pub lcp: Option<crate::physics::lcp::Record<T>>,
 }
 
 impl<T: Real> Resolver<T> {
@@ -148,6 +151,7 @@ impl<T: Real> Resolver<T> {
             before: [T::zero(); 2],
             sequential: sequential::State::default(),
             table_budget: neighbours::TABLE_BUDGET,
+            lcp: None,
         };
         r.prepare_full_again(world, params);
         r
@@ -308,6 +312,9 @@ impl<T: Real> Resolver<T> {
         if self.params.solver == Solver::SequentialImpulse {
             return sequential::velocity_phase(self, obs);
         }
+        if self.params.solver == Solver::Lcp {
+            return simultaneous::velocity_phase(self, obs);
+        }
         match implementation {
             Implementation::Indexed if self.table_over_budget() => {
                 adjacent::velocity_phase(self, obs)
@@ -375,7 +382,12 @@ impl<T: Real> Resolver<T> {
         best
     }
 
-    fn finish<O: Observer<T>>(&self, phase: Phase, used: usize, obs: &mut O) -> PhaseOutcome<T> {
+    pub(crate) fn finish<O: Observer<T>>(
+        &self,
+        phase: Phase,
+        used: usize,
+        obs: &mut O,
+    ) -> PhaseOutcome<T> {
         let (limit, epsilon) = self.limits(phase);
         let (max_after, max_after_contact) = self.max(phase);
         let outcome = PhaseOutcome {

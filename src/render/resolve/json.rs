@@ -130,6 +130,9 @@ impl Serialize for ResolveJson<'_> {
             }),
         )?;
         m.serialize_entry("after", &after)?;
+        if let Some(l) = &trace.lcp {
+            m.serialize_entry("lcp", &super::lcp::json(l))?;
+        }
         if let (Some(e), true) = (trace.elision, self.log) {
             m.serialize_entry(
                 "elided",

@@ -3,6 +3,7 @@
 //! [`ResolverTrace`](crate::trace::resolver::ResolverTrace).
 
 pub mod json;
+pub mod lcp;
 pub mod markdown;
 pub mod text;
 
@@ -29,6 +30,12 @@ pub fn how(trace: &ResolverTrace) -> String {
             "restitution from each contact's velocity before the velocity phase (Box2D's way)"
         }
     };
+    if trace.position.solver == Solver::Lcp {
+        return format!(
+            "{} contacts resolved together: positions by the lecture's projection (the deepest first), velocities simultaneously by one linear complementarity problem (Lemke's method); {restitution}.",
+            trace.before.len()
+        );
+    }
     if trace.position.solver == Solver::SequentialImpulse {
         return format!(
             "{} contacts resolved together by sequential impulses (every contact in turn, sweep after sweep, accumulated and clamped impulses); restitution from each contact's velocity before the velocity phase.",
@@ -67,6 +74,9 @@ pub fn phase_heading(p: &PhaseTrace, fmt: &Fmt) -> String {
             fmt.num(p.epsilon),
             p.iteration_limit
         );
+    }
+    if p.solver == Solver::Lcp && p.phase == Phase::Velocity {
+        return "Velocity phase: every contact at once, one simultaneous solve (each contact's impulse applied is one line)".to_string();
     }
     match p.phase {
         Phase::Position => format!(

@@ -86,6 +86,9 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     table(&mut out, &trace.before, fmt);
     phase(&mut out, &trace.position, fmt);
     phase(&mut out, &trace.velocity, fmt);
+    if let Some(l) = &trace.lcp {
+        super::lcp::text(&mut out, l, fmt);
+    }
     let _ = writeln!(out);
     let _ = writeln!(out, "Contacts after (the resolver's bookkeeping)");
     table(&mut out, &trace.contacts_after, fmt);

@@ -7,6 +7,7 @@
 use serde_json::{json, Value};
 
 use crate::format::Fmt;
+use crate::knobs::Choice;
 use crate::render::chart::escape;
 use crate::study::verdicts::criteria::SCENES;
 use crate::study::verdicts::{Matrix, Size, Verdict};
@@ -18,6 +19,9 @@ fn preamble(m: &Matrix) -> String {
         SCENES.len(),
         m.columns.len()
     );
+    for (solver, why) in crate::study::verdicts::EXCLUDED {
+        out += &format!("Not a column: {}: {why}.\n", solver.name());
+    }
     if m.size == Size::Reduced {
         out += "Reduced sizes (--quick): stack of 4, pyramid base 3, overlapped stack of 2, 8 spheres, shorter runs; the bounds are the full matrix's.\n";
     }

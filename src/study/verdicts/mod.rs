@@ -43,11 +43,22 @@ impl Column {
     }
 }
 
-/// Every solver of the `solver` knob's choice list, in its order, each
-/// cold and, where the `warm_start` knob changes what it does, warm too.
+/// Solvers of the `solver` knob the matrix leaves out, and why (said in
+/// its output).
+pub const EXCLUDED: &[(Solver, &str)] = &[(
+    Solver::Lcp,
+    "lcp is an impact solver (one simultaneous solve of a set of contacts at an instant, `resolve --solver lcp`): the matrix judges resting and stacking over time, where its frictionless velocity phase is not meant to hold",
+)];
+
+/// Every solver of the `solver` knob's choice list but the [`EXCLUDED`],
+/// in its order, each cold and, where the `warm_start` knob changes what
+/// it does, warm too.
 pub fn columns() -> Vec<Column> {
     let mut out = Vec::new();
     for &solver in Solver::VALUES {
+        if EXCLUDED.iter().any(|(s, _)| *s == solver) {
+            continue;
+        }
         out.push(Column {
             solver,
             warm_start: false,

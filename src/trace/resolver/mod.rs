@@ -135,6 +135,8 @@ pub struct ResolverTrace {
     pub warnings: Vec<String>,
     /// Set when the step was too large to keep every iteration's rows.
     pub elision: Option<Elision>,
+    /// The simultaneous velocity phase's LCPs (`solver = "lcp"`).
+    pub lcp: Option<crate::physics::lcp::Record<f64>>,
 }
 
 /// A resolver observer that keeps every iteration (for the trace).
@@ -436,6 +438,7 @@ pub fn describe_prepared(
         ),
         warnings: names.warnings.clone(),
         elision: recorder.thinning.elision(),
+        lcp: resolver.lcp.clone(),
     };
     (trace, std::mem::take(&mut recorder.bodies))
 }

@@ -1,0 +1,100 @@
+//! Simultaneous impact: the velocity phase of a set of contacts as one
+//! linear complementarity problem (find λ ≥ 0 with w = Aλ + b ≥ 0 and
+//! λ·w = 0), solved by Lemke's method, under Newton's or Poisson's
+//! restitution (`lcp_restitution`).
+//!
+//! - `lemke.rs`: complementary pivoting with a covering vector, the
+//!   lexicographic ratio test, a pivot cap;
+//! - `matrix.rs`: A (the coupled unit-impulse matrix) and b from the
+//!   prepared contacts;
+//! - the velocity phase that applies them (`solver = "lcp"`) is the
+//!   resolver's (`physics/resolver/simultaneous.rs`).
+//!
+//! Friction is left out of the velocity phase: contacts are treated as
+//! frictionless (the record says when a contact had friction).
+
+pub mod lemke;
+pub mod matrix;
+
+pub use lemke::{Failure, Pivot, Var};
+
+use crate::physics::{LcpRestitution, Real};
+
+/// Which LCP of a phase: Newton's one, or Poisson's compression and (when
+/// applying e·P_c leaves a contact closing) a correcting one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stage {
+    Newton,
+    Compression,
+    Correction,
+}
+
+impl Stage {
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Newton => "newton",
+            Stage::Compression => "compression",
+            Stage::Correction => "correction",
+        }
+    }
+}
+
+/// One LCP solved: its b, its pivots and its impulses (or why none).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem<T: Real> {
+    pub stage: Stage,
+    pub b: Vec<T>,
+    pub pivots: Vec<Pivot<T>>,
+    pub result: Result<Vec<T>, Failure>,
+}
+
+/// What the simultaneous velocity phase did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Record<T: Real> {
+    pub restitution: LcpRestitution,
+    /// A, contacts in file order.
+    pub matrix: Vec<Vec<T>>,
+    /// The rank of A: below the contact count the impulses are one choice
+    /// of many (the velocities after are still unique).
+    pub rank: usize,
+    pub problems: Vec<Problem<T>>,
+    /// Each contact's restitution as applied.
+    pub restitutions: Vec<T>,
+    /// Each contact's total normal impulse applied (zeros when unsolvable).
+    pub impulses: Vec<T>,
+    /// Each contact's normal velocity after (before, when unsolvable).
+    pub velocities_after: Vec<T>,
+    /// The contacts with friction (treated as frictionless).
+    pub friction_ignored: Vec<usize>,
+}
+
+impl<T: Real> Record<T> {
+    /// Why no impulses were applied, if so.
+    pub fn failure(&self) -> Option<Failure> {
+        self.problems
+            .iter()
+            .find_map(|p| p.result.as_ref().err().copied())
+    }
+
+    /// Every pivot of every problem, in order.
+    pub fn pivots(&self) -> impl Iterator<Item = (Stage, &Pivot<T>)> {
+        self.problems
+            .iter()
+            .flat_map(|p| p.pivots.iter().map(move |v| (p.stage, v)))
+    }
+
+    /// A note on degeneracy: A singular (identical or dependent contacts)
+    /// or a ratio test that tied.
+    pub fn degenerate(&self) -> Option<String> {
+        let n = self.matrix.len();
+        if self.rank < n {
+            return Some(format!(
+                "degenerate: A is singular (rank {} of {n}): dependent contacts; the impulses are one solution of many, the velocities after are unique",
+                self.rank
+            ));
+        }
+        let ties = self.pivots().filter(|(_, p)| p.tie).count();
+        (ties > 0)
+            .then(|| format!("degenerate: {ties} ratio test(s) tied; the lexicographic rule chose"))
+    }
+}

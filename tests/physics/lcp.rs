@@ -1,0 +1,194 @@
+//! Simultaneous impact (the lcp solver) against the closed forms, beside the
+//! lecture's sequence (deepest-first): rows of touching balls, Poisson's
+//! law, two balls dropped together; degenerate and inconsistent systems
+//! reported, never looped on.
+
+use contact_lab::lesson::Lesson;
+use contact_lab::physics::lcp::{Failure, Stage};
+use contact_lab::physics::resolver::{Implementation, Resolver, Silent};
+use contact_lab::physics::{LcpRestitution, ResolverParams, Solver, World};
+use nalgebra::Vector3;
+
+const TOL: f64 = 1e-12;
+
+fn run(world: &World<f64>, params: &ResolverParams) -> Resolver<f64> {
+    Resolver::resolve(world, params, Implementation::Indexed, &mut Silent).0
+}
+
+/// The bodies' velocities along `axis` after the lesson resolved under `solver`.
+fn after(id: &str, solver: Solver, axis: usize) -> Vec<f64> {
+    let lesson = Lesson::load(id).unwrap();
+    let params = ResolverParams {
+        solver,
+        ..lesson.resolver
+    };
+    let r = run(&lesson.world(), &params);
+    r.bodies.iter().map(|b| b.velocity[axis]).collect()
+}
+
+fn assert_close(got: &[f64], want: &[f64], what: &str) {
+    assert_eq!(got.len(), want.len(), "{what}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() < TOL, "{what}: {got:?} against {want:?}");
+    }
+}
+
+#[test]
+fn rows_of_touching_balls_simultaneously_and_in_sequence() {
+    let v = 1.0;
+    assert_close(
+        &after("impact-row-3", Solver::Lcp, 0),
+        &[-v / 3.0, 2.0 * v / 3.0, 2.0 * v / 3.0],
+        "N = 3 simultaneous",
+    );
+    assert_close(
+        &after("impact-row-5", Solver::Lcp, 0),
+        &[-0.6 * v, 0.4 * v, 0.4 * v, 0.4 * v, 0.4 * v],
+        "N = 5 simultaneous",
+    );
+    assert_close(
+        &after("impact-row-3", Solver::DeepestFirst, 0),
+        &[0.0, 0.0, v],
+        "N = 3 sequence",
+    );
+    assert_close(
+        &after("impact-row-5", Solver::DeepestFirst, 0),
+        &[0.0, 0.0, 0.0, 0.0, v],
+        "N = 5 sequence",
+    );
+}
+
+#[test]
+fn poisson_row_matches_its_closed_form() {
+    let (n, e, v) = (5.0, 0.5, 1.0);
+    let striker = v * (1.0 - (n - 1.0) * (1.0 + e) / n);
+    let other = v * (1.0 + e) / n;
+    assert_close(
+        &after("impact-row-poisson", Solver::Lcp, 0),
+        &[striker, other, other, other, other],
+        "Poisson e = 0.5",
+    );
+    // Poisson's law solved a compression LCP: every ball at v/N, then e·P_c added.
+    let lesson = Lesson::load("impact-row-poisson").unwrap();
+    assert_eq!(lesson.resolver.lcp_restitution, LcpRestitution::Poisson);
+    let r = run(&lesson.world(), &lesson.resolver);
+    let rec = r.lcp.as_ref().unwrap();
+    assert_eq!(rec.problems[0].stage, Stage::Compression);
+    let pc = rec.problems[0].result.as_ref().unwrap();
+    for (k, p) in pc.iter().enumerate() {
+        // The compression impulse of contact k carries balls k+1.. to v/N.
+        assert!((p - v * (n - 1.0 - k as f64) / n).abs() < TOL, "{pc:?}");
+        assert!((rec.impulses[k] - (1.0 + e) * p).abs() < TOL);
+    }
+}
+
+#[test]
+fn stacked_drop_sequence_launches_the_top_ball_simultaneous_does_not() {
+    for (id, ratio) in [("impact-stack-r01", 0.1), ("impact-stack-r05", 0.5)] {
+        let v = 1.0;
+        let seq = after(id, Solver::DeepestFirst, 1);
+        assert!(
+            (seq[1] - (3.0 - ratio) / (1.0 + ratio) * v).abs() < TOL,
+            "{id} sequence: {seq:?}"
+        );
+        assert_close(&after(id, Solver::Lcp, 1), &[v, v], id);
+    }
+}
+
+#[test]
+fn the_matrix_is_the_unit_impulse_responses() {
+    let lesson = Lesson::load("impact-row-3").unwrap();
+    let r = run(&lesson.world(), &lesson.resolver);
+    let rec = r.lcp.as_ref().unwrap();
+    assert_eq!(rec.matrix, vec![vec![2.0, -1.0], vec![-1.0, 2.0]]);
+    // The diagonal is each contact's Δq̇_t (the lecture's stage 2).
+    for (k, s) in r.setups.iter().enumerate() {
+        assert!((rec.matrix[k][k] - s.unit_total).abs() < TOL);
+    }
+    assert_eq!(rec.problems[0].b, vec![-2.0, 0.0]);
+    let names: Vec<_> = rec
+        .pivots()
+        .map(|(_, p)| (p.entering.name(), p.leaving.name()))
+        .collect();
+    assert_eq!(names[0], ("z0".to_string(), "w0".to_string()));
+    assert_eq!(names.last().unwrap().1, "z0");
+    assert!(rec.failure().is_none() && rec.degenerate().is_none());
+}
+
+#[test]
+fn two_identical_contacts_are_reported_degenerate_and_solved() {
+    let lesson = Lesson::load("impact-stack-r01").unwrap();
+    let mut w: World<f64> = lesson.world();
+    w.contacts.truncate(1);
+    w.contacts.push(w.contacts[0].clone());
+    let r = run(&w, &lesson.resolver);
+    let rec = r.lcp.as_ref().unwrap();
+    assert_eq!(rec.rank, 1);
+    assert!(rec.degenerate().unwrap().contains("singular"));
+    assert!(rec.failure().is_none());
+    // The bottom ball rebounds at v whichever way the impulse is shared.
+    assert!((r.bodies[0].velocity.y - 1.0).abs() < TOL);
+    assert!((rec.impulses[0] + rec.impulses[1] - 2.0).abs() < TOL);
+}
+
+#[test]
+fn an_inconsistent_system_is_reported_not_looped_on() {
+    // The bottom ball between the floor and a ceiling touching its top, e = 1:
+    // no impulses make it bounce off the floor without closing on the ceiling.
+    let lesson = Lesson::load("impact-stack-r01").unwrap();
+    let mut w: World<f64> = lesson.world();
+    w.contacts.truncate(1);
+    let mut ceiling = w.contacts[0].clone();
+    ceiling.input.point = Vector3::new(0.0, 1.0, 0.0);
+    ceiling.input.normal = Vector3::new(0.0, -1.0, 0.0);
+    w.contacts.push(ceiling);
+    let before = w.bodies.clone();
+    let r = run(&w, &lesson.resolver);
+    let rec = r.lcp.as_ref().unwrap();
+    assert!(
+        matches!(rec.failure(), Some(Failure::Ray(_))),
+        "{:?}",
+        rec.problems
+    );
+    assert!(rec.pivots().count() <= 4);
+    assert_eq!(rec.impulses, vec![0.0, 0.0]);
+    assert_eq!(r.bodies[0].velocity, before[1].state.velocity);
+}
+
+/// The balls' velocities along x after `steps` steps of a scene under `solver`.
+fn simulated(id: &str, solver: Solver, steps: usize) -> Vec<f64> {
+    let lesson = Lesson::load(id).unwrap();
+    let mut p = lesson.sim_params().unwrap();
+    p.resolver.solver = solver;
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim =
+        contact_lab::physics::step::Simulation::new(world, p, lesson.simulation.unwrap().materials);
+    for _ in 0..steps {
+        sim.advance().unwrap();
+    }
+    sim.world
+        .bodies
+        .iter()
+        .map(|b| b.state.velocity.x)
+        .collect()
+}
+
+#[test]
+fn a_cradle_with_gaps_agrees_with_the_sequence_a_touching_one_does_not() {
+    // With gaps the simultaneous solve meets one contact at a time.
+    let gaps = simulated("cradle-gaps", Solver::Lcp, 200);
+    assert_close(&gaps, &[0.0, 0.0, 0.0, 0.0, 1.0], "cradle with gaps, lcp");
+    assert_close(
+        &simulated("cradle-gaps", Solver::DeepestFirst, 200),
+        &[0.0, 0.0, 0.0, 0.0, 1.0],
+        "cradle with gaps, sequence",
+    );
+    // Touching: the simultaneous answer of the row of five.
+    let touching = simulated("cradle-over-time", Solver::Lcp, 200);
+    assert_close(
+        &touching,
+        &[-0.6, 0.4, 0.4, 0.4, 0.4],
+        "touching cradle, lcp",
+    );
+}
