@@ -286,6 +286,18 @@ impl RunTrace {
                     f.num(steps as f64 * self.dt)
                 ),
             ),
+            Event::StillWhollyInside {
+                body1,
+                body2,
+                steps,
+            } => (
+                "overlap",
+                format!(
+                    "still wholly inside at the end: {}, for {steps} steps ({} s)",
+                    self.pair(body1, body2),
+                    f.num(steps as f64 * self.dt)
+                ),
+            ),
             Event::PushedThrough { body, through } => (
                 "overlap",
                 format!(
@@ -456,4 +468,25 @@ mod tests {
         );
         assert_eq!(apart(1.0, 1.0), ("1".into(), "1".into()));
     }
+}
+
+/// A scene whose steps are split into substeps for its small bodies, as a
+/// warning says it.
+pub fn split_text(s: &crate::physics::step::split::Split) -> String {
+    let f = crate::format::Fmt::new(3);
+    let capped = if s.needed > s.substeps {
+        format!(
+            " (it would need {}: capped, the smallest body still moves more than its size in a substep)",
+            s.needed
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "each step is split into {} substeps: gravity moves a body {} m in a step (g × dt²), \
+         more than the smallest body's bounding radius {} m{capped}",
+        s.substeps,
+        f.num(s.fall),
+        f.num(s.radius)
+    )
 }
