@@ -451,6 +451,19 @@ pub fn below_rounding_text(
     )
 }
 
+/// A scene whose steps are split into substeps for its small bodies, as a
+/// warning says it.
+pub fn split_text(s: &crate::physics::step::split::Split) -> String {
+    let f = crate::format::Fmt::new(3);
+    format!(
+        "each step is split into {} substeps: gravity moves a body {} m in a step (g × dt²), \
+         more than the smallest body's half-width {} m",
+        s.substeps,
+        f.num(s.fall),
+        f.num(s.radius)
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::apart;
@@ -468,25 +481,4 @@ mod tests {
         );
         assert_eq!(apart(1.0, 1.0), ("1".into(), "1".into()));
     }
-}
-
-/// A scene whose steps are split into substeps for its small bodies, as a
-/// warning says it.
-pub fn split_text(s: &crate::physics::step::split::Split) -> String {
-    let f = crate::format::Fmt::new(3);
-    let capped = if s.needed > s.substeps {
-        format!(
-            " (it would need {}: capped, the smallest body still moves more than its size in a substep)",
-            s.needed
-        )
-    } else {
-        String::new()
-    };
-    format!(
-        "each step is split into {} substeps: gravity moves a body {} m in a step (g × dt²), \
-         more than the smallest body's bounding radius {} m{capped}",
-        s.substeps,
-        f.num(s.fall),
-        f.num(s.radius)
-    )
 }

@@ -73,8 +73,6 @@ pub struct Simulation<T: Real> {
     kept: KeptEnergy<T>,
     /// The smallest half-width of a movable body (the tolerances' scale).
     size: Option<f64>,
-    /// The smallest bounding radius of a movable body (split.rs).
-    radius: Option<f64>,
     /// The parameters the scaled ones were made from, and the scaled ones.
     scaled_for: Option<SimParams<T>>,
     scaled: SimParams<T>,
@@ -120,7 +118,6 @@ impl<T: Real> Simulation<T> {
             inertia: Vec::new(),
             kept: KeptEnergy::default(),
             size: None,
-            radius: None,
             scaled_for: None,
             scaled: SimParams::default(),
             inside: PairSet::default(),
@@ -134,7 +131,6 @@ impl<T: Real> Simulation<T> {
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
-        sim.radius = super::split::smallest_radius(&sim.world);
         let g = sim.params.world.gravity;
         let scale = energy::kinetic(&sim.world) + potential_scale(&sim.world, &g);
         sim.energy_scale = to_f64(scale).abs().max(1e-9);
