@@ -43,6 +43,9 @@ fn run(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<
     for l in sim.lowered_tolerances() {
         let _ = writeln!(err, "warning: {}", crate::trace::run::lowered_text(&l));
     }
+    if let Some(split) = sim.split() {
+        let _ = writeln!(err, "warning: {}", crate::trace::run::split_text(&split));
+    }
     for b in sim.below_rounding() {
         let name = lesson
             .bodies
@@ -109,7 +112,11 @@ fn run(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<
             return Err(e);
         }
         match sim.advance() {
-            Ok(report) => {
+            Ok(mut report) => {
+                if n == steps {
+                    // A burial still going has only its start event so far.
+                    report.events.extend(sim.burials_going());
+                }
                 trace.add_events(&report);
                 if n % every == 0 || n == steps {
                     w.frame(&mut trace, &RunTrace::frame(&sim, &report))
@@ -167,7 +174,10 @@ fn film(
             break;
         }
         match sim.advance() {
-            Ok(report) => {
+            Ok(mut report) => {
+                if n == steps {
+                    report.events.extend(sim.burials_going());
+                }
                 let before = trace.events.len();
                 trace.add_events(&report);
                 if marked < run::MAX_MARKED && trace.events[before..].iter().any(run::marked) {

@@ -286,6 +286,18 @@ impl RunTrace {
                     f.num(steps as f64 * self.dt)
                 ),
             ),
+            Event::StillWhollyInside {
+                body1,
+                body2,
+                steps,
+            } => (
+                "overlap",
+                format!(
+                    "still wholly inside at the end: {}, for {steps} steps ({} s)",
+                    self.pair(body1, body2),
+                    f.num(steps as f64 * self.dt)
+                ),
+            ),
             Event::PushedThrough { body, through } => (
                 "overlap",
                 format!(
@@ -436,6 +448,19 @@ pub fn below_rounding_text(
         f.num(b.size),
         f.num(b.rounding),
         f.num(b.rounding / b.size)
+    )
+}
+
+/// A scene whose steps are split into substeps for its small bodies, as a
+/// warning says it.
+pub fn split_text(s: &crate::physics::step::split::Split) -> String {
+    let f = crate::format::Fmt::new(3);
+    format!(
+        "each step is split into {} substeps: gravity moves a body {} m in a step (g × dt²), \
+         more than the smallest body's half-width {} m",
+        s.substeps,
+        f.num(s.fall),
+        f.num(s.radius)
     )
 }
 

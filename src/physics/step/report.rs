@@ -81,6 +81,14 @@ pub enum Event {
         body2: Option<BodyId>,
         steps: u64,
     },
+    /// A burial still going at the run's end: the pair has been wholly
+    /// inside one another for `steps` steps (given by the run, after its
+    /// last step: [`super::Simulation::burials_going`]).
+    StillWhollyInside {
+        body1: BodyId,
+        body2: Option<BodyId>,
+        steps: u64,
+    },
     /// The position phase is about to push `body` out through the far side
     /// of `through` (the thinner of the two): last step `body` was on the
     /// other side of `through`'s centre.

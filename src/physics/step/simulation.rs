@@ -174,7 +174,40 @@ impl<T: Real> Simulation<T> {
         &mut self,
         observer: &mut O,
     ) -> Result<StepReport, BlowUp> {
-        self.with_scaled_tolerances(|sim| sim.advance_scaled(observer))
+        let Some(split) = self.split() else {
+            return self.with_scaled_tolerances(|sim| sim.advance_scaled(observer));
+        };
+        // Small bodies: the step spent as substeps (split.rs), reported as
+        // one step.
+        let (dt, step, time) = (self.params.dt, self.step, self.time);
+        let n = split.substeps;
+        self.params.dt = dt / c::<T>(f64::from(n));
+        let mut whole: Option<StepReport> = None;
+        let mut result = Ok(());
+        for _ in 0..n {
+            self.step = step;
+            match self.with_scaled_tolerances(|sim| sim.advance_scaled(observer)) {
+                Ok(r) => whole = Some(merge(whole, r)),
+                Err(e) => {
+                    result = Err(e);
+                    break;
+                }
+            }
+        }
+        self.params.dt = dt;
+        self.step = step + 1;
+        self.time = time + to_f64(dt);
+        result?;
+        let mut r = whole.expect("at least one substep");
+        r.time = self.time;
+        Ok(r)
+    }
+
+    /// How this scene's steps are split into substeps (`None`: they are
+    /// not; see [`super::split`]).
+    pub fn split(&self) -> Option<super::split::Split> {
+        let g = self.params.world.gravity.norm();
+        super::split::split(to_f64(g), to_f64(self.params.dt), self.size)
     }
 
     /// The tolerances the scene's sizes lowered (see [`tolerance`]), for
@@ -484,6 +517,22 @@ impl<T: Real> Simulation<T> {
     pub fn energy_scale(&self) -> f64 {
         self.energy_scale
     }
+}
+
+/// A step's report from its substeps' (`whole` so far, and the next).
+fn merge(whole: Option<StepReport>, next: StepReport) -> StepReport {
+    let Some(mut w) = whole else { return next };
+    w.contacts = next.contacts;
+    w.awake = next.awake;
+    w.max_penetration = w.max_penetration.max(next.max_penetration);
+    w.max_penetration_after = w.max_penetration_after.max(next.max_penetration_after);
+    w.kinetic_energy = next.kinetic_energy;
+    w.potential_energy = next.potential_energy;
+    w.position_iterations += next.position_iterations;
+    w.velocity_iterations += next.velocity_iterations;
+    w.ccd_tests += next.ccd_tests;
+    w.events.extend(next.events);
+    w
 }
 
 /// A potential-energy scale: m |g| (the body's height above the lowest body + 1).

@@ -77,6 +77,21 @@ impl<T: Real> Simulation<T> {
         self.burials_ended(events);
     }
 
+    /// The burials still going (pairs wholly inside one another at the
+    /// last step's contacts), with how many steps each has lasted, as
+    /// events a run adds after its last step.
+    pub fn burials_going(&self) -> Vec<Event> {
+        let mut going: Vec<_> = self.inside.iter().copied().collect();
+        going.sort_unstable();
+        (going.into_iter())
+            .map(|(body1, body2)| Event::StillWhollyInside {
+                body1,
+                body2,
+                steps: self.inside_steps.get(&(body1, body2)).copied().unwrap_or(1),
+            })
+            .collect()
+    }
+
     /// Each burial's length: a pair wholly inside last step and not now
     /// ended a burial, said with its length when it lasted over a step.
     fn burials_ended(&mut self, events: &mut Vec<Event>) {
