@@ -18,6 +18,7 @@ pub mod report;
 pub mod rollback;
 pub mod simulation;
 pub mod sleep;
+pub mod soft;
 pub mod substep;
 pub mod swept;
 pub mod toi_pair;
