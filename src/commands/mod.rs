@@ -12,6 +12,7 @@ mod resolve;
 mod show;
 mod simulate;
 pub mod simulate_html;
+mod soft_trace;
 mod solve;
 mod study;
 mod study_broad;
