@@ -26,7 +26,9 @@ pub(super) fn print(
     let trace = sim.soft_trace.take().unwrap_or_default();
     let names: Vec<String> = lesson.bodies.iter().map(|b| b.name.clone()).collect();
     let text = match args.format {
-        RunFormat::Text => crate::render::soft_step::text(&trace, &names, n, &Fmt::new(args.digits as usize)),
+        RunFormat::Text => {
+            crate::render::soft_step::text(&trace, &names, n, &Fmt::new(args.digits as usize))
+        }
         RunFormat::Json => {
             let value = crate::render::soft_step::json(&trace, &names, n);
             serde_json::to_string_pretty(&value).unwrap_or_default() + "\n"

@@ -56,7 +56,12 @@ pub fn text(t: &SoftTrace, names: &[String], step: u64, f: &Fmt) -> String {
             f.num(k.restitution),
             f.num(k.warm_impulse),
         );
-        for (i, (p, s)) in k.substep_impulses.iter().zip(&k.substep_separations).enumerate() {
+        for (i, (p, s)) in k
+            .substep_impulses
+            .iter()
+            .zip(&k.substep_separations)
+            .enumerate()
+        {
             let _ = writeln!(
                 out,
                 "  substep {}: normal impulse {} N·s, separation {} m",

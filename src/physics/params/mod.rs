@@ -373,9 +373,9 @@ impl Material {
 pub mod ccd_mode;
 mod settings;
 pub mod soft;
-pub use soft::{SoftParams, Softness};
 pub use ccd_mode::{Ccd, NormalFrom, Rollback};
 pub use settings::{ContactSettings, SceneSettings, Settings, SimParams};
+pub use soft::{SoftParams, Softness};
 
 /// How bodies fall asleep.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -25,9 +25,9 @@ use crate::physics::collide::{BodyContact, ContactGenerator};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
 use crate::physics::resolver::sequential::WarmCache;
+use crate::physics::resolver::PhaseOutcome;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{c, to_f64, BodyId, Real, Solver, World};
-use crate::physics::resolver::PhaseOutcome;
 use events::Ending;
 
 /// A step's phases, its energy audits' events and what its move spent.
@@ -351,12 +351,7 @@ impl<T: Real> Simulation<T> {
         }
         resolver.write_back(&mut self.world);
         if p.sleep.enabled {
-            wake_sleep::wake_changed(
-                &mut self.world,
-                &mut self.sleep,
-                p.sleep.epsilon,
-                events,
-            );
+            wake_sleep::wake_changed(&mut self.world, &mut self.sleep, p.sleep.epsilon, events);
         }
         self.keep_resolved_speeds();
         // 5. Positions of the awake bodies with the resolved velocities,

@@ -80,48 +80,82 @@ impl<T: Real> SoftSolver<T> {
             to_f64(h),
         );
         self.moving.clear();
-        self.moving.extend((0..world.bodies.len()).map(|i| world.bodies[i].movable && moving(i)));
+        self.moving
+            .extend((0..world.bodies.len()).map(|i| world.bodies[i].movable && moving(i)));
         self.inverse_inertia.clear();
-        self.inverse_inertia.extend(world.bodies.iter().zip(&self.moving).map(|(b, &m)| {
-            if m {
-                b.state.inverse_inertia_world()
-            } else {
-                Matrix3::zeros()
-            }
-        }));
+        self.inverse_inertia
+            .extend(world.bodies.iter().zip(&self.moving).map(|(b, &m)| {
+                if m {
+                    b.state.inverse_inertia_world()
+                } else {
+                    Matrix3::zeros()
+                }
+            }));
         self.contacts.clear();
         let slip = c::<T>(r.slip());
         for k in &world.contacts {
-            let mut contact = SoftContact::prepare(world, k, &self.moving, &self.inverse_inertia, slip);
+            let mut contact =
+                SoftContact::prepare(world, k, &self.moving, &self.inverse_inertia, slip);
             self.warm.restore(k, &mut contact);
             self.contacts.push(contact);
         }
         let before = solve::closing_and_depth(&self.contacts, &world.bodies);
         if let Some(t) = trace.as_deref_mut() {
-            t.begin(to_f64(p.dt), substeps, to_f64(h), r, soft, &self.contacts, &world.contacts);
+            t.begin(
+                to_f64(p.dt),
+                substeps,
+                to_f64(h),
+                r,
+                soft,
+                &self.contacts,
+                &world.contacts,
+            );
         }
         let kept = Kept::over(p.world.linear_damping, p.world.angular_damping, h);
         let push_out = c::<T>(r.soft.push_out_speed);
         let soft_t = [soft.bias_rate, soft.mass_scale, soft.impulse_scale].map(c::<T>);
         for _ in 0..substeps {
             for (body, _) in (world.bodies.iter_mut().zip(&self.moving)).filter(|(_, &m)| m) {
-                integrate_velocity_kept(&mut body.state, &p.world.gravity, &Loads::default(), &kept, h);
+                integrate_velocity_kept(
+                    &mut body.state,
+                    &p.world.gravity,
+                    &Loads::default(),
+                    &kept,
+                    h,
+                );
             }
             let inertia = &self.inverse_inertia;
             solve::warm_start(&mut world.bodies, inertia, &self.contacts);
-            solve::solve(&mut world.bodies, inertia, &mut self.contacts, Some((soft_t, push_out)), h);
+            solve::solve(
+                &mut world.bodies,
+                inertia,
+                &mut self.contacts,
+                Some((soft_t, push_out)),
+                h,
+            );
             for (body, _) in (world.bodies.iter_mut().zip(&self.moving)).filter(|(_, &m)| m) {
                 integrate_position(&mut body.state, h);
             }
             for _ in 0..r.soft.relax_iterations {
-                solve::solve(&mut world.bodies, &self.inverse_inertia, &mut self.contacts, None, h);
+                solve::solve(
+                    &mut world.bodies,
+                    &self.inverse_inertia,
+                    &mut self.contacts,
+                    None,
+                    h,
+                );
             }
             if let Some(t) = trace.as_deref_mut() {
                 t.substep(&self.contacts, &world.bodies);
             }
         }
         let threshold = c::<T>(r.soft.restitution_threshold);
-        solve::restitution(&mut world.bodies, &self.inverse_inertia, &mut self.contacts, threshold);
+        solve::restitution(
+            &mut world.bodies,
+            &self.inverse_inertia,
+            &mut self.contacts,
+            threshold,
+        );
         let after = solve::closing_and_depth(&self.contacts, &world.bodies);
         self.warm.store(&world.contacts, &self.contacts);
         if let Some(t) = trace {

@@ -102,7 +102,11 @@ impl<T: Real> SoftContact<T> {
             separation: -input.penetration,
             normal_mass: inv(ks[0]),
             tangent_mass: [inv(ks[1]), inv(ks[2])],
-            friction: if slipping { input.dynamic_friction } else { input.static_friction },
+            friction: if slipping {
+                input.dynamic_friction
+            } else {
+                input.static_friction
+            },
             restitution: input.restitution,
             relative_velocity: vn,
             normal_impulse: zero,

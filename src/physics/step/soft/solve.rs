@@ -14,12 +14,19 @@ pub type Bias<T> = ([T; 3], T);
 
 fn relative_velocity<T: Real>(k: &SoftContact<T>, bodies: &[Body<T>]) -> Vector3<T> {
     let v = |slot: usize| {
-        k.bodies[slot].map_or(Vector3::zeros(), |i| bodies[i].state.point_velocity(&k.anchors[slot]))
+        k.bodies[slot].map_or(Vector3::zeros(), |i| {
+            bodies[i].state.point_velocity(&k.anchors[slot])
+        })
     };
     v(0) - v(1)
 }
 
-fn apply<T: Real>(k: &SoftContact<T>, bodies: &mut [Body<T>], inertia: &[Matrix3<T>], p: Vector3<T>) {
+fn apply<T: Real>(
+    k: &SoftContact<T>,
+    bodies: &mut [Body<T>],
+    inertia: &[Matrix3<T>],
+    p: Vector3<T>,
+) {
     for (slot, sign) in [(0, T::one()), (1, -T::one())] {
         let Some(i) = k.bodies[slot] else { continue };
         let s = &mut bodies[i].state;
@@ -30,7 +37,11 @@ fn apply<T: Real>(k: &SoftContact<T>, bodies: &mut [Body<T>], inertia: &[Matrix3
 
 /// Applies each contact's accumulated impulses (last substep's, or last
 /// step's matched ones).
-pub fn warm_start<T: Real>(bodies: &mut [Body<T>], inertia: &[Matrix3<T>], contacts: &[SoftContact<T>]) {
+pub fn warm_start<T: Real>(
+    bodies: &mut [Body<T>],
+    inertia: &[Matrix3<T>],
+    contacts: &[SoftContact<T>],
+) {
     for k in contacts {
         let p = k.normal * k.normal_impulse
             + k.tangents[0] * k.tangent_impulse[0]
@@ -76,7 +87,9 @@ pub fn solve<T: Real>(
         let limit = k.friction * k.normal_impulse;
         for j in 0..2 {
             let vt = relative_velocity(k, bodies).dot(&k.tangents[j]);
-            let total = (k.tangent_impulse[j] - k.tangent_mass[j] * vt).max(-limit).min(limit);
+            let total = (k.tangent_impulse[j] - k.tangent_mass[j] * vt)
+                .max(-limit)
+                .min(limit);
             let applied = total - k.tangent_impulse[j];
             k.tangent_impulse[j] = total;
             apply(k, bodies, inertia, k.tangents[j] * applied);
@@ -94,9 +107,7 @@ pub fn restitution<T: Real>(
 ) {
     let zero = T::zero();
     for k in contacts.iter_mut() {
-        if k.restitution == zero
-            || k.relative_velocity > -threshold
-            || k.max_normal_impulse == zero
+        if k.restitution == zero || k.relative_velocity > -threshold || k.max_normal_impulse == zero
         {
             continue;
         }

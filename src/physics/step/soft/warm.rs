@@ -56,12 +56,14 @@ impl<T: Real> Kept<T> {
     /// Keeps this step's impulses for the next.
     pub fn store(&mut self, world: &[Contact<T>], contacts: &[SoftContact<T>]) {
         self.stored.clear();
-        self.stored.extend(world.iter().zip(contacts).map(|(k, s)| Stored {
-            pair: pair(k),
-            point: k.input.point,
-            normal: s.normal_impulse,
-            friction: s.tangents[0] * s.tangent_impulse[0] + s.tangents[1] * s.tangent_impulse[1],
-        }));
+        self.stored
+            .extend(world.iter().zip(contacts).map(|(k, s)| Stored {
+                pair: pair(k),
+                point: k.input.point,
+                normal: s.normal_impulse,
+                friction: s.tangents[0] * s.tangent_impulse[0]
+                    + s.tangents[1] * s.tangent_impulse[1],
+            }));
         self.stored.sort_by(|a, b| a.pair.cmp(&b.pair));
     }
 }
