@@ -311,8 +311,8 @@ impl<T: Real> Simulation<T> {
         })
     }
 
-    /// 4. The contacts resolved together (position phase, then velocity
-    /// phase), 5. the bodies moved with the resolved velocities.
+    /// Steps 4 and 5: the contacts resolved together (position phase, then
+    /// velocity phase) and the bodies moved with the resolved velocities.
     fn resolve_and_move<O: Observer<T>>(
         &mut self,
         observer: &mut O,

@@ -102,9 +102,7 @@ impl<T: Real> SoftSolver<T> {
         let before = solve::closing_and_depth(&self.contacts, &world.bodies);
         if let Some(t) = trace.as_deref_mut() {
             t.begin(
-                to_f64(p.dt),
-                substeps,
-                to_f64(h),
+                (to_f64(p.dt), substeps, to_f64(h)),
                 r,
                 soft,
                 &self.contacts,

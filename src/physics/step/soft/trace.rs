@@ -51,9 +51,7 @@ pub struct SoftTrace {
 impl SoftTrace {
     pub(super) fn begin<T: Real>(
         &mut self,
-        dt: f64,
-        substeps: usize,
-        h: f64,
+        (dt, substeps, h): (f64, usize, f64),
         r: &ResolverParams,
         soft: Softness,
         contacts: &[SoftContact<T>],

@@ -64,6 +64,6 @@ impl<T: Real> Kept<T> {
                 friction: s.tangents[0] * s.tangent_impulse[0]
                     + s.tangents[1] * s.tangent_impulse[1],
             }));
-        self.stored.sort_by(|a, b| a.pair.cmp(&b.pair));
+        self.stored.sort_by_key(|s| s.pair);
     }
 }
