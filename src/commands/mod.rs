@@ -13,6 +13,7 @@ mod resolve_compare;
 mod show;
 mod simulate;
 pub mod simulate_html;
+mod soft_trace;
 mod solve;
 mod study;
 mod study_broad;

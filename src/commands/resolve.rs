@@ -103,6 +103,16 @@ pub fn resolve(
         )));
     }
     let params = lesson.resolver;
+    if params.solver == crate::physics::Solver::SoftStep {
+        // A soft step is substeps of a time step: its contacts' bias is a
+        // separation asked back per second and its bodies move between
+        // substeps, so a set of contacts at one instant has no soft answer.
+        return Err(AppError::Usage(format!(
+            "{}: resolve takes the contacts at one instant; the soft step integrates velocities and positions over a time step's substeps and has no single-instant answer. \
+             Step it with `contact-lab simulate <scene> --solver soft-step --trace-step N`",
+            lesson.id
+        )));
+    }
     super::warn_knobs(&params, err);
     let implementation = implementation(args);
     let n = lesson.contacts.len();

@@ -211,7 +211,7 @@ fn interruption(lesson: &Lesson, done: u64, steps: u64) -> AppError {
     ))
 }
 
-fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
+pub(super) fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
     let names = crate::trace::resolver::Names::of_lesson(lesson);
     AppError::Runtime(format!(
         "{}: {}; try a smaller --dt or more iterations",
@@ -237,6 +237,9 @@ fn trace_step(
     }
     for _ in 1..n {
         sim.advance().map_err(|e| blew_up(lesson, &e))?;
+    }
+    if sim.params.resolver.solver == crate::physics::Solver::SoftStep {
+        return super::soft_trace::print(lesson, args, sim, n, out);
     }
     let names = crate::trace::resolver::Names::of_lesson(lesson);
     let described =

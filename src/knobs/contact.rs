@@ -39,6 +39,8 @@ choices!(Solver {
         "the lecture's: the deepest penetration, the largest desired Δv first";
     Solver::SequentialImpulse => "sequential-impulse" ["sequential_impulse"]:
         "projected Gauss–Seidel with accumulated, clamped impulses";
+    Solver::SoftStep => "soft-step" ["soft_step"]:
+        "Box2D v3's: substeps, soft contacts (a frequency and a damping ratio), relax and restitution passes";
     Solver::Lcp => "lcp":
         "simultaneous impact: one linear complementarity problem over every contact (Lemke's method)";
 });
@@ -412,4 +414,22 @@ pub const LCP_RESTITUTION: Knob = Knob {
             s.resolver.lcp_restitution = r;
         }
     },
+};
+
+/// `substeps`.
+pub const SUBSTEPS: Knob = Knob {
+    name: "substeps",
+    old_names: &[],
+    level: Level::Resolver,
+    tables: RESOLVER_TABLES,
+    doc: "Soft step and XPBD: substeps per step, from 1 to 64: trades time for stiffer, more accurate contacts (Box2D's and rapier's 4).",
+    default: "4",
+    kind: Kind::Count { max: 64, optional: false },
+    cli: Cli::Option,
+    edit: Offered::Yes,
+    study: Offered::Yes,
+    grid: &["1", "8"],
+    needs: Needs::Always,
+    get: |s| Value::Count(s.resolver.substeps as u64),
+    set: |s, v| s.resolver.substeps = count(v).unwrap_or(4).max(1),
 };

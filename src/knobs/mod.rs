@@ -14,17 +14,20 @@
 //!
 //! - `knob.rs`: what a knob is; `choice.rs`: a choice type's spellings;
 //! - `contact.rs`: one contact's and a set of contacts' knobs;
-//! - `scene.rs`: a run's (the step, the world, sleep).
+//! - `scene.rs`: a run's (the step, the world, sleep);
+//! - `soft.rs`: the soft step's (Box2D v3's solver).
 
 mod choice;
 mod contact;
 mod knob;
 mod scene;
+mod soft;
 
 pub use choice::{Choice, Spelling};
 pub use contact::*;
 pub use knob::*;
 pub use scene::*;
+pub use soft::*;
 
 /// The knob named `name` (the canonical spelling, `-` or `_` alike).
 pub fn find(name: &str) -> Option<&'static Knob> {
@@ -61,6 +64,12 @@ pub static KNOBS: &[Knob] = &[
     VELOCITY_EPSILON,
     SLIP_SPEED,
     RESTITUTION_FROM,
+    SUBSTEPS,
+    CONTACT_HERTZ,
+    CONTACT_DAMPING_RATIO,
+    PUSH_OUT_SPEED,
+    RELAX_ITERATIONS,
+    RESTITUTION_THRESHOLD,
     LCP_RESTITUTION,
     DT,
     STEPS,

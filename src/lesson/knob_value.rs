@@ -16,6 +16,10 @@ pub fn check(knob: &Knob, value: Value) -> Result<(), String> {
             "{name} must be a whole number from 0 to {}, got {n}",
             count_text(max)
         )),
+        // A substep count of 0 would be no step at all.
+        (Kind::Count { max, .. }, Value::Count(0)) if name == crate::knobs::SUBSTEPS.name => Err(
+            format!("{name} must be a whole number from 1 to {max}, got 0"),
+        ),
         (Kind::Count { .. }, Value::Count(_)) => Ok(()),
         (Kind::Count { optional: true, .. }, Value::Unset) => Ok(()),
         (Kind::Flag, Value::Flag(_)) => Ok(()),

@@ -15,6 +15,7 @@ pub mod run;
 mod run_film;
 pub mod run_stream;
 pub mod run_summary;
+pub mod soft_step;
 pub mod study;
 pub mod svg;
 pub mod tex;

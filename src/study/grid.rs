@@ -92,6 +92,7 @@ pub fn describe_reference(c: &Config) -> String {
         match c.solver() {
             Solver::DeepestFirst => "the lecture's deepest-first order",
             Solver::SequentialImpulse => "sequential impulses, warm-started",
+            Solver::SoftStep => "the soft step (Box2D v3's)",
             Solver::Lcp => "the simultaneous (lcp) solve",
         },
         super::CONVERGED,

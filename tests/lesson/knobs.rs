@@ -450,6 +450,11 @@ fn boundaries(knob: &Knob) -> (Vec<String>, Vec<String>) {
             Range::NonNegative => (s(&["0", "1e60"]), s(&["-1e-60", "1.0000001e60"])),
             Range::NonNegativeOrInf => (s(&["0", "inf", "1e60"]), s(&["-1e-60"])),
         },
+        // A substep count starts at 1 (0 would be no step).
+        Kind::Count { max, .. } if knob.name == "substeps" => (
+            vec!["1".into(), max.to_string()],
+            vec!["0".into(), (max + 1).to_string()],
+        ),
         Kind::Count { max, .. } => (
             vec!["0".into(), max.to_string()],
             vec![(max + 1).to_string()],

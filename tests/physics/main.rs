@@ -44,6 +44,7 @@ mod scenes;
 mod sequential;
 mod shape_matrix;
 mod sleep_holds;
+mod soft_step;
 mod swept_reuse;
 mod table_budget;
 mod truth;

@@ -5,16 +5,16 @@
 //!
 //! - `lemke.rs`: complementary pivoting with a covering vector, the
 //!   lexicographic ratio test, a pivot cap;
-//! - `matrix.rs`: A (the coupled unit-impulse matrix) and b from the
-//!   prepared contacts;
-//! - the velocity phase that applies them (`solver = "lcp"`) is the
-//!   resolver's (`physics/resolver/simultaneous.rs`).
+//! - A (the coupled unit-impulse matrix) and b come from the prepared
+//!   contacts (`physics/resolver/lcp_matrix.rs`), and the velocity phase
+//!   that applies the impulses (`solver = "lcp"`) is the resolver's
+//!   (`physics/resolver/simultaneous.rs`): this folder is pure algebra,
+//!   below the resolver.
 //!
 //! Friction is left out of the velocity phase: contacts are treated as
 //! frictionless (the record says when a contact had friction).
 
 pub mod lemke;
-pub mod matrix;
 
 pub use lemke::{Failure, Pivot, Var};
 

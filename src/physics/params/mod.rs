@@ -138,6 +138,9 @@ pub enum Solver {
     /// Sequential impulses (projected Gauss–Seidel): every contact in turn,
     /// sweep after sweep, with accumulated and clamped impulses.
     SequentialImpulse,
+    /// Box2D v3's soft step: substeps, soft contacts (a frequency and a
+    /// damping ratio), a relax pass and a restitution pass.
+    SoftStep,
     /// Simultaneous impact: the velocity phase as one linear
     /// complementarity problem over every contact, solved by Lemke's
     /// method (the position phase is the lecture's projection).
@@ -192,6 +195,11 @@ pub struct ResolverParams {
     /// The limit of each phase when no explicit count is given, per contact:
     /// trades time for what is left (default: 8, the lecture's 8 × contacts).
     pub visits_per_contact: usize,
+    /// Soft step and XPBD: substeps per step: trades time for stiffer,
+    /// more accurate contacts (default: 4, Box2D's and rapier's).
+    pub substeps: usize,
+    /// The soft step's coefficients and passes.
+    pub soft: SoftParams,
     /// The simultaneous solver's restitution law (default: newton).
     pub lcp_restitution: LcpRestitution,
 }
@@ -208,6 +216,8 @@ impl Default for ResolverParams {
             solver: Solver::DeepestFirst,
             warm_start: false,
             visits_per_contact: 8,
+            substeps: 4,
+            soft: SoftParams::default(),
             lcp_restitution: LcpRestitution::Newton,
         }
     }
@@ -381,8 +391,10 @@ impl Material {
 
 pub mod ccd_mode;
 mod settings;
+pub mod soft;
 pub use ccd_mode::{Ccd, NormalFrom, Rollback};
 pub use settings::{ContactSettings, SceneSettings, Settings, SimParams};
+pub use soft::{SoftParams, Softness};
 
 /// How bodies fall asleep.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -32,6 +32,7 @@ pub mod queue;
 pub mod row;
 pub mod scan;
 pub mod sequential;
+pub mod lcp_matrix;
 pub mod simultaneous;
 pub mod velocity;
 pub mod velocity_row;

@@ -7,7 +7,8 @@
 use nalgebra::Vector3;
 
 use super::{desired_of, velocity, Observer, Phase, PhaseOutcome, Resolver};
-use crate::physics::lcp::{lemke, matrix, Problem, Record, Stage};
+use super::lcp_matrix as matrix;
+use crate::physics::lcp::{lemke, Problem, Record, Stage};
 use crate::physics::{c, LcpRestitution, Real};
 
 /// Solves one LCP and records it.

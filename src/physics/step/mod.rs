@@ -19,6 +19,7 @@ pub mod rollback;
 pub mod simulation;
 pub mod sleep;
 pub mod split;
+pub mod soft;
 pub mod substep;
 pub mod swept;
 pub mod toi_pair;

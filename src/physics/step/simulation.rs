@@ -7,9 +7,11 @@ use nalgebra::Vector3;
 
 pub(super) mod contacts;
 mod events;
+mod resolve;
+mod soft;
 
 use super::audit::Switches;
-use super::audits::{Audits, StepAudit};
+use super::audits::Audits;
 use super::ccd_mode::Rollback;
 use super::contact_events::{ContactEvents, PairSet};
 use super::integrate::{integrate_velocity_kept, Kept, Loads};
@@ -18,15 +20,18 @@ use super::previous_frame::PoseOf;
 pub use super::report::{BlowUp, Event, StepReport, ToiEvent, WakeCause};
 use super::sleep::SleepState;
 use super::substep::{Spent, Substeps};
-use super::swept::Earlier;
 use super::{energy, replay, rollback, tolerance, wake_sleep};
 use crate::physics::collide::{BodyContact, ContactGenerator};
 use crate::physics::params::Material;
 pub use crate::physics::params::SimParams;
 use crate::physics::resolver::sequential::WarmCache;
+use crate::physics::resolver::PhaseOutcome;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{c, to_f64, BodyId, Real, Solver, World};
 use events::Ending;
+
+/// A step's phases, its energy audits' events and what its move spent.
+type Resolved<T> = (PhaseOutcome<T>, PhaseOutcome<T>, [Option<Event>; 3], Spent);
 
 /// A world stepping in time.
 #[derive(Debug, Clone)]
@@ -91,6 +96,10 @@ pub struct Simulation<T: Real> {
     rolling_lift: bool,
     /// Sleepers an edit woke since the last step (its first events).
     edited: Vec<BodyId>,
+    /// The soft step's storage (`solver = "soft-step"`), and its record of
+    /// the next step when one is asked for (simulation/soft.rs).
+    soft: super::soft::SoftSolver<T>,
+    pub soft_trace: Option<super::soft::SoftTrace>,
 }
 
 impl<T: Real> Simulation<T> {
@@ -128,6 +137,8 @@ impl<T: Real> Simulation<T> {
             previous: Vec::new(),
             rolling_lift: false,
             edited: Vec::new(),
+            soft: Default::default(),
+            soft_trace: None,
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -266,51 +277,11 @@ impl<T: Real> Simulation<T> {
             .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
         let mut closing_before = std::mem::take(&mut self.closing_before);
         self.closing_speeds(&mut closing_before);
-        // 4. Resolve the contacts together.
-        let resolver = match &mut self.resolver {
-            Some(r) => {
-                r.prepare_again(&self.world, &p.resolver);
-                r
-            }
-            none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
+        // 4. Resolve the contacts together, 5. move the bodies.
+        let (position, velocity, audits, spent) = match p.resolver.solver {
+            Solver::SoftStep => self.soft_step(&mut events),
+            _ => self.resolve_and_move(observer, &mut events),
         };
-        // Nothing in a step reads the contacts' tangential velocities after
-        // the velocity phase (the audits read the bodies).
-        resolver.sequential.whole_velocities = false;
-        let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
-        if warm {
-            self.warm.stage(&self.world, resolver);
-        }
-        observer.resolving(&self.world, resolver);
-        let position = resolver.position_phase(Implementation::Indexed, observer);
-        let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
-        // The audits, while the world still holds the step's inputs.
-        let audits = self.audits.run(StepAudit {
-            world: &self.world,
-            resolver,
-            params: &p,
-            warm: &self.warm,
-            sleep: &self.sleep,
-            inertia: &self.inertia,
-            scale: self.energy_scale,
-        });
-        if warm {
-            self.warm.store(&self.world, resolver);
-        }
-        resolver.write_back(&mut self.world);
-        if p.sleep.enabled {
-            wake_sleep::wake_changed(
-                &mut self.world,
-                &mut self.sleep,
-                p.sleep.epsilon,
-                &mut events,
-            );
-        }
-        self.keep_resolved_speeds();
-        // 5. Positions of the awake bodies with the resolved velocities,
-        // through the step's collisions with continuous detection on, and
-        // the tunnelling audit of each pair's swept motion (substep.rs).
-        let spent = self.move_bodies(&mut events);
         // 6. Sleep.
         if p.sleep.enabled {
             wake_sleep::update_sleep(&mut self.world, &self.params, &mut self.sleep, &mut events);
@@ -373,41 +344,6 @@ impl<T: Real> Simulation<T> {
         })
     }
 
-    /// Moves the bodies over the step (substep.rs) and wakes the sleepers a
-    /// collision inside it changed; what continuous detection and the
-    /// tunnelling audit found.
-    fn move_bodies(&mut self, events: &mut Vec<Event>) -> Spent {
-        let p = self.params;
-        let mut spent = Spent::default();
-        self.substeps.moving.clear();
-        self.substeps.moving.extend(
-            (self.world.bodies.iter().zip(&self.sleep))
-                .map(|(b, s)| b.movable && (s.awake || !p.sleep.enabled)),
-        );
-        // The audit reuses contact generation's pairs where it can (swept.rs).
-        let earlier = Earlier {
-            bounds: self.generator.bounds(),
-            pairs: self.generator.pairs(),
-        };
-        self.substeps.spend(
-            &mut self.world,
-            &p,
-            &self.materials,
-            Some(earlier),
-            &mut spent,
-        );
-        // A sleeper a collision inside the step changed is awake (its
-        // velocity is no longer a sleeper's zero).
-        for &(body, by) in &spent.woken {
-            if !self.sleep[body.0].awake {
-                self.sleep[body.0].wake(p.sleep.epsilon);
-                let cause = WakeCause::Struck { by };
-                events.push(Event::Wakes { body, cause });
-            }
-        }
-        spent
-    }
-
     /// The step up to its resolution: contacts generated, velocities
     /// integrated, sleepers woken.
     fn begin_step(&mut self, events: &mut Vec<Event>) {
@@ -445,8 +381,10 @@ impl<T: Real> Simulation<T> {
         self.overlap_events(events);
         // 2. Velocities of the awake bodies: gravity and damping over the step.
         let kept = Kept::over(p.world.linear_damping, p.world.angular_damping, p.dt);
+        // A substepped solver integrates velocities itself.
+        let substepped = p.resolver.solver == Solver::SoftStep;
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
-            if body.movable && (sleep.awake || !p.sleep.enabled) {
+            if body.movable && (sleep.awake || !p.sleep.enabled) && !substepped {
                 let loads = Loads::default();
                 integrate_velocity_kept(&mut body.state, &p.world.gravity, &loads, &kept, p.dt);
             }

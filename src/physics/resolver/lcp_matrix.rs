@@ -6,7 +6,7 @@
 
 use nalgebra::Vector3;
 
-use crate::physics::resolver::{desired_of, ResolverBody, ResolverContact};
+use super::{desired_of, ResolverBody, ResolverContact};
 use crate::physics::stages::desired_velocity::applied_restitution;
 use crate::physics::{Real, RestitutionFrom};
 
