@@ -39,6 +39,8 @@ choices!(Solver {
         "the lecture's: the deepest penetration, the largest desired Δv first";
     Solver::SequentialImpulse => "sequential-impulse" ["sequential_impulse"]:
         "projected Gauss–Seidel with accumulated, clamped impulses";
+    Solver::Xpbd => "xpbd":
+        "extended position based dynamics (Müller et al. 2020): substeps, one position iteration each, then a velocity pass";
 });
 
 choices!(RestitutionFrom {
@@ -381,4 +383,22 @@ pub const RESTITUTION_FROM: Knob = Knob {
             s.resolver.restitution_from = r;
         }
     },
+};
+
+/// `substeps`.
+pub const SUBSTEPS: Knob = Knob {
+    name: "substeps",
+    old_names: &[],
+    level: Level::Resolver,
+    tables: RESOLVER_TABLES,
+    doc: "Soft step and XPBD: substeps per step, 1 to 64: trades time for stiffer contacts and less penetration (the other solvers do not read it).",
+    default: "4",
+    kind: Kind::Count { max: 64, optional: false },
+    cli: Cli::Option,
+    edit: Offered::Yes,
+    study: Offered::Yes,
+    grid: &[],
+    needs: Needs::Always,
+    get: |s| Value::Count(s.resolver.substeps as u64),
+    set: |s, v| s.resolver.substeps = count(v).unwrap_or(4).max(1),
 };

@@ -61,6 +61,7 @@ pub static KNOBS: &[Knob] = &[
     VELOCITY_EPSILON,
     SLIP_SPEED,
     RESTITUTION_FROM,
+    SUBSTEPS,
     DT,
     STEPS,
     CCD,

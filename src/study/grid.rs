@@ -92,6 +92,7 @@ pub fn describe_reference(c: &Config) -> String {
         match c.solver() {
             Solver::DeepestFirst => "the lecture's deepest-first order",
             Solver::SequentialImpulse => "sequential impulses, warm-started",
+            Solver::Xpbd => "XPBD",
         },
         super::CONVERGED,
         crate::format::exact(c.params.resolver.position_epsilon),

@@ -76,6 +76,7 @@ impl Config {
             (Solver::DeepestFirst, _) => "deepest-first",
             (Solver::SequentialImpulse, false) => "sequential-impulse",
             (Solver::SequentialImpulse, true) => "sequential-impulse+warm",
+            (Solver::Xpbd, _) => "xpbd",
         }
     }
 

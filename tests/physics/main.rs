@@ -48,3 +48,4 @@ mod table_budget;
 mod truth;
 mod tunnelling;
 mod world;
+mod xpbd;

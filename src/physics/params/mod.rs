@@ -138,6 +138,10 @@ pub enum Solver {
     /// Sequential impulses (projected Gauss–Seidel): every contact in turn,
     /// sweep after sweep, with accumulated and clamped impulses.
     SequentialImpulse,
+    /// Extended position based dynamics (Müller et al. 2020): substeps of
+    /// one position iteration each (λ and compliance per contact), then a
+    /// velocity pass (dynamic friction, restitution); integrates itself.
+    Xpbd,
 }
 
 /// How a set of contacts is resolved together (the lecture's two phases).
@@ -176,6 +180,9 @@ pub struct ResolverParams {
     /// The limit of each phase when no explicit count is given, per contact:
     /// trades time for what is left (default: 8, the lecture's 8 × contacts).
     pub visits_per_contact: usize,
+    /// Soft step and XPBD: substeps per step, 1 to 64: trades time for
+    /// stiffer contacts and less penetration (default: 4).
+    pub substeps: usize,
 }
 
 impl Default for ResolverParams {
@@ -190,6 +197,7 @@ impl Default for ResolverParams {
             solver: Solver::DeepestFirst,
             warm_start: false,
             visits_per_contact: 8,
+            substeps: 4,
         }
     }
 }

@@ -26,6 +26,7 @@ pub mod tolerance;
 pub mod total_audit;
 pub mod touching;
 mod wake_sleep;
+pub mod xpbd;
 
 /// The `ccd` and `rollback` knobs' choices (declared with the other params).
 pub use crate::physics::params::ccd_mode;

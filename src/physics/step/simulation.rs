@@ -7,6 +7,7 @@ use nalgebra::Vector3;
 
 pub(super) mod contacts;
 mod events;
+mod xpbd;
 
 use super::audit::Switches;
 use super::audits::{Audits, StepAudit};
@@ -27,6 +28,15 @@ use crate::physics::resolver::sequential::WarmCache;
 use crate::physics::resolver::{Implementation, Observer, Resolver, Silent};
 use crate::physics::{c, to_f64, BodyId, Real, Solver, World};
 use events::Ending;
+
+/// A step's resolution: the two phases' outcomes, the audits' events and
+/// what moving the bodies found.
+type Resolved<T> = (
+    crate::physics::resolver::PhaseOutcome<T>,
+    crate::physics::resolver::PhaseOutcome<T>,
+    [Option<Event>; 3],
+    Spent,
+);
 
 /// A world stepping in time.
 #[derive(Debug, Clone)]
@@ -91,6 +101,8 @@ pub struct Simulation<T: Real> {
     rolling_lift: bool,
     /// Sleepers an edit woke since the last step (its first events).
     edited: Vec<BodyId>,
+    /// XPBD's own switches (`solver = "xpbd"`; the erratum's experiment).
+    pub xpbd: super::xpbd::XpbdOptions,
 }
 
 impl<T: Real> Simulation<T> {
@@ -128,6 +140,7 @@ impl<T: Real> Simulation<T> {
             previous: Vec::new(),
             rolling_lift: false,
             edited: Vec::new(),
+            xpbd: Default::default(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -233,51 +246,12 @@ impl<T: Real> Simulation<T> {
             .fold(0.0f64, |m, k| m.max(to_f64(k.input.penetration)));
         let mut closing_before = std::mem::take(&mut self.closing_before);
         self.closing_speeds(&mut closing_before);
-        // 4. Resolve the contacts together.
-        let resolver = match &mut self.resolver {
-            Some(r) => {
-                r.prepare_again(&self.world, &p.resolver);
-                r
-            }
-            none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
+        // 4–5. Resolve the contacts together and move the bodies (XPBD
+        // does both in its substeps: simulation/xpbd.rs).
+        let (position, velocity, audits, spent) = match p.resolver.solver {
+            Solver::Xpbd => self.xpbd_step(observer, &mut events),
+            _ => self.resolve_and_move(observer, &mut events),
         };
-        // Nothing in a step reads the contacts' tangential velocities after
-        // the velocity phase (the audits read the bodies).
-        resolver.sequential.whole_velocities = false;
-        let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
-        if warm {
-            self.warm.stage(&self.world, resolver);
-        }
-        observer.resolving(&self.world, resolver);
-        let position = resolver.position_phase(Implementation::Indexed, observer);
-        let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
-        // The audits, while the world still holds the step's inputs.
-        let audits = self.audits.run(StepAudit {
-            world: &self.world,
-            resolver,
-            params: &p,
-            warm: &self.warm,
-            sleep: &self.sleep,
-            inertia: &self.inertia,
-            scale: self.energy_scale,
-        });
-        if warm {
-            self.warm.store(&self.world, resolver);
-        }
-        resolver.write_back(&mut self.world);
-        if p.sleep.enabled {
-            wake_sleep::wake_changed(
-                &mut self.world,
-                &mut self.sleep,
-                p.sleep.epsilon,
-                &mut events,
-            );
-        }
-        self.keep_resolved_speeds();
-        // 5. Positions of the awake bodies with the resolved velocities,
-        // through the step's collisions with continuous detection on, and
-        // the tunnelling audit of each pair's swept motion (substep.rs).
-        let spent = self.move_bodies(&mut events);
         // 6. Sleep.
         if p.sleep.enabled {
             wake_sleep::update_sleep(&mut self.world, &self.params, &mut self.sleep, &mut events);
@@ -338,6 +312,62 @@ impl<T: Real> Simulation<T> {
             ccd_tests: spent.tests,
             events,
         })
+    }
+
+    /// The resolver's phases on the step's contacts, then the bodies moved
+    /// with the resolved velocities (every solver but XPBD).
+    fn resolve_and_move<O: Observer<T>>(
+        &mut self,
+        observer: &mut O,
+        events: &mut Vec<Event>,
+    ) -> Resolved<T> {
+        let p = self.params;
+        // 4. Resolve the contacts together.
+        let resolver = match &mut self.resolver {
+            Some(r) => {
+                r.prepare_again(&self.world, &p.resolver);
+                r
+            }
+            none => none.insert(Resolver::prepare(&self.world, &p.resolver)),
+        };
+        // Nothing in a step reads the contacts' tangential velocities after
+        // the velocity phase (the audits read the bodies).
+        resolver.sequential.whole_velocities = false;
+        let warm = p.resolver.warm_start && p.resolver.solver == Solver::SequentialImpulse;
+        if warm {
+            self.warm.stage(&self.world, resolver);
+        }
+        observer.resolving(&self.world, resolver);
+        let position = resolver.position_phase(Implementation::Indexed, observer);
+        let velocity = resolver.velocity_phase(Implementation::Indexed, observer);
+        // The audits, while the world still holds the step's inputs.
+        let audits = self.audits.run(StepAudit {
+            world: &self.world,
+            resolver,
+            params: &p,
+            warm: &self.warm,
+            sleep: &self.sleep,
+            inertia: &self.inertia,
+            scale: self.energy_scale,
+        });
+        if warm {
+            self.warm.store(&self.world, resolver);
+        }
+        resolver.write_back(&mut self.world);
+        if p.sleep.enabled {
+            wake_sleep::wake_changed(
+                &mut self.world,
+                &mut self.sleep,
+                p.sleep.epsilon,
+                events,
+            );
+        }
+        self.keep_resolved_speeds();
+        // 5. Positions of the awake bodies with the resolved velocities,
+        // through the step's collisions with continuous detection on, and
+        // the tunnelling audit of each pair's swept motion (substep.rs).
+        let spent = self.move_bodies(events);
+        (position, velocity, audits, spent)
     }
 
     /// Moves the bodies over the step (substep.rs) and wakes the sleepers a
@@ -410,10 +440,12 @@ impl<T: Real> Simulation<T> {
             self.rolling_lift = lifted.is_some();
         }
         self.overlap_events(events);
-        // 2. Velocities of the awake bodies: gravity and damping over the step.
+        // 2. Velocities of the awake bodies: gravity and damping over the
+        // step (XPBD integrates them in its substeps).
+        let substepped = p.resolver.solver == Solver::Xpbd;
         let kept = Kept::over(p.world.linear_damping, p.world.angular_damping, p.dt);
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
-            if body.movable && (sleep.awake || !p.sleep.enabled) {
+            if body.movable && (sleep.awake || !p.sleep.enabled) && !substepped {
                 let loads = Loads::default();
                 integrate_velocity_kept(&mut body.state, &p.world.gravity, &loads, &kept, p.dt);
             }
