@@ -355,12 +355,7 @@ impl<T: Real> Simulation<T> {
         }
         resolver.write_back(&mut self.world);
         if p.sleep.enabled {
-            wake_sleep::wake_changed(
-                &mut self.world,
-                &mut self.sleep,
-                p.sleep.epsilon,
-                events,
-            );
+            wake_sleep::wake_changed(&mut self.world, &mut self.sleep, p.sleep.epsilon, events);
         }
         self.keep_resolved_speeds();
         // 5. Positions of the awake bodies with the resolved velocities,

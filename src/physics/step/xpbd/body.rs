@@ -4,8 +4,8 @@
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
-use crate::physics::step::integrate::Kept;
 use crate::physics::stages::orientation::add_scaled_rotation;
+use crate::physics::step::integrate::Kept;
 use crate::physics::{c, Real, World};
 
 #[derive(Debug, Clone)]
@@ -26,7 +26,9 @@ pub(super) struct XBody<T: Real> {
 impl<T: Real> XBody<T> {
     /// The rotation of orientation `q`.
     pub fn rotation_of(q: &Quaternion<T>) -> Matrix3<T> {
-        UnitQuaternion::new_unchecked(*q).to_rotation_matrix().into_inner()
+        UnitQuaternion::new_unchecked(*q)
+            .to_rotation_matrix()
+            .into_inner()
     }
 
     fn refresh_inertia(&mut self) {
@@ -94,7 +96,11 @@ impl<T: Real> Bodies<T> {
                         x: s.position,
                         q: s.orientation,
                         v: if moving { s.velocity } else { Vector3::zeros() },
-                        w: if moving { s.angular_velocity } else { Vector3::zeros() },
+                        w: if moving {
+                            s.angular_velocity
+                        } else {
+                            Vector3::zeros()
+                        },
                         x_prev: s.position,
                         q_prev: s.orientation,
                     };

@@ -101,7 +101,9 @@ pub fn step<T: Real>(
     let kept = super::integrate::Kept::over(input.linear_damping, input.angular_damping, h);
     for s in 0..n {
         bodies.predict(&input.gravity, &kept, h);
-        let mut sub = record.as_ref().map(|_| SubstepRecord::new(s + 1, to(h), to(alpha_tilde)));
+        let mut sub = record
+            .as_ref()
+            .map(|_| SubstepRecord::new(s + 1, to(h), to(alpha_tilde)));
         for (k, contact) in contacts.iter_mut().enumerate() {
             let r = passes::position(contact, &mut bodies, alpha_tilde);
             if r.is_some() {
@@ -112,10 +114,6 @@ pub fn step<T: Real>(
             }
         }
         bodies.velocities_from_positions(h);
-        if std::env::var("XPBD_DEBUG").is_ok() {
-            let sum = contacts.iter().fold(T::zero(), |a, k| a + k.lambda_n);
-            eprintln!("substep {s}: {} contacts, sum lambda / (g h^2) = {}", contacts.len(), to(sum / (h * h * input.gravity.norm())));
-        }
         let g = input.gravity.norm();
         for (k, contact) in contacts.iter_mut().enumerate() {
             let v = passes::velocity(contact, &mut bodies, h, g, input.options.dynamic_friction);
@@ -150,7 +148,13 @@ pub fn step<T: Real>(
         limit_reached: false,
     };
     [
-        outcome(Phase::Position, visits[0], input.position_epsilon, max_before, max_after),
+        outcome(
+            Phase::Position,
+            visits[0],
+            input.position_epsilon,
+            max_before,
+            max_after,
+        ),
         outcome(
             Phase::Velocity,
             visits[1],
@@ -164,4 +168,3 @@ pub fn step<T: Real>(
 fn to<T: Real>(x: T) -> f64 {
     crate::physics::to_f64(x)
 }
-

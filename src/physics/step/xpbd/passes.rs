@@ -75,22 +75,11 @@ impl<T: Real> Anchored<T> {
         }
     }
 
-    /// Slot `s`'s anchor at the substep's start.
-    fn anchor_prev(&self, s: usize, bodies: &Bodies<T>) -> Vector3<T> {
-        match self.slots[s] {
-            Some(i) => {
-                let b = &bodies.0[i];
-                b.x_prev + XBody::rotation_of(&b.q_prev) * self.local[s]
-            }
-            None => self.local[s],
-        }
-    }
-
     fn w(&self, bodies: &Bodies<T>, arms: &[Vector3<T>; 2], dir: &Vector3<T>) -> T {
         let mut w = T::zero();
-        for s in 0..2 {
-            if let Some(i) = self.slots[s] {
-                w += bodies.0[i].w(&arms[s], dir);
+        for (slot, arm) in self.slots.iter().zip(arms) {
+            if let Some(i) = *slot {
+                w += bodies.0[i].w(arm, dir);
             }
         }
         w
@@ -173,11 +162,14 @@ pub(super) fn position<T: Real>(
     let delta = (-cn - alpha_tilde * k.lambda_n) / (w + alpha_tilde);
     k.lambda_n += delta;
     k.push(bodies, &arms, &(n * delta));
-    // Static friction: the anchors' relative tangential move this substep.
+    // Static friction: the anchors' relative tangential move since the
+    // step's start (as Solver2D's XPBD: the paper's since the substep's
+    // start lets each substep's last correction turn a resting box about
+    // the normal, a creep of centimetres in seconds).
     let (_, arms) = k.separation(bodies);
     let (_, p1) = k.arm(0, bodies);
     let (_, p2) = k.arm(1, bodies);
-    let dp = (p1 - k.anchor_prev(0, bodies)) - (p2 - k.anchor_prev(1, bodies));
+    let dp = (p1 - k.start[0]) - (p2 - k.start[1]);
     let dp_t = dp - n * dp.dot(&n);
     let len = dp_t.norm();
     let bound = k.static_friction * k.lambda_n;
