@@ -105,7 +105,7 @@ pub fn step<T: Real>(
             .as_ref()
             .map(|_| SubstepRecord::new(s + 1, to(h), to(alpha_tilde)));
         for (k, contact) in contacts.iter_mut().enumerate() {
-            let r = passes::position(contact, &mut bodies, alpha_tilde);
+            let r = passes::position(contact, &mut bodies, alpha_tilde, h);
             if r.is_some() {
                 visits[0] += 1;
             }

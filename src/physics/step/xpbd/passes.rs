@@ -139,12 +139,18 @@ pub struct PositionDone {
     pub sticks: bool,
 }
 
+/// The most a contact is pushed out per second (m/s): not in the paper;
+/// Solver2D's XPBD clamps C so (a body started deep in another would
+/// otherwise leave at its depth over h, tens of m/s).
+const PUSH_OUT_SPEED: f64 = 3.0;
+
 /// One position iteration of contact `k` (λ reset for the substep): `None`
 /// when it does not penetrate.
 pub(super) fn position<T: Real>(
     k: &mut Anchored<T>,
     bodies: &mut Bodies<T>,
     alpha_tilde: T,
+    h: T,
 ) -> Option<PositionDone> {
     k.lambda_n = T::zero();
     k.lambda_t = T::zero();
@@ -154,6 +160,7 @@ pub(super) fn position<T: Real>(
     if cn >= T::zero() {
         return None;
     }
+    let cn = cn.max(-c::<T>(PUSH_OUT_SPEED) * h);
     let n = k.normal;
     let w = k.w(bodies, &arms, &n);
     if w + alpha_tilde <= T::zero() {
