@@ -103,6 +103,12 @@ pub fn resolve(
         )));
     }
     let params = lesson.resolver;
+    if params.solver == crate::physics::Solver::Xpbd {
+        return Err(AppError::Usage(format!(
+            "--solver xpbd: XPBD is a time stepper (its contacts are positions moved over substeps of a step, its velocities come from those moves), not a single-instant resolve of {}'s contacts. Step a scene with `contact-lab simulate SCENE --solver xpbd`",
+            lesson.id
+        )));
+    }
     super::warn_knobs(&params, err);
     let implementation = implementation(args);
     let n = lesson.contacts.len();
