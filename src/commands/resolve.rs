@@ -9,6 +9,7 @@ use super::{io, load, warn};
 use crate::cli::{ImplementationArg, ResolveArgs, ResolveFormat};
 use crate::error::AppError;
 use crate::format::Fmt;
+use crate::knobs::Choice;
 use crate::physics::resolver::{Implementation, Resolver, Silent};
 use crate::physics::{ResolverParams, World};
 use crate::render::resolve::{self, Seconds};
@@ -103,14 +104,14 @@ pub fn resolve(
         )));
     }
     let params = lesson.resolver;
-    if params.solver == crate::physics::Solver::SoftStep {
-        // A soft step is substeps of a time step: its contacts' bias is a
-        // separation asked back per second and its bodies move between
-        // substeps, so a set of contacts at one instant has no soft answer.
+    if let Some(why) = time_stepper(params.solver) {
+        // A substepped solver moves its bodies between substeps, so a set
+        // of contacts at one instant has no answer of its own.
         return Err(AppError::Usage(format!(
-            "{}: resolve takes the contacts at one instant; the soft step integrates velocities and positions over a time step's substeps and has no single-instant answer. \
-             Step it with `contact-lab simulate <scene> --solver soft-step --trace-step N`",
-            lesson.id
+            "{}: resolve takes the contacts at one instant; {why} and has no single-instant answer. \
+             Step a scene with `contact-lab simulate SCENE --solver {} --trace-step N`",
+            lesson.id,
+            params.solver.name()
         )));
     }
     super::warn_knobs(&params, err);
@@ -221,4 +222,17 @@ fn worked(
             .collect()
     };
     [phase(&trace.position, false), phase(&trace.velocity, true)]
+}
+
+/// Why `solver` has no single-instant answer (`None`: it has one).
+fn time_stepper(solver: crate::physics::Solver) -> Option<&'static str> {
+    match solver {
+        crate::physics::Solver::SoftStep => Some(
+            "the soft step integrates velocities and positions over a time step's substeps",
+        ),
+        crate::physics::Solver::Xpbd => Some(
+            "XPBD is a time stepper (its contacts are positions moved over substeps of a step, its velocities come from those moves)",
+        ),
+        _ => None,
+    }
 }

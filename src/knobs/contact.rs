@@ -41,6 +41,8 @@ choices!(Solver {
         "projected Gauss–Seidel with accumulated, clamped impulses";
     Solver::SoftStep => "soft-step" ["soft_step"]:
         "Box2D v3's: substeps, soft contacts (a frequency and a damping ratio), relax and restitution passes";
+    Solver::Xpbd => "xpbd":
+        "extended position based dynamics (Müller et al. 2020): substeps, one position iteration each, then a velocity pass";
     Solver::Lcp => "lcp":
         "simultaneous impact: one linear complementarity problem over every contact (Lemke's method)";
 });

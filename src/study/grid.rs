@@ -93,6 +93,7 @@ pub fn describe_reference(c: &Config) -> String {
             Solver::DeepestFirst => "the lecture's deepest-first order",
             Solver::SequentialImpulse => "sequential impulses, warm-started",
             Solver::SoftStep => "the soft step (Box2D v3's)",
+            Solver::Xpbd => "XPBD",
             Solver::Lcp => "the simultaneous (lcp) solve",
         },
         super::CONVERGED,

@@ -77,6 +77,7 @@ impl Config {
             (Solver::SequentialImpulse, false) => "sequential-impulse",
             (Solver::SequentialImpulse, true) => "sequential-impulse+warm",
             (Solver::SoftStep, _) => "soft-step",
+            (Solver::Xpbd, _) => "xpbd",
             (Solver::Lcp, _) => "lcp",
         }
     }

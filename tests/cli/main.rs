@@ -31,4 +31,5 @@ mod simulate_interrupt;
 mod slide_ready;
 mod study;
 mod study_broad;
+mod substepped;
 mod tunnelled;

@@ -50,3 +50,4 @@ mod table_budget;
 mod truth;
 mod tunnelling;
 mod world;
+mod xpbd;

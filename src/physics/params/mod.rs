@@ -141,6 +141,10 @@ pub enum Solver {
     /// Box2D v3's soft step: substeps, soft contacts (a frequency and a
     /// damping ratio), a relax pass and a restitution pass.
     SoftStep,
+    /// Extended position based dynamics (Müller et al. 2020): substeps of
+    /// one position iteration each (λ and compliance per contact), then a
+    /// velocity pass (dynamic friction, restitution); integrates itself.
+    Xpbd,
     /// Simultaneous impact: the velocity phase as one linear
     /// complementarity problem over every contact, solved by Lemke's
     /// method (the position phase is the lecture's projection).

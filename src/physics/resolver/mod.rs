@@ -20,6 +20,7 @@
 pub mod adjacent;
 pub mod checks;
 pub mod indexed;
+pub mod lcp_matrix;
 mod lean_prepare;
 mod lean_take;
 pub mod neighbours;
@@ -32,7 +33,6 @@ pub mod queue;
 pub mod row;
 pub mod scan;
 pub mod sequential;
-pub mod lcp_matrix;
 pub mod simultaneous;
 pub mod velocity;
 pub mod velocity_row;

@@ -6,8 +6,8 @@
 
 use nalgebra::Vector3;
 
-use super::{desired_of, velocity, Observer, Phase, PhaseOutcome, Resolver};
 use super::lcp_matrix as matrix;
+use super::{desired_of, velocity, Observer, Phase, PhaseOutcome, Resolver};
 use crate::physics::lcp::{lemke, Problem, Record, Stage};
 use crate::physics::{c, LcpRestitution, Real};
 

@@ -18,8 +18,8 @@ pub mod report;
 pub mod rollback;
 pub mod simulation;
 pub mod sleep;
-pub mod split;
 pub mod soft;
+pub mod split;
 pub mod substep;
 pub mod swept;
 pub mod toi_pair;
@@ -28,6 +28,7 @@ pub mod tolerance;
 pub mod total_audit;
 pub mod touching;
 mod wake_sleep;
+pub mod xpbd;
 
 /// The `ccd` and `rollback` knobs' choices (declared with the other params).
 pub use crate::physics::params::ccd_mode;

@@ -9,6 +9,7 @@ pub(super) mod contacts;
 mod events;
 mod resolve;
 mod soft;
+mod xpbd;
 
 use super::audit::Switches;
 use super::audits::Audits;
@@ -100,6 +101,8 @@ pub struct Simulation<T: Real> {
     /// the next step when one is asked for (simulation/soft.rs).
     soft: super::soft::SoftSolver<T>,
     pub soft_trace: Option<super::soft::SoftTrace>,
+    /// XPBD's own switches (`solver = "xpbd"`; the erratum's experiment).
+    pub xpbd: super::xpbd::XpbdOptions,
 }
 
 impl<T: Real> Simulation<T> {
@@ -139,6 +142,7 @@ impl<T: Real> Simulation<T> {
             edited: Vec::new(),
             soft: Default::default(),
             soft_trace: None,
+            xpbd: Default::default(),
         };
         sim.world.contacts.clear();
         sim.size = tolerance::smallest_size(&sim.world);
@@ -280,6 +284,7 @@ impl<T: Real> Simulation<T> {
         // 4. Resolve the contacts together, 5. move the bodies.
         let (position, velocity, audits, spent) = match p.resolver.solver {
             Solver::SoftStep => self.soft_step(&mut events),
+            Solver::Xpbd => self.xpbd_step(observer, &mut events),
             _ => self.resolve_and_move(observer, &mut events),
         };
         // 6. Sleep.
@@ -379,10 +384,10 @@ impl<T: Real> Simulation<T> {
             self.rolling_lift = lifted.is_some();
         }
         self.overlap_events(events);
-        // 2. Velocities of the awake bodies: gravity and damping over the step.
+        // 2. Velocities of the awake bodies: gravity and damping over the
+        // step (the soft step and XPBD integrate them in their substeps).
+        let substepped = matches!(p.resolver.solver, Solver::SoftStep | Solver::Xpbd);
         let kept = Kept::over(p.world.linear_damping, p.world.angular_damping, p.dt);
-        // A substepped solver integrates velocities itself.
-        let substepped = p.resolver.solver == Solver::SoftStep;
         for (body, sleep) in self.world.bodies.iter_mut().zip(&self.sleep) {
             if body.movable && (sleep.awake || !p.sleep.enabled) && !substepped {
                 let loads = Loads::default();
