@@ -10,6 +10,12 @@ use super::knob::{Cli, Kind, Knob, Level, Needs, Offered, Range, Table, Value};
 
 const RESOLVER_TABLES: &[Table] = &[Table::Settings];
 
+/// Why the study and `advise` leave the soft knobs at their defaults: only
+/// the soft step reads them, and searching them in every scene would cost
+/// every other solver's runs for nothing (the study tries the soft step
+/// itself, through the solver knob, at these defaults).
+const SOFT_ONLY: &str = "only the soft step reads it: the study tries that solver at its defaults";
+
 /// `contact_hertz`.
 pub const CONTACT_HERTZ: Knob = Knob {
     name: "contact_hertz",
@@ -21,8 +27,8 @@ pub const CONTACT_HERTZ: Knob = Knob {
     kind: Kind::Number { range: Range::NonNegative, optional: false },
     cli: Cli::Option,
     edit: Offered::Yes,
-    study: Offered::Yes,
-    grid: &["15", "60"],
+    study: Offered::No(SOFT_ONLY),
+    grid: &[],
     needs: Needs::Always,
     get: |s| Value::Number(s.resolver.soft.contact_hertz),
     set: |s, v| s.resolver.soft.contact_hertz = number(v),
@@ -39,8 +45,8 @@ pub const CONTACT_DAMPING_RATIO: Knob = Knob {
     kind: Kind::Number { range: Range::NonNegative, optional: false },
     cli: Cli::Option,
     edit: Offered::Yes,
-    study: Offered::Yes,
-    grid: &["1"],
+    study: Offered::No(SOFT_ONLY),
+    grid: &[],
     needs: Needs::Always,
     get: |s| Value::Number(s.resolver.soft.contact_damping_ratio),
     set: |s, v| s.resolver.soft.contact_damping_ratio = number(v),
@@ -57,8 +63,8 @@ pub const PUSH_OUT_SPEED: Knob = Knob {
     kind: Kind::Number { range: Range::NonNegativeOrInf, optional: false },
     cli: Cli::Option,
     edit: Offered::Yes,
-    study: Offered::Yes,
-    grid: &["1"],
+    study: Offered::No(SOFT_ONLY),
+    grid: &[],
     needs: Needs::Always,
     get: |s| Value::Number(s.resolver.soft.push_out_speed),
     set: |s, v| s.resolver.soft.push_out_speed = number(v),
@@ -75,8 +81,8 @@ pub const RELAX_ITERATIONS: Knob = Knob {
     kind: Kind::Count { max: 64, optional: false },
     cli: Cli::Option,
     edit: Offered::Yes,
-    study: Offered::Yes,
-    grid: &["0", "4"],
+    study: Offered::No(SOFT_ONLY),
+    grid: &[],
     needs: Needs::Always,
     get: |s| Value::Count(s.resolver.soft.relax_iterations as u64),
     set: |s, v| s.resolver.soft.relax_iterations = count(v).unwrap_or(1),
@@ -93,8 +99,8 @@ pub const RESTITUTION_THRESHOLD: Knob = Knob {
     kind: Kind::Number { range: Range::NonNegative, optional: false },
     cli: Cli::Option,
     edit: Offered::Yes,
-    study: Offered::Yes,
-    grid: &["0.25"],
+    study: Offered::No(SOFT_ONLY),
+    grid: &[],
     needs: Needs::Always,
     get: |s| Value::Number(s.resolver.soft.restitution_threshold),
     set: |s, v| s.resolver.soft.restitution_threshold = number(v),
