@@ -171,3 +171,13 @@ pub(crate) fn warn_knobs(resolver: &crate::physics::ResolverParams, err: &mut dy
         );
     }
 }
+
+/// A run that blew up, as the error a command ends with.
+pub(crate) fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
+    let names = crate::trace::resolver::Names::of_lesson(lesson);
+    AppError::Runtime(format!(
+        "{}: {}; try a smaller --dt or more iterations",
+        lesson.id,
+        crate::session::blew_up(&names, e)
+    ))
+}

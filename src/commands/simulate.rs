@@ -4,7 +4,7 @@
 use std::io::Write;
 
 use super::warn_knobs;
-use super::{figure::plane, io, progress, warn};
+use super::{blew_up, figure::plane, io, progress, warn};
 use crate::cli::{RunFormat, SimulateArgs};
 use crate::error::AppError;
 use crate::format::exact;
@@ -211,15 +211,6 @@ fn interruption(lesson: &Lesson, done: u64, steps: u64) -> AppError {
     AppError::Runtime(format!(
         "{}: interrupted (Ctrl-C) after step {done} of {steps}; the output ends there",
         lesson.id
-    ))
-}
-
-pub(super) fn blew_up(lesson: &Lesson, e: &crate::physics::step::BlowUp) -> AppError {
-    let names = crate::trace::resolver::Names::of_lesson(lesson);
-    AppError::Runtime(format!(
-        "{}: {}; try a smaller --dt or more iterations",
-        lesson.id,
-        crate::session::blew_up(&names, e)
     ))
 }
 

@@ -4,8 +4,7 @@
 
 use std::io::Write;
 
-use super::io;
-use super::simulate::blew_up;
+use super::{blew_up, io};
 use crate::cli::{RunFormat, SimulateArgs};
 use crate::error::AppError;
 use crate::format::Fmt;

@@ -304,7 +304,7 @@ const SETTINGS: &[(&str, usize, usize, &str)] = &[
     ("resolver-setting-in-contact", 18, 14, "velocity_epsilon is a setting of the whole scene: put it in the lesson's [settings]"),
     ("tiny-position-epsilon", 20, 20, "in [settings]: position_epsilon 1e-70 is below contact-lab's smallest non-zero magnitude, 1e-60"),
     ("unknown-restitution-from", 20, 20, "in [settings]: restitution_from must be one of \"current\", \"initial\", got \"later\""),
-    ("unknown-solver", 20, 10, "in [settings]: solver must be one of \"deepest-first\", \"sequential-impulse\", \"lcp\", got \"fastest\""),
+    ("unknown-solver", 20, 10, "in [settings]: solver must be one of \"deepest-first\", \"sequential-impulse\", \"soft-step\", \"xpbd\", \"lcp\", got \"fastest\""),
     ("velocity-iterations-past-limit", 20, 23, "in [settings]: velocity_iterations must be a whole number from 0 to 10⁹ (1000000000), got 2000000000"),
 ];
 

@@ -73,14 +73,6 @@ pub trait Observer<T: Real> {
     /// velocities integrated) with `resolver`, prepared (and warm-started
     /// where it is); called by the stepper, not the resolver.
     fn resolving(&mut self, _world: &crate::physics::World<T>, _resolver: &super::Resolver<T>) {}
-    /// A time step under XPBD resolved `world` (as it was before, contacts
-    /// generated) in these substeps; called by the stepper.
-    fn xpbd_substeps(
-        &mut self,
-        _world: &crate::physics::World<T>,
-        _substeps: &[crate::physics::step::xpbd::SubstepRecord],
-    ) {
-    }
 }
 
 /// The observer of the fast path: reports go nowhere.

@@ -284,7 +284,7 @@ impl<T: Real> Simulation<T> {
         // 4. Resolve the contacts together, 5. move the bodies.
         let (position, velocity, audits, spent) = match p.resolver.solver {
             Solver::SoftStep => self.soft_step(&mut events),
-            Solver::Xpbd => self.xpbd_step(observer, &mut events),
+            Solver::Xpbd => self.xpbd_step(&mut events),
             _ => self.resolve_and_move(observer, &mut events),
         };
         // 6. Sleep.

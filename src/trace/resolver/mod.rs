@@ -402,6 +402,16 @@ pub fn describe_prepared(
     let mut velocity_log = std::mem::take(&mut recorder.velocity);
     sort_updates(&mut position_log);
     sort_updates(&mut velocity_log);
+    if params.solver == Solver::Lcp {
+        // The simultaneous impulses act together: what one of them alone
+        // did to the other contacts on the way is bookkeeping, not an
+        // iteration making a contact worse (the record's velocities after
+        // are the answer).
+        for it in &mut velocity_log {
+            it.updated.clear();
+            (it.changed, it.worse) = (0, 0);
+        }
+    }
     if bodies {
         // The bodies after both phases close the velocity list.
         recorder.bodies[1].push(resolver.bodies.clone());
