@@ -59,3 +59,27 @@ fn compare_puts_the_sequence_beside_the_simultaneous_solve() {
     assert_eq!(r.code, Some(2));
     assert!(r.stderr.contains("unknown solver 'nope'"), "{}", r.stderr);
 }
+
+/// Every format of `resolve --solver lcp` shows the simultaneous solve
+/// (A, b and each pivot), not only text and JSON.
+#[test]
+fn every_format_shows_the_pivots() {
+    for format in ["md", "html"] {
+        let r = run(&[
+            "resolve",
+            "impact-row-3",
+            "--solver",
+            "lcp",
+            "--format",
+            format,
+        ]);
+        assert_eq!(r.code, Some(0), "{format}: {}", r.stderr);
+        assert!(
+            r.stdout
+                .contains("pivot 1 (newton): lambda0 enters, w1 leaves"),
+            "{format}: {}",
+            r.stdout
+        );
+        assert!(r.stdout.contains("The simultaneous solve"), "{format}");
+    }
+}

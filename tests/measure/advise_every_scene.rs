@@ -106,11 +106,12 @@ const MASS_RATIO_BEST_EVERY_STEP: f64 = 2120.0;
 /// with ccd) bounces the ball at the time it meets the floor, and the
 /// advice needs dt = 1/480 s with conservative advancement to stay within
 /// 1 cm of it. ball-floor-fast (new) costs 66.
-const BEFORE: [(&str, f64); 24] = [
+const BEFORE: [(&str, f64); 25] = [
     ("ball-drop", 482.0),
     ("resting-box", 38.0),
     ("sliding-box", 194.0),
     ("ramp-stick", 48.0),
+    ("cradle-gaps", 38.0),
     ("ramp-slide", 1108.0),
     ("stack-5", 1140.0),
     ("cradle-over-time", 34.0),

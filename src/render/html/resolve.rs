@@ -217,6 +217,17 @@ pub fn sections(trace: &ResolverTrace, worked: &Worked, fmt: &Fmt) -> String {
     body.push_str("</section>\n");
     phase(&mut body, trace, &trace.position, &worked[0], fmt);
     phase(&mut body, trace, &trace.velocity, &worked[1], fmt);
+    if let Some(l) = &trace.lcp {
+        // The simultaneous solve as the text gives it: A, b, each pivot.
+        let mut block = String::new();
+        crate::render::resolve::lcp::text(&mut block, l, fmt);
+        step_open(&mut body, "lcp", "The simultaneous solve");
+        let _ = writeln!(
+            body,
+            "<pre class=\"text\">{}</pre>\n</section>",
+            esc(block.trim_end())
+        );
+    }
     step_open(&mut body, "after", "After");
     body.push_str("<h3>Contacts after (the resolver's bookkeeping)</h3>\n");
     body.push_str(&contacts_table(&trace.contacts_after, fmt));

@@ -62,6 +62,16 @@ pub fn render(trace: &ResolverTrace, fmt: &Fmt) -> String {
     table(&mut out, &trace.before, fmt);
     phase(&mut out, &trace.position, fmt);
     phase(&mut out, &trace.velocity, fmt);
+    if let Some(l) = &trace.lcp {
+        // The simultaneous solve as the text gives it: A, b, each pivot.
+        let mut block = String::new();
+        super::lcp::text(&mut block, l, fmt);
+        let _ = writeln!(
+            out,
+            "\n## The simultaneous solve\n\n```text\n{}\n```",
+            block.trim_end()
+        );
+    }
     let _ = writeln!(out, "\n## Contacts after (the resolver's bookkeeping)\n");
     table(&mut out, &trace.contacts_after, fmt);
     let _ = writeln!(out, "\n## After\n");

@@ -217,6 +217,11 @@ pub fn dimensions(
         };
         let mut seen: Vec<Config> = Vec::new();
         values.retain(|v| {
+            // The solvers searched are the two the study measures
+            // ([`super::SEARCHED_SOLVERS`]).
+            if *k == crate::knobs::SOLVER && !super::SEARCHED_SOLVERS.contains(&v.as_str()) {
+                return false;
+            }
             let mut c = *reference;
             let ok = grid::set(&mut c, k.name, v).is_ok() && !seen.contains(&c);
             seen.push(c);
