@@ -252,8 +252,10 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<Vec<Tri>, HullError> {
 /// Per tetrahedron (relative to o): V = det[a b c]/6, first moment V·(a+b+c)/4,
 /// second moment C = det/120 · (aaᵀ + bbᵀ + ccᵀ + ssᵀ), s = a+b+c
 /// (Blow & Binstock's canonical tetrahedron). Then I = tr(C)·1 − C about the
-/// centroid (parallel-axis shift C_c = C − V·ggᵀ).
-fn mass_properties(vertices: &[Vector3<f64>], triangles: &[[usize; 3]]) -> MassProperties {
+/// centroid (parallel-axis shift C_c = C − V·ggᵀ). A closed mesh's mass
+/// comes from here too ([`crate::physics::mesh`], which refuses a
+/// volume that is not positive).
+pub(crate) fn mass_properties(vertices: &[Vector3<f64>], triangles: &[[usize; 3]]) -> MassProperties {
     let o = vertices.iter().sum::<Vector3<f64>>() / vertices.len() as f64;
     let mut volume = 0.0;
     let mut first = Vector3::zeros();
