@@ -255,7 +255,10 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<Vec<Tri>, HullError> {
 /// centroid (parallel-axis shift C_c = C − V·ggᵀ). A closed mesh's mass
 /// comes from here too ([`crate::physics::mesh`], which refuses a
 /// volume that is not positive).
-pub(crate) fn mass_properties(vertices: &[Vector3<f64>], triangles: &[[usize; 3]]) -> MassProperties {
+pub(crate) fn mass_properties(
+    vertices: &[Vector3<f64>],
+    triangles: &[[usize; 3]],
+) -> MassProperties {
     let o = vertices.iter().sum::<Vector3<f64>>() / vertices.len() as f64;
     let mut volume = 0.0;
     let mut first = Vector3::zeros();
