@@ -26,6 +26,8 @@ pub(super) struct Audits<T: Real> {
     lifting: bool,
     /// The total-energy audit's storage (total_audit.rs).
     pub total: TotalAudit,
+    /// The total-energy rise going on, and its bodies.
+    streak: super::total_audit::RiseStreak,
     /// Each resolver body's kinetic energy after this step's resolution,
     /// shared by the kinetic and the total-energy audits.
     kinetic_after: Vec<T>,
@@ -52,6 +54,7 @@ impl<T: Real> Default for Audits<T> {
             gaining: false,
             lifting: false,
             total: TotalAudit::default(),
+            streak: Default::default(),
             kinetic_after: Vec::new(),
         }
     }
@@ -92,7 +95,6 @@ impl<T: Real> Audits<T> {
         };
         self.lifting = lifted.is_some();
         // The total energy of the bodies in contact (total_audit.rs).
-        let rising = self.total.rising;
         let enabled = p.sleep.enabled;
         let start = self.total.start(
             s.world,
@@ -110,15 +112,18 @@ impl<T: Real> Audits<T> {
             Some(&self.kinetic_after),
         );
         let rise = start.rise(end);
-        let rise_event = match (rise, rising) {
-            (Some(gained), false) => Some(Event::EnergyRise {
+        let rise_event = match rise {
+            Some(gained) if self.streak.new_rise(true, start.touched) => Some(Event::EnergyRise {
                 gained,
                 tolerance: start.tolerance,
                 cause: inputs.attribute_rise(&start),
             }),
-            _ => None,
+            Some(_) => None,
+            None => {
+                self.streak.new_rise(false, start.touched);
+                None
+            }
         };
-        self.total.rising = rise.is_some();
         [lift_event, gain_event, rise_event]
     }
 }

@@ -73,13 +73,43 @@ impl TotalStart<'_> {
 }
 
 /// The audit's storage, kept from step to step (nothing is allocated once
-/// it holds a world this size), and whether the last step rose.
+/// it holds a world this size).
 #[derive(Debug, Clone, Default)]
 pub struct TotalAudit {
     start: Vec<f64>,
     touched: Vec<bool>,
-    /// Whether the last step rose (an event when it starts, as the kinetic audit's).
-    pub rising: bool,
+}
+
+/// Whether the last step rose (an event when it starts, as the kinetic
+/// audit's), and the bodies in contact over the steps of the rise going on:
+/// a rise that takes in a body not among them is a new one, with its event
+/// (a ball's rise going on hid the next ball's, +6.6 J with no event).
+#[derive(Debug, Clone, Default)]
+pub struct RiseStreak {
+    rising: bool,
+    bodies: Vec<bool>,
+}
+
+impl RiseStreak {
+    /// Whether this step's rise (`rises`) is a new one, to be reported:
+    /// the last step did not rise, or this one takes in a body the rise
+    /// going on did not; and the bodies of the rise going on, kept.
+    pub fn new_rise(&mut self, rises: bool, touched: &[bool]) -> bool {
+        let joined = (touched.iter().enumerate())
+            .any(|(i, t)| *t && !self.bodies.get(i).copied().unwrap_or(false));
+        let new = rises && (!self.rising || joined);
+        if !rises || new {
+            self.bodies.clear();
+        }
+        if rises {
+            self.bodies.resize(touched.len(), false);
+            for (was, t) in self.bodies.iter_mut().zip(touched) {
+                *was |= *t;
+            }
+        }
+        self.rising = rises;
+        new
+    }
 }
 
 impl TotalAudit {
