@@ -426,7 +426,7 @@ pub fn lowered_text(l: &crate::physics::step::tolerance::Lowered) -> String {
         Tolerance::VelocityEpsilon => (
             "velocity epsilon",
             "m/s",
-            "at most a tenth of √(g × its half-width)",
+            "at most a tenth of √(g × its half-width), and at most a thousandth of its half-width a step where gravity moves it more than a tenth of it in a step",
         ),
         Tolerance::SleepEpsilon => ("sleep epsilon", "m²/s²", "at most g × its half-width"),
     };

@@ -271,28 +271,34 @@ fn run(mut sim: Simulation<f64>, steps: usize) -> Run {
 ///   rocking 1.5 cm on a half-space; sequential impulses moving a can 1.5 mm
 ///   and a tetrahedron 167 m); with it sequential impulses rest and nothing
 ///   passes through, but the lecture's order (one contact at a time) still
-///   rocks every 1 mm shape by 0.13–0.68 mm (a box and a can on a half-space
-///   got 20–40 times stiller, a capsule 10–40 times less still: 16 µm and
-///   6 µm before). A split by the bounding radius instead (4 substeps) left
+///   rocked every 1 mm shape by 0.13–0.68 mm. With its velocity epsilon
+///   bounded as sequential impulses' is (a corner moved at most a thousandth
+///   of the size in a step: 3e-5 m/s here, it was 0.007 m/s) the box on a
+///   half-space moves 12 µm (it was 0.68 mm, and now sleeps), the capsules
+///   6–7 µm (0.19–0.24 mm), the tetrahedron on a half-space 11 µm (0.13 mm),
+///   the box on a box 96 µm (0.38 mm), the can on a box 0.24 mm (0.30 mm);
+///   the can on a half-space 0.41 mm (0.33 mm) and the tetrahedron on a box
+///   0.17 mm (0.13 mm) rock a little more.
+///   A split by the bounding radius instead (4 substeps) left
 ///   a tetrahedron through a 1 mm box under the lecture's order (45 m).
 const KNOWN: [(&str, f64); 8] = [
-    ("0.001 m box on half_space, DeepestFirst, resting", 6.790e-4),
-    ("0.001 m box on box, DeepestFirst, resting", 3.777e-4),
+    ("0.001 m box on half_space, DeepestFirst, resting", 1.227e-5),
+    ("0.001 m box on box, DeepestFirst, resting", 9.598e-5),
     (
         "0.001 m cylinder on half_space, DeepestFirst, resting",
-        3.267e-4,
+        4.073e-4,
     ),
-    ("0.001 m cylinder on box, DeepestFirst, resting", 3.016e-4),
+    ("0.001 m cylinder on box, DeepestFirst, resting", 2.363e-4),
     (
         "0.001 m capsule on half_space, DeepestFirst, resting",
-        1.858e-4,
+        5.650e-6,
     ),
-    ("0.001 m capsule on box, DeepestFirst, resting", 2.401e-4),
+    ("0.001 m capsule on box, DeepestFirst, resting", 6.966e-6),
     (
         "0.001 m hull on half_space, DeepestFirst, resting",
-        1.286e-4,
+        1.100e-5,
     ),
-    ("0.001 m hull on box, DeepestFirst, resting", 1.286e-4),
+    ("0.001 m hull on box, DeepestFirst, resting", 1.692e-4),
 ];
 
 /// A run's broken promises (`rest`: the body should stand still), one
@@ -563,7 +569,10 @@ position = [0, 0, 0]
             run = 0;
         }
     }
-    assert!(said >= 5, "{said} burials said with their length");
+    // (Five or more when the lecture's order kept a velocity epsilon of
+    // u / 10 here; with the bound sequential impulses have, fewer burials
+    // and longer ones.)
+    assert!(said >= 1, "{said} burials said with their length");
     // It ends the run buried: the burial still going is said at the end
     // with its length (it had only its start event).
     assert!(run > 1, "buried at the end");

@@ -118,3 +118,79 @@ fn a_sleeper_an_edit_wakes_says_so() {
     let r = sim.advance().expect("no blow-up");
     assert!(!r.events.iter().any(|e| matches!(e, Event::Wakes { .. })));
 }
+
+/// A box of side `l` resting on a half-space floor (sleep on, defaults).
+fn box_on_a_floor(l: f64) -> Simulation<f64> {
+    let text = format!(
+        r#"id = "box-at-scale"
+title = "A box resting alone on a floor"
+source = "Lecture IV Collisions"
+summary = "One box at rest on a half-space."
+
+[world]
+restitution = 0.2
+friction = 0.5
+
+[step]
+dt = 0.016666666666666666
+steps = 360
+
+[[body]]
+name = "box"
+mass = 1.0
+shape = {{ box = [{l}, {l}, {l}] }}
+position = [0, {}, 0]
+
+[[body]]
+name = "floor"
+mass = inf
+shape = "half_space"
+position = [0, 0, 0]
+"#,
+        0.5 * l
+    );
+    let lesson = contact_lab::lesson::validate::parse("sleep_holds.rs", &text).expect("valid");
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    Simulation::new(world, params, lesson.simulation.unwrap().materials)
+}
+
+/// Sleep at every scale: a 1 mm, a 1 m and a 1 km box resting alone on a
+/// floor fall asleep once and are asleep at the end of 6 s, under
+/// deepest-first and warm sequential impulses (the 1 mm box is split into
+/// substeps, the 1 km one rests under scaled tolerances).
+#[test]
+fn a_box_resting_alone_sleeps_once_at_a_millimetre_a_metre_and_a_kilometre() {
+    for l in [1e-3, 1.0, 1e3] {
+        for (solver, warm) in [
+            (Solver::DeepestFirst, false),
+            (Solver::SequentialImpulse, true),
+        ] {
+            let mut sim = box_on_a_floor(l);
+            sim.params.resolver.solver = solver;
+            sim.params.resolver.warm_start = warm;
+            let (mut asleep, mut wakes) = (Vec::new(), Vec::new());
+            for _ in 0..360 {
+                let r = sim.advance().expect("no blow-up");
+                for e in &r.events {
+                    match e {
+                        Event::FallsAsleep { .. } => asleep.push(r.step),
+                        Event::Wakes { .. } => wakes.push((r.step, *e)),
+                        _ => {}
+                    }
+                }
+            }
+            let what = format!("{l} m box, {solver:?}, warm {warm}");
+            assert_eq!(asleep.len(), 1, "{what}: asleep at {asleep:?}");
+            assert!(wakes.is_empty(), "{what}: {wakes:?}");
+            assert!(!sim.is_awake(0), "{what}: awake at the end");
+            let y = sim.world.bodies[0].dynamic().unwrap().position.y;
+            assert!(
+                (y - 0.5 * l).abs() < 0.01 * l,
+                "{what}: the centre at {y}, not near {}",
+                0.5 * l
+            );
+        }
+    }
+}

@@ -82,6 +82,8 @@ pub struct Simulation<T: Real> {
     /// The parameters the scaled ones were made from, and the scaled ones.
     scaled_for: Option<SimParams<T>>,
     scaled: SimParams<T>,
+    /// The whole step's dt while its substeps run (the tolerances' step).
+    substep_of: Option<f64>,
     /// Pairs wholly inside one another this step and the last.
     inside: PairSet,
     inside_before: PairSet,
@@ -131,6 +133,7 @@ impl<T: Real> Simulation<T> {
             kept: KeptEnergy::default(),
             size: None,
             scaled_for: None,
+            substep_of: None,
             scaled: SimParams::default(),
             inside: PairSet::default(),
             inside_before: PairSet::default(),
@@ -197,6 +200,7 @@ impl<T: Real> Simulation<T> {
         let (dt, step, time) = (self.params.dt, self.step, self.time);
         let n = split.substeps;
         self.params.dt = dt / c::<T>(f64::from(n));
+        self.substep_of = Some(to_f64(dt));
         let mut whole: Option<StepReport> = None;
         let mut result = Ok(());
         for _ in 0..n {
@@ -210,6 +214,7 @@ impl<T: Real> Simulation<T> {
             }
         }
         self.params.dt = dt;
+        self.substep_of = None;
         self.step = step + 1;
         self.time = time + to_f64(dt);
         result?;
@@ -241,7 +246,8 @@ impl<T: Real> Simulation<T> {
     /// the parameters as given restored after it.
     fn with_scaled_tolerances<R>(&mut self, f: impl FnOnce(&mut Self) -> R) -> R {
         if self.scaled_for.as_ref() != Some(&self.params) {
-            self.scaled = tolerance::scaled(&self.params, self.size).0;
+            let step_dt = (self.substep_of).unwrap_or_else(|| to_f64(self.params.dt));
+            self.scaled = tolerance::scaled_in_step(&self.params, self.size, step_dt).0;
             self.scaled_for = Some(self.params);
         }
         let given = std::mem::replace(&mut self.params, self.scaled);
