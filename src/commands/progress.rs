@@ -61,10 +61,27 @@ pub fn bar(total: u64, unit: &str, plan: &str) -> Progress {
 /// (exit 130). The handlers are installed once per process; each call
 /// clears the flag.
 pub fn interrupted() -> &'static std::sync::atomic::AtomicBool {
-    use std::sync::atomic::{AtomicBool, Ordering};
+    let flag = flag();
+    flag.store(false, std::sync::atomic::Ordering::SeqCst);
+    flag
+}
+
+/// [`interrupted`], and the resolutions of this thread stop once it is set
+/// ([`crate::physics::resolver::stop`]): a step Ctrl-C lands in ends within
+/// a thousand iterations, and the caller discards it (a pile of 1,000
+/// coincident spheres takes minutes a step).
+pub fn interrupted_mid_step() -> &'static std::sync::atomic::AtomicBool {
+    let flag = interrupted();
+    crate::physics::resolver::stop::watch(std::sync::Arc::clone(self::flag()));
+    flag
+}
+
+/// The Ctrl-C flag, its handlers installed on first use.
+fn flag() -> &'static std::sync::Arc<std::sync::atomic::AtomicBool> {
+    use std::sync::atomic::AtomicBool;
     use std::sync::{Arc, OnceLock};
     static FLAG: OnceLock<Arc<AtomicBool>> = OnceLock::new();
-    let flag = FLAG.get_or_init(|| {
+    FLAG.get_or_init(|| {
         let flag = Arc::new(AtomicBool::new(false));
         #[cfg(unix)]
         {
@@ -74,9 +91,7 @@ pub fn interrupted() -> &'static std::sync::atomic::AtomicBool {
             let _ = signal_hook::flag::register(SIGINT, Arc::clone(&flag));
         }
         flag
-    });
-    flag.store(false, Ordering::SeqCst);
-    flag
+    })
 }
 
 /// Ctrl-C ends the process at once with exit code 130: for a command

@@ -105,7 +105,7 @@ fn run(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<
     let buffered = std::io::BufWriter::with_capacity(1 << 16, folded);
     let mut w = RunWriter::begin(buffered, kind, &trace).map_err(io)?;
     w.frame(&mut trace, &RunTrace::initial(&sim)).map_err(io)?;
-    let interrupted = progress::interrupted();
+    let interrupted = progress::interrupted_mid_step();
     for n in 1..=steps {
         if interrupted.load(std::sync::atomic::Ordering::SeqCst) {
             // The output written so far stays one document, ending here.
@@ -114,7 +114,16 @@ fn run(args: &SimulateArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<
             w.end(&trace).map_err(io)?;
             return Err(e);
         }
-        match sim.advance() {
+        let advanced = sim.advance();
+        if interrupted.load(std::sync::atomic::Ordering::SeqCst) {
+            // Ctrl-C during the step may have cut its resolution short: the
+            // step is not written, the output ends at the one before.
+            let e = interruption(&lesson, n - 1, steps);
+            trace.stopped = Some(e.to_string());
+            w.end(&trace).map_err(io)?;
+            return Err(e);
+        }
+        match advanced {
             Ok(mut report) => {
                 if n == steps {
                     // A burial still going has only its start event so far.
@@ -167,7 +176,7 @@ fn film(
     keep(&mut trace, RunTrace::initial(&sim), false);
     let mut failure = None;
     let mut pending = false;
-    let interrupted = progress::interrupted();
+    let interrupted = progress::interrupted_mid_step();
     for n in 1..=steps {
         if interrupted.load(std::sync::atomic::Ordering::SeqCst) {
             // The film strip up to the stop is still drawn.
@@ -176,7 +185,15 @@ fn film(
             failure = Some(e);
             break;
         }
-        match sim.advance() {
+        let advanced = sim.advance();
+        if interrupted.load(std::sync::atomic::Ordering::SeqCst) {
+            // A step Ctrl-C may have cut short is not drawn.
+            let e = interruption(lesson, n - 1, steps);
+            trace.stopped = Some(e.to_string());
+            failure = Some(e);
+            break;
+        }
+        match advanced {
             Ok(mut report) => {
                 if n == steps {
                     report.events.extend(sim.burials_going());

@@ -60,7 +60,7 @@ fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>, Q: Queue<T>>(
     queue.fill(r.contacts.iter().map(W::value));
     let mut changed = std::mem::take(&mut r.changed);
     let mut used = 0;
-    while used < limit {
+    while used < limit && !super::stop::asked(used) {
         let Some((k, value)) = queue.top().filter(|(_, v)| *v > epsilon) else {
             break;
         };

@@ -140,7 +140,7 @@ fn velocity_rows_on<T: Real, O: Observer<T>, Q: Queue<T>>(
     queue.fill((0..r.contacts.len()).map(|j| rows.desired(j)));
     let plain = rows.is_plain();
     let mut used = 0;
-    while used < limit {
+    while used < limit && !super::stop::asked(used) {
         let Some((k, value)) = queue.top().filter(|(_, v)| *v > epsilon) else {
             break;
         };

@@ -34,6 +34,7 @@ pub mod row;
 pub mod scan;
 pub mod sequential;
 pub mod simultaneous;
+pub mod stop;
 pub mod velocity;
 pub mod velocity_row;
 

@@ -34,7 +34,7 @@ pub(super) fn phase<T: Real, O: Observer<T>, Q: Queue<T>>(
     let (limit, epsilon) = r.limits(Phase::Position);
     queue.fill(r.contacts.iter().map(|c| c.penetration));
     let mut used = 0;
-    while used < limit {
+    while used < limit && !super::stop::asked(used) {
         let Some((k, value)) = queue.top().filter(|(_, v)| *v > epsilon) else {
             break;
         };

@@ -41,7 +41,7 @@ fn phase<T: Real, O: Observer<T>, W: PhaseWork<T>>(
 ) -> PhaseOutcome<T> {
     let (limit, epsilon) = r.limits(W::PHASE);
     let mut used = 0;
-    while used < limit {
+    while used < limit && !super::stop::asked(used) {
         let Some((k, value)) = worst(r.contacts.iter().map(W::value), epsilon) else {
             break;
         };
