@@ -4,6 +4,7 @@
 pub mod advise;
 pub mod cli;
 pub mod dd;
+pub mod energy_scenes;
 pub mod json;
 pub mod pile;
 pub mod random;

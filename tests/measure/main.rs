@@ -13,6 +13,7 @@ mod exact_support;
 mod accuracy;
 mod advise_every_scene;
 mod broad_phase;
+mod energy_named;
 mod exact_accuracy;
 mod exact_energy;
 mod exact_study;
