@@ -39,6 +39,7 @@ mod resolver_properties;
 mod resolver_reference;
 mod resolver_semantics;
 mod resting_convex;
+mod resting_hulls;
 mod resting_slender;
 mod rollback;
 mod scale_invariance;
