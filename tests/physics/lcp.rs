@@ -192,3 +192,37 @@ fn a_cradle_with_gaps_agrees_with_the_sequence_a_touching_one_does_not() {
         "touching cradle, lcp",
     );
 }
+
+/// The basis replayed from the recorded pivots (what the TUI shows as
+/// λ so far): after a problem's last pivot it is that problem's answer,
+/// and a pivot row's value is its ratio.
+#[test]
+fn lambda_replayed_after_the_last_pivot_is_the_problems_answer() {
+    for id in [
+        "impact-row-3",
+        "impact-row-5",
+        "impact-row-poisson",
+        "impact-stack-r01",
+        "impact-stack-r05",
+    ] {
+        let lesson = Lesson::load(id).unwrap();
+        let r = run(&lesson.world(), &lesson.resolver);
+        let rec = r.lcp.as_ref().unwrap();
+        for p in &rec.problems {
+            let Some(last) = p.pivots.len().checked_sub(1) else {
+                continue;
+            };
+            let lambda = p.result.as_ref().unwrap();
+            assert_close(&p.lambda_after(last), lambda, id);
+            for (k, pivot) in p.pivots.iter().enumerate() {
+                let (var, x) = p.basis_after(k)[pivot.row];
+                assert_eq!(var, pivot.entering, "{id} pivot {k}");
+                assert!((x - pivot.ratio).abs() < TOL, "{id} pivot {k}");
+                if let Some(next) = p.pivots.get(k + 1) {
+                    let values: Vec<f64> = p.basis_after(k).iter().map(|v| v.1).collect();
+                    assert_close(&values, &next.rhs, id);
+                }
+            }
+        }
+    }
+}

@@ -48,6 +48,43 @@ pub struct Problem<T: Real> {
     pub result: Result<Vec<T>, Failure>,
 }
 
+impl<T: Real> Problem<T> {
+    /// The tableau's basis after pivot `k` of this problem (each row's
+    /// basic variable and its value), replayed from the recorded pivots:
+    /// the pivot row takes the entering variable at the ratio, every other
+    /// row's value drops by its column entry times the ratio.
+    pub fn basis_after(&self, k: usize) -> Vec<(Var, T)> {
+        let mut basis: Vec<(Var, T)> = self
+            .b
+            .iter()
+            .enumerate()
+            .map(|(i, &b)| (Var::W(i), b))
+            .collect();
+        for p in self.pivots.iter().take(k + 1) {
+            for (i, row) in basis.iter_mut().enumerate() {
+                row.1 = if i == p.row {
+                    p.ratio
+                } else {
+                    p.rhs[i] - p.column[i] * p.ratio
+                };
+            }
+            basis[p.row].0 = p.entering;
+        }
+        basis
+    }
+
+    /// The impulses λ after pivot `k` (0 where λ_i is not basic).
+    pub fn lambda_after(&self, k: usize) -> Vec<T> {
+        let mut lambda = vec![T::zero(); self.b.len()];
+        for (v, x) in self.basis_after(k) {
+            if let Var::Lambda(j) = v {
+                lambda[j] = x;
+            }
+        }
+        lambda
+    }
+}
+
 /// What the simultaneous velocity phase did.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Record<T: Real> {
