@@ -270,9 +270,26 @@ fn after_lines(app: &App, r: &ResolverView, record: &Record<f64>) -> Vec<Line<'s
             "restitution as applied: [{}]",
             f.list(&record.restitutions)
         )),
-        Line::raw(""),
-        Line::styled("bodies after:", t.dim()),
     ];
+    if let Some(fr) = &record.friction {
+        lines.push(Line::styled(
+            format!(
+                "friction (projected Gauss-Seidel, |λ_t| <= μ λ_n, {} sweep(s)):",
+                fr.sweeps
+            ),
+            t.dim(),
+        ));
+        for row in &fr.rows {
+            lines.push(Line::raw(format!(
+                "  contact {}: λ_t ({}), {}",
+                row.contact,
+                f.list(&row.tangential),
+                if row.sliding { "sliding" } else { "sticking" }
+            )));
+        }
+    }
+    lines.push(Line::raw(""));
+    lines.push(Line::styled("bodies after:", t.dim()));
     let before = r.trace.bodies_at(0);
     for (b, was) in r.trace.bodies_at(r.stop).iter().zip(&before) {
         if !b.movable {
