@@ -313,3 +313,43 @@ fn an_oblique_strike_under_lcp_sticks_or_slides_as_the_closed_form() {
     let t = (row.tangential[0].powi(2) + row.tangential[1].powi(2)).sqrt();
     assert!((t - mu_d * row.normal).abs() < TOL, "{row:?}");
 }
+
+/// The compliant reference's closed form: two balls head-on through a Hertz
+/// contact (e = 1) conserve momentum and energy to 1e-9, and (elastic, 1D)
+/// leave with the rigid two-body answer.
+#[test]
+fn hertz_two_balls_head_on_conserve_momentum_and_energy() {
+    use contact_lab::physics::lcp::hertz::Chain;
+    let (m1, m2, v1) = (1.0, 0.3, 1.0);
+    let chain = Chain {
+        inverse_mass: vec![1.0 / m1, 1.0 / m2],
+        position: vec![0.0, 1.0],
+        velocity: vec![v1, 0.0],
+        rest: vec![1.0],
+        stiffness: 1e7,
+    };
+    let out = chain.impact(1e-7, 1_000_000);
+    assert!(out.ended, "{out:?}");
+    let (p0, e0) = (
+        chain.momentum(&chain.velocity),
+        chain.energy(&chain.position, &chain.velocity),
+    );
+    let p1 = chain.momentum(&out.velocity);
+    // After the impact no contact is compressed: the energy is kinetic.
+    let e1: f64 = out
+        .velocity
+        .iter()
+        .zip([m1, m2])
+        .map(|(v, m)| 0.5 * m * v * v)
+        .sum();
+    assert!((p1 - p0).abs() < 1e-9 * p0.abs(), "momentum {p0} -> {p1}");
+    assert!((e1 - e0).abs() < 1e-9 * e0, "energy {e0} -> {e1}");
+    let rigid = [(m1 - m2) / (m1 + m2) * v1, 2.0 * m1 / (m1 + m2) * v1];
+    for (got, want) in out.velocity.iter().zip(rigid) {
+        assert!(
+            (got - want).abs() < 1e-9,
+            "{:?} against {rigid:?}",
+            out.velocity
+        );
+    }
+}

@@ -3,6 +3,9 @@
 //! λ·w = 0), solved by Lemke's method, under Newton's or Poisson's
 //! restitution (`lcp_restitution`).
 //!
+//! - `hertz.rs`: the compliant reference (Hertz contacts on a line,
+//!   integrated by RK4 through the impact) the two rigid answers are
+//!   judged against;
 //! - `lemke.rs`: complementary pivoting with a covering vector, the
 //!   lexicographic ratio test, a pivot cap;
 //! - A (the coupled unit-impulse matrix) and b come from the prepared
@@ -16,6 +19,7 @@
 //! disk of radius μ λ_n, λ_n the LCP's normal impulse
 //! (`physics/resolver/lcp_friction.rs`; the record's [`Friction`]).
 
+pub mod hertz;
 pub mod lemke;
 
 pub use lemke::{Failure, Pivot, Var};
