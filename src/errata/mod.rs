@@ -1,6 +1,10 @@
 //! Errata: every number a lesson prints (`[[printed]]`) against the value
 //! the trace computes — agrees, known erratum, or new disagreement. Pure:
-//! lessons and traces in, findings out (the `check` subcommand).
+//! lessons and traces in, findings out (the `check` subcommand). A value of
+//! the contacts resolved together (`resolver`, `lcp`) comes from the
+//! resolver's trace ([`resolved`]).
+
+pub mod resolved;
 
 use crate::lesson::printed::{PrintedNum, PrintedShape};
 use crate::lesson::{Lesson, Printed};
@@ -48,6 +52,9 @@ pub struct Item {
     /// What the worked solution calls the value (`Δv` for `desired`), the
     /// key itself when nothing names it.
     pub label: String,
+    /// What a resolved entry's value is of (`after the resolver, lcp`),
+    /// in place of the stage's words; None on a contact's stage.
+    pub scope: Option<String>,
     pub component: Option<usize>,
     pub location: String,
     pub printed: PrintedShape,
@@ -66,20 +73,50 @@ pub fn agrees(printed: &[PrintedNum], computed: &[f64]) -> bool {
 }
 
 fn computed(trace: Option<&Trace>, p: &Printed) -> Option<Value> {
-    let value = trace?.value(&p.stage, &p.value)?;
+    pick(trace?.value(&p.stage, &p.value)?.clone(), p)
+}
+
+/// The printed entry's component of `value` (all of it when none is named).
+fn pick(value: Value, p: &Printed) -> Option<Value> {
     match p.component {
-        None => Some(value.clone()),
+        None => Some(value),
         Some(i) => value.numbers().get(i).map(|x| Value::Scalar(*x)),
     }
 }
 
-/// Compares one printed entry with the traces of its lesson (one per contact).
-pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
-    let computed = computed(traces.get(p.contact), p);
-    let label = traces
-        .get(p.contact)
-        .and_then(|t| t.symbol(&p.stage, &p.value))
-        .unwrap_or_else(|| p.value.clone());
+/// The computed value of `p`: from contact `p.contact`'s trace, or for a
+/// resolved entry from the resolution it names.
+fn computed_in(
+    lesson: &Lesson,
+    traces: &[Trace],
+    p: &Printed,
+    all: &mut resolved::Resolutions,
+) -> Option<Value> {
+    if p.resolved() {
+        return pick(resolved::value(lesson, p, all)?, p);
+    }
+    computed(traces.get(p.contact), p)
+}
+
+/// Compares one printed entry with the traces of its lesson (one per
+/// contact; the resolutions a resolved entry needs are computed in `all`).
+pub fn item(
+    lesson: &Lesson,
+    traces: &[Trace],
+    p: &Printed,
+    all: &mut resolved::Resolutions,
+) -> Item {
+    let computed = computed_in(lesson, traces, p, all);
+    let (label, scope) = if p.resolved() {
+        let (label, scope) = resolved::label(lesson, p);
+        (label, Some(scope))
+    } else {
+        let label = traces
+            .get(p.contact)
+            .and_then(|t| t.symbol(&p.stage, &p.value))
+            .unwrap_or_else(|| p.value.clone());
+        (label, None)
+    };
     let agrees = computed
         .as_ref()
         .is_some_and(|c| agrees(&p.printed.numbers(), &c.numbers()));
@@ -96,6 +133,7 @@ pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
         stage: p.stage.clone(),
         value: p.value.clone(),
         label,
+        scope,
         component: p.component,
         location: p.location.clone(),
         printed: p.printed.clone(),
@@ -108,10 +146,11 @@ pub fn item(lesson: &Lesson, traces: &[Trace], p: &Printed) -> Item {
 
 /// Every printed entry of a lesson, in the order the lesson lists them.
 pub fn lesson(lesson: &Lesson, traces: &[Trace]) -> Vec<Item> {
+    let mut all = resolved::Resolutions::default();
     lesson
         .printed
         .iter()
-        .map(|p| item(lesson, traces, p))
+        .map(|p| item(lesson, traces, p, &mut all))
         .collect()
 }
 
@@ -122,16 +161,22 @@ pub fn lesson(lesson: &Lesson, traces: &[Trace]) -> Vec<Item> {
 /// worked solution, asked only for the contacts such entries name.
 pub fn zero_warnings(lesson: &Lesson, mut trace: impl FnMut(usize) -> Trace) -> Vec<String> {
     let mut traces: Vec<(usize, Trace)> = Vec::new();
+    let mut all = resolved::Resolutions::default();
     let mut out = Vec::new();
     for p in &lesson.printed {
         let Some((line, column)) = p.zero_at else {
             continue;
         };
-        if !traces.iter().any(|(k, _)| *k == p.contact) {
-            traces.push((p.contact, trace(p.contact)));
-        }
-        let t = traces.iter().find(|(k, _)| *k == p.contact).map(|(_, t)| t);
-        let Some(c) = computed(t, p) else {
+        let c = if p.resolved() {
+            resolved::value(lesson, p, &mut all).and_then(|v| pick(v, p))
+        } else {
+            if !traces.iter().any(|(k, _)| *k == p.contact) {
+                traces.push((p.contact, trace(p.contact)));
+            }
+            let t = traces.iter().find(|(k, _)| *k == p.contact).map(|(_, t)| t);
+            computed(t, p)
+        };
+        let Some(c) = c else {
             continue;
         };
         if c.numbers().iter().any(|x| x.abs() > 1e-9) {

@@ -2,7 +2,22 @@
 
 use super::raw::{PrintedNumber, PrintedValue, RawPrinted};
 use super::source::Note;
-use crate::physics::StageId;
+use crate::knobs::Choice;
+use crate::physics::{Solver, StageId};
+
+/// The stages beyond one contact's: `resolver` (a body's state after the
+/// lesson's contacts are resolved together) and `lcp` (the simultaneous
+/// impact's impulse or normal velocity after at a contact), with the
+/// values each names.
+pub const RESOLVED_STAGES: [(&str, &[&str]); 2] = [
+    ("resolver", &["velocity", "angular_velocity"]),
+    ("lcp", &["impulse", "normal_velocity_after"]),
+];
+
+/// The solvers a `stage = "resolver"` entry can name: those that resolve
+/// one instant (the soft step and XPBD are time steppers, under `simulate`).
+pub const RESOLVER_SOLVERS: [Solver; 3] =
+    [Solver::DeepestFirst, Solver::SequentialImpulse, Solver::Lcp];
 
 /// One printed number and how many decimals it was printed with.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,6 +74,18 @@ pub struct Printed {
     /// the entry marks it `deliberate = ["printed-zero"]`: `check` and the
     /// commands warn when the computed value there is not zero.
     pub zero_at: Option<(usize, usize)>,
+    /// `stage = "resolver"`: the body (by name) whose state after is printed.
+    pub body: Option<String>,
+    /// `stage = "resolver"`: the solver named (None: the lesson's own).
+    pub solver: Option<Solver>,
+}
+
+impl Printed {
+    /// Whether the entry names a resolution of the lesson's contacts
+    /// together (`resolver`, `lcp`), not one contact's stage.
+    pub fn resolved(&self) -> bool {
+        RESOLVED_STAGES.iter().any(|(s, _)| *s == self.stage)
+    }
 }
 
 /// Decimals a number was written with (`1.25` → 2, `1.5e-3` → 4).
@@ -93,15 +120,18 @@ fn number(n: &PrintedNumber) -> Result<PrintedNum, String> {
 impl Printed {
     pub fn from_raw(raw: &RawPrinted) -> Result<Printed, Note> {
         let stage = raw.stage.get_ref();
-        if StageId::from_json_name(stage).is_none() {
+        let resolved = RESOLVED_STAGES.iter().find(|(s, _)| s == stage);
+        if StageId::from_json_name(stage).is_none() && resolved.is_none() {
             return Err(Note::new(
                 format!(
-                    "unknown stage \"{stage}\" (stages: {})",
-                    StageId::ALL.map(StageId::json_name).join(", ")
+                    "unknown stage \"{stage}\" (stages: {}; and for the contacts resolved together: {})",
+                    StageId::ALL.map(StageId::json_name).join(", "),
+                    RESOLVED_STAGES.map(|(s, _)| s).join(", ")
                 ),
                 raw.stage.span(),
             ));
         }
+        let solver = resolved_fields(raw, resolved.copied())?;
         let bad = |e: String| Note::new(e, raw.printed.span());
         let printed = match raw.printed.get_ref() {
             PrintedValue::Scalar(n) => PrintedShape::Scalar(number(n).map_err(bad)?),
@@ -151,7 +181,73 @@ impl Printed {
                 .as_ref()
                 .map(|e| super::ascii_minus(e.get_ref())),
             zero_at: None,
+            body: raw.body.as_ref().map(|b| b.get_ref().clone()),
+            solver,
         })
+    }
+}
+
+/// The `body`, `solver` and `value` of an entry on a resolved stage (or
+/// none of `body` and `solver` on a contact's stage): the solver named.
+fn resolved_fields(
+    raw: &RawPrinted,
+    resolved: Option<(&str, &[&str])>,
+) -> Result<Option<Solver>, Note> {
+    let on_resolver = resolved.is_some_and(|(s, _)| s == "resolver");
+    if let Some((stage, values)) = resolved {
+        let value = raw.value.get_ref();
+        if !values.contains(&value.as_str()) {
+            return Err(Note::new(
+                format!(
+                    "stage \"{stage}\" has no value \"{value}\" (values: {})",
+                    values.join(", ")
+                ),
+                raw.value.span(),
+            ));
+        }
+    }
+    match (&raw.body, on_resolver) {
+        (Some(b), false) => {
+            return Err(Note::new(
+                "`body` belongs to stage \"resolver\" (a body's state after the contacts are resolved together)",
+                b.span(),
+            ))
+        }
+        (None, true) => {
+            return Err(Note::new(
+                "stage \"resolver\" needs `body = \"NAME\"`: the body whose state after is printed",
+                raw.stage.span(),
+            ))
+        }
+        _ => {}
+    }
+    let Some(s) = &raw.solver else {
+        return Ok(None);
+    };
+    if !on_resolver {
+        return Err(Note::new(
+            "`solver` belongs to stage \"resolver\" (stage \"lcp\" is the lcp solver's)",
+            s.span(),
+        ));
+    }
+    match Solver::from_name(s.get_ref()) {
+        Some(solver) if RESOLVER_SOLVERS.contains(&solver) => Ok(Some(solver)),
+        Some(_) => Err(Note::new(
+            format!(
+                "solver \"{}\" is a time stepper, shown under `simulate`, not a resolution of one instant (solvers here: {})",
+                s.get_ref(),
+                RESOLVER_SOLVERS.map(|x| x.name()).join(", ")
+            ),
+            s.span(),
+        )),
+        None => Err(Note::new(
+            format!(
+                "unknown solver \"{}\" (solvers here: {})",
+                s.get_ref(),
+                RESOLVER_SOLVERS.map(|x| x.name()).join(", ")
+            ),
+            s.span(),
+        )),
     }
 }
 

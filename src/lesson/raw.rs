@@ -145,6 +145,10 @@ pub struct RawPrinted {
     pub erratum: Option<S<String>>,
     /// Load warnings the lesson means (`"printed-zero"`): not shown.
     pub deliberate: Option<S<Vec<S<String>>>>,
+    /// `stage = "resolver"`: the body whose state after the resolver is printed.
+    pub body: Option<S<String>>,
+    /// `stage = "resolver"`: the solver it is resolved under (the lesson's when left out).
+    pub solver: Option<S<String>>,
 }
 
 /// A printed number keeps its text where given as a string (`"0.10"`), so its

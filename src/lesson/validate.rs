@@ -237,7 +237,7 @@ impl Validator {
             .collect();
         let mut printed = Vec::new();
         for p in &raw.printed {
-            if let Some(entry) = self.printed(p, raw.contacts.len()) {
+            if let Some(entry) = self.printed(p, raw.contacts.len(), &index) {
                 if let Some(span) = self.printed_zero(p) {
                     self.printed_zero.push((printed.len(), span));
                 }

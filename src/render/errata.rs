@@ -59,8 +59,14 @@ fn name(i: &Item) -> String {
     if let Some(c) = i.component {
         let _ = write!(s, "[{c}]");
     }
-    let stage = stage_words(&i.stage).unwrap_or_else(|| i.stage.clone());
+    let stage = match &i.scope {
+        Some(scope) => scope.clone(),
+        None => stage_words(&i.stage).unwrap_or_else(|| i.stage.clone()),
+    };
     match i.contact {
+        k if i.stage == "lcp" => {
+            let _ = write!(s, " ({stage}, contact {k})");
+        }
         0 => {
             let _ = write!(s, " ({stage})");
         }
@@ -168,7 +174,7 @@ pub fn json(items: &[Item]) -> String {
     let items: Vec<J> = items
         .iter()
         .map(|i| {
-            json!({
+            let mut item = json!({
                 "lesson": i.lesson,
                 "contact": i.contact,
                 "stage": i.stage,
@@ -181,7 +187,11 @@ pub fn json(items: &[Item]) -> String {
                 "agrees": i.agrees,
                 "erratum": i.erratum,
                 "status": i.status.name().replace(' ', "_"),
-            })
+            });
+            if let Some(scope) = &i.scope {
+                item["scope"] = json!(scope);
+            }
+            item
         })
         .collect();
     serde_json::to_string_pretty(&json!({ "items": items })).expect("JSON") + "\n"

@@ -9,6 +9,7 @@ mod advise;
 mod advise_agrees;
 mod advise_per_step;
 mod ccd_simulate;
+mod check_resolved;
 mod check_rows;
 mod detect_cli;
 mod detect_iteration;

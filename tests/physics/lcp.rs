@@ -192,3 +192,164 @@ fn a_cradle_with_gaps_agrees_with_the_sequence_a_touching_one_does_not() {
         "touching cradle, lcp",
     );
 }
+
+/// The basis replayed from the recorded pivots (what the TUI shows as
+/// λ so far): after a problem's last pivot it is that problem's answer,
+/// and a pivot row's value is its ratio.
+#[test]
+fn lambda_replayed_after_the_last_pivot_is_the_problems_answer() {
+    for id in [
+        "impact-row-3",
+        "impact-row-5",
+        "impact-row-poisson",
+        "impact-stack-r01",
+        "impact-stack-r05",
+    ] {
+        let lesson = Lesson::load(id).unwrap();
+        let r = run(&lesson.world(), &lesson.resolver);
+        let rec = r.lcp.as_ref().unwrap();
+        for p in &rec.problems {
+            let Some(last) = p.pivots.len().checked_sub(1) else {
+                continue;
+            };
+            let lambda = p.result.as_ref().unwrap();
+            assert_close(&p.lambda_after(last), lambda, id);
+            for (k, pivot) in p.pivots.iter().enumerate() {
+                let (var, x) = p.basis_after(k)[pivot.row];
+                assert_eq!(var, pivot.entering, "{id} pivot {k}");
+                assert!((x - pivot.ratio).abs() < TOL, "{id} pivot {k}");
+                if let Some(next) = p.pivots.get(k + 1) {
+                    let values: Vec<f64> = p.basis_after(k).iter().map(|v| v.1).collect();
+                    assert_close(&values, &next.rhs, id);
+                }
+            }
+        }
+    }
+}
+
+/// A ball (1 kg, radius 0.5 m, solid: I = 2/5 m r²) striking a floor at
+/// (vt, -1, 0) m/s, e = 0.5, with friction μ_s, μ_d; resolved under `solver`.
+fn oblique(vt: f64, mu_s: f64, mu_d: f64, solver: Solver) -> Resolver<f64> {
+    let text = format!(
+        r#"id = "oblique"
+title = "A ball striking a floor obliquely"
+[settings]
+solver = "lcp"
+[[body]]
+name = "floor"
+mass = inf
+shape = "half_space"
+normal = [0.0, 1.0, 0.0]
+position = [0.0, 0.0, 0.0]
+[[body]]
+name = "ball"
+mass = 1.0
+shape = {{ sphere = 0.5 }}
+position = [0.0, 0.5, 0.0]
+velocity = [{vt}, -1.0, 0.0]
+[[contact]]
+bodies = ["ball", "floor"]
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+restitution = 0.5
+static_friction = {mu_s}
+dynamic_friction = {mu_d}
+"#
+    );
+    let dir = std::env::temp_dir().join(format!("contact-lab-oblique-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("oblique-{vt}-{mu_s}-{mu_d}.toml"));
+    std::fs::write(&path, text).unwrap();
+    let lesson = Lesson::load(&path).unwrap();
+    let params = ResolverParams {
+        solver,
+        ..lesson.resolver
+    };
+    run(&lesson.world(), &params)
+}
+
+/// Issue 43, friction in the LCP: the simultaneous phase's friction pass
+/// gives a ball striking a floor obliquely the single-contact closed form:
+/// with μ large it sticks (the contact point stops: v_t' = 5/7 v_t for a
+/// solid ball), with μ small it slides (Δv_t = μ_d (1 + e) v_n); and the
+/// lecture's single contact (deepest-first) agrees.
+#[test]
+fn an_oblique_strike_under_lcp_sticks_or_slides_as_the_closed_form() {
+    let (vn, e, vt) = (1.0, 0.5, 2.0);
+    // Sticking: the sticking impulse 2/7 vt = 0.571 is inside μ_s (1 + e) vn = 1.5.
+    for solver in [Solver::Lcp, Solver::DeepestFirst] {
+        let r = oblique(vt, 1.0, 1.0, solver);
+        let ball = &r.bodies[0];
+        assert!(
+            (ball.velocity.x - 5.0 / 7.0 * vt).abs() < TOL,
+            "{solver:?}: {:?}",
+            ball.velocity
+        );
+        assert!((ball.velocity.y - e * vn).abs() < TOL, "{solver:?}");
+        // The contact point (0, -0.5, 0) from the centre: v + ω × r has no x.
+        let point = ball.velocity + ball.angular_velocity.cross(&Vector3::new(0.0, -0.5, 0.0));
+        assert!(point.x.abs() < TOL, "{solver:?}: slip {point:?}");
+    }
+    let rec = oblique(vt, 1.0, 1.0, Solver::Lcp).lcp.unwrap();
+    let f = rec.friction.as_ref().expect("a friction pass");
+    assert!(f.converged && !f.rows[0].sliding, "{f:?}");
+    // Sliding: μ_d (1 + e) vn = 0.15 < 2/7 vt.
+    let (mu_s, mu_d) = (0.12, 0.1);
+    for solver in [Solver::Lcp, Solver::DeepestFirst] {
+        let r = oblique(vt, mu_s, mu_d, solver);
+        let ball = &r.bodies[0];
+        let dvt = vt - ball.velocity.x;
+        assert!(
+            (dvt - mu_d * (1.0 + e) * vn).abs() < TOL,
+            "{solver:?}: {:?}",
+            ball.velocity
+        );
+        assert!((ball.velocity.y - e * vn).abs() < TOL, "{solver:?}");
+    }
+    let rec = oblique(vt, mu_s, mu_d, Solver::Lcp).lcp.unwrap();
+    let row = &rec.friction.as_ref().unwrap().rows[0];
+    assert!(row.sliding, "{row:?}");
+    assert!((row.normal - (1.0 + e) * vn).abs() < TOL);
+    let t = (row.tangential[0].powi(2) + row.tangential[1].powi(2)).sqrt();
+    assert!((t - mu_d * row.normal).abs() < TOL, "{row:?}");
+}
+
+/// The compliant reference's closed form: two balls head-on through a Hertz
+/// contact (e = 1) conserve momentum and energy to 1e-9, and (elastic, 1D)
+/// leave with the rigid two-body answer.
+#[test]
+fn hertz_two_balls_head_on_conserve_momentum_and_energy() {
+    use contact_lab::physics::lcp::hertz::Chain;
+    let (m1, m2, v1) = (1.0, 0.3, 1.0);
+    let chain = Chain {
+        inverse_mass: vec![1.0 / m1, 1.0 / m2],
+        position: vec![0.0, 1.0],
+        velocity: vec![v1, 0.0],
+        rest: vec![1.0],
+        stiffness: 1e7,
+    };
+    let out = chain.impact(1e-7, 1_000_000);
+    assert!(out.ended, "{out:?}");
+    let (p0, e0) = (
+        chain.momentum(&chain.velocity),
+        chain.energy(&chain.position, &chain.velocity),
+    );
+    let p1 = chain.momentum(&out.velocity);
+    // After the impact no contact is compressed: the energy is kinetic.
+    let e1: f64 = out
+        .velocity
+        .iter()
+        .zip([m1, m2])
+        .map(|(v, m)| 0.5 * m * v * v)
+        .sum();
+    assert!((p1 - p0).abs() < 1e-9 * p0.abs(), "momentum {p0} -> {p1}");
+    assert!((e1 - e0).abs() < 1e-9 * e0, "energy {e0} -> {e1}");
+    let rigid = [(m1 - m2) / (m1 + m2) * v1, 2.0 * m1 / (m1 + m2) * v1];
+    for (got, want) in out.velocity.iter().zip(rigid) {
+        assert!(
+            (got - want).abs() < 1e-9,
+            "{:?} against {rigid:?}",
+            out.velocity
+        );
+    }
+}

@@ -17,6 +17,7 @@ mod tui_detect_stages;
 mod tui_detect_worker;
 mod tui_huge_step;
 mod tui_labels;
+mod tui_lcp;
 mod tui_lesson_picker;
 mod tui_reading;
 mod tui_router;

@@ -1,5 +1,8 @@
 //! Validation of one `[[printed]]` entry: the contact it names, its texts
-//! (no control characters: `check` prints them) and the shape of its value.
+//! (no control characters: `check` prints them), the body a `resolver`
+//! entry names, and the shape of its value.
+
+use std::collections::HashMap;
 
 use super::rules;
 use super::Validator;
@@ -10,7 +13,25 @@ impl Validator {
         &mut self,
         raw: &crate::lesson::raw::RawPrinted,
         contacts: usize,
+        bodies: &HashMap<&str, usize>,
     ) -> Option<Printed> {
+        if let Some(b) = raw
+            .body
+            .as_ref()
+            .filter(|b| !bodies.contains_key(b.get_ref().as_str()))
+        {
+            let mut names: Vec<&&str> = bodies.keys().collect();
+            names.sort();
+            self.err(
+                b.span(),
+                format!(
+                    "printed entry names body '{}' but the lesson has no body of that name (bodies: {})",
+                    b.get_ref(),
+                    names.iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")
+                ),
+            );
+            return None;
+        }
         if let Some(k) = raw
             .contact
             .as_ref()

@@ -3,6 +3,9 @@
 //! λ·w = 0), solved by Lemke's method, under Newton's or Poisson's
 //! restitution (`lcp_restitution`).
 //!
+//! - `hertz.rs`: the compliant reference (Hertz contacts on a line,
+//!   integrated by RK4 through the impact) the two rigid answers are
+//!   judged against;
 //! - `lemke.rs`: complementary pivoting with a covering vector, the
 //!   lexicographic ratio test, a pivot cap;
 //! - A (the coupled unit-impulse matrix) and b come from the prepared
@@ -11,9 +14,12 @@
 //!   (`physics/resolver/simultaneous.rs`): this folder is pure algebra,
 //!   below the resolver.
 //!
-//! Friction is left out of the velocity phase: contacts are treated as
-//! frictionless (the record says when a contact had friction).
+//! Friction: after the normal LCP, a projected Gauss–Seidel pass gives
+//! each contact with friction a tangential impulse inside the friction
+//! disk of radius μ λ_n, λ_n the LCP's normal impulse
+//! (`physics/resolver/lcp_friction.rs`; the record's [`Friction`]).
 
+pub mod hertz;
 pub mod lemke;
 
 pub use lemke::{Failure, Pivot, Var};
@@ -48,6 +54,43 @@ pub struct Problem<T: Real> {
     pub result: Result<Vec<T>, Failure>,
 }
 
+impl<T: Real> Problem<T> {
+    /// The tableau's basis after pivot `k` of this problem (each row's
+    /// basic variable and its value), replayed from the recorded pivots:
+    /// the pivot row takes the entering variable at the ratio, every other
+    /// row's value drops by its column entry times the ratio.
+    pub fn basis_after(&self, k: usize) -> Vec<(Var, T)> {
+        let mut basis: Vec<(Var, T)> = self
+            .b
+            .iter()
+            .enumerate()
+            .map(|(i, &b)| (Var::W(i), b))
+            .collect();
+        for p in self.pivots.iter().take(k + 1) {
+            for (i, row) in basis.iter_mut().enumerate() {
+                row.1 = if i == p.row {
+                    p.ratio
+                } else {
+                    p.rhs[i] - p.column[i] * p.ratio
+                };
+            }
+            basis[p.row].0 = p.entering;
+        }
+        basis
+    }
+
+    /// The impulses λ after pivot `k` (0 where λ_i is not basic).
+    pub fn lambda_after(&self, k: usize) -> Vec<T> {
+        let mut lambda = vec![T::zero(); self.b.len()];
+        for (v, x) in self.basis_after(k) {
+            if let Var::Lambda(j) = v {
+                lambda[j] = x;
+            }
+        }
+        lambda
+    }
+}
+
 /// What the simultaneous velocity phase did.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Record<T: Real> {
@@ -64,8 +107,41 @@ pub struct Record<T: Real> {
     pub impulses: Vec<T>,
     /// Each contact's normal velocity after (before, when unsolvable).
     pub velocities_after: Vec<T>,
-    /// The contacts with friction (treated as frictionless).
-    pub friction_ignored: Vec<usize>,
+    /// The friction pass, when any contact has friction.
+    pub friction: Option<Friction<T>>,
+}
+
+/// The friction pass after the normal LCP: projected Gauss–Seidel sweeps
+/// over the contacts with friction, each tangential impulse projected onto
+/// the disk |λ_t| ≤ μ λ_n with λ_n the LCP's normal impulse (held fixed).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Friction<T: Real> {
+    pub rows: Vec<FrictionRow<T>>,
+    /// Sweeps taken (at most [`FRICTION_SWEEP_CAP`]).
+    pub sweeps: usize,
+    /// Whether the last sweep changed no impulse by more than the tolerance.
+    pub converged: bool,
+    /// Contacts the tangential impulses left closing (normal velocity
+    /// below -1e-9 after): the normal LCP is not solved again.
+    pub closing: Vec<usize>,
+}
+
+/// The most sweeps of the friction pass.
+pub const FRICTION_SWEEP_CAP: usize = 200;
+
+/// One contact's friction: its coefficients, the normal impulse bounding
+/// it, the tangential impulse (contact axes y, z) and whether it slides.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionRow<T: Real> {
+    pub contact: usize,
+    pub static_friction: T,
+    pub dynamic_friction: T,
+    pub normal: T,
+    pub tangential: [T; 2],
+    /// On the disk's edge (μ_d λ_n) against the slip; else sticking.
+    pub sliding: bool,
+    /// The contact point's tangential velocity after (contact axes y, z).
+    pub slip_after: [T; 2],
 }
 
 impl<T: Real> Record<T> {

@@ -20,6 +20,7 @@
 pub mod adjacent;
 pub mod checks;
 pub mod indexed;
+pub mod lcp_friction;
 pub mod lcp_matrix;
 mod lean_prepare;
 mod lean_take;

@@ -72,6 +72,7 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
     let mut problems = Vec::new();
     let solved = impulses(r, &a, &restitutions, &mut problems);
     let n = r.contacts.len();
+    let ok = solved.is_some();
     let lambda = solved.unwrap_or_else(|| vec![T::zero(); n]);
     let from = r.params.restitution_from;
     let mut used = 0;
@@ -100,7 +101,13 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
         }
         used += 1;
     }
-    let friction_ignored = (0..n).filter(|&k| r.setups[k].friction.is_some()).collect();
+    // No friction without the normal impulses that bound it.
+    let friction = if ok {
+        super::lcp_friction::pass(r, &lambda)
+    } else {
+        None
+    };
+    let velocities_after = r.contacts.iter().map(|c| c.velocity.x).collect();
     r.lcp = Some(Record {
         restitution: r.params.lcp_restitution,
         rank: lemke::rank(&a),
@@ -108,8 +115,8 @@ pub fn velocity_phase<T: Real, O: Observer<T>>(
         problems,
         restitutions,
         impulses: lambda,
-        velocities_after: r.contacts.iter().map(|c| c.velocity.x).collect(),
-        friction_ignored,
+        velocities_after,
+        friction,
     });
     r.finish(Phase::Velocity, used, obs)
 }

@@ -8,7 +8,7 @@ use serde_json::{json, Value as J};
 
 use crate::format::Fmt;
 use crate::knobs::Choice;
-use crate::physics::lcp::{Pivot, Record, Var};
+use crate::physics::lcp::{Friction, Pivot, Record, Var};
 
 /// A pivot in words: who entered, who left, the ratio.
 pub fn pivot_line(k: usize, stage: &str, p: &Pivot<f64>, fmt: &Fmt) -> String {
@@ -101,8 +101,34 @@ pub fn text(out: &mut String, r: &Record<f64>, fmt: &Fmt) {
         "   normal velocities after: [{}]",
         fmt.list(&r.velocities_after)
     );
+    if let Some(f) = &r.friction {
+        friction_text(out, f, fmt);
+    }
     for note in notes(r) {
         let _ = writeln!(out, "   · {note}");
+    }
+}
+
+/// The friction pass as text: what it is, then a line per contact.
+fn friction_text(out: &mut String, f: &Friction<f64>, fmt: &Fmt) {
+    let _ = writeln!(
+        out,
+        "   Friction (Coulomb, projected Gauss-Seidel after the normal LCP): each contact's tangential impulse inside the disk |lambda_t| <= mu lambda_n, lambda_n the LCP's normal impulse held fixed; sticking while inside mu_s lambda_n, else sliding at mu_d lambda_n. Exact where friction does not change the normal velocities (a sphere on a plane), an approximation where it does. {} sweep(s){}",
+        f.sweeps,
+        if f.converged { "" } else { ", stopped at the sweep cap without converging" }
+    );
+    for row in &f.rows {
+        let _ = writeln!(
+            out,
+            "      contact {}: lambda_n {}, lambda_t ({}), {} (mu_s {}, mu_d {}); slip after ({})",
+            row.contact,
+            fmt.num(row.normal),
+            fmt.list(&row.tangential),
+            if row.sliding { "sliding" } else { "sticking" },
+            fmt.num(row.static_friction),
+            fmt.num(row.dynamic_friction),
+            fmt.list(&row.slip_after)
+        );
     }
 }
 
@@ -115,13 +141,31 @@ pub fn notes(r: &Record<f64>) -> Vec<String> {
     if let Some(d) = r.degenerate() {
         out.push(d);
     }
-    if !r.friction_ignored.is_empty() {
+    if let Some(f) = r.friction.as_ref().filter(|f| !f.closing.is_empty()) {
         out.push(format!(
-            "contacts {:?} have friction: the simultaneous phase treats every contact as frictionless",
-            r.friction_ignored
+            "friction's tangential impulses left contacts {:?} closing: the normal LCP is not solved again",
+            f.closing
         ));
     }
     out
+}
+
+/// The friction pass as JSON (null without friction).
+fn friction_json(r: &Record<f64>) -> J {
+    let Some(f) = &r.friction else {
+        return J::Null;
+    };
+    let rows: Vec<J> = f
+        .rows
+        .iter()
+        .map(|x| {
+            json!({ "contact": x.contact, "static_friction": x.static_friction,
+                    "dynamic_friction": x.dynamic_friction, "normal": x.normal,
+                    "tangential": x.tangential, "sliding": x.sliding, "slip_after": x.slip_after })
+        })
+        .collect();
+    json!({ "method": "projected-gauss-seidel", "bound": "disk mu lambda_n, lambda_n from the normal LCP",
+            "sweeps": f.sweeps, "converged": f.converged, "closing": f.closing, "contacts": rows })
 }
 
 /// The JSON `"lcp"` object.
@@ -153,6 +197,7 @@ pub fn json(r: &Record<f64>) -> J {
         "pivots": pivots,
         "impulses": r.impulses,
         "velocities_after": r.velocities_after,
+        "friction": friction_json(r),
         "notes": notes(r),
     })
 }

@@ -455,6 +455,7 @@ impl App {
             stop: 0,
             selected: k,
             scroll: Cell::new(0),
+            pivot: None,
         }));
         self.open_contact();
     }

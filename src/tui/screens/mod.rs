@@ -18,6 +18,7 @@ mod events;
 mod nav;
 mod picture;
 mod resolver;
+mod resolver_lcp;
 mod resolver_nav;
 mod run;
 mod run_nav;
@@ -154,6 +155,9 @@ pub struct ResolverView {
     pub selected: usize,
     /// First table row shown.
     pub scroll: Cell<usize>,
+    /// Under `solver = "lcp"`, at the velocity phase's first stop: A and b
+    /// (0) or pivot j - 1 (j) on show instead of the table.
+    pub pivot: Option<usize>,
 }
 
 /// Where the last draw put what a click can pick: the picture (and its
@@ -332,7 +336,7 @@ pub const RUN_KEYS: &[Binding<Key>] = &[
 /// The resolver screen's keys: what the help shows and what each key does.
 pub const RESOLVER_KEYS: &[Binding<Key>] = &[
     forward_back!(
-        "next / previous iteration (position phase, then velocity)",
+        "next / previous iteration (position phase, then velocity; lcp: A and b, each pivot, after)",
         Key::Forward,
         Key::Back
     ),

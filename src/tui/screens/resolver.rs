@@ -73,8 +73,10 @@ fn render(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
     };
     picture::render(app, &scene, pic, buf);
     convergence(app, r, conv, buf);
-    render_table(app, r, table, buf);
-    render_note(app, r, note, buf);
+    if !super::resolver_lcp::render(app, r, table, note, buf) {
+        render_table(app, r, table, buf);
+        render_note(app, r, note, buf);
+    }
 }
 
 fn convergence(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {

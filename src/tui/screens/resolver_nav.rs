@@ -16,6 +16,7 @@ impl App {
             stop: 0,
             selected,
             scroll: Cell::new(0),
+            pivot: None,
         }));
         self.screen = Screen::Resolver;
     }
@@ -45,6 +46,9 @@ impl ResolverView {
     /// A key of the resolver's table (the router has taken the shared ones).
     pub(crate) fn key(&mut self, action: Key) -> Outcome {
         let r = self;
+        if r.lcp_key(action) {
+            return Outcome::Done;
+        }
         let last = r.trace.tables.len().saturating_sub(1);
         let contacts = r.trace.world.contacts.len();
         let stop = match action {
@@ -77,6 +81,9 @@ impl ResolverView {
     pub(crate) fn crumb(&self, from_detection: bool) -> String {
         if from_detection {
             return format!("step {}'s resolver", self.trace.step);
+        }
+        if let Some(lcp) = self.lcp_crumb() {
+            return lcp;
         }
         let table = &self.trace.tables[self.stop];
         let (phase, used) = match table.stop.phase {
