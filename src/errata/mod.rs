@@ -1,6 +1,10 @@
 //! Errata: every number a lesson prints (`[[printed]]`) against the value
 //! the trace computes — agrees, known erratum, or new disagreement. Pure:
 //! lessons and traces in, findings out (the `check` subcommand).
+//! - `xpbd.rs`: the XPBD paper's dynamic-friction erratum, measured on a
+//!   sliding box when asked (beside the lecture's).
+
+pub mod xpbd;
 
 use crate::lesson::printed::{PrintedNum, PrintedShape};
 use crate::lesson::{Lesson, Printed};

@@ -33,3 +33,4 @@ mod study;
 mod study_broad;
 mod substepped;
 mod tunnelled;
+mod xpbd_erratum;
