@@ -30,6 +30,7 @@ mod one_minus_sign;
 mod previous_frame;
 mod resolve_snapshots;
 mod scene_snapshots;
+mod solver_glossary;
 mod solve_snapshots;
 mod trace_step;
 mod verdict_labels;
