@@ -28,6 +28,7 @@ pub mod run;
 mod scene;
 mod stage_names;
 pub mod step;
+pub mod substeps;
 pub mod stop;
 pub mod symbols;
 pub mod toi;

@@ -19,6 +19,7 @@ mod nav;
 mod picture;
 mod resolver;
 mod resolver_nav;
+pub mod resolver_substeps;
 mod run;
 mod run_nav;
 

@@ -44,6 +44,9 @@ impl App {
 impl ResolverView {
     /// A key of the resolver's table (the router has taken the shared ones).
     pub(crate) fn key(&mut self, action: Key) -> Outcome {
+        if self.trace.substeps.is_some() {
+            return super::resolver_substeps::key(self, action);
+        }
         let r = self;
         let last = r.trace.tables.len().saturating_sub(1);
         let contacts = r.trace.world.contacts.len();
@@ -77,6 +80,9 @@ impl ResolverView {
     pub(crate) fn crumb(&self, from_detection: bool) -> String {
         if from_detection {
             return format!("step {}'s resolver", self.trace.step);
+        }
+        if let Some(rec) = &self.trace.substeps {
+            return super::resolver_substeps::crumb(self, rec);
         }
         let table = &self.trace.tables[self.stop];
         let (phase, used) = match table.stop.phase {
