@@ -110,3 +110,58 @@ fn the_glossary_command_prints_the_solver_quantities() {
         Some(SOLVER_GLOSSARY.len())
     );
 }
+
+/// A step of stack-5 under `solver`, recorded by the step itself.
+fn record(solver: contact_lab::physics::Solver) -> contact_lab::trace::substeps::SubstepsRecord {
+    use contact_lab::trace::substeps;
+    let lesson = contact_lab::lesson::Lesson::load("stack-5").unwrap();
+    let mut params = lesson.sim_params().unwrap();
+    params.resolver.solver = solver;
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = contact_lab::physics::step::Simulation::new(
+        world,
+        params,
+        lesson.simulation.unwrap().materials,
+    );
+    for _ in 0..4 {
+        sim.advance().unwrap();
+    }
+    assert!(substeps::ask(&mut sim));
+    sim.advance().unwrap();
+    substeps::take(&mut sim).expect("a record")
+}
+
+/// The left-hand sides the TUI's substep lines print (`X = value`): each
+/// is a glossary symbol, or the formula of one (`ω/a₁`, `a₂a₃`, `α/h²`).
+#[test]
+fn every_symbol_the_tuis_substep_lines_print_has_a_glossary_entry() {
+    use contact_lab::physics::Solver;
+    use contact_lab::tui::screens::resolver_substeps::lines;
+    let f = contact_lab::format::Fmt::new(4);
+    let mut seen = BTreeSet::new();
+    for solver in [Solver::SoftStep, Solver::Xpbd] {
+        let rec = record(solver);
+        for text in lines(&rec, 0, 0, &f) {
+            let words: Vec<&str> = text.split_whitespace().collect();
+            for w in words.windows(2).filter(|w| w[1] == "=") {
+                let lhs = w[0].trim_start_matches(['(', '›']);
+                seen.insert(lhs.to_string());
+            }
+        }
+    }
+    let missing: Vec<&String> = seen
+        .iter()
+        .filter(|lhs| {
+            !SOLVER_GLOSSARY
+                .iter()
+                .any(|s| {
+                    s.symbol == lhs.as_str()
+                        || s.formula == lhs.as_str()
+                        || s.formula.ends_with(&format!("= {lhs}"))
+                })
+        })
+        .collect();
+    assert!(missing.is_empty(), "no glossary entry for {missing:?} (of {seen:?})");
+    assert!(seen.len() >= 12, "{seen:?}");
+}
