@@ -110,7 +110,11 @@ pub fn markdown() -> String {
             super::contact::markdown::cell(s.meaning),
             solver_unit(s),
             s.solver,
-            if s.key.is_empty() { String::new() } else { format!("`{}`", s.key) }
+            if s.key.is_empty() {
+                String::new()
+            } else {
+                format!("`{}`", s.key)
+            }
         );
     }
     out
@@ -178,7 +182,9 @@ pub fn json() -> String {
             })
         })
         .collect();
-    serde_json::to_string_pretty(&serde_json::json!({ "symbols": symbols, "solver_symbols": solver }))
-        .expect("JSON")
+    serde_json::to_string_pretty(
+        &serde_json::json!({ "symbols": symbols, "solver_symbols": solver }),
+    )
+    .expect("JSON")
         + "\n"
 }

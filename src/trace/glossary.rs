@@ -226,7 +226,9 @@ pub const SOLVER_GLOSSARY: &[SolverSymbol] = &[
 
 /// The solver quantity whose JSON key is `key`.
 pub fn solver_symbol_by_key(key: &str) -> Option<&'static SolverSymbol> {
-    SOLVER_GLOSSARY.iter().find(|s| !s.key.is_empty() && s.key == key)
+    SOLVER_GLOSSARY
+        .iter()
+        .find(|s| !s.key.is_empty() && s.key == key)
 }
 
 /// The symbols whose name appears in `text` (a formula, a note), each once,

@@ -51,7 +51,8 @@ fn check_json_gives_the_xpbd_erratum_with_the_measured_decelerations() {
     let ratios: Vec<f64> = rows
         .iter()
         .map(|r| {
-            r["printed_deceleration"].as_f64().unwrap() / r["corrected_deceleration"].as_f64().unwrap()
+            r["printed_deceleration"].as_f64().unwrap()
+                / r["corrected_deceleration"].as_f64().unwrap()
         })
         .collect();
     assert!(ratios.windows(2).all(|w| w[1] > 1.5 * w[0]), "{ratios:?}");

@@ -56,8 +56,18 @@ fn every_value_a_soft_step_trace_prints_has_a_glossary_entry() {
     // The names the text gives the soft coefficients.
     let text = soft_trace("text");
     for name in [
-        "h", "f", "ζ", "ω", "a₁", "a₂", "a₃", "bias rate", "mass scale", "impulse scale",
-        "push-out speed", "relax",
+        "h",
+        "f",
+        "ζ",
+        "ω",
+        "a₁",
+        "a₂",
+        "a₃",
+        "bias rate",
+        "mass scale",
+        "impulse scale",
+        "push-out speed",
+        "relax",
     ] {
         assert!(text.contains(name), "the trace no longer prints {name}");
         assert!(
@@ -102,7 +112,11 @@ fn the_glossary_command_prints_the_solver_quantities() {
     let md = run("md");
     for s in SOLVER_GLOSSARY {
         assert!(text.contains(s.meaning), "text: {}", s.symbol);
-        assert!(md.contains(&s.symbol.replace('|', "\\|")), "md: {}", s.symbol);
+        assert!(
+            md.contains(&s.symbol.replace('|', "\\|")),
+            "md: {}",
+            s.symbol
+        );
     }
     let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
     assert_eq!(
@@ -153,15 +167,16 @@ fn every_symbol_the_tuis_substep_lines_print_has_a_glossary_entry() {
     let missing: Vec<&String> = seen
         .iter()
         .filter(|lhs| {
-            !SOLVER_GLOSSARY
-                .iter()
-                .any(|s| {
-                    s.symbol == lhs.as_str()
-                        || s.formula == lhs.as_str()
-                        || s.formula.ends_with(&format!("= {lhs}"))
-                })
+            !SOLVER_GLOSSARY.iter().any(|s| {
+                s.symbol == lhs.as_str()
+                    || s.formula == lhs.as_str()
+                    || s.formula.ends_with(&format!("= {lhs}"))
+            })
         })
         .collect();
-    assert!(missing.is_empty(), "no glossary entry for {missing:?} (of {seen:?})");
+    assert!(
+        missing.is_empty(),
+        "no glossary entry for {missing:?} (of {seen:?})"
+    );
     assert!(seen.len() >= 12, "{seen:?}");
 }

@@ -71,7 +71,11 @@ fn a_soft_step_frame_shows_its_own_substeps_and_soft_coefficients() {
     let mut sim = record_again(&path, step);
     sim.soft_trace = Some(SoftTrace::default());
     sim.advance().unwrap();
-    assert_eq!(sim.soft_trace.as_ref(), Some(&shown), "not the step's record");
+    assert_eq!(
+        sim.soft_trace.as_ref(),
+        Some(&shown),
+        "not the step's record"
+    );
     let screen = screen_text(&a);
     assert!(screen.contains("under the soft step"), "{screen}");
     assert!(screen.contains("Not the lecture's phases"), "{screen}");
@@ -79,10 +83,17 @@ fn a_soft_step_frame_shows_its_own_substeps_and_soft_coefficients() {
     let k = a.resolver.as_ref().unwrap().selected;
     let c = &shown.contacts[k];
     for x in [c.bias_rate, c.mass_scale, c.impulse_scale, c.normal_impulse] {
-        assert!(screen.contains(&f.num(x)), "{} not shown:\n{screen}", f.num(x));
+        assert!(
+            screen.contains(&f.num(x)),
+            "{} not shown:\n{screen}",
+            f.num(x)
+        );
     }
     for p in &c.substep_impulses {
-        assert!(screen.contains(&format!("P_n = {} N·s", f.num(*p))), "{screen}");
+        assert!(
+            screen.contains(&format!("P_n = {} N·s", f.num(*p))),
+            "{screen}"
+        );
     }
     assert_eq!(
         c.substep_impulses.len(),
@@ -94,7 +105,11 @@ fn a_soft_step_frame_shows_its_own_substeps_and_soft_coefficients() {
     }
     // → moves the substep cursor; the breadcrumb says which.
     key(&mut a, KeyCode::Right);
-    assert!(breadcrumb(&a).ends_with("soft step substep 2 of 4"), "{}", breadcrumb(&a));
+    assert!(
+        breadcrumb(&a).ends_with("soft step substep 2 of 4"),
+        "{}",
+        breadcrumb(&a)
+    );
     // Enter does not open the lecture's stages for a soft-step contact.
     key(&mut a, KeyCode::Enter);
     assert_eq!(a.screen, Screen::Resolver);
@@ -112,7 +127,11 @@ fn an_xpbd_frame_shows_its_position_and_velocity_passes() {
     let mut sim = record_again(&path, r.trace.step);
     sim.xpbd_trace = Some(Vec::new());
     sim.advance().unwrap();
-    assert_eq!(sim.xpbd_trace.as_ref(), Some(&shown), "not the step's record");
+    assert_eq!(
+        sim.xpbd_trace.as_ref(),
+        Some(&shown),
+        "not the step's record"
+    );
     assert_eq!(shown.len(), 4);
     let screen = screen_text(&a);
     assert!(screen.contains("under XPBD"), "{screen}");
@@ -121,8 +140,14 @@ fn an_xpbd_frame_shows_its_position_and_velocity_passes() {
     let mut rows = 0;
     for s in &shown {
         for c in s.contacts.iter().filter(|c| c.contact == k) {
-            assert!(screen.contains(&format!("Δλ_n = {} kg·m", f.num(c.delta_lambda))), "{screen}");
-            assert!(screen.contains(&format!("λ_n = {} kg·m", f.num(c.lambda))), "{screen}");
+            assert!(
+                screen.contains(&format!("Δλ_n = {} kg·m", f.num(c.delta_lambda))),
+                "{screen}"
+            );
+            assert!(
+                screen.contains(&format!("λ_n = {} kg·m", f.num(c.lambda))),
+                "{screen}"
+            );
             rows += 1;
         }
     }
@@ -137,4 +162,3 @@ fn a_frame_under_the_lectures_order_keeps_its_phases() {
     key(&mut a, KeyCode::Enter);
     assert!(a.resolver.as_ref().unwrap().trace.substeps.is_none());
 }
-

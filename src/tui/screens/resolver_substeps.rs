@@ -203,11 +203,7 @@ pub(super) fn render(
     let block = Block::bordered()
         .border_style(t.border())
         .title(Span::styled(
-            format!(
-                " Substep {} of {} ",
-                r.stop + 1,
-                substep_count(rec).max(1)
-            ),
+            format!(" Substep {} of {} ", r.stop + 1, substep_count(rec).max(1)),
             t.title(),
         ));
     let inner = block.inner(right);

@@ -26,10 +26,10 @@ impl<T: Real> Simulation<T> {
             velocity_epsilon: p.resolver.velocity_epsilon,
         };
         // A traced step's substeps (the TUI's resolver screen reads them).
-        let record = self.xpbd_trace.as_mut().map(|r| {
+        if let Some(r) = self.xpbd_trace.as_mut() {
             r.clear();
-            r
-        });
+        }
+        let record = self.xpbd_trace.as_mut();
         let [position, velocity] = xpbd::step(&mut self.world, &input, record);
         if enabled {
             wake_sleep::wake_changed(&mut self.world, &mut self.sleep, p.sleep.epsilon, events);
