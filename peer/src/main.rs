@@ -112,9 +112,19 @@ fn reference(scene: &Scene) -> Vec<nalgebra::Vector3<f64>> {
 
 /// The contact-lab simulation of `scene` with `solver`, not yet warmed up.
 fn contact_lab(scene: &Scene, solver: Solver, warm_start: bool) -> Simulation<f64> {
+    // `PEER_SOFT=SUBSTEPS,RELAX` sets the soft step's substeps and relax
+    // sweeps (to split its time into a fixed part and a part per sweep).
+    let soft: Option<(usize, usize)> = std::env::var("PEER_SOFT").ok().map(|v| {
+        let (s, r) = v.split_once(',').expect("PEER_SOFT=SUBSTEPS,RELAX");
+        (s.parse().unwrap(), r.parse().unwrap())
+    });
     let set = |r: &mut ResolverParams| {
         r.solver = solver;
         r.warm_start = warm_start;
+        if let (Solver::SoftStep, Some((substeps, relax))) = (solver, soft) {
+            r.substeps = substeps;
+            r.soft.relax_iterations = relax;
+        }
     };
     match scene.id.strip_prefix("pile-") {
         Some(n) => scenes::pile(n.parse().unwrap(), set),
