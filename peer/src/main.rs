@@ -1,10 +1,16 @@
 //! The peer benchmark: the same scenes in rapier3d (its defaults, f32,
 //! single-threaded) and in contact-lab (f64; deepest-first, sequential
-//! impulses, sequential impulses with warm start), sleep off in both,
+//! impulses, sequential impulses with warm start, the soft step with its
+//! defaults: 4 substeps, 30 Hz, ζ 10, one relax sweep), sleep off in both,
 //! stepped in one process and interleaved: every round runs each engine
 //! once per scene, and a scene's figure is the median of the rounds. Time is
 //! the thread's CPU time (not wall time), per step, in µs; the load average
 //! is printed before and after, because the machine may be shared.
+//!
+//! The error against the scene's reference: the scene's start is its
+//! reference (a stack built at rest, a pile laid out on a grid), and the
+//! error is the largest distance any body moved from it by the end of the
+//! timed steps (mm), with the highest body's height beside it.
 //!
 //! `cargo run --release` here (never built by the main crate's tests).
 //! `-- --scene stack-5 --config si-warm --runs 1` runs one cell only (for
@@ -56,17 +62,69 @@ const SCENES: [Scene; 5] = [
 ];
 
 /// contact-lab's configurations, as a new user would pick them.
-const CONFIGS: [(&str, Solver, bool); 3] = [
+const CONFIGS: [(&str, Solver, bool); 4] = [
     ("deepest-first", Solver::DeepestFirst, false),
     ("si", Solver::SequentialImpulse, false),
     ("si-warm", Solver::SequentialImpulse, true),
+    // The soft step warm-starts always (Box2D v3's order); its knobs at
+    // their defaults.
+    ("soft-step", Solver::SoftStep, false),
 ];
+
+/// The largest distance (m) between a movable body's position in `now` and
+/// in `start` (the same bodies in the same order).
+fn drift(start: &[nalgebra::Vector3<f64>], now: &[nalgebra::Vector3<f64>]) -> f64 {
+    start
+        .iter()
+        .zip(now)
+        .map(|(a, b)| (a - b).norm())
+        .fold(0.0, f64::max)
+}
+
+/// The movable bodies' positions (the ones with a shape, as rapier gets them).
+fn positions(sim: &Simulation<f64>) -> Vec<nalgebra::Vector3<f64>> {
+    sim.world
+        .bodies
+        .iter()
+        .filter(|b| b.movable && b.shape.is_some())
+        .map(|b| b.state.position)
+        .collect()
+}
+
+/// The scene's reference: its bodies' positions as built, before any step
+/// (the pile's builder steps 30 times; its grid is rebuilt here).
+fn reference(scene: &Scene) -> Vec<nalgebra::Vector3<f64>> {
+    match scene.id.strip_prefix("pile-") {
+        Some(n) => {
+            let n: usize = n.parse().unwrap();
+            let side = (n as f64).sqrt().ceil() as usize / 2 + 1;
+            (0..n)
+                .map(|i| {
+                    let layer = i / (side * side);
+                    let (x, z) = ((i % side) as f64, ((i / side) % side) as f64);
+                    nalgebra::Vector3::new(x * 1.001, 0.5 + layer as f64 * 1.001, z * 1.001)
+                })
+                .collect()
+        }
+        None => positions(&contact_lab(scene, Solver::DeepestFirst, false)),
+    }
+}
 
 /// The contact-lab simulation of `scene` with `solver`, not yet warmed up.
 fn contact_lab(scene: &Scene, solver: Solver, warm_start: bool) -> Simulation<f64> {
+    // `PEER_SOFT=SUBSTEPS,RELAX` sets the soft step's substeps and relax
+    // sweeps (to split its time into a fixed part and a part per sweep).
+    let soft: Option<(usize, usize)> = std::env::var("PEER_SOFT").ok().map(|v| {
+        let (s, r) = v.split_once(',').expect("PEER_SOFT=SUBSTEPS,RELAX");
+        (s.parse().unwrap(), r.parse().unwrap())
+    });
     let set = |r: &mut ResolverParams| {
         r.solver = solver;
         r.warm_start = warm_start;
+        if let (Solver::SoftStep, Some((substeps, relax))) = (solver, soft) {
+            r.substeps = substeps;
+            r.soft.relax_iterations = relax;
+        }
     };
     match scene.id.strip_prefix("pile-") {
         Some(n) => scenes::pile(n.parse().unwrap(), set),
@@ -91,8 +149,9 @@ fn load_average() -> String {
         .unwrap_or_else(|_| "unknown".into())
 }
 
-/// One timed run of contact-lab: µs per step, and the highest body's height after.
-fn run_contact_lab(scene: &Scene, solver: Solver, warm_start: bool) -> (f64, f64) {
+/// One timed run of contact-lab: µs per step, the highest body's height
+/// after, and the largest drift from the reference (m).
+fn run_contact_lab(scene: &Scene, solver: Solver, warm_start: bool) -> (f64, f64, f64) {
     let mut sim = contact_lab(scene, solver, warm_start);
     // The pile is warmed up by its builder; the others here.
     if !scene.id.starts_with("pile-") {
@@ -112,11 +171,12 @@ fn run_contact_lab(scene: &Scene, solver: Solver, warm_start: bool) -> (f64, f64
         .filter(|b| b.movable)
         .map(|b| b.state.position.y)
         .fold(f64::MIN, f64::max);
-    (us, top)
+    (us, top, drift(&reference(scene), &positions(&sim)))
 }
 
-/// One timed run of rapier on the same scene: µs per step, highest body after.
-fn run_rapier(scene: &Scene) -> (f64, f64) {
+/// One timed run of rapier on the same scene: µs per step, highest body
+/// after, largest drift from the reference (m).
+fn run_rapier(scene: &Scene) -> (f64, f64, f64) {
     // The same start: contact-lab's scene before its warm-up.
     let start = contact_lab(scene, Solver::DeepestFirst, false);
     // The pile comes warmed up by contact-lab (30 steps); rapier warms up
@@ -136,7 +196,12 @@ fn run_rapier(scene: &Scene) -> (f64, f64) {
         world.step();
     }
     let us = (cpu_seconds() - t) * 1e6 / scene.timed as f64;
-    (us, rapier_scene::top(&world))
+    let now = rapier_scene::positions(&world);
+    (
+        us,
+        rapier_scene::top(&world),
+        drift(&reference(scene), &now),
+    )
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -164,25 +229,28 @@ fn main() {
         "CPU µs per step, median of {runs} interleaved runs (ratio to rapier); sleep off, one thread"
     );
     println!(
-        "| scene | rapier default | deepest-first | sequential impulses | + warm start | top body y (rapier / si-warm) |"
+        "| scene | rapier default | deepest-first | sequential impulses | + warm start | soft step | top body y (rapier / si-warm / soft) | largest drift from the start, mm (rapier / si-warm / soft) |"
     );
-    println!("|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|");
     for scene in scenes {
         let mut rapier = Vec::new();
-        let mut ours: [Vec<f64>; 3] = Default::default();
-        let mut tops = (0.0, 0.0);
+        let mut ours: [Vec<f64>; 4] = Default::default();
+        let mut tops = [f64::NAN; 3];
+        let mut drifts = [f64::NAN; 3];
         for _ in 0..runs {
             if wanted("rapier") {
-                let (us, top) = run_rapier(scene);
+                let (us, top, d) = run_rapier(scene);
                 rapier.push(us);
-                tops.0 = top;
+                tops[0] = top;
+                drifts[0] = d;
             }
             for (i, (name, solver, warm)) in CONFIGS.iter().enumerate() {
                 if wanted(name) {
-                    let (us, top) = run_contact_lab(scene, *solver, *warm);
+                    let (us, top, d) = run_contact_lab(scene, *solver, *warm);
                     ours[i].push(us);
-                    if i == 2 {
-                        tops.1 = top;
+                    if i >= 2 {
+                        tops[i - 1] = top;
+                        drifts[i - 1] = d;
                     }
                 }
             }
@@ -197,14 +265,19 @@ fn main() {
             (false, None) => format!("{:.1}", median(v.clone())),
         };
         println!(
-            "| {} | {} | {} | {} | {} | {:.2} / {:.2} |",
+            "| {} | {} | {} | {} | {} | {} | {:.3} / {:.3} / {:.3} | {:.2} / {:.2} / {:.2} |",
             scene.id,
             r.map_or("—".into(), |r| format!("{r:.1}")),
             cell(&ours[0]),
             cell(&ours[1]),
             cell(&ours[2]),
-            tops.0,
-            tops.1
+            cell(&ours[3]),
+            tops[0],
+            tops[1],
+            tops[2],
+            drifts[0] * 1e3,
+            drifts[1] * 1e3,
+            drifts[2] * 1e3
         );
     }
     println!("load average after: {}", load_average());

@@ -88,3 +88,17 @@ pub fn top(world: &PhysicsWorld) -> f64 {
         .map(|(_, b)| b.translation().y as f64)
         .fold(f64::MIN, f64::max)
 }
+
+/// The dynamic bodies' positions, in the order they were inserted (the
+/// movable bodies of the contact-lab scene, in its order).
+pub fn positions(world: &PhysicsWorld) -> Vec<nalgebra::Vector3<f64>> {
+    world
+        .bodies
+        .iter()
+        .filter(|(_, b)| b.is_dynamic())
+        .map(|(_, b)| {
+            let t = b.translation();
+            nalgebra::Vector3::new(t.x as f64, t.y as f64, t.z as f64)
+        })
+        .collect()
+}

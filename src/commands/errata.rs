@@ -28,12 +28,20 @@ pub fn errata(args: &ErrataArgs, out: &mut dyn Write, err: &mut dyn Write) -> Re
         items.extend(errata::lesson(&lesson, &traces));
         lessons.push((lesson.id.clone(), lesson.title.clone()));
     }
+    // The papers' errata beside the lecture's: in the default run only (a
+    // run over named lessons checks those lessons).
+    let papers = args.lessons.is_empty().then(errata::xpbd::measure);
     let text = match args.format {
-        ErrataFormat::Text => render::wrap::wrap(
-            &render::errata::text(&lessons, &items, &Fmt::default()),
-            super::text_width(args.fold.width),
-        ),
-        ErrataFormat::Json => render::errata::json(&items),
+        ErrataFormat::Text => {
+            let fmt = Fmt::default();
+            let mut sheet = render::errata::text(&lessons, &items, &fmt);
+            if let Some(e) = &papers {
+                sheet.push('\n');
+                sheet.push_str(&render::errata::xpbd_text(e, &fmt));
+            }
+            render::wrap::wrap(&sheet, super::text_width(args.fold.width))
+        }
+        ErrataFormat::Json => render::errata::json(&items, papers.as_ref()),
     };
     out.write_all(text.as_bytes()).map_err(io)?;
     let tally = Tally::of(&items);

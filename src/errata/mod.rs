@@ -3,8 +3,11 @@
 //! lessons and traces in, findings out (the `check` subcommand). A value of
 //! the contacts resolved together (`resolver`, `lcp`) comes from the
 //! resolver's trace ([`resolved`]).
+//! - `xpbd.rs`: the XPBD paper's dynamic-friction erratum, measured on a
+//!   sliding box when asked (beside the lecture's).
 
 pub mod resolved;
+pub mod xpbd;
 
 use crate::lesson::printed::{PrintedNum, PrintedShape};
 use crate::lesson::{Lesson, Printed};

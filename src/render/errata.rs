@@ -6,6 +6,7 @@ use std::fmt::Write;
 
 use serde_json::{json, Value as J};
 
+use crate::errata::xpbd::{self, Erratum};
 use crate::errata::{Item, Status, Tally};
 use crate::format::Fmt;
 use crate::lesson::printed::{PrintedNum, PrintedShape};
@@ -170,7 +171,9 @@ pub fn text(lessons: &[(String, String)], items: &[Item], fmt: &Fmt) -> String {
     out
 }
 
-pub fn json(items: &[Item]) -> String {
+/// `{"items": […]}`, and `"papers": […]` when `papers` is given (the
+/// default run over every embedded lesson).
+pub fn json(items: &[Item], papers: Option<&Erratum>) -> String {
     let items: Vec<J> = items
         .iter()
         .map(|i| {
@@ -194,5 +197,69 @@ pub fn json(items: &[Item]) -> String {
             item
         })
         .collect();
-    serde_json::to_string_pretty(&json!({ "items": items })).expect("JSON") + "\n"
+    let mut doc = json!({ "items": items });
+    if let Some(e) = papers {
+        doc["papers"] = json!([xpbd_json(e)]);
+    }
+    serde_json::to_string_pretty(&doc).expect("JSON") + "\n"
+}
+
+/// The XPBD paper's erratum beside the lecture's: both formulas and the
+/// deceleration measured on a sliding box under each.
+pub fn xpbd_text(e: &Erratum, fmt: &Fmt) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "Beside the lecture: Müller et al. 2020, \"Detailed rigid body simulation with \
+extended position based dynamics\"\n  ! dynamic friction (eq. 30): KNOWN ERRATUM"
+    );
+    let _ = writeln!(out, "      printed   {}", xpbd::PRINTED);
+    let _ = writeln!(out, "      corrected {} (Solver2D)", xpbd::CORRECTED);
+    let _ = writeln!(out, "      erratum   {}", xpbd::WHY);
+    let _ = writeln!(
+        out,
+        "      measured  a 1 m box sliding at 3 m/s on a floor (μ_d {}, Δt 1/60 s, 4 substeps), \
+deceleration in m/s², μ_d g = {}:",
+        fmt.num(xpbd::MU_D),
+        fmt.num(e.mu_g())
+    );
+    for r in &e.rows {
+        let _ = writeln!(
+            out,
+            "        {} kg: printed {} ({} μ_d g), corrected {} ({} μ_d g)",
+            fmt.num(r.mass),
+            fmt.num(r.printed),
+            fmt.fixed(r.printed / e.mu_g(), 3),
+            fmt.num(r.corrected),
+            fmt.fixed(r.corrected / e.mu_g(), 3)
+        );
+    }
+    if e.rows.is_empty() {
+        let _ = writeln!(out, "        no run gave a figure");
+    }
+    let _ = writeln!(
+        out,
+        "      the corrected deceleration is the same at every mass; it is under μ_d g because \
+one position iteration a substep supplies only part of the support λ_n that friction reads \
+(docs/simulate.md)"
+    );
+    out
+}
+
+/// The XPBD paper's erratum as JSON (the `papers` entry of `check`'s JSON).
+pub fn xpbd_json(e: &Erratum) -> J {
+    json!({
+        "paper": "Müller et al. 2020, Detailed rigid body simulation with extended position based dynamics",
+        "where": "eq. 30, dynamic friction",
+        "printed": xpbd::PRINTED,
+        "corrected": xpbd::CORRECTED,
+        "erratum": xpbd::WHY,
+        "mu_d": xpbd::MU_D,
+        "mu_d_g": e.mu_g(),
+        "measured": e.rows.iter().map(|r| json!({
+            "mass": r.mass,
+            "printed_deceleration": r.printed,
+            "corrected_deceleration": r.corrected,
+        })).collect::<Vec<_>>(),
+    })
 }

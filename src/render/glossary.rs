@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use crate::physics::StageId;
 use crate::render::tex::{prose, to_latex};
-use crate::trace::glossary::{Symbol, GLOSSARY};
+use crate::trace::glossary::{SolverSymbol, Symbol, GLOSSARY, SOLVER_GLOSSARY};
 
 fn unit_text(s: &Symbol) -> &'static str {
     if s.unit.is_empty() {
@@ -48,6 +48,41 @@ pub fn text() -> String {
         }
         out.push('\n');
     }
+    out.push_str(&solver_text(cols));
+    out
+}
+
+fn solver_unit(s: &SolverSymbol) -> &'static str {
+    if s.unit.is_empty() {
+        "—"
+    } else {
+        s.unit
+    }
+}
+
+/// The soft-step and XPBD quantities, one a line: symbol, formula, meaning
+/// [unit; solver; JSON key].
+fn solver_text(cols: impl Fn(&str) -> usize) -> String {
+    let mut out = String::from(
+        "\nQuantities of the soft step and XPBD (simulate --trace-step, the TUI's substeps)\n\n",
+    );
+    let width = SOLVER_GLOSSARY
+        .iter()
+        .map(|s| cols(s.symbol))
+        .max()
+        .unwrap_or(0);
+    for s in SOLVER_GLOSSARY {
+        let pad = " ".repeat(width - cols(s.symbol));
+        let _ = write!(out, "{}{pad}  ", s.symbol);
+        if !s.formula.is_empty() {
+            let _ = write!(out, "{}: ", s.formula);
+        }
+        let _ = write!(out, "{} [{}; {}", s.meaning, solver_unit(s), s.solver);
+        if !s.key.is_empty() {
+            let _ = write!(out, "; JSON `{}`", s.key);
+        }
+        out.push_str("]\n");
+    }
     out
 }
 
@@ -63,6 +98,23 @@ pub fn markdown() -> String {
             unit_text(s),
             s.stage_numbers(),
             super::contact::markdown::cell(s.elsewhere)
+        );
+    }
+    out.push_str("\n## Soft step and XPBD\n\n| symbol | formula | meaning | unit | solver | JSON key |\n|---|---|---|---|---|---|\n");
+    for s in SOLVER_GLOSSARY {
+        let _ = writeln!(
+            out,
+            "| {} | {} | {} | {} | {} | {} |",
+            super::contact::markdown::cell(s.symbol),
+            super::contact::markdown::cell(s.formula),
+            super::contact::markdown::cell(s.meaning),
+            solver_unit(s),
+            s.solver,
+            if s.key.is_empty() {
+                String::new()
+            } else {
+                format!("`{}`", s.key)
+            }
         );
     }
     out
@@ -102,7 +154,8 @@ pub fn latex() -> String {
     super::contact::latex::standalone(&body)
 }
 
-/// JSON: `{"symbols": [{"symbol", "meaning", "unit", "stages": [stage ids], "elsewhere"}]}`.
+/// JSON: `{"symbols": [{"symbol", "meaning", "unit", "stages": [stage ids], "elsewhere"}],
+/// "solver_symbols": [{"symbol", "key", "formula", "meaning", "unit", "solver"}]}`.
 pub fn json() -> String {
     let symbols: Vec<serde_json::Value> = GLOSSARY
         .iter()
@@ -116,5 +169,22 @@ pub fn json() -> String {
             })
         })
         .collect();
-    serde_json::to_string_pretty(&serde_json::json!({ "symbols": symbols })).expect("JSON") + "\n"
+    let solver: Vec<serde_json::Value> = SOLVER_GLOSSARY
+        .iter()
+        .map(|s| {
+            serde_json::json!({
+                "symbol": s.symbol,
+                "key": s.key,
+                "formula": s.formula,
+                "meaning": s.meaning,
+                "unit": s.unit,
+                "solver": s.solver,
+            })
+        })
+        .collect();
+    serde_json::to_string_pretty(
+        &serde_json::json!({ "symbols": symbols, "solver_symbols": solver }),
+    )
+    .expect("JSON")
+        + "\n"
 }

@@ -147,6 +147,90 @@ pub const GLOSSARY: &[Symbol] = &[
     s("E′_clamp", "kinetic energy after the one-shot impulse of stages 4–6", "J", &[EI], ""),
 ];
 
+/// One quantity a soft-step or XPBD trace prints (`simulate --trace-step`,
+/// the TUI's substeps): its symbol, the key it has in JSON, the formula
+/// that computes it, its meaning and unit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SolverSymbol {
+    pub symbol: &'static str,
+    /// The JSON key of the value (`""`: printed in text only).
+    pub key: &'static str,
+    /// How it is computed (`""`: an input or a record).
+    pub formula: &'static str,
+    pub meaning: &'static str,
+    pub unit: &'static str,
+    /// `"soft step"`, `"XPBD"` or `"both"`.
+    pub solver: &'static str,
+}
+
+const fn q(
+    symbol: &'static str,
+    key: &'static str,
+    formula: &'static str,
+    meaning: &'static str,
+    unit: &'static str,
+    solver: &'static str,
+) -> SolverSymbol {
+    SolverSymbol {
+        symbol,
+        key,
+        formula,
+        meaning,
+        unit,
+        solver,
+    }
+}
+
+/// Every quantity the soft-step and XPBD traces print.
+#[rustfmt::skip]
+pub const SOLVER_GLOSSARY: &[SolverSymbol] = &[
+    q("Δt", "dt", "", "the step's duration", "s", "both"),
+    q("substeps", "substeps", "", "how many substeps a step is cut into (knob `substeps`)", "", "both"),
+    q("h", "h", "h = Δt / substeps", "the substep: the time one substep advances", "s", "both"),
+    q("f", "contact_hertz", "", "the contact's stiffness as a frequency (knob `contact_hertz`)", "Hz", "soft step"),
+    q("ζ", "contact_damping_ratio", "", "the contact's damping ratio (knob `contact_damping_ratio`)", "", "soft step"),
+    q("ω", "", "ω = 2πf", "the contact spring's angular frequency", "rad/s", "soft step"),
+    q("a₁", "", "a₁ = 2ζ + hω", "the soft constraint's first coefficient", "", "soft step"),
+    q("a₂", "", "a₂ = hω·a₁", "the soft constraint's second coefficient", "", "soft step"),
+    q("a₃", "", "a₃ = 1/(1 + a₂)", "the soft constraint's third coefficient", "", "soft step"),
+    q("bias rate", "bias_rate", "ω/a₁", "the share of the separation the biased solve asks back per second: bias velocity = max(bias rate · s, -push-out speed)", "1/s", "soft step"),
+    q("mass scale", "mass_scale", "a₂a₃", "the share of the rigid impulse the biased solve applies", "", "soft step"),
+    q("impulse scale", "impulse_scale", "a₃", "the share of the accumulated impulse the biased solve takes back (the spring's softness)", "", "soft step"),
+    q("push-out speed", "push_out_speed", "", "the fastest the biased solve pushes a penetrating contact apart (knob `push_out_speed`)", "m/s", "soft step"),
+    q("relax", "relax_iterations", "", "sweeps per substep without bias after the positions move (knob `relax_iterations`): they remove the push-out speed the bias added", "", "soft step"),
+    q("restitution threshold", "restitution_threshold", "", "a contact that closed slower than this gets no restitution (knob `restitution_threshold`)", "m/s", "soft step"),
+    q("s", "penetration", "s = -penetration", "the contact's separation at the step's start (negative: penetrating); a contact still apart asks only s/h", "m", "soft step"),
+    q("v_n", "relative_velocity", "", "the normal velocity before the solve (negative: closing)", "m/s", "soft step"),
+    q("m_n", "normal_mass", "m_n = 1/(w₁ + w₂)", "the contact's effective mass along the normal", "kg", "soft step"),
+    q("μ", "friction", "", "the contact's friction coefficient", "", "soft step"),
+    q("e", "restitution", "", "the contact's restitution coefficient (as applied)", "", "both"),
+    q("P_warm", "warm_impulse", "", "the normal impulse warm starting begins with (last step's)", "N·s", "soft step"),
+    q("P_n", "normal_impulse", "", "the accumulated normal impulse (after a substep, or stored at the end)", "N·s", "soft step"),
+    q("P_t", "tangent_impulse", "", "the accumulated friction impulse along the two tangents", "N·s", "soft step"),
+    q("s_k", "separation", "", "the separation after substep k", "m", "soft step"),
+    q("α", "compliance", "", "the contact's compliance, the inverse of its stiffness (0: rigid)", "m/N", "XPBD"),
+    q("α̃", "alpha_tilde", "α̃ = α/h²", "the compliance per substep", "kg⁻¹", "XPBD"),
+    q("C", "c", "", "the contact constraint: the separation along n (negative: penetrating)", "m", "XPBD"),
+    q("w", "w", "w = w₁ + w₂, wᵢ = 1/mᵢ + (rᵢ × n)ᵀ Iᵢ⁻¹ (rᵢ × n)", "the generalized inverse mass along n", "kg⁻¹", "XPBD"),
+    q("λ_n", "lambda", "λ_n += Δλ_n", "the normal multiplier accumulated in the substep (|f_n| = λ_n/h²)", "kg·m", "XPBD"),
+    q("Δλ_n", "delta_lambda", "Δλ_n = (-C - α̃λ_n)/(w + α̃)", "the position iteration's change of λ_n", "kg·m", "XPBD"),
+    q("λ_t", "lambda_t", "", "the tangential multiplier static friction asks for", "kg·m", "XPBD"),
+    q("λ_t,max", "lambda_t_max", "μ_s λ_n", "the most static friction may hold", "kg·m", "XPBD"),
+    q("sticks", "sticks", "λ_t ≤ μ_s λ_n", "whether static friction held", "", "XPBD"),
+    q("ṽ_n", "vn_before", "", "the normal velocity before the substep's projection", "m/s", "XPBD"),
+    q("v_n′", "vn", "", "the normal velocity after the projection (velocities from positions)", "m/s", "XPBD"),
+    q("|v_t|", "slip", "", "the sliding speed the velocity pass starts from", "m/s", "XPBD"),
+    q("Δv_t", "friction_dv", "min(μ_d λ_n w / h, |v_t|)", "the speed dynamic friction removes (corrected formula; the printed one drops w, see `check`)", "m/s", "XPBD"),
+    q("Δv_n", "restitution_dv", "Δv_n = max(-e ṽ_n, 0) - v_n′", "the restitution's change of the normal velocity (e = 0 when |ṽ_n| ≤ 2|g|h)", "m/s", "XPBD"),
+];
+
+/// The solver quantity whose JSON key is `key`.
+pub fn solver_symbol_by_key(key: &str) -> Option<&'static SolverSymbol> {
+    SOLVER_GLOSSARY
+        .iter()
+        .find(|s| !s.key.is_empty() && s.key == key)
+}
+
 /// The symbols whose name appears in `text` (a formula, a note), each once,
 /// in glossary order. Body subscripts ₁ ₂ match the glossary's ᵢ.
 pub fn symbols_in(text: &str) -> Vec<&'static Symbol> {

@@ -29,6 +29,7 @@ mod scene;
 mod stage_names;
 pub mod step;
 pub mod stop;
+pub mod substeps;
 pub mod symbols;
 pub mod toi;
 mod worked;

@@ -28,6 +28,10 @@ pub struct StepTrace {
     /// A time step's: per contact, the normal from the previous frame
     /// (t − Δt) where it penetrates and its pair was apart then.
     pub previous_normals: Vec<Option<[f64; 3]>>,
+    /// Under the soft step or XPBD: the step's own record of its substeps
+    /// (the resolver phases above are the lecture's, not what moved the
+    /// bodies).
+    pub substeps: Option<super::substeps::SubstepsRecord>,
     /// Resolver bodies before each position iteration; before each velocity
     /// iteration and, last, after both phases.
     bodies: [Vec<Vec<ResolverBody<f64>>>; 2],
@@ -61,6 +65,7 @@ impl StepTrace {
             resolver,
             tables,
             previous_normals: Vec::new(),
+            substeps: None,
             bodies,
         }
     }
@@ -390,14 +395,23 @@ pub fn describe_next(sim: &mut Simulation<f64>, names: &Names) -> Result<Describ
 
 /// Advances `sim` one step and records its resolution; `names` holds the
 /// lesson's names and its bodies' (contacts are labelled from the step's).
+/// Under the soft step or XPBD it keeps the step's own record of its substeps.
 pub fn record_next(sim: &mut Simulation<f64>, names: &Names) -> Result<StepTrace, BlowUp> {
-    let (world, prepared, names, _) = grab_next(sim, names)?;
+    let substepped = super::substeps::ask(sim);
+    let grabbed = grab_next(sim, names);
+    let substeps = if substepped {
+        super::substeps::take(sim)
+    } else {
+        None
+    };
+    let (world, prepared, names, _) = grabbed?;
     let params = sim.params.resolver;
     let previous_normals = (world.contacts.iter())
         .map(|k| previous_normal(&world, sim.previous_poses(), k).map(Into::into))
         .collect();
     Ok(StepTrace {
         previous_normals,
+        substeps,
         ..StepTrace::of_world(
             world,
             prepared,

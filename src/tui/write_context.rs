@@ -49,7 +49,8 @@ impl Context {
             .and(app.resolver.as_ref())
             .map(|r| (r.trace.time, r.trace.step));
         let stop = app.resolver.as_ref().map(|r| {
-            let table = &r.trace.tables[r.stop];
+            // (Under the soft step or XPBD the stop is a substep: the first table.)
+            let table = &r.trace.tables[r.stop.min(r.trace.tables.len() - 1)];
             let (name, used) = match table.stop.phase {
                 Phase::Position => ("position", r.trace.resolver.position.iterations_used),
                 Phase::Velocity => ("velocity", r.trace.resolver.velocity.iterations_used),
@@ -59,7 +60,7 @@ impl Context {
         let taken = app
             .resolver
             .as_ref()
-            .is_some_and(|r| r.trace.tables[r.stop].next == Some(app.contact));
+            .is_some_and(|r| r.trace.tables.get(r.stop).and_then(|t| t.next) == Some(app.contact));
         Context {
             id: lesson.id.clone(),
             arg,

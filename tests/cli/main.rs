@@ -34,3 +34,4 @@ mod study;
 mod study_broad;
 mod substepped;
 mod tunnelled;
+mod xpbd_erratum;

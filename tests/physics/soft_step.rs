@@ -135,3 +135,31 @@ fn the_traced_coefficients_are_those_of_f_zeta_and_h() {
     let s = Softness::new(30.0, 10.0, h);
     assert_eq!(s.bias_rate, trace.contacts[0].bias_rate);
 }
+
+/// The verdict matrix's own slender box (`study --verdicts`, scene
+/// `slender-box`: its scene text, not a copy), under the soft step with its
+/// default knobs: still (|ω| < 0.01 rad/s at every step after 1 s) and not
+/// sunk, over the matrix's 2 s.
+#[test]
+fn the_verdict_matrix_slender_box_stays_still_under_the_soft_step() {
+    use contact_lab::study::verdicts::{criteria, scenes, Size};
+    let text = scenes::slender(Size::Full, 2.0);
+    let lesson = parse("verdict-slender", &text).expect("the matrix's scene parses");
+    let mut params = lesson.sim_params().expect("a scene");
+    assert!(!params.sleep.enabled, "the matrix runs it awake");
+    params.resolver.solver = Solver::SoftStep;
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = Simulation::new(world, params, lesson.simulation.unwrap().materials);
+    let y0 = sim.world.bodies[0].state.position.y;
+    let mut w = 0.0f64;
+    while sim.time < 2.0 - 1e-9 {
+        sim.advance().expect("no blow-up");
+        if sim.time > criteria::STILL_FROM + 1e-9 {
+            w = w.max(sim.world.bodies[0].state.angular_velocity.norm());
+        }
+    }
+    assert!(w < 0.01, "rocking: |ω| up to {w} rad/s after 1 s");
+    let y = sim.world.bodies[0].state.position.y;
+    assert!((y - y0).abs() < 0.01, "moved from {y0} to {y}");
+}

@@ -31,6 +31,7 @@ mod previous_frame;
 mod resolve_snapshots;
 mod scene_snapshots;
 mod solve_snapshots;
+mod solver_glossary;
 mod trace_step;
 mod verdict_labels;
 mod verdict_matrix;

@@ -22,6 +22,7 @@ mod tui_lesson_picker;
 mod tui_reading;
 mod tui_router;
 mod tui_scenes;
+mod tui_substeps;
 mod tui_teaching;
 mod tui_terminal;
 mod tui_write_context;

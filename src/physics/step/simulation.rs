@@ -103,6 +103,9 @@ pub struct Simulation<T: Real> {
     /// the next step when one is asked for (simulation/soft.rs).
     soft: super::soft::SoftSolver<T>,
     pub soft_trace: Option<super::soft::SoftTrace>,
+    /// XPBD's record of the next step's substeps when one is asked for
+    /// (emptied and filled by the step; simulation/xpbd.rs).
+    pub xpbd_trace: Option<Vec<super::xpbd::SubstepRecord>>,
     /// XPBD's own switches (`solver = "xpbd"`; the erratum's experiment).
     pub xpbd: super::xpbd::XpbdOptions,
 }
@@ -145,6 +148,7 @@ impl<T: Real> Simulation<T> {
             edited: Vec::new(),
             soft: Default::default(),
             soft_trace: None,
+            xpbd_trace: None,
             xpbd: Default::default(),
         };
         sim.world.contacts.clear();

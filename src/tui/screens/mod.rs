@@ -20,6 +20,7 @@ mod picture;
 mod resolver;
 mod resolver_lcp;
 mod resolver_nav;
+pub mod resolver_substeps;
 mod run;
 mod run_nav;
 

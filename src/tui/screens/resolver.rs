@@ -30,6 +30,9 @@ impl View for ResolverView {
     }
 
     fn bar(&self) -> &'static [(&'static str, &'static str)] {
+        if self.trace.substeps.is_some() {
+            return super::resolver_substeps::BAR;
+        }
         &[
             ("←→", "iteration"),
             ("⇥", "contact"),
@@ -50,6 +53,10 @@ impl View for ResolverView {
 }
 
 fn render(app: &App, r: &ResolverView, area: Rect, buf: &mut Buffer) {
+    // A step of the soft step or XPBD: its own record, substep by substep.
+    if let Some(rec) = &r.trace.substeps {
+        return super::resolver_substeps::render(app, r, rec, area, buf);
+    }
     let left_w = (area.width * 9 / 20).max(20);
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_w), Constraint::Fill(1)]).areas(area);

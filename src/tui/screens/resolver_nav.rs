@@ -45,6 +45,9 @@ impl App {
 impl ResolverView {
     /// A key of the resolver's table (the router has taken the shared ones).
     pub(crate) fn key(&mut self, action: Key) -> Outcome {
+        if self.trace.substeps.is_some() {
+            return super::resolver_substeps::key(self, action);
+        }
         let r = self;
         if r.lcp_key(action) {
             return Outcome::Done;
@@ -81,6 +84,9 @@ impl ResolverView {
     pub(crate) fn crumb(&self, from_detection: bool) -> String {
         if from_detection {
             return format!("step {}'s resolver", self.trace.step);
+        }
+        if let Some(rec) = &self.trace.substeps {
+            return super::resolver_substeps::crumb(self, rec);
         }
         if let Some(lcp) = self.lcp_crumb() {
             return lcp;

@@ -25,9 +25,12 @@ impl<T: Real> Simulation<T> {
             position_epsilon: p.resolver.position_epsilon,
             velocity_epsilon: p.resolver.velocity_epsilon,
         };
-        // (A traced step's substeps are recorded by xpbd::step when asked;
-        // no screen reads them yet.)
-        let [position, velocity] = xpbd::step(&mut self.world, &input, None);
+        // A traced step's substeps (the TUI's resolver screen reads them).
+        if let Some(r) = self.xpbd_trace.as_mut() {
+            r.clear();
+        }
+        let record = self.xpbd_trace.as_mut();
+        let [position, velocity] = xpbd::step(&mut self.world, &input, record);
         if enabled {
             wake_sleep::wake_changed(&mut self.world, &mut self.sleep, p.sleep.epsilon, events);
         }
