@@ -111,6 +111,35 @@ impl TriMesh {
         }
     }
 
+    /// Distance from a body-frame point to the nearest triangle, negative
+    /// behind it (inside a closed mesh; under an open one). The side is the
+    /// nearest triangle's, by the direction from its closest point (its
+    /// face normal when the point is on it); at a shared edge or corner the
+    /// triangle whose plane is farthest from the point decides.
+    pub fn signed_distance(&self, p: &Vector3<f64>) -> f64 {
+        let mut best = (f64::INFINITY, 1.0, f64::NEG_INFINITY);
+        for t in 0..self.triangles.len() {
+            let corners = self.corners(t);
+            let (q, _) = triangle::closest_point(p, &corners);
+            let d = (p - q).norm();
+            let plane = (p - corners[0]).dot(&self.normal(t));
+            let closer = d < best.0 * (1.0 - 1e-12);
+            let tie = !closer && d <= best.0 * (1.0 + 1e-12) && plane.abs() > best.2.abs();
+            if closer || tie {
+                best = (d, if plane < 0.0 { -1.0 } else { 1.0 }, plane);
+            }
+        }
+        best.0 * best.1
+    }
+
+    /// For a closed mesh, the distance from the body origin (its centroid)
+    /// in to the nearest triangle, when the origin is inside; `None` for an
+    /// open mesh or an origin outside the solid (an L-block's may be).
+    pub fn inner_radius(&self) -> Option<f64> {
+        let d = -self.signed_distance(&Vector3::zeros());
+        (self.closed && d > 0.0).then_some(d)
+    }
+
     /// Largest distance of a vertex from the body origin.
     pub fn bounding_radius(&self) -> f64 {
         self.vertices.iter().map(|v| v.norm()).fold(0.0, f64::max)
