@@ -29,6 +29,7 @@ mod kept_energy;
 mod lcp;
 mod lean_position;
 mod lean_prepare;
+mod mesh_contacts;
 mod models_and_options;
 mod previous_normal;
 mod properties;

@@ -6,9 +6,14 @@
 //! "raw"`). Each triangle within the tolerance gives its contacts: when its
 //! normal is the triangle's face normal, the shape's routine against the
 //! triangle's plane (a box's vertices, a cylinder's rim points, a sphere's
-//! lowest point…) keeping the points over the triangle; otherwise, or when
-//! none is over it, the narrow phase's one point, midway. Points two
-//! triangles share (on their seam) are kept once, the deepest.
+//! lowest point…) keeping the points over the triangle, and the triangle's
+//! corners inside the shape (each as deep as the shape reaches below it
+//! along the normal): the contact region's corners, as a manifold's; a
+//! triangle with neither touches only where its neighbours hold the
+//! points. Otherwise (an edge's or a corner's normal) the narrow phase's
+//! one point, midway. Points two triangles share (a seam, a corner) are
+//! kept once, the deepest; a pair that overlaps but kept no point keeps
+//! its deepest triangle's narrow-phase point.
 //!
 //! A mesh against a half-space: its vertices at or below the plane (the
 //! deepest points of any solid are among its vertices).
@@ -17,7 +22,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{c, narrow, ContactPoint, Feature, Options, Pose, Side};
 use crate::physics::detect::Convex;
-use crate::physics::mesh::query::mesh_convex;
+use crate::physics::mesh::query::{mesh_convex, TriangleTest};
 use crate::physics::mesh::TriMesh;
 use crate::physics::{to_f64, Real, Shape};
 
@@ -37,11 +42,8 @@ pub(super) fn convex_mesh<T: Real>(
     let q = mesh_convex(&convex, &pose_a, mesh, &pose_b, tol, fix);
     let start = out.len();
     let size = 1e-9 * (shape.bounding_radius().unwrap_or(1.0) + mesh.bounding_radius());
-    for test in q
-        .triangles
-        .iter()
-        .filter(|t| t.penetration > 0.0 || t.distance <= tol)
-    {
+    let touching = |t: &&TriangleTest| t.penetration > 0.0 || t.distance <= tol;
+    for test in q.triangles.iter().filter(touching) {
         let corners = mesh.corners(test.triangle).map(|v| pose_b.to_world(&v));
         let face = pose_b.rotation * mesh.normal(test.triangle);
         let feature = Feature::Triangle {
@@ -50,26 +52,26 @@ pub(super) fn convex_mesh<T: Real>(
         };
         let mut found = vec![];
         if test.normal.dot(&face) > 1.0 - 1e-9 {
-            // The shape against the triangle's plane, the points over it.
+            // The shape against the triangle's plane, the points over it,
+            // and the triangle's corners inside the shape.
             let plane = Shape::HalfSpace {
                 normal: face.into(),
             };
             let plane_pose = Pose::at(corners[0].map(c::<T>));
             narrow((shape, pa), (&plane, &plane_pose), options, &mut found);
             found.retain(|k| over(&to_f64_vec(&k.point), &corners, &face, size));
-        }
-        if found.is_empty() {
-            let penetration = if test.penetration > 0.0 {
-                test.penetration
-            } else {
-                -test.distance
-            };
-            found.push(ContactPoint {
-                point: ((test.point_a + test.point_b) * 0.5).map(c::<T>),
-                normal: test.normal.map(c::<T>),
-                penetration: c(penetration),
-                feature,
-            });
+            for corner in corners {
+                if let Some(depth) = depth_below(shape, &pose_a, &corner, &face) {
+                    found.push(ContactPoint {
+                        point: corner.map(c::<T>),
+                        normal: face.map(c::<T>),
+                        penetration: c(depth),
+                        feature,
+                    });
+                }
+            }
+        } else {
+            found.push(narrow_point(test, feature));
         }
         for mut k in found {
             k.feature = feature;
@@ -83,6 +85,54 @@ pub(super) fn convex_mesh<T: Real>(
             }
         }
     }
+    if out.len() == start {
+        let deepest = (q.triangles.iter().filter(touching))
+            .max_by(|x, y| (x.penetration - x.distance).total_cmp(&(y.penetration - y.distance)));
+        if let Some(test) = deepest {
+            let feature = Feature::Triangle {
+                mesh: Side::B,
+                triangle: test.triangle,
+            };
+            out.push(narrow_point(test, feature));
+        }
+    }
+}
+
+/// A triangle's narrow-phase contact: midway between its closest (or
+/// deepest) points, along its normal (corrected or raw).
+fn narrow_point<T: Real>(test: &TriangleTest, feature: Feature) -> ContactPoint<T> {
+    let penetration = if test.penetration > 0.0 {
+        test.penetration
+    } else {
+        -test.distance
+    };
+    ContactPoint {
+        point: ((test.point_a + test.point_b) * 0.5).map(c::<T>),
+        normal: test.normal.map(c::<T>),
+        penetration: c(penetration),
+        feature,
+    }
+}
+
+/// How far the shape reaches below the world point `p` along `-n` (the
+/// distance it must move along `n` for `p` to leave it), when `p` is inside
+/// it: bisection on the shape's signed distance down the ray.
+fn depth_below(shape: &Shape, pose: &Pose<f64>, p: &Vector3<f64>, n: &Vector3<f64>) -> Option<f64> {
+    let inside = |q: &Vector3<f64>| shape.surface_distance(&pose.to_local(q)) < 0.0;
+    if !inside(p) {
+        return None;
+    }
+    let lowest = pose.to_world(&shape.support(&(pose.rotation.transpose() * -n))?);
+    let (mut lo, mut hi) = (0.0, (p - lowest).dot(n).max(0.0));
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if inside(&(p - n * mid)) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (hi > 0.0).then_some(hi)
 }
 
 /// Whether `p` lies over the triangle (its projection on the plane inside
