@@ -30,6 +30,7 @@ mod lcp;
 mod lean_position;
 mod lean_prepare;
 mod mesh_contacts;
+mod mesh_scenes;
 mod models_and_options;
 mod previous_normal;
 mod properties;
