@@ -68,6 +68,8 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/ball-floor-fast.toml",
     "scenes/mesh-floor-slide.toml",
     "scenes/mesh-bowl-ball.toml",
+    "scenes/mesh-ramp-ball.toml",
+    "scenes/mesh-l-block.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

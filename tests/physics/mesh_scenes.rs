@@ -2,7 +2,9 @@
 //! spherical bowl swings with the rolling pendulum's period, a box sliding
 //! across a triangulated floor neither bumps nor lifts (and stops where
 //! Coulomb says, as on a half-space) with the internal edges corrected, and with them raw the
-//! ghost collisions it meets are measured and printed.
+//! ghost collisions it meets are measured and printed; a ball rolls down a
+//! triangulated ramp at 5/7 g sin θ; an L-shaped closed mesh dropped on
+//! the floor comes to rest on a face.
 
 use contact_lab::lesson::Lesson;
 use contact_lab::physics::params::InternalEdges;
@@ -89,4 +91,46 @@ fn a_box_slides_across_a_triangulated_floor_without_a_bump_when_edges_are_correc
         raw_speed > 10.0 * speed && raw_stop < 0.8 * coulomb,
         "{raw_speed} {raw_stop}"
     );
+}
+
+#[test]
+fn a_ball_rolls_down_a_triangulated_ramp_at_five_sevenths_of_g_sin_theta() {
+    let mut sim = simulation("mesh-ramp-ball");
+    let start = sim.world.bodies[0].state.position;
+    for _ in 0..200 {
+        sim.advance().expect("no blow-up");
+    }
+    let s = &sim.world.bodies[0].state;
+    let expected = 5.0 / 7.0 * 9.81 * 20f64.to_radians().sin();
+    // From rest: s = a t² / 2 at t = 1 s.
+    let a = 2.0 * (s.position - start).norm();
+    let (v, spin) = (s.velocity.norm(), s.angular_velocity.norm() * 0.2);
+    println!("ramp: a = {a:.4} m/s² against 5/7 g sin 20° = {expected:.4} ({:+.2} %); v {v:.4} m/s, ω r {spin:.4} m/s", 100.0 * (a / expected - 1.0));
+    assert!(
+        (a / expected - 1.0).abs() < 0.02,
+        "a = {a}, expected {expected}"
+    );
+    assert!((spin / v - 1.0).abs() < 0.01, "rolling: v {v}, ω r {spin}");
+}
+
+#[test]
+fn an_l_block_dropped_on_the_floor_comes_to_rest_on_a_face() {
+    let mut sim = simulation("mesh-l-block");
+    for _ in 0..300 {
+        sim.advance().expect("no blow-up");
+    }
+    assert!(!sim.is_awake(0), "at rest and asleep after 5 s");
+    let body = &sim.world.bodies[0];
+    let Some(contact_lab::physics::Shape::Mesh(mesh)) = &body.shape else {
+        panic!()
+    };
+    let rotation = body.state.rotation();
+    let heights: Vec<f64> = (mesh.vertices().iter())
+        .map(|v| (body.state.position + rotation * v).y)
+        .collect();
+    let low = heights.iter().copied().fold(f64::INFINITY, f64::min);
+    let on_floor = heights.iter().filter(|h| **h <= low + 1e-3).count();
+    println!("L-block: lowest vertex at {low:.4} m, {on_floor} vertices within 1 mm of it");
+    assert!((-0.01..=0.005).contains(&low), "lowest vertex {low} m");
+    assert!(on_floor >= 4, "resting on a face: {heights:?}");
 }

@@ -147,6 +147,9 @@ fn pair(out: &mut Vec<Block>, p: &PairTrace, f: &Fmt) {
     for n in &p.notes {
         out.push(Block::Para(format!("Note: {n}.")));
     }
+    if let Some(m) = &p.mid_phase {
+        super::mesh::blocks(out, m, f, scale);
+    }
     if let Some(g) = &p.gjk {
         gjk(out, g, f, scale);
     }
@@ -315,18 +318,27 @@ fn contacts(out: &mut Vec<Block>, c: &[ContactLine], f: &Fmt, scale: f64) {
         out.push(Block::Para("none".into()));
         return;
     }
+    let mesh = c.iter().any(|c| c.triangle.is_some());
+    let mut head = ["point", "normal", "penetration"]
+        .map(String::from)
+        .to_vec();
+    if mesh {
+        head.push("triangle".into());
+    }
     out.push(Block::Table {
-        head: ["point", "normal", "penetration"]
-            .map(String::from)
-            .to_vec(),
+        head,
         rows: c
             .iter()
             .map(|c| {
-                vec![
+                let mut row = vec![
                     v(f, &c.point),
                     v(f, &c.normal),
                     f.num_at(c.penetration, scale),
-                ]
+                ];
+                if mesh {
+                    row.push(c.triangle.map_or("-".into(), |t| t.to_string()));
+                }
+                row
             })
             .collect(),
     });
