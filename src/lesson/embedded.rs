@@ -69,7 +69,6 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/mesh-floor-slide.toml",
     "scenes/mesh-bowl-ball.toml",
     "scenes/mesh-ramp-ball.toml",
-    "scenes/mesh-l-block.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

@@ -85,6 +85,9 @@ fn open_edge(mesh: &TriMesh) -> Option<(usize, usize)> {
     })
 }
 
+/// OBJ files larger than this are refused unread.
+const MAX_OBJ_BYTES: usize = 64 << 20;
+
 /// The OBJ file's path as shown, and its text. An embedded lesson has no
 /// folder: its meshes are written inline.
 fn read_obj(name: &str, origin: &str) -> Result<(String, String), String> {
@@ -98,7 +101,7 @@ fn read_obj(name: &str, origin: &str) -> Result<(String, String), String> {
         .unwrap_or(std::path::Path::new(""));
     let path = dir.join(name);
     let shown = path.display().to_string();
-    let bytes = super::read::read_regular(&path, super::validate::MAX_BYTES)
+    let bytes = super::read::read_regular(&path, MAX_OBJ_BYTES)
         .map_err(|_| format!("the mesh file '{shown}' cannot be read"))?;
     let text = String::from_utf8(bytes).map_err(|e| {
         format!(

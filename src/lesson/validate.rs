@@ -223,8 +223,8 @@ impl Validator {
             self.err(0..0, "the lesson has no [[body]]");
         }
         let (all, mut simulation) = self.knobs(&raw);
-        if simulation.is_some() {
-            self.mesh_pairs(&raw, &bodies);
+        if let Some(scene) = &simulation {
+            self.mesh_pairs(&raw, &bodies, scene);
         }
         self.body_materials(&raw, simulation.as_mut());
         if raw.contacts.is_empty() && simulation.is_none() {

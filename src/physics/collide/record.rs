@@ -10,13 +10,13 @@
 use nalgebra::Vector3;
 
 use super::broad::Aabb;
+use super::mesh_query::{mesh_convex, MeshQuery};
 use super::partition::{BroadCounts, PairFinder};
 use super::{collide_with, ContactPoint, NarrowPhase, Options};
 use crate::physics::detect::epa::EpaRecord;
 use crate::physics::detect::{
     query, Convex, EpaRecorder, GjkIteration, GjkRecorder, Query, QueryOptions, Support,
 };
-use crate::physics::mesh::query::{mesh_convex, MeshQuery};
 use crate::physics::pose::Pose;
 use crate::physics::{Body, Shape};
 

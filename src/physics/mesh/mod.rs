@@ -1,15 +1,16 @@
 //! Triangle meshes: vertices and triangles in the body frame, checked on
 //! construction (no degenerate triangle, every edge shared by at most two
-//! triangles that wind it in opposite directions), their mass properties
-//! from the surface ([`mass`]), an AABB tree over the triangles ([`bvh`]),
-//! closest points on a triangle ([`triangle`]), the mid phase's query
-//! against a convex shape ([`query`]), and the Wavefront OBJ reader ([`obj`]).
+//! triangles that wind it in opposite directions), an AABB tree over the
+//! triangles ([`bvh`]), closest points on a triangle ([`triangle`]), the
+//! internal-edge correction ([`edges`]) and the Wavefront OBJ reader
+//! ([`obj`]). This folder imports nothing else of `physics` (a `Shape`
+//! holds a mesh): the mass properties from the surface are
+//! `physics::mesh_mass`, the mid phase against a convex shape (GJK/EPA)
+//! `physics::collide::mesh_query`.
 
 pub mod bvh;
 pub mod edges;
-pub mod mass;
 pub mod obj;
-pub mod query;
 pub mod topology;
 pub mod triangle;
 
@@ -17,8 +18,6 @@ use nalgebra::Vector3;
 
 pub use bvh::Bvh;
 pub use topology::MeshError;
-
-use crate::physics::hull::MassProperties;
 
 /// A triangle mesh in the body frame, with its tree and neighbours.
 #[derive(Debug, Clone, PartialEq)]
@@ -79,15 +78,6 @@ impl TriMesh {
     pub fn normal(&self, t: usize) -> Vector3<f64> {
         let [a, b, c] = self.corners(t);
         (b - a).cross(&(c - a)).normalize()
-    }
-
-    /// The solid's volume, centroid and unit-density inertia (closed meshes
-    /// only: `None` for an open one or one enclosing no volume).
-    pub fn mass_properties(&self) -> Option<MassProperties> {
-        if !self.closed {
-            return None;
-        }
-        mass::mass_properties(&self.vertices, &self.triangles)
     }
 
     /// The same mesh moved by `offset` (the lesson re-centres a movable

@@ -7,7 +7,6 @@ mod blocks;
 mod json;
 mod layout;
 pub(crate) mod legend;
-mod mesh;
 pub mod minkowski;
 pub mod steps;
 pub(crate) mod svg;
