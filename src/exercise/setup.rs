@@ -373,6 +373,17 @@ fn shape(s: &Shape) -> String {
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
+        Shape::Mesh(mesh) => format!(
+            "{{ mesh = {{ vertices = [{}], triangles = [{}] }} }}",
+            (mesh.vertices().iter())
+                .map(|v| list(v.as_slice()))
+                .collect::<Vec<_>>()
+                .join(", "),
+            (mesh.triangles().iter())
+                .map(|t| format!("[{}, {}, {}]", t[0], t[1], t[2]))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
         Shape::HalfSpace { .. } => "\"half_space\"".into(),
     }
 }

@@ -83,6 +83,11 @@ fn shape(s: &Option<Shape>) -> String {
             format!("capsule, r = {radius} m, h = {height} m")
         }
         Some(Shape::Hull(hull)) => format!("convex hull of {} vertices", hull.vertices().len()),
+        Some(Shape::Mesh(mesh)) => format!(
+            "{} triangle mesh of {} triangles",
+            if mesh.is_closed() { "closed" } else { "open" },
+            mesh.triangles().len()
+        ),
         Some(Shape::HalfSpace { .. }) => "half-space".into(),
         None => "–".into(),
     }

@@ -89,4 +89,5 @@ pub static KNOBS: &[Knob] = &[
     SLEEP_MODE,
     ISLAND_TIME,
     BROAD_PHASE,
+    INTERNAL_EDGES,
 ];

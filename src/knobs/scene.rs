@@ -6,7 +6,7 @@ use super::knob::{choice, count, flag, number, vector};
 use super::knob::{Cli, Kind, Knob, Level, Needs, Offered, Range, Table, Value, MAX_STEPS};
 use crate::physics::detect::ToiMethod;
 use crate::physics::params::{
-    BoxBoxMode, BroadPhaseMethod, Ccd, NarrowPhase, NormalFrom, Rollback, SleepMode,
+    BoxBoxMode, BroadPhaseMethod, Ccd, InternalEdges, NarrowPhase, NormalFrom, Rollback, SleepMode,
 };
 
 const RUN_ONLY: &str = "a run's setting: change it on the run (simulate), not on one contact";
@@ -62,6 +62,13 @@ choices!(BroadPhaseMethod {
         "a uniform grid (cell: the median box's largest side): each box hashed into the cells it overlaps, each pair tested once in the first cell both share";
     BroadPhaseMethod::Bvh => "bvh":
         "a dynamic bounding-volume tree of fat boxes (refitted as bodies move), each body's box queried down it";
+});
+
+choices!(InternalEdges {
+    InternalEdges::Corrected => "corrected":
+        "a mesh's normal on an edge or corner shared with another triangle turned to what the neighbouring faces allow: no bump at a seam";
+    InternalEdges::Raw => "raw":
+        "each triangle's own normal, as if it were alone: a body sliding across a seam may bump (a ghost collision)";
 });
 
 choices!(SleepMode {
@@ -417,6 +424,28 @@ pub const ISLAND_TIME: Knob = Knob {
     needs: Needs::Always,
     get: |s| Value::Number(s.scene.sleep.island_time),
     set: |s, v| s.scene.sleep.island_time = number(v),
+};
+
+/// `internal_edges`.
+pub const INTERNAL_EDGES: Knob = Knob {
+    name: "internal_edges",
+    old_names: &[],
+    level: Level::World,
+    tables: &[Table::World],
+    doc: "A mesh's contact normal on an edge or corner two triangles share: corrected from the neighbouring triangles (a body slides across the seam of a flat triangulated floor without a bump) or raw, each triangle alone (the ghost collision engines correct).",
+    default: "corrected",
+    kind: Kind::Choice { choices: InternalEdges::SPELLINGS },
+    cli: Cli::Option,
+    edit: Offered::Yes,
+    study: Offered::Yes,
+    grid: &[],
+    needs: Needs::Always,
+    get: |s| Value::Choice(s.scene.internal_edges.name()),
+    set: |s, v| {
+        if let Some(m) = InternalEdges::from_name(choice(v)) {
+            s.scene.internal_edges = m;
+        }
+    },
 };
 
 /// `broad_phase`.

@@ -66,6 +66,9 @@ pub const SCENES: &[(&str, &str)] = embed![
     "scenes/tetra-on-floor.toml",
     "scenes/capsule-on-slope.toml",
     "scenes/ball-floor-fast.toml",
+    "scenes/mesh-floor-slide.toml",
+    "scenes/mesh-bowl-ball.toml",
+    "scenes/mesh-ramp-ball.toml",
 ];
 
 /// Ids of the embedded scenes, in list order.

@@ -5,6 +5,7 @@ pub mod characters;
 pub mod edit;
 pub mod embedded;
 pub mod knob_value;
+pub mod mesh;
 pub mod overflow;
 pub mod printed;
 pub mod ranges;

@@ -88,7 +88,8 @@ pub struct RawBody {
 /// `shape = { box = [x, y, z] }`, `{ sphere = r }`, `{ hollow_sphere = r }`,
 /// `{ cylinder = { radius = r, height = h } }` (axis along body y),
 /// `{ capsule = { radius = r, height = h } }`, `{ convex = [[x, y, z], …] }`
-/// (the hull of the points, body frame), `"half_space"`.
+/// (the hull of the points, body frame), `{ mesh = … }` ([`RawMesh`]),
+/// `"half_space"`.
 #[derive(Debug, Clone, Deserialize, PartialEq)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum RawShape {
@@ -106,7 +107,21 @@ pub enum RawShape {
     },
     #[serde(deserialize_with = "exact::array")]
     Convex(Vec<[f64; 3]>),
+    /// `{ mesh = { vertices = [[x, y, z], …], triangles = [[i, j, k], …] } }`
+    /// or `{ mesh = "file.obj" }` (relative to the lesson file).
+    Mesh(RawMesh),
     HalfSpace,
+}
+
+/// A mesh written inline, or the path of an OBJ file.
+#[derive(Debug, Clone, Deserialize, PartialEq)]
+#[serde(untagged)]
+pub enum RawMesh {
+    File(String),
+    Inline {
+        vertices: Vec<[f64; 3]>,
+        triangles: Vec<[usize; 3]>,
+    },
 }
 
 #[derive(Debug, Deserialize)]

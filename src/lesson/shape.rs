@@ -33,6 +33,9 @@ pub fn from_raw(raw: &RawShape) -> Result<(Shape, Vector3<f64>), HullError> {
             let (hull, centroid) = centred_hull(points)?;
             return Ok((Shape::Hull(std::sync::Arc::new(hull)), centroid));
         }
+        // A mesh is read by `lesson::mesh` (its file, the body's mobility)
+        // before this is called; here it has no points.
+        RawShape::Mesh(_) => return Err(HullError::TooFewPoints { count: 0 }),
         RawShape::HalfSpace => Shape::HalfSpace {
             normal: [0.0, 1.0, 0.0],
         },
@@ -117,6 +120,19 @@ pub fn describe(shape: &Shape) -> String {
             hull.vertices().len(),
             hull.faces().len(),
             e(hull.mass_properties().volume)
+        ),
+        Shape::Mesh(ref mesh) => format!(
+            "{} mesh of {} triangles, {} vertices{}",
+            if mesh.is_closed() { "closed" } else { "open" },
+            mesh.triangles().len(),
+            mesh.vertices().len(),
+            match mesh.mass_properties() {
+                Some(p) => format!(
+                    ", volume {} (I from the surface, divergence theorem)",
+                    e(p.volume)
+                ),
+                None => String::new(),
+            }
         ),
         Shape::HalfSpace { .. } => "half-space".to_string(),
     }

@@ -84,7 +84,10 @@ pub fn parse(origin: &str, text: &str) -> Result<Lesson, LessonError> {
     }
     let raw: RawLesson =
         toml::from_str(text).map_err(|e| invalid(origin, text, vec![syntax::note(&e, text)]))?;
-    let mut v = Validator::default();
+    let mut v = Validator {
+        origin: origin.to_string(),
+        ..Validator::default()
+    };
     let lesson = v.lesson(raw, origin);
     if v.errors.is_empty() {
         // What the stages compute from valid inputs must fit in f64 too.
@@ -120,6 +123,9 @@ struct Validator {
     /// is said, since the table read last silently wins.
     /// The key as the file spells it comes third.
     scene_knobs: Vec<(&'static str, crate::knobs::Table, String)>,
+    /// The lesson's origin (its path, or `… (embedded)`): where a mesh's
+    /// OBJ file is looked for.
+    origin: String,
 }
 
 fn v3(a: [f64; 3]) -> Vector3<f64> {
@@ -217,6 +223,9 @@ impl Validator {
             self.err(0..0, "the lesson has no [[body]]");
         }
         let (all, mut simulation) = self.knobs(&raw);
+        if let Some(scene) = &simulation {
+            self.mesh_pairs(&raw, &bodies, scene);
+        }
         self.body_materials(&raw, simulation.as_mut());
         if raw.contacts.is_empty() && simulation.is_none() {
             self.err(

@@ -20,6 +20,7 @@ pub mod hull;
 pub mod hull_faces;
 pub mod lcp;
 pub mod mesh;
+pub mod mesh_mass;
 pub mod params;
 pub mod pose;
 pub mod resolver;

@@ -9,6 +9,7 @@ use std::sync::Arc;
 use nalgebra::{Matrix3, Vector3};
 
 use crate::physics::hull::ConvexHull;
+use crate::physics::mesh::TriMesh;
 
 /// The shape of a body, in the body frame.
 #[derive(Debug, Clone, PartialEq)]
@@ -28,6 +29,10 @@ pub enum Shape {
     /// The convex hull of points given in the body frame, re-centred on the
     /// hull's centroid (the body's centre of mass) when the lesson is loaded.
     Hull(Arc<ConvexHull>),
+    /// A triangle mesh in the body frame: open (terrain, a bowl) only when
+    /// immovable; a movable one is closed and re-centred on its solid's
+    /// centroid when the lesson is loaded.
+    Mesh(Arc<TriMesh>),
     /// The plane through the body's position with unit world `normal`; the
     /// solid side is opposite the normal. Immovable bodies only.
     HalfSpace { normal: [f64; 3] },
@@ -79,6 +84,11 @@ impl Shape {
             }
             // Convex hull: the polyhedron's integrals, about its centroid.
             Shape::Hull(ref hull) => Some(hull.inertia(m)),
+            // Closed mesh: the solid's integrals by the divergence theorem;
+            // an open mesh has none (it may only be immovable).
+            Shape::Mesh(ref mesh) => mesh
+                .mass_properties()
+                .map(|p| p.unit_inertia * (m / p.volume)),
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -92,6 +102,7 @@ impl Shape {
                 vec![radius, height]
             }
             Shape::Hull(ref hull) => vec![hull.mass_properties().volume],
+            Shape::Mesh(ref mesh) => vec![mesh.bounding_radius()],
             Shape::HalfSpace { .. } => vec![],
         }
     }
@@ -114,6 +125,7 @@ impl Shape {
             Shape::Hull(ref hull) => {
                 Some(hull.vertices().iter().map(|v| v.norm()).fold(0.0, f64::max))
             }
+            Shape::Mesh(ref mesh) => Some(mesh.bounding_radius()),
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -164,6 +176,12 @@ impl Shape {
                 })
             }
             Shape::Hull(ref hull) => Some(hull.vertices()[hull.support_index(direction)]),
+            // A mesh's support is its hull's: the vertex farthest along d.
+            Shape::Mesh(ref mesh) => mesh
+                .vertices()
+                .iter()
+                .copied()
+                .max_by(|p, q| p.dot(direction).total_cmp(&q.dot(direction))),
             Shape::HalfSpace { .. } => None,
         }
     }
@@ -200,6 +218,10 @@ impl Shape {
                 .iter()
                 .map(|f| f.normal.dot(local) - f.offset)
                 .fold(f64::NEG_INFINITY, f64::max),
+            // Mesh: the distance to the nearest triangle, negative inside a
+            // closed mesh (by the nearest triangle's side; an open mesh's
+            // inside is behind its normals).
+            Shape::Mesh(ref mesh) => mesh.signed_distance(local),
             Shape::HalfSpace { normal } => local.dot(&Vector3::from(normal)),
         }
     }

@@ -42,6 +42,7 @@ fn options_of(sim: &Simulation<f64>) -> Options<f64> {
         tolerance: p.contact_margin,
         narrow_phase: p.narrow_phase,
         broad_phase: p.broad_phase,
+        internal_edges: p.internal_edges,
     }
 }
 

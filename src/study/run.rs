@@ -237,6 +237,7 @@ fn measure_in<T: Real>(
         tolerance: T::zero(),
         narrow_phase: sim.params.narrow_phase,
         broad_phase: sim.params.broad_phase,
+        internal_edges: sim.params.internal_edges,
     };
     let mut m = Measured {
         steps: n,

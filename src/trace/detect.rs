@@ -109,6 +109,8 @@ pub struct ContactLine {
     pub point: V3,
     pub normal: V3,
     pub penetration: f64,
+    /// The mesh triangle the contact is on, in a pair with a mesh.
+    pub triangle: Option<usize>,
 }
 
 /// One pair's detection.
@@ -132,6 +134,9 @@ pub struct PairTrace {
     /// (world coordinates), for the SVG.
     pub minkowski: Vec<V3>,
     pub notes: Vec<String>,
+    /// A pair with a mesh: its mid phase (the tree's traversal, the
+    /// candidate triangles and each one's narrow phase).
+    pub mid_phase: Option<super::detect_mesh::MidPhase>,
 }
 
 /// A scene's detection.
@@ -302,7 +307,13 @@ fn pair(cx: &Context, p: &PairRecord) -> PairTrace {
             iterations: p.epa.iter().map(epa_step).collect(),
         })
     });
-    if p.query.is_none() {
+    let mid_phase = p.mesh.as_ref().map(super::detect_mesh::mid_phase);
+    if let Some(m) = &mid_phase {
+        notes.push(match m.query {
+            Some(_) => "a mesh is not convex: its tree gives the candidate triangles, and each triangle (a convex shape) runs GJK/EPA against the other body".into(),
+            None => "a mesh against a half-space: the mesh's vertices at or below the plane".into(),
+        });
+    } else if p.query.is_none() {
         notes.push(
             "a half-space has no support mapping: the plane routine takes the other shape's deepest points"
                 .into(),
@@ -339,6 +350,7 @@ fn pair(cx: &Context, p: &PairRecord) -> PairTrace {
         method: match p.method {
             Method::Analytic => "analytic",
             Method::Gjk => "gjk",
+            Method::Mesh => "mesh",
         },
         gjk,
         epa,
@@ -346,6 +358,7 @@ fn pair(cx: &Context, p: &PairRecord) -> PairTrace {
         analytic: p.analytic.as_ref().map(|c| c.iter().map(contact).collect()),
         minkowski,
         notes,
+        mid_phase,
     }
 }
 
@@ -386,6 +399,10 @@ fn contact(c: &ContactPoint<f64>) -> ContactLine {
         point: v(&c.point),
         normal: v(&c.normal),
         penetration: c.penetration,
+        triangle: match c.feature {
+            crate::physics::collide::Feature::Triangle { triangle, .. } => Some(triangle),
+            _ => None,
+        },
     }
 }
 

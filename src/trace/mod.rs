@@ -15,6 +15,7 @@ pub mod blow_up;
 pub mod broad_search;
 pub mod contact;
 pub mod detect;
+pub mod detect_mesh;
 mod elided;
 pub mod glossary;
 pub mod movement;

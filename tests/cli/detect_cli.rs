@@ -146,6 +146,7 @@ fn step_contact(id: &str, a: usize, b: usize, gjk: bool) -> (f64, [f64; 3]) {
             p.narrow_phase
         },
         broad_phase: p.broad_phase,
+        internal_edges: p.internal_edges,
     };
     let mut out = vec![];
     ContactGenerator::new().generate_world(&world.bodies, &options, &mut out);

@@ -53,6 +53,8 @@ fn thickness(s: &Shape) -> f64 {
         Shape::Cylinder { radius, height } => (2.0 * radius).min(height),
         Shape::Capsule { radius, .. } => 2.0 * radius,
         Shape::Hull(ref hull) => 2.0 * hull.inner_radius(),
+        // An open mesh is a surface: no thickness to pass through.
+        Shape::Mesh(ref mesh) => mesh.inner_radius().map_or(0.0, |r| 2.0 * r),
         Shape::HalfSpace { .. } => f64::INFINITY,
     }
 }

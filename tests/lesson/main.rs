@@ -14,5 +14,6 @@ mod knob_twice;
 mod knobs;
 mod lecture_numbers;
 mod load_warnings;
+mod meshes;
 mod narrative_units;
 mod overflow_fields;

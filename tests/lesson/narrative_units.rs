@@ -40,8 +40,9 @@ const UNITS: [&str; 26] = [
 ];
 
 /// Words after a number that make it a count or a ratio.
-const COUNTS: [&str; 21] = [
+const COUNTS: [&str; 22] = [
     "contact",
+    "triangle",
     "iteration",
     "ball",
     "box",

@@ -30,6 +30,8 @@ mod kept_energy;
 mod lcp;
 mod lean_position;
 mod lean_prepare;
+mod mesh_contacts;
+mod mesh_scenes;
 mod models_and_options;
 mod pile_work;
 mod previous_normal;

@@ -1,7 +1,7 @@
 //! The shape matrix: every kind of movable shape (sphere, box, cylinder,
 //! capsule, convex hull) on every kind of lower body (half-space, box,
-//! cylinder, convex hull, sphere, capsule; the round ones large, so that
-//! their top is a place to rest), each resting, dropped from 1 m and sliding
+//! cylinder, convex hull, sphere, capsule, a triangulated floor; the round
+//! ones large, so that their top is a place to rest), each resting, dropped from 1 m and sliding
 //! at 2 m/s, under deepest-first and warm sequential impulses, with the
 //! default settings (sleep on; without sleep the deepest-first order leaves
 //! a resting body creeping, see `resting_convex.rs`). What every run must keep:
@@ -30,7 +30,15 @@ use nalgebra::Vector3;
 /// and the height of the centre (the position) above the top when resting.
 const UPPERS: [&str; 5] = ["sphere", "box", "cylinder", "capsule", "hull"];
 /// The lower bodies, immovable, their top at y = 0.
-const LOWERS: [&str; 6] = ["half_space", "box", "cylinder", "hull", "sphere", "capsule"];
+const LOWERS: [&str; 7] = [
+    "half_space",
+    "box",
+    "cylinder",
+    "hull",
+    "sphere",
+    "capsule",
+    "mesh",
+];
 
 /// Quarter turn about z: a body's y axis along world x.
 const LYING: &str = "[0.7071067811865476, 0, 0, 0.7071067811865476]";
@@ -109,6 +117,33 @@ fn lower(kind: &str, l: f64) -> String {
             "shape = {{ capsule = [{big}, {w}] }}\nposition = [0, {}, 0]\norientation = {LYING}",
             -big
         ),
+        // A triangulated floor: 4 × 4 squares of two triangles, its top y = 0.
+        "mesh" => {
+            let (n, s) = (4, w / 4.0);
+            let at = |i: usize, j: usize| i * (n + 1) + j;
+            let vertices: Vec<String> = (0..=n)
+                .flat_map(|i| (0..=n).map(move |j| (i, j)))
+                .map(|(i, j)| {
+                    format!(
+                        "[{}, 0, {}]",
+                        -w / 2.0 + i as f64 * s,
+                        -w / 2.0 + j as f64 * s
+                    )
+                })
+                .collect();
+            let triangles: Vec<String> = (0..n)
+                .flat_map(|i| (0..n).map(move |j| (i, j)))
+                .flat_map(|(i, j)| {
+                    let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                    [format!("[{a}, {d}, {c}]"), format!("[{a}, {c}, {b}]")]
+                })
+                .collect();
+            format!(
+                "shape = {{ mesh = {{ vertices = [{}], triangles = [{}] }} }}\nposition = [0, 0, 0]",
+                vertices.join(", "),
+                triangles.join(", ")
+            )
+        }
         _ => unreachable!("{kind}"),
     }
 }

@@ -35,6 +35,7 @@ fn the_printed_search_counts_are_the_steps_broad_phase_counts() {
                 tolerance: params.contact_margin,
                 narrow_phase: params.narrow_phase,
                 broad_phase: method,
+                internal_edges: params.internal_edges,
             };
             generator.generate_world(&sim.world.bodies, &options, &mut vec![]);
             let c = generator.broad_counts();

@@ -9,6 +9,7 @@ mod common;
 mod architecture_layout;
 mod check_causes;
 mod detect_broad;
+mod detect_mesh;
 mod detect_rows;
 mod detect_snapshots;
 mod docs;

@@ -13,7 +13,8 @@ impl Validator {
         let mass = self.rule(&format!("body '{name}'"), &raw.mass, super::rules::mass);
         let movable = mass.is_finite() && rules::mass(mass).is_ok();
         let errors_before = self.errors.len();
-        let (mut shape, centre_of_mass) = self.shape(&format!("body '{name}'"), &raw.shape);
+        let (mut shape, centre_of_mass) =
+            self.shape(&format!("body '{name}'"), &raw.shape, movable);
         self.half_space_normal(&name, raw, &mut shape);
         if let (Some(s), Some(span)) = (&shape, raw.shape.as_ref().map(|s| s.span())) {
             if s.dimensions()
@@ -203,10 +204,26 @@ impl Validator {
         &mut self,
         what: &str,
         raw: &Option<S<raw::RawShape>>,
+        movable: bool,
     ) -> (Option<Shape>, Vector3<f64>) {
         let Some(raw) = raw else {
             return (None, Vector3::zeros());
         };
+        if let raw::RawShape::Mesh(mesh) = raw.get_ref() {
+            return match crate::lesson::mesh::from_raw(mesh, &self.origin.clone(), movable) {
+                Ok((shape, offset, note)) => {
+                    if let Some(note) = note {
+                        self.warnings
+                            .push(Note::new(format!("{what}: {note}"), raw.span()));
+                    }
+                    (Some(shape), offset)
+                }
+                Err(e) => {
+                    self.err(raw.span(), format!("{what}: {e}"));
+                    (None, Vector3::zeros())
+                }
+            };
+        }
         match crate::lesson::shape::from_raw(raw.get_ref()) {
             Ok((shape, offset)) => {
                 if let (raw::RawShape::Convex(points), Shape::Hull(hull)) = (raw.get_ref(), &shape)
@@ -231,6 +248,62 @@ impl Validator {
                     format!("{what}: the convex hull is degenerate: {e}"),
                 );
                 (None, Vector3::zeros())
+            }
+        }
+    }
+
+    /// A scene whose step would meet two meshes, one of them movable, is
+    /// refused: mesh against mesh (triangle against triangle) makes no
+    /// contacts yet, and a body falling through another is no lesson.
+    /// Continuous detection and the previous frame's normal work on convex
+    /// shapes only: with a mesh in the scene, a warning says so.
+    pub(super) fn mesh_pairs(
+        &mut self,
+        raw: &RawLesson,
+        bodies: &[BodyDef],
+        scene: &crate::physics::params::SceneSettings,
+    ) {
+        let is_mesh = |b: &BodyDef| matches!(b.shape, Some(Shape::Mesh(_)));
+        let meshes: Vec<usize> = (0..bodies.len()).filter(|&i| is_mesh(&bodies[i])).collect();
+        let convex_only = [
+            (
+                scene.ccd != crate::physics::params::Ccd::None,
+                "continuous detection (ccd)",
+            ),
+            (
+                scene.normal_from == crate::physics::params::NormalFrom::Previous,
+                "normal_from = \"previous\"",
+            ),
+        ];
+        if let (Some(&i), Some((_, what))) = (meshes.first(), convex_only.iter().find(|c| c.0)) {
+            let span = raw.bodies[i]
+                .shape
+                .as_ref()
+                .map_or(raw.bodies[i].name.span(), |s| s.span());
+            self.warnings.push(Note::new(
+                format!(
+                    "body '{}' is a mesh: {what} works on convex shapes only, so a pair with a mesh is detected at each step's poses as without it",
+                    bodies[i].name
+                ),
+                span,
+            ));
+        }
+        for &i in &meshes {
+            let other = meshes
+                .iter()
+                .find(|&&j| j != i && (bodies[i].mass.is_finite() || bodies[j].mass.is_finite()));
+            if let (Some(&j), true) = (other, bodies[i].mass.is_finite()) {
+                let span = raw.bodies[i]
+                    .shape
+                    .as_ref()
+                    .map_or(raw.bodies[i].name.span(), |s| s.span());
+                self.err(
+                    span,
+                    format!(
+                        "body '{}': a movable mesh beside another mesh ('{}'): contacts between two meshes (triangle against triangle) are not made, so one would pass through the other; make one of them a convex shape",
+                        bodies[i].name, bodies[j].name
+                    ),
+                );
             }
         }
     }

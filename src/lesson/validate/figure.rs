@@ -24,7 +24,7 @@ impl Validator {
                 );
                 continue;
             };
-            let (shape, _) = self.shape(&format!("[[figure.body]] '{name}'"), &b.shape);
+            let (shape, _) = self.shape(&format!("[[figure.body]] '{name}'"), &b.shape, false);
             if let (Some(s), Some(raw)) = (&shape, &b.shape) {
                 let sizes_ok = s
                     .dimensions()

@@ -51,6 +51,11 @@ impl<T: Real> Aabb<T> {
                 let w = r * v.map(c::<T>);
                 m.sup(&w.abs())
             }),
+            // Mesh: the same over its vertices (the box of its hull).
+            Shape::Mesh(ref mesh) => mesh.vertices().iter().fold(Vector3::zeros(), |m, v| {
+                let w = r * v.map(c::<T>);
+                m.sup(&w.abs())
+            }),
             Shape::HalfSpace { .. } => return None,
         };
         Some(Aabb::around(&pose.position, &half.add_scalar(margin)))

@@ -47,6 +47,8 @@ pub mod broad;
 mod clip;
 mod convex;
 mod grid;
+mod mesh;
+pub mod mesh_query;
 mod partition;
 mod plane;
 pub mod record;
@@ -79,6 +81,9 @@ pub use super::params::BroadPhaseMethod;
 /// (default) where one exists, GJK/EPA otherwise; `Gjk` for every pair but
 /// a half-space's.
 pub use super::params::NarrowPhase;
+
+/// A mesh's normals on internal edges (`[world] internal_edges`).
+pub use super::params::InternalEdges;
 
 /// Which part of a box holds the point closest to a sphere's centre.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -125,6 +130,8 @@ pub enum Feature {
     /// face being on side `reference`; `None` for EPA's (or the closest
     /// points') single point, midway.
     Convex { reference: Option<Side> },
+    /// A contact with triangle `triangle` of the mesh on side `mesh`.
+    Triangle { mesh: Side, triangle: usize },
 }
 
 impl Feature {
@@ -168,6 +175,10 @@ impl Feature {
             Feature::Convex { reference } => Feature::Convex {
                 reference: reference.map(Side::other),
             },
+            Feature::Triangle { mesh, triangle } => Feature::Triangle {
+                mesh: mesh.other(),
+                triangle,
+            },
         }
     }
 }
@@ -201,6 +212,8 @@ pub struct Options<T: Real> {
     /// How the broad phase finds its pairs (default: sweep): the same pairs,
     /// at a different cost.
     pub broad_phase: BroadPhaseMethod,
+    /// A mesh's normals on internal edges (default: corrected).
+    pub internal_edges: InternalEdges,
 }
 
 impl<T: Real> Default for Options<T> {
@@ -210,6 +223,7 @@ impl<T: Real> Default for Options<T> {
             tolerance: T::zero(),
             narrow_phase: NarrowPhase::default(),
             broad_phase: BroadPhaseMethod::default(),
+            internal_edges: InternalEdges::default(),
         }
     }
 }
@@ -269,6 +283,7 @@ enum Kind {
     Capsule,
     Hull,
     Sphere,
+    Mesh,
     HalfSpace,
 }
 
@@ -278,6 +293,7 @@ fn kind(shape: &Shape) -> Kind {
         Shape::Cylinder { .. } => Kind::Cylinder,
         Shape::Capsule { .. } => Kind::Capsule,
         Shape::Hull(_) => Kind::Hull,
+        Shape::Mesh(_) => Kind::Mesh,
         Shape::Sphere { .. } | Shape::HollowSphere { .. } => Kind::Sphere,
         Shape::HalfSpace { .. } => Kind::HalfSpace,
     }
@@ -314,6 +330,7 @@ fn size_key(shape: &Shape) -> [f64; 3] {
             hull.vertices().len() as f64,
             0.0,
         ],
+        Shape::Mesh(ref mesh) => [mesh.bounding_radius(), mesh.triangles().len() as f64, 0.0],
         Shape::HalfSpace { normal } => normal,
     }
 }
@@ -327,10 +344,20 @@ fn narrow<T: Real>(
 ) {
     let tol = options.tolerance;
     let halfspace = |s: &Shape| matches!(s, Shape::HalfSpace { .. });
+    let plane_normal = |n: &[f64; 3]| Vector3::new(c::<T>(n[0]), c::<T>(n[1]), c::<T>(n[2]));
+    match (sa, sb) {
+        // Two meshes: no triangle-triangle test (a lesson with a moving
+        // mesh against another is refused at load).
+        (Shape::Mesh(_), Shape::Mesh(_)) => return,
+        (Shape::Mesh(m), &Shape::HalfSpace { normal }) => {
+            return mesh::mesh_plane(m, pa, &plane_normal(&normal), pb, tol, out)
+        }
+        (_, Shape::Mesh(m)) => return mesh::convex_mesh((sa, pa), (m, pb), options, out),
+        _ => {}
+    }
     if options.narrow_phase == NarrowPhase::Gjk && !halfspace(sa) && !halfspace(sb) {
         return convex::convex_pair((sa, pa), (sb, pb), tol, out);
     }
-    let plane_normal = |n: &[f64; 3]| Vector3::new(c::<T>(n[0]), c::<T>(n[1]), c::<T>(n[2]));
     match (sa, sb) {
         (&Shape::Box { sides: s1 }, &Shape::Box { sides: s2 }) => {
             box_box::box_box(&half(&s1), pa, &half(&s2), pb, options.box_box, tol, out)

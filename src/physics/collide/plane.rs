@@ -79,17 +79,32 @@ pub(super) fn hull_plane<T: Real>(
     tol: T,
     out: &mut Vec<ContactPoint<T>>,
 ) {
+    let feature = |_| Feature::Convex {
+        reference: Some(Side::B),
+    };
+    vertices_plane(hull.vertices(), body, n, plane, tol, feature, out);
+}
+
+/// Body-frame `vertices` at `body` against a half-space: each at or below
+/// the plane, with the feature `feature(index)`.
+pub(super) fn vertices_plane<T: Real>(
+    vertices: &[Vector3<f64>],
+    body: &Pose<T>,
+    n: &Vector3<T>,
+    plane: &Pose<T>,
+    tol: T,
+    feature: impl Fn(usize) -> Feature,
+    out: &mut Vec<ContactPoint<T>>,
+) {
     let centre_height = (body.position - plane.position).dot(n);
-    for v in hull.vertices() {
+    for (i, v) in vertices.iter().enumerate() {
         let offset = body.rotation * v.map(c::<T>);
         push_below(
             body.position + offset,
             centre_height + offset.dot(n),
             n,
             tol,
-            Feature::Convex {
-                reference: Some(Side::B),
-            },
+            feature(i),
             out,
         );
     }

@@ -10,6 +10,7 @@
 use nalgebra::Vector3;
 
 use super::broad::Aabb;
+use super::mesh_query::{mesh_convex, MeshQuery};
 use super::partition::{BroadCounts, PairFinder};
 use super::{collide_with, ContactPoint, NarrowPhase, Options};
 use crate::physics::detect::epa::EpaRecord;
@@ -50,6 +51,18 @@ pub enum Method {
     Analytic,
     /// GJK, EPA and the clipped manifold.
     Gjk,
+    /// A mesh's mid phase (its tree) and each candidate triangle's narrow
+    /// phase; against a half-space, its vertices below the plane.
+    Mesh,
+}
+
+/// A pair with a mesh: the mid phase of the convex body against the mesh
+/// (`None` against a half-space), with which body is the mesh. Its normals
+/// point from the mesh toward the convex body.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshRecord {
+    pub query: Option<MeshQuery>,
+    pub mesh_is_body1: bool,
 }
 
 /// One pair's detection. Body 1 is the lower index unless only the higher
@@ -77,6 +90,8 @@ pub struct PairRecord {
     pub contacts: Vec<ContactPoint<f64>>,
     /// The analytic routine's contacts, where the pair has one.
     pub analytic: Option<Vec<ContactPoint<f64>>>,
+    /// A pair with a mesh: its mid phase.
+    pub mesh: Option<MeshRecord>,
 }
 
 /// A set of bodies' detection.
@@ -187,6 +202,7 @@ pub fn detect_watched(
             epa: vec![],
             contacts: vec![],
             analytic: None,
+            mesh: None,
         };
         if let (Some(r1), Some(r2)) = (bounds[body1].radius, bounds[body2].radius) {
             record.spheres = Some(((p1.position - p2.position).norm(), r1 + r2));
@@ -194,8 +210,11 @@ pub fn detect_watched(
         if let (Some(a), Some(b)) = (&bounds[body1].swept, &bounds[body2].swept) {
             record.swept_overlap = Some(a.overlaps(b));
         }
-        let analytic = has_analytic(s1, s2);
-        record.method = if analytic && options.narrow_phase == NarrowPhase::Analytic
+        let analytic = has_analytic(s1, s2) && !is_mesh(s1) && !is_mesh(s2);
+        record.mesh = mesh_record((s1, &p1), (s2, &p2), options);
+        record.method = if record.mesh.is_some() {
+            Method::Mesh
+        } else if analytic && options.narrow_phase == NarrowPhase::Analytic
             || matches!(s1, Shape::HalfSpace { .. })
             || matches!(s2, Shape::HalfSpace { .. })
         {
@@ -232,6 +251,32 @@ pub fn detect_watched(
         ruled_out,
         pairs,
         broad,
+    })
+}
+
+fn is_mesh(s: &Shape) -> bool {
+    matches!(s, Shape::Mesh(_))
+}
+
+/// The mid phase of a pair with one mesh, as the step runs it (the convex
+/// body's box down the mesh's tree, grown by the tolerance).
+fn mesh_record(
+    (s1, p1): (&Shape, &Pose<f64>),
+    (s2, p2): (&Shape, &Pose<f64>),
+    options: &Options<f64>,
+) -> Option<MeshRecord> {
+    let mesh_is_body1 = is_mesh(s1);
+    let ((mesh, pm), (other, po)) = match (s1, s2) {
+        (Shape::Mesh(m), _) => ((m, p1), (s2, p2)),
+        (_, Shape::Mesh(m)) => ((m, p2), (s1, p1)),
+        _ => return None,
+    };
+    let fix = options.internal_edges == super::InternalEdges::Corrected;
+    let query = Convex::from_shape(other)
+        .map(|convex| mesh_convex(&convex, po, mesh, pm, options.tolerance.max(0.0), fix));
+    Some(MeshRecord {
+        query,
+        mesh_is_body1,
     })
 }
 

@@ -114,7 +114,8 @@ impl Convex {
             }),
             Shape::Capsule { radius, height } => Some(Convex::Capsule(Capsule { radius, height })),
             Shape::Hull(ref hull) => Some(Convex::Hull(Arc::clone(hull))),
-            Shape::HalfSpace { .. } => None,
+            // A mesh is not convex: its pairs go through the mid phase.
+            Shape::Mesh(_) | Shape::HalfSpace { .. } => None,
         }
     }
 

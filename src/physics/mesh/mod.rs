@@ -1,15 +1,16 @@
 //! Triangle meshes: vertices and triangles in the body frame, checked on
 //! construction (no degenerate triangle, every edge shared by at most two
-//! triangles that wind it in opposite directions), their mass properties
-//! from the surface ([`mass`]), an AABB tree over the triangles ([`bvh`]),
-//! closest points on a triangle ([`triangle`]), the mid phase's query
-//! against a convex shape ([`query`]), and the Wavefront OBJ reader ([`obj`]).
+//! triangles that wind it in opposite directions), an AABB tree over the
+//! triangles ([`bvh`]), closest points on a triangle ([`triangle`]), the
+//! internal-edge correction ([`edges`]) and the Wavefront OBJ reader
+//! ([`obj`]). This folder imports nothing else of `physics` (a `Shape`
+//! holds a mesh): the mass properties from the surface are
+//! `physics::mesh_mass`, the mid phase against a convex shape (GJK/EPA)
+//! `physics::collide::mesh_query`.
 
 pub mod bvh;
 pub mod edges;
-pub mod mass;
 pub mod obj;
-pub mod query;
 pub mod topology;
 pub mod triangle;
 
@@ -17,8 +18,6 @@ use nalgebra::Vector3;
 
 pub use bvh::Bvh;
 pub use topology::MeshError;
-
-use crate::physics::hull::MassProperties;
 
 /// A triangle mesh in the body frame, with its tree and neighbours.
 #[derive(Debug, Clone, PartialEq)]
@@ -81,15 +80,6 @@ impl TriMesh {
         (b - a).cross(&(c - a)).normalize()
     }
 
-    /// The solid's volume, centroid and unit-density inertia (closed meshes
-    /// only: `None` for an open one or one enclosing no volume).
-    pub fn mass_properties(&self) -> Option<MassProperties> {
-        if !self.closed {
-            return None;
-        }
-        mass::mass_properties(&self.vertices, &self.triangles)
-    }
-
     /// The same mesh moved by `offset` (the lesson re-centres a movable
     /// mesh on its centroid).
     pub fn translated(&self, offset: &Vector3<f64>) -> TriMesh {
@@ -109,6 +99,35 @@ impl TriMesh {
                 &self.triangles,
             ),
         }
+    }
+
+    /// Distance from a body-frame point to the nearest triangle, negative
+    /// behind it (inside a closed mesh; under an open one). The side is the
+    /// nearest triangle's, by the direction from its closest point (its
+    /// face normal when the point is on it); at a shared edge or corner the
+    /// triangle whose plane is farthest from the point decides.
+    pub fn signed_distance(&self, p: &Vector3<f64>) -> f64 {
+        let mut best = (f64::INFINITY, 1.0, f64::NEG_INFINITY);
+        for t in 0..self.triangles.len() {
+            let corners = self.corners(t);
+            let (q, _) = triangle::closest_point(p, &corners);
+            let d = (p - q).norm();
+            let plane = (p - corners[0]).dot(&self.normal(t));
+            let closer = d < best.0 * (1.0 - 1e-12);
+            let tie = !closer && d <= best.0 * (1.0 + 1e-12) && plane.abs() > best.2.abs();
+            if closer || tie {
+                best = (d, if plane < 0.0 { -1.0 } else { 1.0 }, plane);
+            }
+        }
+        best.0 * best.1
+    }
+
+    /// For a closed mesh, the distance from the body origin (its centroid)
+    /// in to the nearest triangle, when the origin is inside; `None` for an
+    /// open mesh or an origin outside the solid (an L-block's may be).
+    pub fn inner_radius(&self) -> Option<f64> {
+        let d = -self.signed_distance(&Vector3::zeros());
+        (self.closed && d > 0.0).then_some(d)
     }
 
     /// Largest distance of a vertex from the body origin.

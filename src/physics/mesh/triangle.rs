@@ -1,10 +1,8 @@
 //! The closest point of a triangle to a point (Ericson, Real-Time Collision
-//! Detection, 5.1.5: Voronoi regions by barycentric tests), and a triangle
-//! as a three-point convex hull for GJK/EPA.
+//! Detection, 5.1.5: Voronoi regions by barycentric tests). (A triangle as
+//! a convex shape for GJK/EPA is `collide::mesh_query::Triangle`.)
 
 use nalgebra::Vector3;
-
-use crate::physics::detect::Support;
 
 /// Which part of the triangle the closest point is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -51,20 +49,4 @@ pub fn closest_point(p: &Vector3<f64>, [a, b, c]: &[Vector3<f64>; 3]) -> (Vector
     let denom = 1.0 / (va + vb + vc);
     let (v, w) = (vb * denom, vc * denom);
     (a + ab * v + ac * w, Region::Face)
-}
-
-/// A triangle as a convex shape (its three corners, body frame of the mesh).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Triangle(pub [Vector3<f64>; 3]);
-
-impl Support<f64> for Triangle {
-    fn core_support(&self, d: &Vector3<f64>) -> Vector3<f64> {
-        let mut best = self.0[0];
-        for p in &self.0[1..] {
-            if p.dot(d) > best.dot(d) {
-                best = *p;
-            }
-        }
-        best
-    }
 }

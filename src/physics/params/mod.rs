@@ -331,6 +331,18 @@ pub enum BroadPhaseMethod {
     Bvh,
 }
 
+/// A mesh's contact normal on an edge or corner shared with another
+/// triangle (`[world] internal_edges`): `Corrected` (default) turns a normal
+/// that no neighbouring face allows to the face's (no bump at the seam of
+/// two coplanar triangles); `Raw` keeps the triangle's own normal, the
+/// ghost collision a lesson shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum InternalEdges {
+    #[default]
+    Corrected,
+    Raw,
+}
+
 /// Restitution and friction coefficients: of a contact, a body, or
 /// `[world]`'s default. One rule wherever they are written: `friction` sets
 /// both μ_s and μ_d, and μ_d defaults to μ_s ([`Material::with`]).

@@ -5,8 +5,8 @@
 
 use super::ccd_mode::{Ccd, NormalFrom, Rollback};
 use super::{
-    BoxBoxMode, BroadPhaseMethod, ContactParams, FrictionModel, Material, NarrowPhase,
-    ProjectionMethod, ResolverParams, SleepParams, StepParams, WorldParams,
+    BoxBoxMode, BroadPhaseMethod, ContactParams, FrictionModel, InternalEdges, Material,
+    NarrowPhase, ProjectionMethod, ResolverParams, SleepParams, StepParams, WorldParams,
     GENERATED_VELOCITY_LIMIT,
 };
 use crate::physics::exact::RestitutionLaw;
@@ -49,6 +49,8 @@ pub struct SimParams<T: Real> {
     pub normal_from: NormalFrom,
     /// How the broad phase finds its pairs (default: sweep); the same pairs whichever.
     pub broad_phase: BroadPhaseMethod,
+    /// A mesh's normals on internal edges: corrected or raw (default: corrected).
+    pub internal_edges: InternalEdges,
 }
 
 impl<T: Real> Default for SimParams<T> {
@@ -143,6 +145,7 @@ pub struct SceneSettings {
     pub rollback: Rollback,
     pub normal_from: NormalFrom,
     pub broad_phase: BroadPhaseMethod,
+    pub internal_edges: InternalEdges,
 }
 
 impl Default for SceneSettings {
@@ -163,6 +166,7 @@ impl Default for SceneSettings {
             rollback: Rollback::Projection,
             normal_from: NormalFrom::Current,
             broad_phase: BroadPhaseMethod::Sweep,
+            internal_edges: InternalEdges::Corrected,
         }
     }
 }
@@ -212,6 +216,7 @@ impl Settings {
                 rollback: p.rollback,
                 normal_from: p.normal_from,
                 broad_phase: p.broad_phase,
+                internal_edges: p.internal_edges,
                 ..SceneSettings::default()
             },
         }
@@ -245,6 +250,7 @@ impl Settings {
             rollback: scene.rollback,
             normal_from: scene.normal_from,
             broad_phase: scene.broad_phase,
+            internal_edges: scene.internal_edges,
         }
     }
 }

@@ -84,6 +84,7 @@ pub fn contacts_at<T: Real>(
         tolerance,
         narrow_phase: p.narrow_phase,
         broad_phase: p.broad_phase,
+        internal_edges: p.internal_edges,
     };
     let mut out = Vec::new();
     collide_with((a, &pose(i)), (b, &pose(j)), &options, &mut out);

@@ -33,6 +33,9 @@ fn thinnest<T: Real>(world: &World<T>, id: BodyId) -> f64 {
         Some(Shape::Cylinder { radius, height }) => (2.0 * radius).min(height),
         Some(Shape::Capsule { radius, .. }) => 2.0 * radius,
         Some(Shape::Hull(ref hull)) => 2.0 * hull.inner_radius(),
+        // A closed mesh: the ball inside it about its centroid; an open
+        // mesh (a surface) has no inside for a body to be wholly in.
+        Some(Shape::Mesh(ref mesh)) => mesh.inner_radius().map_or(f64::INFINITY, |r| 2.0 * r),
         Some(Shape::HalfSpace { .. }) | None => f64::INFINITY,
     }
 }

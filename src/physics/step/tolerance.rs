@@ -38,6 +38,7 @@ fn half_width(shape: &Shape) -> Option<f64> {
         Shape::Cylinder { radius, height } => radius.min(height / 2.0),
         Shape::Capsule { radius, .. } => radius,
         Shape::Hull(ref hull) => hull.inner_radius(),
+        Shape::Mesh(ref mesh) => mesh.inner_radius()?,
         Shape::HalfSpace { .. } => return None,
     };
     (s.is_finite() && s > 0.0).then_some(s)

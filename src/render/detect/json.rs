@@ -42,7 +42,7 @@ pub fn json(t: &DetectTrace) -> String {
 }
 
 fn pair(p: &PairTrace) -> Value {
-    j!({
+    let mut v = j!({
         "a": p.a,
         "b": p.b,
         "method": p.method,
@@ -56,7 +56,31 @@ fn pair(p: &PairTrace) -> Value {
         "epa": p.epa.as_ref().map(epa),
         "contacts": contacts(&p.contacts),
         "analytic": p.analytic.as_deref().map(contacts),
-    })
+    });
+    if let Some(m) = &p.mid_phase {
+        // GUIDE §12: the tree's nodes, the candidates, how many were tested;
+        // the pair's least distance and each triangle's narrow phase.
+        v["mid_phase"]["mesh_body"] = j!(m.mesh_body);
+        v["mid_phase"]["query"] = j!(m.query);
+        v["mid_phase"]["nodes"] = (m.nodes.iter())
+            .map(|n| {
+                j!({ "node": n.node, "bounds": n.bounds, "overlap": n.overlap,
+                     "children": n.children, "triangle": n.triangle })
+            })
+            .collect();
+        v["mid_phase"]["candidates"] = j!(m.candidates);
+        v["mid_phase"]["tested"] = j!(m.triangles.len());
+        v["distance"] = j!(m.distance);
+        v["triangles"] = (m.triangles.iter())
+            .map(|t| {
+                j!({ "triangle": t.triangle, "distance": t.distance,
+                     "penetration": t.penetration, "normal": t.normal,
+                     "raw_normal": t.raw_normal, "corrected": t.rule.is_some(),
+                     "rule": t.rule })
+            })
+            .collect();
+    }
+    v
 }
 
 fn gjk(g: &GjkTrace) -> Value {
@@ -108,6 +132,12 @@ fn epa(e: &EpaTrace) -> Value {
 
 fn contacts(c: &[ContactLine]) -> Value {
     c.iter()
-        .map(|c| j!({ "point": c.point, "normal": c.normal, "penetration": c.penetration }))
+        .map(|c| {
+            let mut v = j!({ "point": c.point, "normal": c.normal, "penetration": c.penetration });
+            if let Some(t) = c.triangle {
+                v["triangle"] = j!(t);
+            }
+            v
+        })
         .collect()
 }

@@ -160,6 +160,24 @@ pub fn outline(
                 edges,
             })
         }
+        Shape::Mesh(ref mesh) => {
+            // Every triangle's edges (each shared edge once); the
+            // silhouette is the 2-D hull of the projected vertices.
+            let corners: Vec<P> = mesh.vertices().iter().map(|v| at(*v)).collect();
+            let mut edges = vec![];
+            for (n, t) in mesh.triangles().iter().enumerate() {
+                for k in 0..3 {
+                    let (i, j) = (t[k], t[(k + 1) % 3]);
+                    if i < j || mesh.neighbours(n)[k].is_none() {
+                        edges.push([corners[i], corners[j]]);
+                    }
+                }
+            }
+            Some(Outline {
+                silhouette: Silhouette::Polygon(self::hull(corners)),
+                edges,
+            })
+        }
         Shape::HalfSpace { .. } => None,
     }
 }
@@ -190,6 +208,7 @@ pub fn spin_arc_radius(shape: &Shape) -> Option<f64> {
         Shape::Cylinder { radius, height } => Some(0.5 * radius.min(height / 2.0)),
         Shape::Capsule { radius, .. } => Some(0.5 * radius),
         Shape::Hull(ref hull) => Some(0.5 * hull.inner_radius()),
+        Shape::Mesh(ref mesh) => mesh.inner_radius().map(|r| 0.5 * r),
         Shape::HalfSpace { .. } => None,
     }
 }

@@ -73,6 +73,7 @@ pub fn run(
         tolerance: 0.0,
         narrow_phase: sim.params.narrow_phase,
         broad_phase: sim.params.broad_phase,
+        internal_edges: sim.params.internal_edges,
     };
     let mut frame = |sim: &crate::physics::step::Simulation<f64>| {
         let state = |i: &usize| &sim.world.bodies[*i].state;

@@ -4,8 +4,8 @@
 use nalgebra::Vector3;
 
 use super::terrain;
+use crate::physics::collide::mesh_query::{mesh_convex, MeshQuery};
 use crate::physics::detect::Convex;
-use crate::physics::mesh::query::{mesh_convex, MeshQuery};
 use crate::physics::mesh::triangle::closest_point;
 use crate::physics::mesh::TriMesh;
 use crate::physics::pose::Pose;

@@ -18,6 +18,7 @@ impl<T: Real> Simulation<T> {
             tolerance: self.params.contact_margin,
             narrow_phase: self.params.narrow_phase,
             broad_phase: self.params.broad_phase,
+            internal_edges: self.params.internal_edges,
         };
         self.generator
             .generate_world(&self.world.bodies, &options, &mut self.generated);

@@ -3,15 +3,15 @@
 //! `margin`), the tree walked with it, and each candidate triangle's narrow
 //! phase (GJK/EPA with the triangle as a three-point hull; the sphere's
 //! closed form when GJK's margins path gives it), with the normal corrected
-//! on internal edges ([`super::edges`]) when asked.
+//! on internal edges (`mesh::edges`) when asked.
 
 use nalgebra::Vector3;
 
-use super::bvh::{Aabb, Visit};
-use super::edges::{correct, Rule};
-use super::triangle::{closest_point, Triangle};
-use super::TriMesh;
 use crate::physics::detect::{query, QueryOptions, Support};
+use crate::physics::mesh::bvh::{Aabb, Visit};
+use crate::physics::mesh::edges::{correct, Rule};
+use crate::physics::mesh::triangle::closest_point;
+use crate::physics::mesh::TriMesh;
 use crate::physics::pose::Pose;
 
 /// One candidate triangle's narrow phase. `normal` points from the mesh
@@ -106,7 +106,10 @@ pub fn mesh_convex<S: Support<f64> + ?Sized>(
         let local = mesh_pose.to_local(&pb);
         let (_, region) = closest_point(&local, &mesh.corners(t));
         let raw_local = mesh_pose.rotation.transpose() * raw;
-        let (normal_local, rule) = if fix {
+        // A raw normal that is a nearby face's own (a closed mesh's bottom
+        // face, met through a side triangle's corner) is the surface's:
+        // kept, whatever region the contact point fell in.
+        let (normal_local, rule) = if fix && !near_face_normal(mesh, t, &raw_local) {
             correct(mesh, t, region, &raw_local)
         } else {
             (raw_local, None)
@@ -138,5 +141,32 @@ pub fn mesh_convex<S: Support<f64> + ?Sized>(
         candidates,
         triangles,
         distance,
+    }
+}
+
+/// Whether `raw` is the normal of a triangle within two edges of `t`
+/// (its neighbours and theirs), other than `t` itself.
+fn near_face_normal(mesh: &TriMesh, t: usize, raw: &Vector3<f64>) -> bool {
+    let ring = (mesh.neighbours(t).into_iter().flatten())
+        .flat_map(|u| std::iter::once(u).chain(mesh.neighbours(u).into_iter().flatten()));
+    let n = mesh.normal(t);
+    ring.filter(|&u| u != t)
+        .map(|u| mesh.normal(u))
+        .any(|m| m.dot(&n) < 1.0 - 1e-6 && m.dot(raw) >= 1.0 - 1e-9)
+}
+
+/// A triangle as a convex shape (its three corners, body frame of the mesh).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Triangle(pub [Vector3<f64>; 3]);
+
+impl Support<f64> for Triangle {
+    fn core_support(&self, d: &Vector3<f64>) -> Vector3<f64> {
+        let mut best = self.0[0];
+        for p in &self.0[1..] {
+            if p.dot(d) > best.dot(d) {
+                best = *p;
+            }
+        }
+        best
     }
 }
