@@ -26,6 +26,11 @@ impl App {
         let Some(r) = self.resolver.as_deref() else {
             return;
         };
+        // The soft step and XPBD have no lecture stages: their own record.
+        if r.trace.substeps.is_some() {
+            self.screen = Screen::Resolver;
+            return;
+        }
         let lesson = r.trace.lesson_at(&self.lessons[self.lesson].lesson, r.stop);
         let k = r.selected.min(lesson.contacts.len().saturating_sub(1));
         self.opened = Some(Entry {
