@@ -65,7 +65,7 @@ choices!(BroadPhaseMethod {
 });
 
 choices!(InternalEdges {
-    InternalEdges::Corrected => "corrected":
+    InternalEdges::Corrected => "fix" ["corrected"]:
         "a mesh's normal on an edge or corner shared with another triangle turned to what the neighbouring faces allow: no bump at a seam";
     InternalEdges::Raw => "raw":
         "each triangle's own normal, as if it were alone: a body sliding across a seam may bump (a ghost collision)";
@@ -433,7 +433,7 @@ pub const INTERNAL_EDGES: Knob = Knob {
     level: Level::World,
     tables: &[Table::World],
     doc: "A mesh's contact normal on an edge or corner two triangles share: corrected from the neighbouring triangles (a body slides across the seam of a flat triangulated floor without a bump) or raw, each triangle alone (the ghost collision engines correct).",
-    default: "corrected",
+    default: "fix",
     kind: Kind::Choice { choices: InternalEdges::SPELLINGS },
     cli: Cli::Option,
     edit: Offered::Yes,
