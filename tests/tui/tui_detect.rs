@@ -204,3 +204,20 @@ fn a_ruled_out_pair_has_its_narrow_phase_run_anyway() {
     assert!(rows.contains("GJK iteration 1 of 2"), "{rows}");
     assert!(rows.contains("separated at distance 0.48"), "{rows}");
 }
+
+#[test]
+fn a_mesh_pair_says_why_it_has_no_single_minkowski_difference() {
+    // The bowl is a mesh: its pair is decided triangle by triangle, and the
+    // A - B panel names that, not a half-space (which it is not).
+    let mut a = app("mesh-bowl-ball", false);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Char('d'));
+    assert_eq!(a.screen, Screen::Detect);
+    let shown = joined(&screen(&a, 200, 40));
+    assert!(shown.contains("ball – bowl: mesh"), "{shown}");
+    assert!(
+        shown.contains("a mesh is not convex: no single A - B"),
+        "{shown}"
+    );
+    assert!(!shown.contains("half-space"), "{shown}");
+}

@@ -23,6 +23,17 @@ use crate::tui::theme::Ink;
 /// What the picture's legend says each mark is.
 pub const LEGEND: &str = "• simplex ✗ dropped w=w_k v=v_k d=d_k";
 
+/// Why a pair has no A - B to draw: a mesh is not convex (its mid phase
+/// tests triangle by triangle), an analytic routine or a half-space has no
+/// GJK iterations.
+fn no_picture(p: &PairTrace) -> &'static str {
+    match p.method {
+        "mesh" => "a mesh is not convex: no single A - B (see its mid phase)",
+        _ if p.gjk.is_none() && p.analytic.is_some() => "an analytic routine: no GJK iterations",
+        _ => "a half-space has no support mapping",
+    }
+}
+
 /// A - B of the selected pair (`pair`, its narrow phase) at `stop`, seen
 /// in `plane`, in `area`; `toi`: the time of collision is on show.
 pub fn render(
@@ -37,7 +48,7 @@ pub fn render(
     let t = &app.theme;
     let (m, what) = match pair {
         Some(p) if !p.minkowski.is_empty() => (Some(minkowski(plane, p, stop)), stop_name(stop, p)),
-        Some(_) => (None, "a half-space has no support mapping".to_string()),
+        Some(p) => (None, no_picture(p).to_string()),
         None => (None, "no pair".to_string()),
     };
     // The time of collision moves the shapes, not this: say when it is of.
