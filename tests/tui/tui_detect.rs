@@ -221,3 +221,66 @@ fn a_mesh_pair_says_why_it_has_no_single_minkowski_difference() {
     );
     assert!(!shown.contains("half-space"), "{shown}");
 }
+
+#[test]
+fn a_mesh_pair_walks_its_tree_node_by_node_then_each_candidate_triangle() {
+    // The stops: each node the traversal visited, then each candidate
+    // triangle's narrow phase, then the result; each shows the trace's values.
+    let mut a = app("mesh-bowl-ball", false);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Char('d'));
+    let m = a.detect.as_ref().unwrap().trace.pairs[0]
+        .mid_phase
+        .clone()
+        .expect("the bowl pair has a mid phase");
+    let (nodes, tris) = (m.nodes.len(), m.triangles.len());
+    assert!(nodes > 1 && tris > 1, "{nodes} nodes, {tris} triangles");
+    let first = joined(&screen(&a, 200, 40));
+    assert!(
+        first.contains(&format!("tree node 1 of {nodes} visited")),
+        "{first}"
+    );
+    assert!(
+        first.contains(&format!("node: {}", m.nodes[0].node)),
+        "{first}"
+    );
+    let pushed = m.nodes[0]
+        .children
+        .iter()
+        .map(|c| c.to_string())
+        .collect::<Vec<_>>()
+        .join(", ");
+    assert!(first.contains(&format!("then: push {pushed}")), "{first}");
+    key(&mut a, KeyCode::Right);
+    let second = joined(&screen(&a, 200, 40));
+    assert!(
+        second.contains(&format!("tree node 2 of {nodes} visited")),
+        "{second}"
+    );
+    assert!(
+        second.contains(&format!("node: {}", m.nodes[1].node)),
+        "{second}"
+    );
+    // Past the nodes: the first candidate triangle, its id and normal rule.
+    keys(&mut a, KeyCode::Right, nodes - 1);
+    let tri = joined(&screen(&a, 200, 40));
+    assert!(
+        tri.contains(&format!("candidate triangle 1 of {tris}")),
+        "{tri}"
+    );
+    assert!(
+        tri.contains(&format!("triangle: {}", m.triangles[0].triangle)),
+        "{tri}"
+    );
+    assert!(tri.contains("internal edge: "), "{tri}");
+    // End: the result, with the tree's summary.
+    key(&mut a, KeyCode::End);
+    let last = joined(&screen(&a, 200, 40));
+    assert!(last.contains("result ·"), "{last}");
+    assert!(
+        last.contains(&format!(
+            "Mesh tree: {nodes} node(s) visited, {tris} candidate triangle(s) tested"
+        )),
+        "{last}"
+    );
+}

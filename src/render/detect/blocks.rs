@@ -2,6 +2,7 @@
 //! through the one formatter; `text`, `markdown` and `latex` each lay the
 //! same page out.
 
+use super::mesh_rows::{node_row, triangle_row, NODE_HEAD, TRIANGLE_HEAD};
 use crate::format::Fmt;
 use crate::trace::detect::{ContactLine, DetectTrace, EpaTrace, GjkTrace, PairTrace, V3};
 use crate::trace::detect_mesh::MidPhase;
@@ -52,7 +53,7 @@ fn v(f: &Fmt, x: &V3) -> String {
 
 /// A vector whose components are round-off against `scale` (the pair's
 /// size) shown as 0: a touching pair's v_k = (1e-16, 0, 1e-17) is (0, 0, 0).
-fn v_at(f: &Fmt, x: &V3, scale: f64) -> String {
+pub(super) fn v_at(f: &Fmt, x: &V3, scale: f64) -> String {
     let parts: Vec<String> = x.iter().map(|c| f.num_at(*c, scale)).collect();
     format!("({})", parts.join(", "))
 }
@@ -381,32 +382,10 @@ fn mesh(out: &mut Vec<Block>, m: &MidPhase, f: &Fmt, scale: f64) {
         }
     )));
     let rows = (m.nodes.iter().take(NODE_ROWS))
-        .map(|n| {
-            let what = match (n.triangle, n.children.as_slice()) {
-                (Some(t), _) if n.overlap => format!("leaf: triangle {t} is a candidate"),
-                (Some(t), _) => format!("leaf: triangle {t}"),
-                (None, []) => "-".to_string(),
-                (None, c) => format!(
-                    "push {}",
-                    c.iter()
-                        .map(|k| k.to_string())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ),
-            };
-            vec![
-                n.node.to_string(),
-                v(f, &n.bounds[0], scale),
-                v(f, &n.bounds[1], scale),
-                if n.overlap { "yes" } else { "no" }.to_string(),
-                what,
-            ]
-        })
+        .map(|n| node_row(n, f, scale))
         .collect();
     out.push(Block::Table {
-        head: ["node", "box min", "box max", "overlaps the query", "then"]
-            .map(String::from)
-            .to_vec(),
+        head: NODE_HEAD.map(String::from).to_vec(),
         rows,
     });
     if m.nodes.len() > NODE_ROWS {
@@ -424,29 +403,10 @@ fn mesh(out: &mut Vec<Block>, m: &MidPhase, f: &Fmt, scale: f64) {
         return;
     }
     let rows = (m.triangles.iter())
-        .map(|t| {
-            vec![
-                t.triangle.to_string(),
-                f.num_at(t.distance, scale),
-                f.num_at(t.penetration, scale),
-                v(f, &t.raw_normal, 1.0),
-                v(f, &t.normal, 1.0),
-                t.rule
-                    .map_or("kept".to_string(), |r| format!("corrected: {r}")),
-            ]
-        })
+        .map(|t| triangle_row(t, f, scale))
         .collect();
     out.push(Block::Table {
-        head: [
-            "triangle",
-            "distance",
-            "penetration",
-            "raw normal",
-            "normal",
-            "internal edge",
-        ]
-        .map(String::from)
-        .to_vec(),
+        head: TRIANGLE_HEAD.map(String::from).to_vec(),
         rows,
     });
     if let Some(d) = m.distance {

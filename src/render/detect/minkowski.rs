@@ -81,6 +81,8 @@ pub fn minkowski(plane: Plane, p: &PairTrace, stop: usize) -> Minkowski {
         arrow: None,
     };
     match stops(p).get(stop) {
+        // A mesh's tree and triangles: no single A - B to mark.
+        Some(Stop::Node(_) | Stop::Triangle(_)) => {}
         Some(Stop::Gjk(k)) => {
             let Some(it) = p.gjk.as_ref().and_then(|g| g.iterations.get(*k)) else {
                 return m;

@@ -7,6 +7,7 @@ mod blocks;
 mod json;
 mod layout;
 pub(crate) mod legend;
+pub mod mesh_rows;
 pub mod minkowski;
 pub mod steps;
 pub(crate) mod svg;

@@ -366,6 +366,7 @@ fn right_legend(
     }
     let s = |t: &str| t.to_string();
     match stop {
+        Some(Stop::Node(_) | Stop::Triangle(_)) => {}
         Some(Stop::Gjk(_)) => {
             out.push((
                 Swatch::Dot("#ff7f0e", true),

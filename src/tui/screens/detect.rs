@@ -342,6 +342,9 @@ fn body(tr: &DetectTrace, name: &str) -> Option<BodyView> {
 /// what they are.
 fn marks(p: &PairTrace, stop: usize) -> (Vec<V3>, &'static str) {
     match stops(p).get(stop) {
+        Some(Stop::Node(_) | Stop::Triangle(_)) => {
+            (vec![], "the mesh's mid phase: no support points")
+        }
         Some(Stop::Gjk(k)) => {
             let it = &p.gjk.as_ref().map(|g| &g.iterations[*k]);
             (

@@ -112,6 +112,8 @@ fn stop_name(stop: usize, p: &PairTrace) -> String {
     match stops(p).get(stop) {
         Some(Stop::Gjk(k)) => format!("GJK iteration {}", k + 1),
         Some(Stop::Epa(k)) => format!("EPA iteration {}", k + 1),
+        Some(Stop::Node(k)) => format!("tree node {}", k + 1),
+        Some(Stop::Triangle(k)) => format!("triangle {}", k + 1),
         None => "result".into(),
     }
 }

@@ -64,7 +64,7 @@ pub const DETECT_KEYS: &[Binding<Key>] = &[
         Key::PrevPair
     ),
     forward_back!(
-        "next / previous iteration: GJK's, EPA's, the result (t: trial)",
+        "next / previous: mesh nodes, triangles, GJK's, EPA's, result (t: trial)",
         Key::Forward,
         Key::Back
     ),
