@@ -1,5 +1,5 @@
-//! Convex hull of a point cloud (incremental, the quickhull idea without its
-//! outside sets): its vertices, polygon faces with outward normals, edges,
+//! Convex hull of a point cloud (incremental, with quickhull's conflicts:
+//! each waiting point holds one face it sees): its vertices, polygon faces with outward normals, edges,
 //! and the mass properties of the solid for uniform density.
 //!
 //! Robustness: every plane test has the tolerance ε = 1e-10 × the cloud's
@@ -8,6 +8,8 @@
 //! centre first, so the corners of a box come before points on its edges or
 //! faces. Coplanar triangles are merged into one polygon face. A cloud with
 //! fewer than 4 points that are not coplanar is rejected with a [`HullError`].
+
+use std::collections::HashMap;
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -76,12 +78,17 @@ impl ConvexHull {
             return Err(HullError::NotFinite { index });
         }
         let pts: Vec<Vector3<f64>> = points.iter().map(|p| Vector3::from(*p)).collect();
-        let (lo, hi) = pts
-            .iter()
-            .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-        let eps = 1e-10 * (hi - lo).amax();
-        let tris = build(&pts, eps)?;
+        let eps = extent_eps(&pts);
+        let (tris, _) = build(&pts, eps)?;
         Ok(Self::from_triangles(&pts, &tris, eps))
+    }
+
+    /// The number of plane tests building the hull of `points` takes (its
+    /// work; debug builds only, for the tests that bound it).
+    #[cfg(debug_assertions)]
+    pub fn plane_tests(points: &[[f64; 3]]) -> Result<usize, HullError> {
+        let pts: Vec<Vector3<f64>> = points.iter().map(|p| Vector3::from(*p)).collect();
+        Ok(build(&pts, extent_eps(&pts))?.1)
     }
 
     /// Compacts the vertices, merges coplanar triangles, computes the mass.
@@ -176,9 +183,17 @@ impl ConvexHull {
     }
 }
 
-/// The first tetrahedron (extreme points), then every other point added,
-/// farthest from the tetrahedron's centre first.
-fn build(pts: &[Vector3<f64>], eps: f64) -> Result<Vec<Tri>, HullError> {
+/// The plane tests' tolerance: 1e-10 × the cloud's extent.
+fn extent_eps(pts: &[Vector3<f64>]) -> f64 {
+    let (lo, hi) = pts
+        .iter()
+        .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+    1e-10 * (hi - lo).amax()
+}
+
+/// The first tetrahedron (extreme points) and its four outward triangles,
+/// then the other points, farthest from the tetrahedron's centre first.
+fn start(pts: &[Vector3<f64>], eps: f64) -> Result<(Vec<Tri>, Vec<usize>), HullError> {
     let far = |from: &dyn Fn(&Vector3<f64>) -> f64| {
         (0..pts.len())
             .map(|i| (i, from(&pts[i])))
@@ -203,7 +218,7 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<Vec<Tri>, HullError> {
         return Err(HullError::Coplanar);
     }
     let centre = (pts[i0] + pts[i1] + pts[i2] + pts[i3]) / 4.0;
-    let mut tris: Vec<Tri> = [[i0, i1, i2], [i0, i1, i3], [i0, i2, i3], [i1, i2, i3]]
+    let tris: Vec<Tri> = [[i0, i1, i2], [i0, i1, i3], [i0, i2, i3], [i1, i2, i3]]
         .into_iter()
         .map(|v| {
             let t = tri(pts, v);
@@ -222,29 +237,131 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<Vec<Tri>, HullError> {
         let (da, db) = ((pts[a] - centre).norm(), (pts[b] - centre).norm());
         db.total_cmp(&da)
     });
-    let mut edges: Vec<[usize; 2]> = Vec::new();
+    Ok((tris, order))
+}
+
+/// The hull's triangles, built point by point in the order of [`start`]: a
+/// point that sees no triangle (n·p − d ≤ ε for all) adds nothing; one that
+/// does replaces the triangles it sees by a cone from their horizon. Each
+/// point waiting its turn holds one triangle it sees (its conflict), or none
+/// when it is inside: the hull only grows, so it is never tested again. The
+/// triangles a point sees are found from its conflict over the triangles'
+/// edges; only the points whose conflict was removed are tested again, on
+/// the new cone (quickhull's argument: a point beyond a removed triangle and
+/// outside the new hull sees a triangle of the cone). Triangles live in a
+/// slab in creation order, so the result is in the order of a list where
+/// removed triangles are dropped and new ones appended. Also returns the
+/// number of plane tests, the build's work.
+fn build(pts: &[Vector3<f64>], eps: f64) -> Result<(Vec<Tri>, usize), HullError> {
+    let (mut tris, order) = start(pts, eps)?;
+    let mut tests = 0;
+    let mut sees = |t: &Tri, p: &Vector3<f64>| {
+        tests += 1;
+        t.n.dot(p) - t.d > eps
+    };
+    // Per triangle: live, the points whose conflict it is; per directed edge
+    // (a, b) the triangle that has it.
+    let mut live = vec![true; 4];
+    let mut outside: Vec<Vec<usize>> = vec![Vec::new(); 4];
+    let mut by_edge: HashMap<[usize; 2], usize> = HashMap::new();
+    for (k, t) in tris.iter().enumerate() {
+        for e in directed(t) {
+            by_edge.insert(e, k);
+        }
+    }
+    let mut conflict = vec![usize::MAX; pts.len()];
+    for &i in &order {
+        if let Some(k) = (0..4).find(|&k| sees(&tris[k], &pts[i])) {
+            conflict[i] = k;
+            outside[k].push(i);
+        }
+    }
+    let mut done = vec![false; pts.len()];
+    let mut mark = vec![0u8; 4]; // 1 visible, 2 tested and not visible
+    let (mut visible, mut tested, mut moved) = (Vec::new(), Vec::new(), Vec::new());
     for i in order {
+        done[i] = true;
         let p = pts[i];
-        if tris.iter().all(|t| t.n.dot(&p) - t.d <= eps) {
+        let first = conflict[i];
+        if first == usize::MAX {
             continue; // inside or on the hull
         }
-        // Directed edges of the visible triangles; the horizon is those whose
-        // reverse is not also visible.
-        edges.clear();
-        tris.retain(|t| {
-            let visible = t.n.dot(&p) - t.d > eps;
-            if visible {
-                edges.extend([[t.v[0], t.v[1]], [t.v[1], t.v[2]], [t.v[2], t.v[0]]]);
+        // The visible triangles: a search from the conflict over edges.
+        visible.clear();
+        tested.clear();
+        visible.push(first);
+        mark[first] = 1;
+        let mut next = 0;
+        while next < visible.len() {
+            let k = visible[next];
+            next += 1;
+            for [a, b] in directed(&tris[k]) {
+                let m = by_edge[&[b, a]];
+                if mark[m] == 0 {
+                    if sees(&tris[m], &p) {
+                        mark[m] = 1;
+                        visible.push(m);
+                    } else {
+                        mark[m] = 2;
+                        tested.push(m);
+                    }
+                }
             }
-            !visible
-        });
-        for &[a, b] in &edges {
-            if !edges.contains(&[b, a]) {
-                tris.push(tri(pts, [a, b, i]));
+        }
+        // In creation order: the horizon edges come as the old list's did.
+        visible.sort_unstable();
+        let horizon: Vec<[usize; 2]> = visible
+            .iter()
+            .flat_map(|&k| directed(&tris[k]))
+            .filter(|&[a, b]| mark[by_edge[&[b, a]]] != 1)
+            .collect();
+        moved.clear();
+        for &k in &visible {
+            live[k] = false;
+            mark[k] = 0;
+            for e in directed(&tris[k]) {
+                by_edge.remove(&e);
+            }
+            moved.extend(
+                std::mem::take(&mut outside[k])
+                    .into_iter()
+                    .filter(|&j| !done[j]),
+            );
+        }
+        for &k in &tested {
+            mark[k] = 0;
+        }
+        let cone = tris.len();
+        for [a, b] in horizon {
+            let t = tri(pts, [a, b, i]);
+            for e in directed(&t) {
+                by_edge.insert(e, tris.len());
+            }
+            tris.push(t);
+            live.push(true);
+            outside.push(Vec::new());
+            mark.push(0);
+        }
+        for &j in &moved {
+            conflict[j] = usize::MAX;
+            if let Some(k) = (cone..tris.len()).find(|&k| sees(&tris[k], &pts[j])) {
+                conflict[j] = k;
+                outside[k].push(j);
             }
         }
     }
-    Ok(tris)
+    let hull = tris
+        .into_iter()
+        .zip(live)
+        .filter(|(_, l)| *l)
+        .map(|(t, _)| t);
+    Ok((hull.collect(), tests))
+}
+
+/// A triangle's directed edges (a, b), (b, c), (c, a).
+fn directed(t: &Tri) -> [[usize; 2]; 3] {
+    let [a, b, c] = t.v;
+    [[a, b], [b, c], [c, a]]
 }
 
 /// Mass properties by the divergence theorem: the solid is the union of the
@@ -280,3 +397,7 @@ pub(crate) fn mass_properties(
         unit_inertia: Matrix3::identity() * central.trace() - central,
     }
 }
+
+#[cfg(test)]
+#[path = "hull_tests.rs"]
+mod tests;
