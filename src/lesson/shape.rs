@@ -76,7 +76,7 @@ pub fn centred_hull(points: &[[f64; 3]]) -> Result<(ConvexHull, Vector3<f64>), H
         .filter(|p| vertices.contains(&bits_of(p)))
         .map(|p| (Vector3::from(*p) - centroid).into())
         .collect();
-    Ok((ConvexHull::new(&moved)?, centroid))
+    Ok((ConvexHull::new(&moved)?.rebuilt_from(&hull), centroid))
 }
 
 /// A point's coordinates as bits, with −0 as 0 (equal points, equal bits).

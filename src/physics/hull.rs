@@ -30,6 +30,10 @@ pub enum HullError {
     Collinear,
     #[error("all points lie in one plane: the hull has no volume")]
     Coplanar,
+    /// Points so nearly coplanar that the incremental build cannot keep
+    /// its faces closed, even at a tolerance widened 1,000 times.
+    #[error("the points are too nearly coplanar to build a hull (its faces did not stay closed at tolerance {tolerance:e} m): round them or drop the points near the faces")]
+    Tangled { tolerance: f64 },
 }
 
 /// Volume, centroid and inertia tensor (about the centroid, body axes) of a
@@ -44,6 +48,9 @@ pub struct MassProperties {
 /// The convex hull of a set of body-frame points.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConvexHull {
+    /// The tolerance the build needed when the first one (1e-10 of the
+    /// points' extent) could not keep its faces closed (`None`: the first).
+    widened: Option<f64>,
     vertices: Vec<Vector3<f64>>,
     triangles: Vec<[usize; 3]>,
     faces: Vec<HullFace>,
@@ -78,9 +85,34 @@ impl ConvexHull {
             return Err(HullError::NotFinite { index });
         }
         let pts: Vec<Vector3<f64>> = points.iter().map(|p| Vector3::from(*p)).collect();
-        let eps = extent_eps(&pts);
-        let (tris, _) = build(&pts, eps)?;
-        Ok(Self::from_triangles(&pts, &tris, eps))
+        let first = extent_eps(&pts);
+        // Nearly coplanar points can tangle the build at the first
+        // tolerance: widened tenfold at a time, at most 1,000 times, and said.
+        let mut eps = first;
+        loop {
+            match build(&pts, eps) {
+                Ok((tris, _)) => {
+                    let mut hull = Self::from_triangles(&pts, &tris, eps);
+                    hull.widened = (eps > first).then_some(eps);
+                    return Ok(hull);
+                }
+                Err(HullError::Tangled { .. }) if eps < 999.0 * first => eps *= 10.0,
+                Err(e) => return Err(e),
+            }
+        }
+    }
+
+    /// This hull, built again from `first`'s vertices (moved), keeping what
+    /// `first`'s build had to widen its tolerance to.
+    pub fn rebuilt_from(mut self, first: &ConvexHull) -> ConvexHull {
+        self.widened = self.widened.or(first.widened);
+        self
+    }
+
+    /// The tolerance the build was widened to for nearly coplanar points
+    /// (`None`: built at the first, 1e-10 of the points' extent).
+    pub fn widened_tolerance(&self) -> Option<f64> {
+        self.widened
     }
 
     /// The number of plane tests building the hull of `points` takes (its
@@ -120,6 +152,7 @@ impl ConvexHull {
         edges.dedup();
         let mass = mass_properties(&vertices, &triangles);
         ConvexHull {
+            widened: None,
             vertices,
             triangles,
             faces,
@@ -296,7 +329,9 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<(Vec<Tri>, usize), HullError>
             let k = visible[next];
             next += 1;
             for [a, b] in directed(&tris[k]) {
-                let m = by_edge[&[b, a]];
+                let m = *by_edge
+                    .get(&[b, a])
+                    .ok_or(HullError::Tangled { tolerance: eps })?;
                 if mark[m] == 0 {
                     if sees(&tris[m], &p) {
                         mark[m] = 1;
@@ -310,11 +345,15 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<(Vec<Tri>, usize), HullError>
         }
         // In creation order: the horizon edges come as the old list's did.
         visible.sort_unstable();
-        let horizon: Vec<[usize; 2]> = visible
-            .iter()
-            .flat_map(|&k| directed(&tris[k]))
-            .filter(|&[a, b]| mark[by_edge[&[b, a]]] != 1)
-            .collect();
+        let mut horizon: Vec<[usize; 2]> = Vec::new();
+        for [a, b] in visible.iter().flat_map(|&k| directed(&tris[k])) {
+            let across = *by_edge
+                .get(&[b, a])
+                .ok_or(HullError::Tangled { tolerance: eps })?;
+            if mark[across] != 1 {
+                horizon.push([a, b]);
+            }
+        }
         moved.clear();
         for &k in &visible {
             live[k] = false;
@@ -349,6 +388,15 @@ fn build(pts: &[Vector3<f64>], eps: f64) -> Result<(Vec<Tri>, usize), HullError>
                 outside[k].push(j);
             }
         }
+    }
+    // Closed: every live triangle's edge has its reverse (an overwritten
+    // edge, from a tangled horizon, would leave one without).
+    let closed = (tris.iter().zip(&live))
+        .filter(|(_, l)| **l)
+        .flat_map(|(t, _)| directed(t))
+        .all(|[a, b]| by_edge.get(&[b, a]).is_some_and(|&m| live[m]));
+    if !closed {
+        return Err(HullError::Tangled { tolerance: eps });
     }
     let hull = tris
         .into_iter()

@@ -25,6 +25,7 @@ mod file_cycles;
 mod floors;
 mod hull_manifolds;
 mod hull_pairs;
+mod hull_tangled;
 mod hull_work;
 mod invariants;
 mod kept_energy;

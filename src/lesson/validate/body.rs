@@ -228,6 +228,14 @@ impl Validator {
             Ok((shape, offset)) => {
                 if let (raw::RawShape::Convex(points), Shape::Hull(hull)) = (raw.get_ref(), &shape)
                 {
+                    if let Some(tolerance) = hull.widened_tolerance() {
+                        self.warnings.push(Note::new(
+                            format!(
+                                "{what}: the points are nearly coplanar: the convex hull was built at tolerance {tolerance:.3e} m (points within it of a face are on the face)"
+                            ),
+                            raw.span(),
+                        ));
+                    }
                     let dropped = crate::lesson::shape::dropped_points(points.len(), hull);
                     if dropped > 0 {
                         self.warnings.push(Note::new(

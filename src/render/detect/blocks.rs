@@ -3,6 +3,7 @@
 //! same page out.
 
 use super::mesh_rows::{node_row, triangle_row, NODE_HEAD, TRIANGLE_HEAD};
+use super::vector::v_at;
 use crate::format::Fmt;
 use crate::trace::detect::{ContactLine, DetectTrace, EpaTrace, GjkTrace, PairTrace, V3};
 use crate::trace::detect_mesh::MidPhase;
@@ -49,13 +50,6 @@ pub fn page(t: &DetectTrace, f: &Fmt) -> Vec<Block> {
 
 fn v(f: &Fmt, x: &V3) -> String {
     format!("({})", f.list(x))
-}
-
-/// A vector whose components are round-off against `scale` (the pair's
-/// size) shown as 0: a touching pair's v_k = (1e-16, 0, 1e-17) is (0, 0, 0).
-pub(super) fn v_at(f: &Fmt, x: &V3, scale: f64) -> String {
-    let parts: Vec<String> = x.iter().map(|c| f.num_at(*c, scale)).collect();
-    format!("({})", parts.join(", "))
 }
 
 fn broad(out: &mut Vec<Block>, t: &DetectTrace, f: &Fmt) {

@@ -3,7 +3,7 @@
 //! TUI's detection screen (a node or a triangle a stop) read these, so the
 //! two say the same cells.
 
-use super::blocks::v_at;
+use super::vector::v_at;
 use crate::format::Fmt;
 use crate::trace::detect_mesh::{NodeLine, TriangleLine};
 

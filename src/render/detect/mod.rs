@@ -11,6 +11,7 @@ pub mod mesh_rows;
 pub mod minkowski;
 pub mod steps;
 pub(crate) mod svg;
+mod vector;
 
 pub use json::json;
 pub use layout::{latex, markdown, text};
