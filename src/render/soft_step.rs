@@ -1,7 +1,7 @@
 //! `simulate --solver soft-step --trace-step K`: a soft step's record as
 //! text or JSON: the step's coefficients from f, ζ and h, then each
 //! contact's constraint, its normal impulse and separation after every
-//! substep, and the impulses it ends with (names as the shared guide's
+//! substep, and the impulses it ends with (names as the solver contract in docs/simulate.md;
 //! solver contract: `bias_rate`, `mass_scale`, `impulse_scale`).
 
 use std::fmt::Write;

@@ -1,5 +1,5 @@
 //! The broad phase never changes a run, only what finding the pairs costs
-//! (`[world] broad_phase`, the shared guide's mesh contract): embedded
+//! (`[world] broad_phase`, docs/detect.md's mesh contract): embedded
 //! scenes and random ones of every shape kind at 1 mm, 1 m and 1 km run
 //! step by step under sort and sweep, the grid and the tree, and every
 //! body's state and every contact is the same to the bit at every step.

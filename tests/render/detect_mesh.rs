@@ -1,4 +1,4 @@
-//! `detect` on a pair with a mesh (GUIDE §12): the JSON's mid phase (the
+//! `detect` on a pair with a mesh (the mesh contract in docs/detect.md): the JSON's mid phase (the
 //! tree's nodes from the root, the candidates, how many were tested), the
 //! pair's least distance, each triangle's raw and corrected normal, each
 //! contact's triangle; the text shows the same traversal. The candidates

@@ -58,7 +58,7 @@ fn pair(p: &PairTrace) -> Value {
         "analytic": p.analytic.as_deref().map(contacts),
     });
     if let Some(m) = &p.mid_phase {
-        // GUIDE §12: the tree's nodes, the candidates, how many were tested;
+        // The mesh contract (docs/detect.md): the tree's nodes, the candidates, how many were tested;
         // the pair's least distance and each triangle's narrow phase.
         v["mid_phase"]["mesh_body"] = j!(m.mesh_body);
         v["mid_phase"]["query"] = j!(m.query);
