@@ -1,8 +1,8 @@
 //! `simulate --solver soft-step --trace-step K`: a soft step's record as
 //! text or JSON: the step's coefficients from f, ζ and h, then each
 //! contact's constraint, its normal impulse and separation after every
-//! substep, and the impulses it ends with (names as the solver contract in docs/simulate.md;
-//! solver contract: `bias_rate`, `mass_scale`, `impulse_scale`).
+//! substep, and the impulses it ends with (named as docs/simulate.md's
+//! solver contract names them: `bias_rate`, `mass_scale`, `impulse_scale`).
 
 use std::fmt::Write;
 
